@@ -1,0 +1,12 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file noctree.h
+ * @brief Umbrella header: includes every public libnoctree header.
+ */
+#ifndef NOCTREE_H
+#define NOCTREE_H
+
+#include <noctree/version.h>
+#include <noctree/octree.h>
+
+#endif /* NOCTREE_H */

@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: MIT
+# The two shared libraries, built from the same sources: the defensive one
+# checks every requires clause with assert(3); the efficient one is built
+# with NDEBUG. Both export the same symbols.
+
+noctree_sources = \
+	lib/internal.h \
+	lib/direction.c \
+	lib/octree.c
+
+noctree_ldflags = -version-info $(NOCT_LT_VERSION) -no-undefined
+if HAVE_LD_VERSION_SCRIPT
+noctree_ldflags += -Wl,--version-script=$(srcdir)/lib/libnoctree.sym
+endif
+
+lib_LTLIBRARIES += lib/libnoctree.la lib/libnoctree-efficient.la
+
+lib_libnoctree_la_SOURCES = $(noctree_sources)
+lib_libnoctree_la_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_BUILDING
+lib_libnoctree_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS)
+lib_libnoctree_la_LDFLAGS = $(noctree_ldflags)
+EXTRA_lib_libnoctree_la_DEPENDENCIES = lib/libnoctree.sym
+
+lib_libnoctree_efficient_la_SOURCES = $(noctree_sources)
+lib_libnoctree_efficient_la_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_BUILDING -DNDEBUG
+lib_libnoctree_efficient_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS)
+lib_libnoctree_efficient_la_LDFLAGS = $(noctree_ldflags)
+EXTRA_lib_libnoctree_efficient_la_DEPENDENCIES = lib/libnoctree.sym
+
+noctreeincludedir = $(includedir)/noctree
+noctreeinclude_HEADERS = \
+	include/noctree/export.h \
+	include/noctree/octree.h \
+	include/noctree/octree_inline.h
+nodist_noctreeinclude_HEADERS = include/noctree/version.h
+include_HEADERS = include/noctree.h
+
+pkgconfig_DATA = lib/noctree.pc lib/noctree-efficient.pc
+
+EXTRA_DIST += lib/libnoctree.sym lib/noctree.pc.in lib/noctree-efficient.pc.in \
+	include/noctree/version.h.in

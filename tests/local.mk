@@ -1,0 +1,57 @@
+# SPDX-License-Identifier: MIT
+# make check: the Check suites against both libraries, the export list and
+# the in-lining check. make check-valgrind: the suites under valgrind.
+
+test_common = tests/testutil.c tests/testutil.h tests/short_names.c
+
+if HAVE_CHECK
+check_PROGRAMS += tests/check-octree tests/check-octree-efficient
+TESTS += tests/check-octree tests/check-octree-efficient
+endif
+
+tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
+tests_check_octree_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS)
+tests_check_octree_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_octree_efficient_SOURCES = $(tests_check_octree_SOURCES)
+tests_check_octree_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_octree_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_octree_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+TESTS += tests/exports.sh tests/inline.sh
+EXTRA_DIST += tests/exports.sh tests/inline.sh tests/inline-client.c
+
+AM_TESTS_ENVIRONMENT = \
+	CC='$(CC)'; NM='$(NM)'; srcdir='$(srcdir)/tests'; \
+	top_srcdir='$(top_srcdir)'; top_builddir='$(top_builddir)'; \
+	export CC NM srcdir top_srcdir top_builddir;
+
+# Valgrind runs the suites in one process (no fork), so the death tests,
+# which abort by design, are left out by their tag.
+VALGRIND = valgrind
+check-valgrind: $(check_PROGRAMS)
+	@set -e; for t in $(check_PROGRAMS); do \
+	  echo "valgrind $$t"; \
+	  CK_FORK=no CK_EXCLUDE_TAGS=death $(LIBTOOL) --mode=execute \
+	    $(VALGRIND) -q --error-exitcode=1 --leak-check=full \
+	    --errors-for-leak-kinds=definite,indirect ./$$t; \
+	done
+.PHONY: check-valgrind
+
+# Run from make installcheck (and so from make distcheck) after make install:
+# build the example against the installed copy through pkg-config, in both
+# flavours, run it, and check the installed libraries' exports.
+installcheck-local:
+	@set -e; pcdir='$(DESTDIR)$(pkgconfigdir)'; \
+	tmp=`mktemp -d`; trap 'rm -rf "$$tmp"' EXIT; \
+	for mod in noctree noctree-efficient; do \
+	  flags=`PKG_CONFIG_PATH="$$pcdir" PKG_CONFIG_SYSROOT_DIR='$(DESTDIR)' \
+	    $(PKG_CONFIG) --cflags --libs $$mod`; \
+	  echo "cc octree-demo.c $$flags"; \
+	  $(CC) -std=c11 $(srcdir)/docs/examples/octree-demo.c $$flags \
+	    -o "$$tmp/demo-$$mod"; \
+	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/demo-$$mod" > "$$tmp/out"; \
+	  grep -q 'OMEGA 0' "$$tmp/out"; \
+	done; \
+	NM='$(NM)' top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
+	  $(SHELL) $(srcdir)/tests/exports.sh '$(DESTDIR)$(libdir)'

@@ -1,0 +1,194 @@
+/* SPDX-License-Identifier: MIT */
+#include <check.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testutil.h"
+
+uint64_t test_rand(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+size_t test_rand_below(uint64_t *state, size_t n)
+{
+    return (size_t)(test_rand(state) % n);
+}
+
+/* A growable stack of nodes with their depth below the walk's top. */
+typedef struct {
+    octNode **node;
+    int *depth;
+    size_t len, cap;
+} node_stack;
+
+static void push(node_stack *s, octNode *n, int depth)
+{
+    if (s->len == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 64;
+        s->node = realloc(s->node, s->cap * sizeof *s->node);
+        s->depth = realloc(s->depth, s->cap * sizeof *s->depth);
+        ck_assert_ptr_nonnull(s->node);
+        ck_assert_ptr_nonnull(s->depth);
+    }
+    s->node[s->len] = n;
+    s->depth[s->len] = depth;
+    s->len++;
+}
+
+size_t tree_validate(octNode *top)
+{
+    node_stack s = {0};
+    size_t count = 0;
+    int gen0 = octGeneration(top);
+
+    ck_assert_int_ge(gen0, 0);
+    if (octParent(top) == NULL) {
+        ck_assert_int_eq(octChildType(top), OCT_OMEGA);
+        ck_assert_int_eq(gen0, 0);
+    }
+    push(&s, top, 0);
+    while (s.len > 0) {
+        s.len--;
+        octNode *n = s.node[s.len];
+        int depth = s.depth[s.len];
+        count++;
+        ck_assert_int_eq(octGeneration(n), gen0 + depth);
+        if (n != top) {
+            octNode *p = octParent(n);
+            ck_assert_ptr_nonnull(p);
+            ck_assert_ptr_eq(octChild(p, octChildType(n)), n);
+        }
+        if (!octIsSplit(n)) {
+            for (int v = OCT_LDB; v <= OCT_RUF; ++v)
+                ck_assert_ptr_null(octChild(n, (octDirection)v));
+            continue;
+        }
+        octNode *kids[8];
+        for (int v = OCT_LDB; v <= OCT_RUF; ++v) {
+            octNode *c = octChild(n, (octDirection)v);
+            ck_assert_ptr_nonnull(c);
+            ck_assert_ptr_ne(c, n);
+            ck_assert_ptr_eq(octParent(c), n);
+            ck_assert_int_eq(octChildType(c), v);
+            for (int w = OCT_LDB; w < v; ++w)
+                ck_assert_ptr_ne(kids[w - OCT_LDB], c);
+            kids[v - OCT_LDB] = c;
+        }
+        octInitChildIterator(n);
+        octNode *c = NULL;
+        for (int i = 0; i < 8; ++i) {
+            ck_assert(octNextChild(n, &c));
+            ck_assert_ptr_eq(c, kids[i]);
+        }
+        ck_assert(!octNextChild(n, &c));
+        for (int i = 7; i >= 0; --i)
+            push(&s, kids[i], depth + 1);
+    }
+    free(s.node);
+    free(s.depth);
+    return count;
+}
+
+octNode **tree_nodes(octNode *top, size_t *count)
+{
+    node_stack s = {0};
+    size_t len = 0, cap = 64;
+    octNode **out = malloc(cap * sizeof *out);
+    ck_assert_ptr_nonnull(out);
+    push(&s, top, 0);
+    while (s.len > 0) {
+        octNode *n = s.node[--s.len];
+        if (len == cap) {
+            cap *= 2;
+            out = realloc(out, cap * sizeof *out);
+            ck_assert_ptr_nonnull(out);
+        }
+        out[len++] = n;
+        for (int v = OCT_RUF; v >= OCT_LDB && octIsSplit(n); --v)
+            push(&s, octChild(n, (octDirection)v), 0);
+    }
+    free(s.node);
+    free(s.depth);
+    *count = len;
+    return out;
+}
+
+model_node *model_new(void)
+{
+    model_node *m = calloc(1, sizeof *m);
+    ck_assert_ptr_nonnull(m);
+    return m;
+}
+
+void model_free(model_node *m)
+{
+    if (m == NULL)
+        return;
+    for (int i = 0; i < 8; ++i)
+        model_free(m->kids[i]);
+    free(m);
+}
+
+void model_compare(model_node *m, octNode *n)
+{
+    const test_item *item = octData(n);
+    ck_assert_int_eq(item ? item->tag : 0, m->tag);
+    ck_assert_int_eq(octIsSplit(n), m->kids[0] != NULL);
+    for (int i = 0; i < 8 && m->kids[0] != NULL; ++i)
+        model_compare(m->kids[i], octChild(n, (octDirection)(OCT_LDB + i)));
+}
+
+static int *kill_log;
+static size_t kill_len, kill_cap;
+
+test_item *item_new(int tag)
+{
+    test_item *it = malloc(sizeof *it);
+    ck_assert_ptr_nonnull(it);
+    it->tag = tag;
+    return it;
+}
+
+void item_kill(void *data)
+{
+    test_item *it = data;
+    ck_assert_ptr_nonnull(it);
+    if (kill_len == kill_cap) {
+        kill_cap = kill_cap ? 2 * kill_cap : 64;
+        kill_log = realloc(kill_log, kill_cap * sizeof *kill_log);
+        ck_assert_ptr_nonnull(kill_log);
+    }
+    kill_log[kill_len++] = it->tag;
+    free(it);
+}
+
+void item_print(FILE *strm, const void *data)
+{
+    const test_item *it = data;
+    fprintf(strm, "item %d", it->tag);
+}
+
+void kill_log_reset(void)
+{
+    free(kill_log);
+    kill_log = NULL;
+    kill_len = kill_cap = 0;
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+size_t kill_log_sorted(const int **tags)
+{
+    if (kill_len > 0)
+        qsort(kill_log, kill_len, sizeof *kill_log, cmp_int);
+    *tags = kill_log;
+    return kill_len;
+}

@@ -1,0 +1,57 @@
+/* SPDX-License-Identifier: MIT */
+/* Helpers shared by the Check suites: a seeded RNG, the whole-tree
+ * validation walk and a mirror model of a tree's shape and data. They use
+ * only the public API, so they check the library from the outside. */
+#ifndef NOCT_TESTS_TESTUTIL_H
+#define NOCT_TESTS_TESTUTIL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/octree.h>
+
+/* splitmix64: small, seedable, identical on every platform. */
+uint64_t test_rand(uint64_t *state);
+/* Uniform integer in [0, n). */
+size_t test_rand_below(uint64_t *state, size_t n);
+
+/* Walk the subtree rooted at top and fail the running test unless:
+ * parent and child links agree, each child's type is its slot, generation
+ * equals the top's generation plus depth, a node is split iff it has all
+ * eight children, the child iterator visits exactly the eight children in
+ * vertex order, and (if top is a root) its child type is OMEGA. Returns the
+ * number of nodes. Iterative, so it copes with very deep trees. */
+size_t tree_validate(octNode *top);
+
+/* Collect the nodes of the subtree rooted at top in pre-order into a
+ * malloc'd array; *count receives its length. */
+octNode **tree_nodes(octNode *top, size_t *count);
+
+/* A mirror of a tree: the shape and an integer tag per node (0 = no data),
+ * kept by plain pointers so it shares no code with the library. */
+typedef struct model_node {
+    struct model_node *kids[8];
+    int tag;
+} model_node;
+
+model_node *model_new(void);
+void model_free(model_node *m);
+/* Fail the running test unless the tree under n has exactly the model's
+ * shape and the data of each node is the tag the model expects. */
+void model_compare(model_node *m, octNode *n);
+
+/* Client data used by the tests: a tagged cell whose disposal is logged. */
+typedef struct test_item {
+    int tag;
+} test_item;
+
+test_item *item_new(int tag);
+/* The octItemDisposer for test_items: frees the item and records its tag. */
+void item_kill(void *data);
+/* octItemPrinter for test_items: prints "item TAG". */
+void item_print(FILE *strm, const void *data);
+/* The log of disposed tags since the last reset, sorted ascending. */
+void kill_log_reset(void);
+size_t kill_log_sorted(const int **tags);
+
+#endif /* NOCT_TESTS_TESTUTIL_H */
