@@ -1,2 +1,16 @@
 # SPDX-License-Identifier: MIT
 # Command-line tools and benchmark programs.
+
+# The octree ADT benchmark, once per build (make bench runs both).
+noinst_PROGRAMS += tools/bench-octree-defensive tools/bench-octree-efficient
+tools_bench_octree_defensive_SOURCES = tools/bench-octree.c
+tools_bench_octree_defensive_LDADD = lib/libnoctree.la
+tools_bench_octree_efficient_SOURCES = tools/bench-octree.c
+tools_bench_octree_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_bench_octree_efficient_LDADD = lib/libnoctree-efficient.la
+EXTRA_DIST += tools/bench-octree.sh
+
+bench: tools/bench-octree-defensive tools/bench-octree-efficient
+	BENCH_BINDIR=tools $(SHELL) $(srcdir)/tools/bench-octree.sh
+.PHONY: bench
+CLEANFILES += bench-octree.csv
