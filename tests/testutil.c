@@ -1,5 +1,4 @@
 /* SPDX-License-Identifier: MIT */
-#include <check.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -31,8 +30,8 @@ static void push(node_stack *s, octNode *n, int depth)
         s->cap = s->cap ? 2 * s->cap : 64;
         s->node = realloc(s->node, s->cap * sizeof *s->node);
         s->depth = realloc(s->depth, s->cap * sizeof *s->depth);
-        ck_assert_ptr_nonnull(s->node);
-        ck_assert_ptr_nonnull(s->depth);
+        EXPECT(s->node != NULL);
+        EXPECT(s->depth != NULL);
     }
     s->node[s->len] = n;
     s->depth[s->len] = depth;
@@ -45,10 +44,10 @@ size_t tree_validate(octNode *top)
     size_t count = 0;
     int gen0 = octGeneration(top);
 
-    ck_assert_int_ge(gen0, 0);
+    EXPECT(gen0 >= 0);
     if (octParent(top) == NULL) {
-        ck_assert_int_eq(octChildType(top), OCT_OMEGA);
-        ck_assert_int_eq(gen0, 0);
+        EXPECT(octChildType(top) == OCT_OMEGA);
+        EXPECT(gen0 == 0);
     }
     push(&s, top, 0);
     while (s.len > 0) {
@@ -56,35 +55,35 @@ size_t tree_validate(octNode *top)
         octNode *n = s.node[s.len];
         int depth = s.depth[s.len];
         count++;
-        ck_assert_int_eq(octGeneration(n), gen0 + depth);
+        EXPECT(octGeneration(n) == gen0 + depth);
         if (n != top) {
             octNode *p = octParent(n);
-            ck_assert_ptr_nonnull(p);
-            ck_assert_ptr_eq(octChild(p, octChildType(n)), n);
+            EXPECT(p != NULL);
+            EXPECT(octChild(p, octChildType(n)) == n);
         }
         if (!octIsSplit(n)) {
             for (int v = OCT_LDB; v <= OCT_RUF; ++v)
-                ck_assert_ptr_null(octChild(n, (octDirection)v));
+                EXPECT(octChild(n, (octDirection)v) == NULL);
             continue;
         }
         octNode *kids[8];
         for (int v = OCT_LDB; v <= OCT_RUF; ++v) {
             octNode *c = octChild(n, (octDirection)v);
-            ck_assert_ptr_nonnull(c);
-            ck_assert_ptr_ne(c, n);
-            ck_assert_ptr_eq(octParent(c), n);
-            ck_assert_int_eq(octChildType(c), v);
+            EXPECT(c != NULL);
+            EXPECT(c != n);
+            EXPECT(octParent(c) == n);
+            EXPECT((int)octChildType(c) == v);
             for (int w = OCT_LDB; w < v; ++w)
-                ck_assert_ptr_ne(kids[w - OCT_LDB], c);
+                EXPECT(kids[w - OCT_LDB] != c);
             kids[v - OCT_LDB] = c;
         }
         octInitChildIterator(n);
         octNode *c = NULL;
         for (int i = 0; i < 8; ++i) {
-            ck_assert(octNextChild(n, &c));
-            ck_assert_ptr_eq(c, kids[i]);
+            EXPECT(octNextChild(n, &c));
+            EXPECT(c == kids[i]);
         }
-        ck_assert(!octNextChild(n, &c));
+        EXPECT(!octNextChild(n, &c));
         for (int i = 7; i >= 0; --i)
             push(&s, kids[i], depth + 1);
     }
@@ -98,14 +97,14 @@ octNode **tree_nodes(octNode *top, size_t *count)
     node_stack s = {0};
     size_t len = 0, cap = 64;
     octNode **out = malloc(cap * sizeof *out);
-    ck_assert_ptr_nonnull(out);
+    EXPECT(out != NULL);
     push(&s, top, 0);
     while (s.len > 0) {
         octNode *n = s.node[--s.len];
         if (len == cap) {
             cap *= 2;
             out = realloc(out, cap * sizeof *out);
-            ck_assert_ptr_nonnull(out);
+            EXPECT(out != NULL);
         }
         out[len++] = n;
         for (int v = OCT_RUF; v >= OCT_LDB && octIsSplit(n); --v)
@@ -120,7 +119,7 @@ octNode **tree_nodes(octNode *top, size_t *count)
 model_node *model_new(void)
 {
     model_node *m = calloc(1, sizeof *m);
-    ck_assert_ptr_nonnull(m);
+    EXPECT(m != NULL);
     return m;
 }
 
@@ -136,8 +135,8 @@ void model_free(model_node *m)
 void model_compare(model_node *m, octNode *n)
 {
     const test_item *item = octData(n);
-    ck_assert_int_eq(item ? item->tag : 0, m->tag);
-    ck_assert_int_eq(octIsSplit(n), m->kids[0] != NULL);
+    EXPECT((item ? item->tag : 0) == m->tag);
+    EXPECT(octIsSplit(n) == (m->kids[0] != NULL));
     for (int i = 0; i < 8 && m->kids[0] != NULL; ++i)
         model_compare(m->kids[i], octChild(n, (octDirection)(OCT_LDB + i)));
 }
@@ -148,7 +147,7 @@ static size_t kill_len, kill_cap;
 test_item *item_new(int tag)
 {
     test_item *it = malloc(sizeof *it);
-    ck_assert_ptr_nonnull(it);
+    EXPECT(it != NULL);
     it->tag = tag;
     return it;
 }
@@ -156,11 +155,11 @@ test_item *item_new(int tag)
 void item_kill(void *data)
 {
     test_item *it = data;
-    ck_assert_ptr_nonnull(it);
+    EXPECT(it != NULL);
     if (kill_len == kill_cap) {
         kill_cap = kill_cap ? 2 * kill_cap : 64;
         kill_log = realloc(kill_log, kill_cap * sizeof *kill_log);
-        ck_assert_ptr_nonnull(kill_log);
+        EXPECT(kill_log != NULL);
     }
     kill_log[kill_len++] = it->tag;
     free(it);

@@ -8,7 +8,19 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <check.h>
+
 #include <noctree/octree.h>
+
+/* An assertion for hot loops. Check records every *passing* ck_assert (a
+ * write to its pipe), which dominates tests that check millions of facts;
+ * EXPECT costs nothing unless it fails, and then fails the test the same
+ * way, naming the file, line and expression. */
+#define EXPECT(cond)                                                        \
+    do {                                                                    \
+        if (!(cond))                                                        \
+            ck_abort_msg("%s:%d: expected %s", __FILE__, __LINE__, #cond);  \
+    } while (0)
 
 /* splitmix64: small, seedable, identical on every platform. */
 uint64_t test_rand(uint64_t *state);
