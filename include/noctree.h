@@ -8,5 +8,6 @@
 
 #include <noctree/version.h>
 #include <noctree/octree.h>
+#include <noctree/neighbor.h>
 
 #endif /* NOCTREE_H */

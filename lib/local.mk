@@ -6,6 +6,7 @@
 noctree_sources = \
 	lib/internal.h \
 	lib/direction.c \
+	lib/neighbor.c \
 	lib/octree.c
 
 noctree_ldflags = -version-info $(NOCT_LT_VERSION) -no-undefined
@@ -30,6 +31,7 @@ EXTRA_lib_libnoctree_efficient_la_DEPENDENCIES = lib/libnoctree.sym
 noctreeincludedir = $(includedir)/noctree
 noctreeinclude_HEADERS = \
 	include/noctree/export.h \
+	include/noctree/neighbor.h \
 	include/noctree/octree.h \
 	include/noctree/octree_inline.h
 nodist_noctreeinclude_HEADERS = include/noctree/version.h

@@ -5,8 +5,10 @@
 test_common = tests/testutil.c tests/testutil.h tests/short_names.c
 
 if HAVE_CHECK
-check_PROGRAMS += tests/check-octree tests/check-octree-efficient
-TESTS += tests/check-octree tests/check-octree-efficient
+check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
+	tests/check-neighbor tests/check-neighbor-efficient
+TESTS += tests/check-octree tests/check-octree-efficient \
+	tests/check-neighbor tests/check-neighbor-efficient
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -17,6 +19,15 @@ tests_check_octree_efficient_SOURCES = $(tests_check_octree_SOURCES)
 tests_check_octree_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_octree_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_octree_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_neighbor_SOURCES = tests/check_neighbor.c $(test_common)
+tests_check_neighbor_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_neighbor_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_neighbor_efficient_SOURCES = $(tests_check_neighbor_SOURCES)
+tests_check_neighbor_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_neighbor_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_neighbor_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 TESTS += tests/exports.sh tests/inline.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/inline-client.c

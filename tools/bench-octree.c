@@ -8,6 +8,10 @@
  * tools/bench-octree.sh runs both and prints the efficient/defensive
  * ratios. Each figure is the median of the repeats.
  *
+ * The neighbor rows time octGtEqFaceNeighbor(), octGtEqEdgeNeighbor() and
+ * octGtEqVertexNeighbor() from random leaves of a random tree of depth 8,
+ * in random directions of each kind.
+ *
  * Usage: bench-octree [REPEATS [DEPTH]]   (defaults 7 and 6)
  */
 #define _POSIX_C_SOURCE 200809L
@@ -16,6 +20,7 @@
 #include <stdlib.h>
 #include <time.h>
 
+#include <noctree/neighbor.h>
 #include <noctree/octree.h>
 
 #ifdef NOCT_EFFICIENT
@@ -88,6 +93,67 @@ static uint64_t rng(void)
     return z ^ (z >> 31);
 }
 
+/* A random tree of depth 8: full to depth 3, then random leaves split. */
+static octNode *random_tree(octNode ***leaves, size_t *nleaves)
+{
+    octNode *root = octCreate(), **lv;
+    size_t n;
+    if (root == NULL)
+        exit(EXIT_FAILURE);
+    build(root, 3, &lv, &n);
+    size_t cap = n * 64;
+    lv = realloc(lv, cap * sizeof *lv);
+    if (lv == NULL)
+        exit(EXIT_FAILURE);
+    for (int s = 0; s < 30000 && n + 8 <= cap; ++s) {
+        size_t i = (size_t)(rng() % n);
+        octNode *leaf = lv[i];
+        if (octGeneration(leaf) >= 8 || !octSplit(leaf))
+            continue;
+        lv[i] = octChild(leaf, OCT_LDB);
+        for (int v = OCT_LDF; v <= OCT_RUF; ++v)
+            lv[n++] = octChild(leaf, (octDirection)v);
+    }
+    *leaves = lv;
+    *nleaves = n;
+    return root;
+}
+
+static void bench_neighbors(double *face, double *edge, double *vertex,
+                            size_t *queries)
+{
+    octNode **leaves;
+    size_t nleaves;
+    octNode *root = random_tree(&leaves, &nleaves);
+    enum { Q = 1 << 20 };
+    static octNode *from[Q];
+    static octDirection dir[3][Q];
+    for (size_t q = 0; q < Q; ++q) {
+        from[q] = leaves[rng() % nleaves];
+        dir[0][q] = (octDirection)(OCT_L + rng() % 6);
+        dir[1][q] = (octDirection)(OCT_LD + rng() % 12);
+        dir[2][q] = (octDirection)(OCT_LDB + rng() % 8);
+    }
+    uintptr_t acc = 0;
+    double t0 = now_ns();
+    for (size_t q = 0; q < Q; ++q)
+        acc += (uintptr_t)octGtEqFaceNeighbor(from[q], dir[0][q]);
+    double t1 = now_ns();
+    for (size_t q = 0; q < Q; ++q)
+        acc += (uintptr_t)octGtEqEdgeNeighbor(from[q], dir[1][q]);
+    double t2 = now_ns();
+    for (size_t q = 0; q < Q; ++q)
+        acc += (uintptr_t)octGtEqVertexNeighbor(from[q], dir[2][q]);
+    double t3 = now_ns();
+    sink = acc;
+    *face = (t1 - t0) / Q;
+    *edge = (t2 - t1) / Q;
+    *vertex = (t3 - t2) / Q;
+    *queries = Q;
+    free(leaves);
+    octDispose(root);
+}
+
 int main(int argc, char **argv)
 {
     int repeats = argc > 1 ? atoi(argv[1]) : 7;
@@ -96,9 +162,10 @@ int main(int argc, char **argv)
         fputs("usage: bench-octree [REPEATS (1-1000) [DEPTH (2-8)]]\n", stderr);
         return 2;
     }
-    enum { SPLIT, JOIN, CHILD, PARENT, DATA, NOPS };
-    static const char *const names[NOPS] = {"split", "join", "child",
-                                            "parent", "data+swap"};
+    enum { SPLIT, JOIN, CHILD, PARENT, DATA, FACE, EDGE, VERTEX, NOPS };
+    static const char *const names[NOPS] = {
+        "split", "join", "child", "parent", "data+swap",
+        "face-nbr", "edge-nbr", "vertex-nbr"};
     double *t[NOPS];
     size_t ops[NOPS] = {0};
     for (int o = 0; o < NOPS; ++o)
@@ -158,6 +225,9 @@ int main(int argc, char **argv)
         t[JOIN][r] = (now_ns() - t0) / (double)njoin;
         free(leaves);
         octDispose(root);
+
+        bench_neighbors(&t[FACE][r], &t[EDGE][r], &t[VERTEX][r], &ops[FACE]);
+        ops[EDGE] = ops[VERTEX] = ops[FACE];
     }
 
     for (int o = 0; o < NOPS; ++o) {

@@ -78,6 +78,7 @@ int main(void)
 {
     static const point pts[] = {
         {"left", 0.10, 0.50, 0.50},  {"centre", 0.48, 0.52, 0.50},
+        {"near", 0.45, 0.55, 0.55},
         {"right", 0.56, 0.50, 0.50}, {"top", 0.30, 0.90, 0.20},
         {"corner", 0.95, 0.05, 0.95}};
     _Static_assert(sizeof pts / sizeof *pts <= MAX_POINTS, "too many points");
