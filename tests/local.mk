@@ -29,8 +29,9 @@ tests_check_neighbor_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_neighbor_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_neighbor_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
-TESTS += tests/exports.sh tests/inline.sh
-EXTRA_DIST += tests/exports.sh tests/inline.sh tests/inline-client.c
+TESTS += tests/exports.sh tests/inline.sh tests/headers.sh
+EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh \
+	tests/inline-client.c
 
 AM_TESTS_ENVIRONMENT = \
 	CC='$(CC)'; NM='$(NM)'; srcdir='$(srcdir)/tests'; \
