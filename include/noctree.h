@@ -9,5 +9,8 @@
 #include <noctree/version.h>
 #include <noctree/octree.h>
 #include <noctree/neighbor.h>
+#include <noctree/status.h>
+#include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
 
 #endif /* NOCTREE_H */

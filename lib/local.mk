@@ -6,8 +6,16 @@
 noctree_sources = \
 	lib/internal.h \
 	lib/direction.c \
+	lib/mesh.c \
+	lib/mesh_internal.h \
+	lib/meshio.c \
+	lib/narrowphase.c \
 	lib/neighbor.c \
-	lib/octree.c
+	lib/octree.c \
+	lib/predicates.c \
+	lib/predicates.h
+noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
+noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 
 noctree_ldflags = -version-info $(NOCT_LT_VERSION) -no-undefined
 if HAVE_LD_VERSION_SCRIPT
@@ -18,22 +26,27 @@ lib_LTLIBRARIES += lib/libnoctree.la lib/libnoctree-efficient.la
 
 lib_libnoctree_la_SOURCES = $(noctree_sources)
 lib_libnoctree_la_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_BUILDING
-lib_libnoctree_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS)
+lib_libnoctree_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS) $(noctree_deps_cflags)
 lib_libnoctree_la_LDFLAGS = $(noctree_ldflags)
+lib_libnoctree_la_LIBADD = $(noctree_deps_libs)
 EXTRA_lib_libnoctree_la_DEPENDENCIES = lib/libnoctree.sym
 
 lib_libnoctree_efficient_la_SOURCES = $(noctree_sources)
 lib_libnoctree_efficient_la_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_BUILDING -DNDEBUG
-lib_libnoctree_efficient_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS)
+lib_libnoctree_efficient_la_CFLAGS = $(AM_CFLAGS) $(VISIBILITY_CFLAGS) $(noctree_deps_cflags)
 lib_libnoctree_efficient_la_LDFLAGS = $(noctree_ldflags)
+lib_libnoctree_efficient_la_LIBADD = $(noctree_deps_libs)
 EXTRA_lib_libnoctree_efficient_la_DEPENDENCIES = lib/libnoctree.sym
 
 noctreeincludedir = $(includedir)/noctree
 noctreeinclude_HEADERS = \
 	include/noctree/export.h \
+	include/noctree/mesh.h \
+	include/noctree/narrowphase.h \
 	include/noctree/neighbor.h \
 	include/noctree/octree.h \
-	include/noctree/octree_inline.h
+	include/noctree/octree_inline.h \
+	include/noctree/status.h
 nodist_noctreeinclude_HEADERS = include/noctree/version.h
 include_HEADERS = include/noctree.h
 

@@ -6,9 +6,13 @@ test_common = tests/testutil.c tests/testutil.h tests/short_names.c
 
 if HAVE_CHECK
 check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
-	tests/check-neighbor tests/check-neighbor-efficient
+	tests/check-neighbor tests/check-neighbor-efficient \
+	tests/check-narrowphase tests/check-narrowphase-efficient \
+	tests/check-predicates
 TESTS += tests/check-octree tests/check-octree-efficient \
-	tests/check-neighbor tests/check-neighbor-efficient
+	tests/check-neighbor tests/check-neighbor-efficient \
+	tests/check-narrowphase tests/check-narrowphase-efficient \
+	tests/check-predicates
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -28,6 +32,21 @@ tests_check_neighbor_efficient_SOURCES = $(tests_check_neighbor_SOURCES)
 tests_check_neighbor_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_neighbor_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_neighbor_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_narrowphase_SOURCES = tests/check_narrowphase.c $(test_common)
+tests_check_narrowphase_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_narrowphase_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_narrowphase_efficient_SOURCES = $(tests_check_narrowphase_SOURCES)
+tests_check_narrowphase_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_narrowphase_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_narrowphase_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+# The private predicates, tested through a test-only build of their source.
+tests_check_predicates_SOURCES = tests/check_predicates.c lib/predicates.c \
+	lib/predicates.h $(test_common)
+tests_check_predicates_CFLAGS = $(tests_check_octree_CFLAGS) $(GMP_CFLAGS)
+tests_check_predicates_LDADD = lib/libnoctree.la $(GMP_LIBS) $(CHECK_LIBS)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh \

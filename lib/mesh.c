@@ -1,0 +1,673 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Meshes: validation, fan triangulation, orientation, convexity, the
+ * bounding-volume hierarchy over triangles and the convex hull (qhull).
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <libqhull_r/qhull_ra.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+#include "predicates.h"
+
+/* Polygons must be planar and convex within this fraction of their size. */
+#define POLY_TOLERANCE 1e-9
+/* Triangles per BVH leaf, at most. */
+#define BVH_LEAF 4
+
+noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
+                     const char *fmt, ...)
+{
+    if (err != NULL) {
+        err->status = status;
+        err->index = index;
+        err->line = line;
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
+
+const char *noctStatusString(noctStatus status)
+{
+    static const char *const text[NOCT_STATUS_COUNT] = {
+        [NOCT_OK] = "success",
+        [NOCT_ERR_NOMEM] = "out of memory",
+        [NOCT_ERR_INVALID] = "invalid argument",
+        [NOCT_ERR_NONFINITE] = "value is NaN or infinite",
+        [NOCT_ERR_TOO_LARGE] = "too large",
+        [NOCT_ERR_INDEX] = "vertex index out of range",
+        [NOCT_ERR_DEGENERATE] = "degenerate polygon or mesh",
+        [NOCT_ERR_NONPLANAR] = "polygon is not planar",
+        [NOCT_ERR_NONCONVEX] = "polygon is not convex",
+        [NOCT_ERR_OPEN] = "mesh is not closed",
+        [NOCT_ERR_ORIENTATION] = "polygons are not consistently oriented",
+        [NOCT_ERR_PARSE] = "syntax error",
+        [NOCT_ERR_IO] = "input/output error",
+        [NOCT_ERR_NUMERIC] = "numerical failure",
+    };
+    if ((unsigned)status >= NOCT_STATUS_COUNT)
+        return "unknown status";
+    return text[status];
+}
+
+void noctMeshDestroy(noctMesh *mesh)
+{
+    if (mesh == NULL)
+        return;
+    free(mesh->v);
+    free(mesh->tri);
+    free(mesh->hull);
+    free(mesh->nodes);
+    free(mesh);
+}
+
+size_t noctMeshVertexCount(const noctMesh *mesh)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    return mesh->nv;
+}
+
+size_t noctMeshTriangleCount(const noctMesh *mesh)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    return mesh->nt;
+}
+
+void noctMeshBounds(const noctMesh *mesh, double lo[3], double hi[3])
+{
+    NOCT_REQUIRE(mesh != NULL && lo != NULL && hi != NULL);
+    memcpy(lo, mesh->lo, sizeof mesh->lo);
+    memcpy(hi, mesh->hi, sizeof mesh->hi);
+}
+
+bool noctMeshIsConvex(const noctMesh *mesh)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    return mesh->convex;
+}
+
+/* ---- small vector helpers -------------------------------------------- */
+
+static void sub3(const double a[3], const double b[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = a[i] - b[i];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double norm3(const double a[3])
+{
+    return sqrt(dot3(a, a));
+}
+
+/* ---- polygon checks ---------------------------------------------------- */
+
+/*
+ * Check one polygon: distinct corners, non-zero area, planar and convex
+ * within POLY_TOLERANCE of its diameter. Newell's normal gives the plane;
+ * convexity is every corner turning the same way about that normal.
+ */
+static noctStatus check_polygon(const double *v, const uint32_t *idx,
+                                uint32_t n, size_t poly, noctError *err)
+{
+    for (uint32_t i = 0; i < n; ++i)
+        for (uint32_t j = i + 1; j < n; ++j)
+            if (idx[i] == idx[j])
+                return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
+                                 "polygon %zu: vertex %u appears twice", poly,
+                                 idx[i]);
+    double normal[3] = {0, 0, 0}, diam = 0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const double *p = &v[3 * idx[i]], *q = &v[3 * idx[(i + 1) % n]];
+        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+        for (uint32_t j = 0; j < n; ++j) {
+            double d[3];
+            sub3(p, &v[3 * idx[j]], d);
+            double len = norm3(d);
+            if (len > diam)
+                diam = len;
+        }
+    }
+    double nlen = norm3(normal);
+    /* Newell's normal has twice the polygon's area as its length. */
+    if (!(nlen > POLY_TOLERANCE * diam * diam))
+        return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
+                         "polygon %zu has no area (its corners are collinear)",
+                         poly);
+    for (int k = 0; k < 3; ++k)
+        normal[k] /= nlen;
+    const double *o = &v[3 * idx[0]];
+    for (uint32_t i = 1; i < n; ++i) {
+        double d[3];
+        sub3(&v[3 * idx[i]], o, d);
+        if (fabs(dot3(d, normal)) > POLY_TOLERANCE * diam)
+            return noct_fail(err, NOCT_ERR_NONPLANAR, (long)poly, 0,
+                             "polygon %zu: vertex %u is %g off the polygon's "
+                             "plane", poly, idx[i], fabs(dot3(d, normal)));
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+        const double *a = &v[3 * idx[i]], *b = &v[3 * idx[(i + 1) % n]],
+                     *c = &v[3 * idx[(i + 2) % n]];
+        double ab[3], bc[3], turn[3];
+        sub3(b, a, ab);
+        sub3(c, b, bc);
+        cross3(ab, bc, turn);
+        if (dot3(turn, normal) <= POLY_TOLERANCE * diam * diam)
+            return noct_fail(err, NOCT_ERR_NONCONVEX, (long)poly, 0,
+                             "polygon %zu is not convex at vertex %u", poly,
+                             idx[(i + 1) % n]);
+    }
+    return NOCT_OK;
+}
+
+/* ---- closedness and orientation ----------------------------------------- */
+
+typedef struct half_edge {
+    uint32_t lo, hi;  /* vertex indices, lo < hi */
+    uint32_t forward; /* 1 if the polygon runs lo -> hi */
+    uint32_t poly;
+} half_edge;
+
+static int cmp_half_edge(const void *x, const void *y)
+{
+    const half_edge *a = x, *b = y;
+    if (a->lo != b->lo)
+        return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi)
+        return a->hi < b->hi ? -1 : 1;
+    return (a->poly > b->poly) - (a->poly < b->poly);
+}
+
+static noctStatus check_closed(const uint32_t *sizes, size_t npoly,
+                               const uint32_t *indices, size_t nidx,
+                               noctError *err)
+{
+    half_edge *he = malloc(nidx * sizeof *he);
+    if (he == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    size_t k = 0, base = 0;
+    for (size_t p = 0; p < npoly; ++p) {
+        for (uint32_t i = 0; i < sizes[p]; ++i) {
+            uint32_t a = indices[base + i], b = indices[base + (i + 1) % sizes[p]];
+            he[k].lo = a < b ? a : b;
+            he[k].hi = a < b ? b : a;
+            he[k].forward = a < b;
+            he[k].poly = (uint32_t)p;
+            ++k;
+        }
+        base += sizes[p];
+    }
+    qsort(he, nidx, sizeof *he, cmp_half_edge);
+    noctStatus st = NOCT_OK;
+    for (size_t i = 0; i < nidx && st == NOCT_OK;) {
+        size_t j = i;
+        while (j < nidx && he[j].lo == he[i].lo && he[j].hi == he[i].hi)
+            ++j;
+        if (j - i != 2)
+            st = noct_fail(err, NOCT_ERR_OPEN, (long)he[i].poly, 0,
+                           "edge %u-%u is used by %zu polygon%s (polygon %u "
+                           "among them), not 2", he[i].lo, he[i].hi, j - i,
+                           j - i == 1 ? "" : "s", he[i].poly);
+        else if (he[i].forward == he[i + 1].forward)
+            st = noct_fail(err, NOCT_ERR_ORIENTATION, (long)he[i + 1].poly, 0,
+                           "polygons %u and %u both run along edge %u-%u in "
+                           "the same direction", he[i].poly, he[i + 1].poly,
+                           he[i].lo, he[i].hi);
+        i = j;
+    }
+    free(he);
+    return st;
+}
+
+/* ---- bounding-volume hierarchy ----------------------------------------- */
+
+typedef struct bvh_build {
+    noctMesh *m;
+    uint32_t *order;    /* triangle permutation being partitioned */
+    double *centroid;   /* 3 per triangle */
+} bvh_build;
+
+static void tri_bounds(const noctMesh *m, uint32_t t, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (int c = 0; c < 3; ++c) {
+        const double *p = &m->v[3 * m->tri[3 * t + c]];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = fmin(lo[k], p[k]);
+            hi[k] = fmax(hi[k], p[k]);
+        }
+    }
+}
+
+/* Reorder order[0, n) so that order[k] holds the triangle whose centroid
+ * has the k-th smallest coordinate on axis, with no larger one before it
+ * and no smaller one after it (quickselect, Hoare partition). */
+static void select_kth(uint32_t *order, uint32_t n, uint32_t k,
+                       const double *centroid, int axis)
+{
+    uint32_t lo = 0, hi = n - 1;
+    while (lo < hi) {
+        double pivot = centroid[3 * order[lo + (hi - lo) / 2] + axis];
+        uint32_t i = lo, j = hi;
+        while (i <= j) {
+            while (centroid[3 * order[i] + axis] < pivot)
+                ++i;
+            while (centroid[3 * order[j] + axis] > pivot)
+                --j;
+            if (i <= j) {
+                uint32_t t = order[i];
+                order[i] = order[j];
+                order[j] = t;
+                ++i;
+                if (j == 0)
+                    break;
+                --j;
+            }
+        }
+        if (k <= j)
+            hi = j;
+        else if (k >= i)
+            lo = i;
+        else
+            return;
+    }
+}
+
+/* Build the subtree for order[first, first + count) into node index n;
+ * nodes are handed out from *next. Median split on the longest axis of the
+ * centroids. Depth is about log2(count / BVH_LEAF). */
+static void bvh_split(bvh_build *b, uint32_t n, uint32_t first, uint32_t count,
+                      uint32_t *next)
+{
+    bvh_node *node = &b->m->nodes[n];
+    double clo[3] = {INFINITY, INFINITY, INFINITY};
+    double chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int k = 0; k < 3; ++k) {
+        node->lo[k] = INFINITY;
+        node->hi[k] = -INFINITY;
+    }
+    for (uint32_t i = first; i < first + count; ++i) {
+        double lo[3], hi[3];
+        tri_bounds(b->m, b->order[i], lo, hi);
+        for (int k = 0; k < 3; ++k) {
+            node->lo[k] = fmin(node->lo[k], lo[k]);
+            node->hi[k] = fmax(node->hi[k], hi[k]);
+            clo[k] = fmin(clo[k], b->centroid[3 * b->order[i] + k]);
+            chi[k] = fmax(chi[k], b->centroid[3 * b->order[i] + k]);
+        }
+    }
+    if (count <= BVH_LEAF) {
+        node->first = first;
+        node->count = count;
+        return;
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (chi[k] - clo[k] > chi[axis] - clo[axis])
+            axis = k;
+    uint32_t half = count / 2;
+    select_kth(&b->order[first], count, half, b->centroid, axis);
+    uint32_t left = *next;
+    *next += 2;
+    node->first = left;
+    node->count = 0;
+    bvh_split(b, left, first, half, next);
+    bvh_split(b, left + 1, first + half, count - half, next);
+}
+
+static noctStatus build_bvh(noctMesh *m, noctError *err)
+{
+    bvh_build b = {m, NULL, NULL};
+    m->nodes = malloc(2 * m->nt * sizeof *m->nodes);
+    b.order = malloc(m->nt * sizeof *b.order);
+    b.centroid = malloc(3 * m->nt * sizeof *b.centroid);
+    uint32_t *tri = malloc(3 * m->nt * sizeof *tri);
+    if (m->nodes == NULL || b.order == NULL || b.centroid == NULL || tri == NULL) {
+        free(b.order);
+        free(b.centroid);
+        free(tri);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (uint32_t t = 0; t < m->nt; ++t) {
+        b.order[t] = t;
+        for (int k = 0; k < 3; ++k)
+            b.centroid[3 * t + k] = (m->v[3 * m->tri[3 * t] + k] +
+                                     m->v[3 * m->tri[3 * t + 1] + k] +
+                                     m->v[3 * m->tri[3 * t + 2] + k]) / 3;
+    }
+    uint32_t next = 1;
+    bvh_split(&b, 0, 0, (uint32_t)m->nt, &next);
+    m->nnodes = next;
+    for (uint32_t t = 0; t < m->nt; ++t)
+        memcpy(&tri[3 * t], &m->tri[3 * b.order[t]], 3 * sizeof *tri);
+    free(m->tri);
+    m->tri = tri;
+    free(b.order);
+    free(b.centroid);
+    return NOCT_OK;
+}
+
+/* ---- convexity and hull ------------------------------------------------- */
+
+/* Exact local convexity: for every edge shared by triangles t and u, the
+ * vertex of u off the edge is not above t's plane. Sorting directed edges
+ * pairs each edge with its reverse. */
+typedef struct dir_edge {
+    uint32_t a, b, far; /* edge a -> b of a triangle, its third vertex */
+    uint32_t tri;
+} dir_edge;
+
+static int cmp_dir_edge(const void *x, const void *y)
+{
+    const dir_edge *p = x, *q = y;
+    uint32_t pl = p->a < p->b ? p->a : p->b, ql = q->a < q->b ? q->a : q->b;
+    uint32_t ph = p->a < p->b ? p->b : p->a, qh = q->a < q->b ? q->b : q->a;
+    if (pl != ql)
+        return pl < ql ? -1 : 1;
+    if (ph != qh)
+        return ph < qh ? -1 : 1;
+    return (p->a > q->a) - (p->a < q->a);
+}
+
+static noctStatus compute_convexity(noctMesh *m, noctError *err)
+{
+    size_t ne = 3 * m->nt;
+    dir_edge *e = malloc(ne * sizeof *e);
+    if (e == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    for (size_t t = 0; t < m->nt; ++t)
+        for (int c = 0; c < 3; ++c)
+            e[3 * t + c] = (dir_edge){m->tri[3 * t + c],
+                                      m->tri[3 * t + (c + 1) % 3],
+                                      m->tri[3 * t + (c + 2) % 3], (uint32_t)t};
+    qsort(e, ne, sizeof *e, cmp_dir_edge);
+    bool convex = true;
+    /* Triangles from one polygon share interior edges: still checked, and
+     * coplanar (sign 0), which is allowed. */
+    for (size_t i = 0; i + 1 < ne && convex; i += 2) {
+        const dir_edge *p = &e[i], *q = &e[i + 1];
+        const double *t0 = &m->v[3 * m->tri[3 * p->tri]];
+        const double *t1 = &m->v[3 * m->tri[3 * p->tri + 1]];
+        const double *t2 = &m->v[3 * m->tri[3 * p->tri + 2]];
+        /* q's far vertex must be below or on p's (outward) plane: orient3d
+         * >= 0 means below. */
+        if (noct_orient3d(t0, t1, t2, &m->v[3 * q->far], NULL) < 0)
+            convex = false;
+    }
+    free(e);
+    m->convex = convex;
+    return NOCT_OK;
+}
+
+static noctStatus compute_hull(noctMesh *m, noctError *err)
+{
+    m->hull = NULL;
+    m->nhull = 0;
+    if (!m->convex && m->nv > 4) {
+        FILE *quiet = fopen("/dev/null", "w");
+        if (quiet != NULL) {
+            qhT qh_storage, *qh = &qh_storage;
+            char cmd[] = "qhull";
+            qh_zero(qh, quiet);
+            if (qh_new_qhull(qh, 3, (int)m->nv, m->v, False, cmd, NULL, quiet) == 0) {
+                m->hull = malloc((size_t)qh->num_vertices * sizeof *m->hull);
+                if (m->hull != NULL) {
+                    vertexT *vertex;
+                    FORALLvertices
+                        m->hull[m->nhull++] = (uint32_t)qh_pointid(qh, vertex->point);
+                }
+            }
+            qh_freeqhull(qh, !qh_ALL);
+            int curlong, totlong;
+            qh_memfreeshort(qh, &curlong, &totlong);
+            fclose(quiet);
+        }
+    }
+    if (m->hull == NULL) { /* convex, or qhull unavailable: every vertex */
+        m->hull = malloc(m->nv * sizeof *m->hull);
+        if (m->hull == NULL)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        for (size_t i = 0; i < m->nv; ++i)
+            m->hull[i] = (uint32_t)i;
+        m->nhull = m->nv;
+    }
+    for (int k = 0; k < 3; ++k) {
+        double s = 0;
+        for (size_t i = 0; i < m->nhull; ++i)
+            s += m->v[3 * m->hull[i] + k];
+        m->centre[k] = s / (double)m->nhull;
+    }
+    return NOCT_OK;
+}
+
+/* ---- creation ------------------------------------------------------------- */
+
+noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
+                          const uint32_t *sizes, size_t npolygons,
+                          const uint32_t *indices, noctMesh **mesh,
+                          noctError *err)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    NOCT_REQUIRE(nvertices == 0 || vertices != NULL);
+    NOCT_REQUIRE(npolygons == 0 || sizes != NULL);
+    *mesh = NULL;
+    if (nvertices < 4 || npolygons < 4)
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "a closed mesh needs at least 4 vertices and 4 "
+                         "polygons (got %zu and %zu)", nvertices, npolygons);
+    if (nvertices > NOCT_MESH_MAX_VERTICES)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "%zu vertices (at most %u)", nvertices,
+                         (unsigned)NOCT_MESH_MAX_VERTICES);
+    size_t nidx = 0, ntri = 0;
+    for (size_t p = 0; p < npolygons; ++p) {
+        if (sizes[p] < 3)
+            return noct_fail(err, NOCT_ERR_DEGENERATE, (long)p, 0,
+                             "polygon %zu has %u corners (at least 3)", p,
+                             sizes[p]);
+        nidx += sizes[p];
+        ntri += sizes[p] - 2;
+        if (nidx > NOCT_MESH_MAX_INDICES)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)p, 0,
+                             "more than %u polygon corners",
+                             (unsigned)NOCT_MESH_MAX_INDICES);
+    }
+    NOCT_REQUIRE(indices != NULL);
+    for (size_t i = 0; i < 3 * nvertices; ++i) {
+        if (!isfinite(vertices[i]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, (long)(i / 3), 0,
+                             "vertex %zu: coordinate %c is %g", i / 3,
+                             "xyz"[i % 3], vertices[i]);
+        if (fabs(vertices[i]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)(i / 3), 0,
+                             "vertex %zu: coordinate %c is %g, beyond the limit "
+                             "of %g", i / 3, "xyz"[i % 3], vertices[i],
+                             NOCT_MAX_COORDINATE);
+    }
+    for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
+        for (uint32_t c = 0; c < sizes[p]; ++c)
+            if (indices[base + c] >= nvertices)
+                return noct_fail(err, NOCT_ERR_INDEX, (long)p, 0,
+                                 "polygon %zu: vertex index %u out of range "
+                                 "(%zu vertices)", p, indices[base + c],
+                                 nvertices);
+        noctStatus st = check_polygon(vertices, &indices[base], sizes[p], p, err);
+        if (st != NOCT_OK)
+            return st;
+    }
+    noctStatus st = check_closed(sizes, npolygons, indices, nidx, err);
+    if (st != NOCT_OK)
+        return st;
+
+    noctMesh *m = calloc(1, sizeof *m);
+    if (m == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    m->nv = nvertices;
+    m->nt = ntri;
+    m->v = malloc(3 * nvertices * sizeof *m->v);
+    m->tri = malloc(3 * ntri * sizeof *m->tri);
+    if (m->v == NULL || m->tri == NULL) {
+        noctMeshDestroy(m);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    memcpy(m->v, vertices, 3 * nvertices * sizeof *m->v);
+    for (int k = 0; k < 3; ++k) {
+        m->lo[k] = INFINITY;
+        m->hi[k] = -INFINITY;
+    }
+    for (size_t i = 0; i < nvertices; ++i)
+        for (int k = 0; k < 3; ++k) {
+            m->lo[k] = fmin(m->lo[k], m->v[3 * i + k]);
+            m->hi[k] = fmax(m->hi[k], m->v[3 * i + k]);
+        }
+    /* Fan triangulation, and the signed volume to fix the orientation. */
+    double volume = 0;
+    size_t t = 0;
+    for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
+        for (uint32_t c = 1; c + 1 < sizes[p]; ++c, ++t) {
+            uint32_t *tri = &m->tri[3 * t];
+            tri[0] = indices[base];
+            tri[1] = indices[base + c];
+            tri[2] = indices[base + c + 1];
+            double a[3], b[3], cr[3];
+            sub3(&m->v[3 * tri[1]], &m->v[3 * tri[0]], a);
+            sub3(&m->v[3 * tri[2]], &m->v[3 * tri[0]], b);
+            cross3(a, b, cr);
+            double rel[3];
+            sub3(&m->v[3 * tri[0]], m->lo, rel);
+            volume += dot3(rel, cr);
+        }
+    }
+    double ext[3];
+    sub3(m->hi, m->lo, ext);
+    double scale = ext[0] * ext[1] * ext[2];
+    if (!(fabs(volume) > 1e-12 * scale))
+        st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                       "the mesh encloses no volume");
+    if (st == NOCT_OK && volume < 0) /* inside out: flip every triangle */
+        for (size_t i = 0; i < ntri; ++i) {
+            uint32_t tmp = m->tri[3 * i + 1];
+            m->tri[3 * i + 1] = m->tri[3 * i + 2];
+            m->tri[3 * i + 2] = tmp;
+        }
+    if (st == NOCT_OK)
+        st = build_bvh(m, err);
+    if (st == NOCT_OK)
+        st = compute_convexity(m, err);
+    if (st == NOCT_OK)
+        st = compute_hull(m, err);
+    if (st != NOCT_OK) {
+        noctMeshDestroy(m);
+        return st;
+    }
+    *mesh = m;
+    return NOCT_OK;
+}
+
+static bool positive_finite(double x)
+{
+    return isfinite(x) && x > 0;
+}
+
+noctStatus noctMeshCreateBox(double hx, double hy, double hz, noctMesh **mesh,
+                             noctError *err)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    *mesh = NULL;
+    if (!isfinite(hx) || !isfinite(hy) || !isfinite(hz))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                         "box half-extents (%g, %g, %g) are not finite", hx, hy, hz);
+    if (!positive_finite(hx) || !positive_finite(hy) || !positive_finite(hz))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "box half-extents (%g, %g, %g) must be positive", hx, hy, hz);
+    double v[24];
+    for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
+        v[3 * i] = (i & 4) ? hx : -hx;
+        v[3 * i + 1] = (i & 2) ? hy : -hy;
+        v[3 * i + 2] = (i & 1) ? hz : -hz;
+    }
+    static const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
+    static const uint32_t quads[24] = {
+        0, 1, 3, 2, /* -x */ 4, 6, 7, 5, /* +x */
+        0, 4, 5, 1, /* -y */ 2, 3, 7, 6, /* +y */
+        0, 2, 6, 4, /* -z */ 1, 5, 7, 3, /* +z */
+    };
+    return noctMeshCreate(v, 8, sizes, 6, quads, mesh, err);
+}
+
+noctStatus noctMeshCreateOrientedBox(const double half[3],
+                                     const double rotation[9], noctMesh **mesh,
+                                     noctError *err)
+{
+    NOCT_REQUIRE(half != NULL && rotation != NULL && mesh != NULL);
+    *mesh = NULL;
+    for (int i = 0; i < 9; ++i)
+        if (!isfinite(rotation[i]) || (i < 3 && !isfinite(half[i])))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "oriented box: a half-extent or rotation entry "
+                             "is not finite");
+    if (!positive_finite(half[0]) || !positive_finite(half[1]) ||
+        !positive_finite(half[2]))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "oriented box: half-extents (%g, %g, %g) must be "
+                         "positive", half[0], half[1], half[2]);
+    /* R^T R = I and det R = +1, within 1e-9. */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double s = 0;
+            for (int k = 0; k < 3; ++k)
+                s += rotation[3 * k + i] * rotation[3 * k + j];
+            if (fabs(s - (i == j)) > 1e-9)
+                return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                                 "oriented box: the rotation is not "
+                                 "orthonormal");
+        }
+    const double *r = rotation;
+    double det = r[0] * (r[4] * r[8] - r[5] * r[7]) -
+                 r[1] * (r[3] * r[8] - r[5] * r[6]) +
+                 r[2] * (r[3] * r[7] - r[4] * r[6]);
+    if (det < 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "oriented box: the rotation is a reflection");
+    double v[24];
+    for (int i = 0; i < 8; ++i) {
+        double local[3] = {(i & 4) ? half[0] : -half[0],
+                           (i & 2) ? half[1] : -half[1],
+                           (i & 1) ? half[2] : -half[2]};
+        for (int k = 0; k < 3; ++k)
+            v[3 * i + k] = r[3 * k] * local[0] + r[3 * k + 1] * local[1] +
+                           r[3 * k + 2] * local[2];
+    }
+    static const uint32_t sizes[12] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
+    static const uint32_t tris[36] = {
+        0, 1, 3, 0, 3, 2, /* -x */ 4, 6, 7, 4, 7, 5, /* +x */
+        0, 4, 5, 0, 5, 1, /* -y */ 2, 3, 7, 2, 7, 6, /* +y */
+        0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
+    };
+    return noctMeshCreate(v, 8, sizes, 12, tris, mesh, err);
+}

@@ -1,0 +1,47 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: the layout of a mesh, shared by mesh.c, meshio.c and
+ * narrowphase.c. */
+#ifndef NOCT_LIB_MESH_INTERNAL_H
+#define NOCT_LIB_MESH_INTERNAL_H
+
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/mesh.h>
+#include <noctree/status.h>
+
+/* A node of the bounding-volume hierarchy over a mesh's triangles. A leaf
+ * (count > 0) holds triangles [first, first + count) of the mesh's
+ * triangle array, which is stored in BVH order; an inner node's children
+ * are nodes[first] and nodes[first + 1]. */
+typedef struct bvh_node {
+    double lo[3], hi[3];
+    uint32_t first;
+    uint32_t count;
+} bvh_node;
+
+struct noctMesh {
+    size_t nv;
+    double *v;          /* 3 * nv coordinates */
+    size_t nt;
+    uint32_t *tri;      /* 3 * nt vertex indices, outward, BVH order */
+    double lo[3], hi[3];
+    bool convex;
+    size_t nhull;
+    uint32_t *hull;     /* vertices of the convex hull */
+    double centre[3];   /* mean of the hull vertices */
+    size_t nnodes;
+    bvh_node *nodes;    /* nodes[0] is the root */
+};
+
+/* Fill err (if not NULL) and return status. */
+noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
+                     const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
+
+#endif /* NOCT_LIB_MESH_INTERNAL_H */

@@ -1,0 +1,455 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The narrowphase: the report's hierarchy of partial decision mechanisms.
+ *
+ * Exact level. Two closed triangle meshes share a point iff a triangle of
+ * one meets a triangle of the other, or one solid contains the other (then
+ * it contains any vertex of it). Two closed triangles meet iff an edge of
+ * one meets the other triangle. So: find the triangle pairs whose placed
+ * boxes overlap through the two BVHs, test each pair's six edges against
+ * the opposite triangle, and if no boundaries meet, test one vertex of each
+ * for containment in the other. Every decision is a sign of orient3d or
+ * orient2d, exact by predicates.c.
+ *
+ * Placement. A placed vertex is fl(v + t). Rounding is monotone, so the
+ * placed box of any vertex set is exactly [fl(lo + t), fl(hi + t)]: box
+ * tests on placed boxes are exact and conservative without padding.
+ */
+#include "config.h"
+
+#include <ccd/ccd.h>
+#include <math.h>
+#include <string.h>
+
+#include <noctree/narrowphase.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+#include "predicates.h"
+
+typedef struct placed {
+    const noctMesh *m;
+    double t[3];
+} placed;
+
+static void place(const placed *o, uint32_t vi, double out[3])
+{
+    const double *v = &o->m->v[3 * vi];
+    out[0] = v[0] + o->t[0];
+    out[1] = v[1] + o->t[1];
+    out[2] = v[2] + o->t[2];
+}
+
+/* Closed boxes [alo, ahi] + ta and [blo, bhi] + tb overlap. */
+static bool boxes_overlap(const double alo[3], const double ahi[3],
+                          const double ta[3], const double blo[3],
+                          const double bhi[3], const double tb[3])
+{
+    for (int k = 0; k < 3; ++k)
+        if (ahi[k] + ta[k] < blo[k] + tb[k] || bhi[k] + tb[k] < alo[k] + ta[k])
+            return false;
+    return true;
+}
+
+/* ---- exact primitives ----------------------------------------------------- */
+
+typedef struct exact_ctx {
+    uint64_t *fallbacks;
+} exact_ctx;
+
+static int o3(const exact_ctx *x, const double a[3], const double b[3],
+              const double c[3], const double d[3])
+{
+    return noct_orient3d(a, b, c, d, x->fallbacks);
+}
+
+/* orient2d of the projections dropping axis k. */
+static int o2(const exact_ctx *x, int k, const double a[3], const double b[3],
+              const double c[3])
+{
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
+    return noct_orient2d(pa, pb, pc, x->fallbacks);
+}
+
+/* p lies in the closed box of segment ab on the two axes other than k;
+ * with p collinear with a and b in that projection this means p is on the
+ * projected segment. */
+static bool within_2d(int k, const double p[3], const double a[3], const double b[3])
+{
+    for (int s = 1; s <= 2; ++s) {
+        int i = (k + s) % 3;
+        if (p[i] < fmin(a[i], b[i]) || p[i] > fmax(a[i], b[i]))
+            return false;
+    }
+    return true;
+}
+
+/* Closed segments pq and ab meet, in the projection dropping axis k. */
+static bool seg_seg_2d(const exact_ctx *x, int k, const double p[3],
+                       const double q[3], const double a[3], const double b[3])
+{
+    int d1 = o2(x, k, p, q, a), d2 = o2(x, k, p, q, b);
+    int d3 = o2(x, k, a, b, p), d4 = o2(x, k, a, b, q);
+    if (d1 * d2 < 0 && d3 * d4 < 0)
+        return true;
+    return (d1 == 0 && within_2d(k, a, p, q)) || (d2 == 0 && within_2d(k, b, p, q)) ||
+           (d3 == 0 && within_2d(k, p, a, b)) || (d4 == 0 && within_2d(k, q, a, b));
+}
+
+/* Closed segments pq and ab meet, in 3D. */
+static bool seg_seg_3d(const exact_ctx *x, const double p[3], const double q[3],
+                       const double a[3], const double b[3])
+{
+    if (o3(x, p, q, a, b) != 0)
+        return false; /* not coplanar */
+    /* A projection in which the four points are not collinear is one-to-one
+     * on their plane. */
+    for (int k = 0; k < 3; ++k)
+        if (o2(x, k, p, q, a) || o2(x, k, p, q, b) || o2(x, k, a, b, p) ||
+            o2(x, k, a, b, q))
+            return seg_seg_2d(x, k, p, q, a, b);
+    /* All four collinear: compare intervals along an axis that separates
+     * them, or any axis if they all coincide. */
+    int axis = 0;
+    double best = -1;
+    for (int k = 0; k < 3; ++k) {
+        double lo = fmin(fmin(p[k], q[k]), fmin(a[k], b[k]));
+        double hi = fmax(fmax(p[k], q[k]), fmax(a[k], b[k]));
+        if (hi - lo > best) {
+            best = hi - lo;
+            axis = k;
+        }
+    }
+    return fmax(fmin(p[axis], q[axis]), fmin(a[axis], b[axis])) <=
+           fmin(fmax(p[axis], q[axis]), fmax(a[axis], b[axis]));
+}
+
+/* Closed segment pq meets closed triangle abc (any of them degenerate). */
+static bool seg_tri(const exact_ctx *x, const double p[3], const double q[3],
+                    const double a[3], const double b[3], const double c[3])
+{
+    int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
+    if (s1 * s2 > 0)
+        return false;
+    if (s1 != 0 || s2 != 0) {
+        /* pq crosses or touches the plane in one point: is it inside? */
+        int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c), e3 = o3(x, p, q, c, a);
+        return (e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0);
+    }
+    /* Coplanar (or the triangle is degenerate): project on a plane where
+     * the triangle keeps its area. */
+    for (int k = 0; k < 3; ++k) {
+        int area = o2(x, k, a, b, c);
+        if (area == 0)
+            continue;
+        int i1 = o2(x, k, a, b, p), i2 = o2(x, k, b, c, p), i3 = o2(x, k, c, a, p);
+        if (i1 * area >= 0 && i2 * area >= 0 && i3 * area >= 0)
+            return true; /* p inside */
+        return seg_seg_2d(x, k, p, q, a, b) || seg_seg_2d(x, k, p, q, b, c) ||
+               seg_seg_2d(x, k, p, q, c, a);
+    }
+    /* The triangle has collapsed to a segment or a point. */
+    return seg_seg_3d(x, p, q, a, b) || seg_seg_3d(x, p, q, b, c) ||
+           seg_seg_3d(x, p, q, c, a);
+}
+
+static bool tri_tri(const exact_ctx *x, double a[3][3], double b[3][3])
+{
+    for (int e = 0; e < 3; ++e)
+        if (seg_tri(x, a[e], a[(e + 1) % 3], b[0], b[1], b[2]) ||
+            seg_tri(x, b[e], b[(e + 1) % 3], a[0], a[1], a[2]))
+            return true;
+    return false;
+}
+
+/* ---- BVH pair traversal ----------------------------------------------------- */
+
+#define PAIR_STACK 256
+
+static bool boundaries_meet(const placed *A, const placed *B, const exact_ctx *x,
+                            noctNarrowStats *st)
+{
+    struct { uint32_t a, b; } stack[PAIR_STACK];
+    size_t top = 0;
+    stack[top].a = 0;
+    stack[top++].b = 0;
+    while (top > 0) {
+        --top;
+        const bvh_node *na = &A->m->nodes[stack[top].a];
+        const bvh_node *nb = &B->m->nodes[stack[top].b];
+        if (st)
+            ++st->bvh_pairs;
+        if (!boxes_overlap(na->lo, na->hi, A->t, nb->lo, nb->hi, B->t))
+            continue;
+        if (na->count > 0 && nb->count > 0) {
+            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                double ta[3][3];
+                for (int c = 0; c < 3; ++c)
+                    place(A, A->m->tri[3 * i + c], ta[c]);
+                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
+                    double tb[3][3];
+                    for (int c = 0; c < 3; ++c)
+                        place(B, B->m->tri[3 * j + c], tb[c]);
+                    if (st)
+                        ++st->triangle_pairs;
+                    if (tri_tri(x, ta, tb))
+                        return true;
+                }
+            }
+            continue;
+        }
+        /* Descend into the node with the larger box (or the inner one). */
+        double sa = 0, sb = 0;
+        for (int k = 0; k < 3; ++k) {
+            sa += na->hi[k] - na->lo[k];
+            sb += nb->hi[k] - nb->lo[k];
+        }
+        bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
+        uint32_t ia = stack[top].a, ib = stack[top].b;
+        if (top + 2 > PAIR_STACK)
+            return true; /* unreachable for meshes within the size limits */
+        if (split_a) {
+            stack[top].a = na->first;     stack[top++].b = ib;
+            stack[top].a = na->first + 1; stack[top++].b = ib;
+        } else {
+            stack[top].a = ia; stack[top++].b = nb->first;
+            stack[top].a = ia; stack[top++].b = nb->first + 1;
+        }
+    }
+    return false;
+}
+
+/* ---- containment ---------------------------------------------------------- */
+
+/*
+ * Is point p (not on B's boundary) inside the solid B? Count the crossings
+ * of B's surface by a segment from p to a point q outside B's box. If the
+ * segment passes exactly through an edge or vertex of the surface, or q
+ * lies in a triangle's plane, the count would be ambiguous: those cases are
+ * detected exactly and another q is tried. Degenerate (collapsed) placed
+ * triangles enclose nothing and are skipped.
+ */
+static noctStatus contains(const placed *B, const double p[3], const exact_ctx *x,
+                           bool *inside)
+{
+    const noctMesh *m = B->m;
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = m->lo[k] + B->t[k];
+        hi[k] = m->hi[k] + B->t[k];
+    }
+    uint64_t seed = 0x9e3779b97f4a7c15u;
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        double q[3];
+        for (int k = 0; k < 3; ++k) {
+            seed = seed * 6364136223846793005u + 1442695040888963407u;
+            double u = (double)(seed >> 11) * 0x1p-53; /* [0, 1) */
+            double ext = hi[k] - lo[k] + fabs(p[k] - lo[k]) + 1;
+            q[k] = k == 0 ? hi[0] + ext * (1 + u) : lo[k] + (hi[k] - lo[k]) * u +
+                   (u - 0.5) * ext;
+        }
+        bool ambiguous = false;
+        unsigned crossings = 0;
+        for (size_t t = 0; t < m->nt && !ambiguous; ++t) {
+            double a[3], b[3], c[3];
+            place(B, m->tri[3 * t], a);
+            place(B, m->tri[3 * t + 1], b);
+            place(B, m->tri[3 * t + 2], c);
+            int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
+            if (s1 == 0 && s2 == 0) {
+                bool flat = true;
+                for (int k = 0; k < 3 && flat; ++k)
+                    flat = o2(x, k, a, b, c) == 0;
+                ambiguous = !flat;
+                continue;
+            }
+            if (s2 == 0) {
+                ambiguous = true;
+                continue;
+            }
+            if (s1 == 0 || s1 == s2)
+                continue; /* p is on the plane but off the triangle */
+            int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c), e3 = o3(x, p, q, c, a);
+            bool pos = e1 >= 0 && e2 >= 0 && e3 >= 0;
+            bool neg = e1 <= 0 && e2 <= 0 && e3 <= 0;
+            if (pos || neg) {
+                if (e1 == 0 || e2 == 0 || e3 == 0)
+                    ambiguous = true; /* through an edge or a vertex */
+                else
+                    ++crossings;
+            }
+        }
+        if (!ambiguous) {
+            *inside = crossings % 2 == 1;
+            return NOCT_OK;
+        }
+    }
+    return NOCT_ERR_NUMERIC;
+}
+
+static bool box_inside(const placed *A, const placed *B)
+{
+    for (int k = 0; k < 3; ++k)
+        if (A->m->lo[k] + A->t[k] < B->m->lo[k] + B->t[k] ||
+            A->m->hi[k] + A->t[k] > B->m->hi[k] + B->t[k])
+            return false;
+    return true;
+}
+
+static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
+                                noctNarrowStats *st)
+{
+    exact_ctx x = {st ? &st->exact_fallbacks : NULL};
+    if (st)
+        ++st->exact_tests;
+    if (boundaries_meet(A, B, &x, st)) {
+        *hit = true;
+        return NOCT_OK;
+    }
+    const placed *pair[2][2] = {{A, B}, {B, A}};
+    for (int i = 0; i < 2; ++i) {
+        const placed *in = pair[i][0], *out = pair[i][1];
+        if (!box_inside(in, out))
+            continue;
+        double p[3];
+        place(in, in->m->tri[0], p);
+        if (st)
+            ++st->containment_tests;
+        bool inside;
+        noctStatus s = contains(out, p, &x, &inside);
+        if (s != NOCT_OK)
+            return s;
+        if (inside) {
+            *hit = true;
+            return NOCT_OK;
+        }
+    }
+    *hit = false;
+    return NOCT_OK;
+}
+
+/* ---- convex level: libccd GJK on the hulls ------------------------------- */
+
+static void ccd_support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
+{
+    const placed *o = obj;
+    const noctMesh *m = o->m;
+    const double d[3] = {ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir)};
+    size_t best = 0;
+    double best_dot = -INFINITY;
+    for (size_t i = 0; i < m->nhull; ++i) {
+        const double *v = &m->v[3 * m->hull[i]];
+        double dot = v[0] * d[0] + v[1] * d[1] + v[2] * d[2];
+        if (dot > best_dot) {
+            best_dot = dot;
+            best = i;
+        }
+    }
+    double p[3];
+    place(o, m->hull[best], p);
+    ccdVec3Set(out, p[0], p[1], p[2]);
+}
+
+static void ccd_centre(const void *obj, ccd_vec3_t *out)
+{
+    const placed *o = obj;
+    ccdVec3Set(out, o->m->centre[0] + o->t[0], o->m->centre[1] + o->t[1],
+               o->m->centre[2] + o->t[2]);
+}
+
+/* GJK's iterations depend on the order of its two objects, so near
+ * contact its answer could too: decide every pair in one canonical order
+ * (by translation, then by box and size). */
+static bool canonical_first(const placed *A, const placed *B)
+{
+    const double ka[10] = {A->t[0], A->t[1], A->t[2], A->m->lo[0], A->m->lo[1],
+                           A->m->lo[2], A->m->hi[0], A->m->hi[1], A->m->hi[2],
+                           (double)A->m->nv};
+    const double kb[10] = {B->t[0], B->t[1], B->t[2], B->m->lo[0], B->m->lo[1],
+                           B->m->lo[2], B->m->hi[0], B->m->hi[1], B->m->hi[2],
+                           (double)B->m->nv};
+    for (int i = 0; i < 10; ++i)
+        if (ka[i] != kb[i])
+            return ka[i] < kb[i];
+    return true;
+}
+
+static noctStatus convex_collide(const placed *A, const placed *B, bool *hit,
+                                 noctNarrowStats *st)
+{
+    if (!canonical_first(A, B)) {
+        const placed *t = A;
+        A = B;
+        B = t;
+    }
+    ccd_t ccd;
+    CCD_INIT(&ccd);
+    ccd.support1 = ccd_support;
+    ccd.support2 = ccd_support;
+    ccd.center1 = ccd_centre;
+    ccd.center2 = ccd_centre;
+    ccd.max_iterations = 500;
+    ccd.epa_tolerance = 1e-12;
+    ccd.mpr_tolerance = 1e-12;
+    ccd.dist_tolerance = 1e-12;
+    if (st)
+        ++st->convex_tests;
+    /* Work relative to A's translation: smaller numbers for libccd, and
+     * the same geometry up to its tolerance. */
+    placed ra = {A->m, {0, 0, 0}};
+    placed rb = {B->m, {B->t[0] - A->t[0], B->t[1] - A->t[1], B->t[2] - A->t[2]}};
+    int r = ccdGJKIntersect(&ra, &rb, &ccd);
+    if (r != 0 && r != 1)
+        return NOCT_ERR_NUMERIC;
+    *hit = r == 1;
+    return NOCT_OK;
+}
+
+/* ---- the entry point ------------------------------------------------------- */
+
+const char *noctAccuracyName(noctAccuracy accuracy)
+{
+    switch (accuracy) {
+    case NOCT_ACCURACY_BOX: return "box";
+    case NOCT_ACCURACY_CONVEX: return "convex";
+    case NOCT_ACCURACY_EXACT: return "exact";
+    }
+    return "unknown";
+}
+
+noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
+                       const double tb[3], noctAccuracy accuracy, bool *colliding,
+                       noctNarrowStats *stats)
+{
+    NOCT_REQUIRE(a != NULL && ta != NULL && b != NULL && tb != NULL);
+    NOCT_REQUIRE(colliding != NULL);
+    if (accuracy != NOCT_ACCURACY_BOX && accuracy != NOCT_ACCURACY_CONVEX &&
+        accuracy != NOCT_ACCURACY_EXACT)
+        return NOCT_ERR_INVALID;
+    placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
+    for (int k = 0; k < 3; ++k) {
+        if (!isfinite(ta[k]) || !isfinite(tb[k]))
+            return NOCT_ERR_NONFINITE;
+        if (fabs(ta[k]) > NOCT_MAX_COORDINATE || fabs(tb[k]) > NOCT_MAX_COORDINATE)
+            return NOCT_ERR_TOO_LARGE;
+    }
+    if (stats)
+        ++stats->box_tests;
+    if (!boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb)) {
+        if (stats)
+            ++stats->box_rejects;
+        *colliding = false;
+        return NOCT_OK;
+    }
+    switch (accuracy) {
+    case NOCT_ACCURACY_BOX:
+        *colliding = true;
+        return NOCT_OK;
+    case NOCT_ACCURACY_CONVEX:
+        return convex_collide(&A, &B, colliding, stats);
+    case NOCT_ACCURACY_EXACT:
+        return exact_collide(&A, &B, colliding, stats);
+    }
+    return NOCT_ERR_INVALID;
+}

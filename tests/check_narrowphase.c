@@ -1,0 +1,1092 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Check suite for meshes and the narrowphase (mesh.h, narrowphase.h).
+ *
+ * Oracles, independent of the library:
+ *  - hard cases built from exact coordinates whose answer is known by
+ *    construction (touching faces, edges crossing at a point, a vertex on a
+ *    face, coplanar faces, containment, tilted boxes resting on a face with
+ *    the gap read off the placed vertices);
+ *  - the separating-axis theorem in exact integer arithmetic, for random
+ *    tetrahedra and boxes with small integer coordinates (where touching is
+ *    common), and for random non-convex star-shaped meshes through their
+ *    decomposition into cone tetrahedra.
+ * Each hard case is also checked with the objects swapped, both moved by
+ * exact offsets, and the mesh's vertices and polygons listed in another
+ * order; and at every level for the documented one-sided errors.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <check.h>
+#include <limits.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
+
+#include "testutil.h"
+
+/* ---- building meshes ------------------------------------------------------- */
+
+typedef struct poly_list {
+    double v[64 * 3];
+    size_t nv;
+    uint32_t sizes[64];
+    uint32_t idx[256];
+    size_t np, ni;
+} poly_list;
+
+static void pl_vertex(poly_list *p, double x, double y, double z)
+{
+    p->v[3 * p->nv] = x;
+    p->v[3 * p->nv + 1] = y;
+    p->v[3 * p->nv + 2] = z;
+    p->nv++;
+}
+
+static void pl_poly(poly_list *p, int n, const uint32_t *c)
+{
+    p->sizes[p->np++] = (uint32_t)n;
+    for (int i = 0; i < n; ++i)
+        p->idx[p->ni++] = c[i];
+}
+
+/* The list with vertices renumbered by a random permutation, polygons in a
+ * random order, each polygon starting at a random corner if 'rotate'. */
+static poly_list pl_shuffle(const poly_list *p, uint64_t *rng, bool rotate)
+{
+    poly_list q = {0};
+    uint32_t perm[64], order[64], start[64];
+    for (size_t i = 0; i < p->nv; ++i)
+        perm[i] = (uint32_t)i;
+    for (size_t i = p->nv; i > 1; --i) {
+        size_t j = test_rand_below(rng, i);
+        uint32_t t = perm[i - 1]; perm[i - 1] = perm[j]; perm[j] = t;
+    }
+    q.nv = p->nv;
+    for (size_t i = 0; i < p->nv; ++i)
+        memcpy(&q.v[3 * perm[i]], &p->v[3 * i], 3 * sizeof(double));
+    size_t base = 0;
+    for (size_t i = 0; i < p->np; ++i) {
+        order[i] = (uint32_t)i;
+        start[i] = (uint32_t)base;
+        base += p->sizes[i];
+    }
+    for (size_t i = p->np; i > 1; --i) {
+        size_t j = test_rand_below(rng, i);
+        uint32_t t = order[i - 1]; order[i - 1] = order[j]; order[j] = t;
+    }
+    for (size_t k = 0; k < p->np; ++k) {
+        uint32_t pi = order[k], n = p->sizes[pi], c[16];
+        size_t r = rotate ? test_rand_below(rng, n) : 0;
+        for (uint32_t i = 0; i < n; ++i)
+            c[i] = perm[p->idx[start[pi] + (i + r) % n]];
+        pl_poly(&q, (int)n, c);
+    }
+    return q;
+}
+
+static noctMesh *pl_mesh(const poly_list *p)
+{
+    noctMesh *m = NULL;
+    noctError err;
+    noctStatus st = noctMeshCreate(p->v, p->nv, p->sizes, p->np, p->idx, &m, &err);
+    ck_assert_msg(st == NOCT_OK, "mesh: %s", st == NOCT_OK ? "" : err.message);
+    return m;
+}
+
+/* Axis-aligned box [lo, hi] as 6 quads. */
+static poly_list pl_box(const double lo[3], const double hi[3])
+{
+    poly_list p = {0};
+    for (int i = 0; i < 8; ++i)
+        pl_vertex(&p, (i & 4) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
+                  (i & 1) ? hi[2] : lo[2]);
+    static const uint32_t q[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                     {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (int f = 0; f < 6; ++f)
+        pl_poly(&p, 4, q[f]);
+    return p;
+}
+
+/* Tetrahedron a b c d, oriented outward whatever the order given. */
+static poly_list pl_tetra(const double pts[4][3])
+{
+    poly_list p = {0};
+    for (int i = 0; i < 4; ++i)
+        pl_vertex(&p, pts[i][0], pts[i][1], pts[i][2]);
+    static const uint32_t f[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    for (int i = 0; i < 4; ++i)
+        pl_poly(&p, 3, f[i]); /* the library fixes an inside-out result */
+    return p;
+}
+
+/* ---- checking a pair at every level ------------------------------------------ */
+
+static bool collide(const noctMesh *a, const double ta[3], const noctMesh *b,
+                    const double tb[3], noctAccuracy level)
+{
+    bool hit = false;
+    noctStatus st = noctCollide(a, ta, b, tb, level, &hit, NULL);
+    ck_assert_msg(st == NOCT_OK, "noctCollide: %s", noctStatusString(st));
+    return hit;
+}
+
+/* The exact answer must be want, both ways round; box must not miss it;
+ * the convex level must not miss it unless the contact is a mere touch
+ * (deep says whether it is more). */
+static void expect_pair(const noctMesh *a, const double ta[3], const noctMesh *b,
+                        const double tb[3], bool want, bool deep)
+{
+    bool ab = collide(a, ta, b, tb, NOCT_ACCURACY_EXACT);
+    bool ba = collide(b, tb, a, ta, NOCT_ACCURACY_EXACT);
+    ck_assert_msg(ab == want && ba == want, "exact: got %d/%d, want %d", ab, ba,
+                  want);
+    bool box = collide(a, ta, b, tb, NOCT_ACCURACY_BOX);
+    bool cvx = collide(a, ta, b, tb, NOCT_ACCURACY_CONVEX);
+    ck_assert_int_eq(cvx, collide(b, tb, a, ta, NOCT_ACCURACY_CONVEX));
+    if (want) {
+        ck_assert_msg(box, "box level missed a collision");
+        if (deep)
+            ck_assert_msg(cvx, "convex level missed a deep collision");
+    }
+}
+
+/* Moving both objects by off changes nothing exactly iff every placed
+ * coordinate fl(v + t) gains off without rounding and t + off is exact. */
+static bool offset_exact(const poly_list *p, const double t[3], double off)
+{
+    for (int k = 0; k < 3; ++k) {
+        double to = t[k] + off;
+        if (to - off != t[k])
+            return false;
+        for (size_t i = 0; i < p->nv; ++i) {
+            double placed = p->v[3 * i + k] + t[k];
+            if (placed + off != p->v[3 * i + k] + to || (placed + off) - off != placed)
+                return false;
+        }
+    }
+    return true;
+}
+
+/* A hard case: meshes from poly lists, translations, the known answer.
+ * Checked as given, swapped, moved by every offset that is exact for the
+ * case (at least one must be), and shuffled. */
+static void hard_case(const poly_list *pa, const double ta[3], const poly_list *pb,
+                      const double tb[3], bool want, bool deep, bool dyadic)
+{
+    noctMesh *a = pl_mesh(pa), *b = pl_mesh(pb);
+    expect_pair(a, ta, b, tb, want, deep);
+    if (dyadic) {
+        static const double offsets[] = {0x1p40, 1e6, 1 << 20, 1024, -3, 1, 0x1p-8,
+                                         0x1p-30};
+        int applied = 0;
+        for (size_t i = 0; i < sizeof offsets / sizeof *offsets; ++i) {
+            double off = offsets[i];
+            if (!offset_exact(pa, ta, off) || !offset_exact(pb, tb, off))
+                continue;
+            double oa[3] = {ta[0] + off, ta[1] + off, ta[2] + off};
+            double ob[3] = {tb[0] + off, tb[1] + off, tb[2] + off};
+            expect_pair(a, oa, b, ob, want, deep);
+            ++applied;
+        }
+        ck_assert_msg(applied > 0, "no exact offset for this case");
+    }
+    uint64_t rng = 4242;
+    for (int s = 0; s < 4; ++s) {
+        poly_list qa = pl_shuffle(pa, &rng, true), qb = pl_shuffle(pb, &rng, true);
+        noctMesh *sa = pl_mesh(&qa), *sb = pl_mesh(&qb);
+        expect_pair(sa, ta, sb, tb, want, deep);
+        noctMeshDestroy(sa);
+        noctMeshDestroy(sb);
+    }
+    noctMeshDestroy(a);
+    noctMeshDestroy(b);
+}
+
+static const double ORIGIN[3] = {0, 0, 0};
+
+/* ---- hard cases -------------------------------------------------------------- */
+
+START_TEST(faces_exactly_touching)
+{
+    /* Sizes from 1/128 to 1024: unit cube scaled, the second one exactly
+     * one edge length along x (touching), or 2^-40 of it further. */
+    for (int e = -7; e <= 10; e += 1) {
+        double s = ldexp(1, e);
+        double lo[3] = {-s / 2, -s / 2, -s / 2}, hi[3] = {s / 2, s / 2, s / 2};
+        poly_list box = pl_box(lo, hi);
+        double touch[3] = {s, 0, 0}, gap[3] = {s + ldexp(s, -40), 0, 0};
+        double deep[3] = {s / 2, s / 4, 0};
+        hard_case(&box, ORIGIN, &box, touch, true, false, true);
+        hard_case(&box, ORIGIN, &box, gap, false, false, true);
+        hard_case(&box, ORIGIN, &box, deep, true, true, true);
+    }
+}
+END_TEST
+
+START_TEST(edges_crossing_at_a_point)
+{
+    /* A's top edge runs along x at z = 0, B's bottom edge along y at z = 0:
+     * they cross at the origin and touch nowhere else. */
+    const double a[4][3] = {{-1, 0, 0}, {1, 0, 0}, {0, 1, -1}, {0, -1, -1}};
+    const double b[4][3] = {{0, -1, 0}, {0, 1, 0}, {1, 0, 1}, {-1, 0, 1}};
+    poly_list pa = pl_tetra(a), pb = pl_tetra(b);
+    hard_case(&pa, ORIGIN, &pb, ORIGIN, true, false, true);
+    const double up[3] = {0, 0, 0x1p-50}, down[3] = {0, 0, -0x1p-50};
+    hard_case(&pa, ORIGIN, &pb, up, false, false, true);
+    hard_case(&pa, ORIGIN, &pb, down, true, false, true);
+    /* Moved sideways along B's edge the crossing point stays on both. */
+    const double side[3] = {0, 0.5, 0};
+    hard_case(&pa, ORIGIN, &pb, side, true, false, true);
+}
+END_TEST
+
+START_TEST(vertex_exactly_on_face)
+{
+    double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 0.5};
+    poly_list box = pl_box(lo, hi);
+    /* Apex down at (0.25, 0.125, 0.5), exactly on the box's top face. */
+    const double t[4][3] = {{0.25, 0.125, 0.5}, {1.25, 0.125, 1.5},
+                            {-0.75, 1.125, 1.5}, {-0.75, -0.875, 1.5}};
+    poly_list tet = pl_tetra(t);
+    hard_case(&box, ORIGIN, &tet, ORIGIN, true, false, true);
+    const double up[3] = {0, 0, 0x1p-52}, down[3] = {0, 0, -0x1p-52};
+    hard_case(&box, ORIGIN, &tet, up, false, false, true);
+    hard_case(&box, ORIGIN, &tet, down, true, false, true);
+    /* On the face's edge and on its corner. */
+    const double to_edge[3] = {0.75, 0, 0}, to_corner[3] = {0.75, 0.875, 0};
+    hard_case(&box, ORIGIN, &tet, to_edge, true, false, true);
+    hard_case(&box, ORIGIN, &tet, to_corner, true, false, true);
+    const double beyond[3] = {0.75 + 0x1p-50, 0.875, 0};
+    hard_case(&box, ORIGIN, &tet, beyond, false, false, true);
+}
+END_TEST
+
+START_TEST(coplanar_overlapping_faces)
+{
+    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    poly_list box = pl_box(lo, hi);
+    /* Stacked, sharing part of the z = 1 plane; and side by side sharing
+     * only an edge; and only a corner. */
+    const double stacked[3] = {0.5, 0.25, 1}, edge[3] = {1, 0, 1},
+                 corner[3] = {1, 1, 1}, apart[3] = {1, 1, 1 + 0x1p-52};
+    hard_case(&box, ORIGIN, &box, stacked, true, false, true);
+    hard_case(&box, ORIGIN, &box, edge, true, false, true);
+    hard_case(&box, ORIGIN, &box, corner, true, false, true);
+    hard_case(&box, ORIGIN, &box, apart, false, false, true);
+    /* Coplanar triangles of two tetrahedra in z = 0 overlapping. */
+    const double a[4][3] = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -2}};
+    const double b[4][3] = {{1, 1, 0}, {5, 1, 0}, {1, 5, 0}, {2, 2, 3}};
+    poly_list pa = pl_tetra(a), pb = pl_tetra(b);
+    hard_case(&pa, ORIGIN, &pb, ORIGIN, true, false, true);
+    const double away[3] = {3, 3, 0};
+    hard_case(&pa, ORIGIN, &pb, away, false, false, true);
+}
+END_TEST
+
+START_TEST(parallel_and_nearly_parallel)
+{
+    /* Parallel edges one ulp apart, and a face tilted by 2^-40 over another. */
+    const double a[4][3] = {{-1, 0, 0}, {1, 0, 0}, {0, 1, -1}, {0, -1, -1}};
+    const double b[4][3] = {{-1, 0, 0x1p-52}, {1, 0, 0x1p-52}, {0, 1, 1}, {0, -1, 1}};
+    poly_list pa = pl_tetra(a), pb = pl_tetra(b);
+    hard_case(&pa, ORIGIN, &pb, ORIGIN, false, false, true);
+    const double b2[4][3] = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 1}, {0, -1, 1}};
+    poly_list pb2 = pl_tetra(b2);
+    hard_case(&pa, ORIGIN, &pb2, ORIGIN, true, false, true);
+    double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 0};
+    poly_list box = pl_box(lo, hi);
+    const double tilt[4][3] = {{-1, -1, 0x1p-40}, {1, -1, 0}, {1, 1, 0x1p-40},
+                               {0, 0, 1}};
+    poly_list pt = pl_tetra(tilt);
+    hard_case(&box, ORIGIN, &pt, ORIGIN, true, false, true); /* touches at (1,-1,0) */
+    const double lift[3] = {0, 0, 0x1p-60};
+    hard_case(&box, ORIGIN, &pt, lift, false, false, true);
+}
+END_TEST
+
+/* A box tilted about two axes rests its lowest corner on an axis-aligned
+ * slab's top face. Its corners are rounded, so the truth is read off the
+ * placed vertices exactly as the library places them: it collides iff its
+ * lowest placed vertex is at or below the face. Gaps of a few ulps,
+ * about 1e-15 of the size, at sizes 0.01 to 1000. */
+START_TEST(tilted_boxes_near_contact)
+{
+    const double c = cos(0.3), s = sin(0.3), c2 = cos(0.7), s2 = sin(0.7);
+    /* R = Rx(0.7) * Ry(0.3) */
+    const double rot[9] = {c, 0, s, s2 * s, c2, -s2 * c, -c2 * s, s2, c2 * c};
+    static const double sizes[] = {0.01, 0.1, 1, 10, 1000};
+    for (size_t si = 0; si < sizeof sizes / sizeof *sizes; ++si) {
+        double h = sizes[si];
+        const double half[3] = {h, 0.5 * h, 0.25 * h};
+        noctMesh *tilted = NULL, *slab = NULL;
+        ck_assert_int_eq(noctMeshCreateOrientedBox(half, rot, &tilted, NULL), NOCT_OK);
+        ck_assert_int_eq(noctMeshCreateBox(8 * h, 8 * h, h, &slab, NULL), NOCT_OK);
+        double lo[3], hi[3];
+        noctMeshBounds(tilted, lo, hi);
+        const double ts[3] = {0, 0, 0}; /* slab top at z = h */
+        for (int k = -3; k <= 3; ++k) {
+            double tb[3] = {0.125 * h, -0.25 * h, h - lo[2] + k * 0x1p-52 * h};
+            /* The oracle: the lowest placed z against the face. */
+            double lowest = INFINITY;
+            double probe_t[3] = {tb[0], tb[1], tb[2]};
+            for (int corner = 0; corner < 8; ++corner) {
+                double loc[3] = {(corner & 4) ? half[0] : -half[0],
+                                 (corner & 2) ? half[1] : -half[1],
+                                 (corner & 1) ? half[2] : -half[2]};
+                double z = rot[6] * loc[0] + rot[7] * loc[1] + rot[8] * loc[2];
+                lowest = fmin(lowest, z + probe_t[2]);
+            }
+            bool want = lowest <= h;
+            expect_pair(slab, ts, tilted, tb, want, false);
+        }
+        noctMeshDestroy(tilted);
+        noctMeshDestroy(slab);
+    }
+}
+END_TEST
+
+START_TEST(tiny_and_far)
+{
+    /* 1e-6-sized boxes (2^-20), touching, apart, overlapping; then unit
+     * boxes at 1e6, 2^40 and 1e15 from the origin. */
+    double e = 0x1p-20;
+    double lo[3] = {-e, -e, -e}, hi[3] = {e, e, e};
+    poly_list tiny = pl_box(lo, hi);
+    const double touch[3] = {2 * e, 0, 0}, apart[3] = {2 * e + 0x1p-70, 0, 0},
+                 over[3] = {e, e, e};
+    hard_case(&tiny, ORIGIN, &tiny, touch, true, false, true);
+    hard_case(&tiny, ORIGIN, &tiny, apart, false, false, true);
+    hard_case(&tiny, ORIGIN, &tiny, over, true, true, true);
+    double ulo[3] = {-0.5, -0.5, -0.5}, uhi[3] = {0.5, 0.5, 0.5};
+    poly_list unit = pl_box(ulo, uhi);
+    static const double far[] = {1e6, 0x1p40, 1e15};
+    for (size_t i = 0; i < 3; ++i) {
+        double ta[3] = {far[i], -far[i], far[i]};
+        double tt[3] = {far[i] + 1, -far[i], far[i]};
+        double tg[3] = {far[i] + 1 + 2 * 0x1p-52 * far[i], -far[i], far[i]};
+        hard_case(&unit, ta, &unit, tt, true, false, false);
+        hard_case(&unit, ta, &unit, tg, false, false, false);
+    }
+}
+END_TEST
+
+START_TEST(containment_and_identity)
+{
+    double blo[3] = {-4, -4, -4}, bhi[3] = {4, 4, 4};
+    double slo[3] = {-1, -1, -1}, shi[3] = {1, 1, 1};
+    poly_list big = pl_box(blo, bhi), small = pl_box(slo, shi);
+    const double inside[3] = {1.5, -2, 0.25};
+    hard_case(&big, ORIGIN, &small, inside, true, true, true);
+    /* Inside and touching the inner wall from within. */
+    const double wall[3] = {3, 0, 0};
+    hard_case(&big, ORIGIN, &small, wall, true, true, true);
+    /* Identical solids in the same place. */
+    hard_case(&small, ORIGIN, &small, ORIGIN, true, true, true);
+    const double t[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    poly_list tet = pl_tetra(t);
+    hard_case(&tet, ORIGIN, &tet, ORIGIN, true, true, true);
+    /* A tetrahedron inside a box, its vertex only one ulp from a wall. */
+    const double in[4][3] = {{-1 + 0x1p-52, 0, 0}, {0, 0.5, 0}, {0, 0, 0.5},
+                             {0, -0.5, -0.5}};
+    poly_list pin = pl_tetra(in);
+    hard_case(&small, ORIGIN, &pin, ORIGIN, true, true, true);
+}
+END_TEST
+
+/* ---- random convex pairs against exact SAT ---------------------------------- */
+
+typedef struct ipoly {
+    long long v[8][3];
+    int nv;
+    int faces[12][3]; /* outward triangles */
+    int nf;
+    int edges[18][2];
+    int ne;
+} ipoly;
+
+static void cross_ll(const long long a[3], const long long b[3], long long out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static void project(const ipoly *p, const long long ax[3], const long long t[3],
+                    long long *lo, long long *hi)
+{
+    *lo = LLONG_MAX;
+    *hi = LLONG_MIN;
+    for (int i = 0; i < p->nv; ++i) {
+        long long d = 0;
+        for (int k = 0; k < 3; ++k)
+            d += ax[k] * (p->v[i][k] + t[k]);
+        if (d < *lo) *lo = d;
+        if (d > *hi) *hi = d;
+    }
+}
+
+/* Closed convex polytopes a + ta and b + tb intersect, by the separating
+ * axis theorem over face normals and edge-pair cross products. */
+static bool sat_intersect(const ipoly *a, const long long ta[3], const ipoly *b,
+                          const long long tb[3])
+{
+    long long axes[64 + 324][3];
+    int na = 0;
+    const ipoly *ps[2] = {a, b};
+    for (int s = 0; s < 2; ++s)
+        for (int f = 0; f < ps[s]->nf; ++f) {
+            const long long *p0 = ps[s]->v[ps[s]->faces[f][0]];
+            const long long *p1 = ps[s]->v[ps[s]->faces[f][1]];
+            const long long *p2 = ps[s]->v[ps[s]->faces[f][2]];
+            long long u[3], w[3];
+            for (int k = 0; k < 3; ++k) {
+                u[k] = p1[k] - p0[k];
+                w[k] = p2[k] - p0[k];
+            }
+            cross_ll(u, w, axes[na++]);
+        }
+    for (int i = 0; i < a->ne; ++i)
+        for (int j = 0; j < b->ne; ++j) {
+            long long u[3], w[3];
+            for (int k = 0; k < 3; ++k) {
+                u[k] = a->v[a->edges[i][1]][k] - a->v[a->edges[i][0]][k];
+                w[k] = b->v[b->edges[j][1]][k] - b->v[b->edges[j][0]][k];
+            }
+            cross_ll(u, w, axes[na++]);
+        }
+    for (int i = 0; i < na; ++i) {
+        if (axes[i][0] == 0 && axes[i][1] == 0 && axes[i][2] == 0)
+            continue;
+        long long alo, ahi, blo, bhi;
+        project(a, axes[i], ta, &alo, &ahi);
+        project(b, axes[i], tb, &blo, &bhi);
+        if (ahi < blo || bhi < alo)
+            return false;
+    }
+    return true;
+}
+
+static void ipoly_tetra(ipoly *p, uint64_t *rng, int range)
+{
+    for (;;) {
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k)
+                p->v[i][k] = (long long)test_rand_below(rng, (size_t)(2 * range + 1)) - range;
+        long long u[3], w[3], n[3], d = 0;
+        for (int k = 0; k < 3; ++k) {
+            u[k] = p->v[1][k] - p->v[0][k];
+            w[k] = p->v[2][k] - p->v[0][k];
+        }
+        cross_ll(u, w, n);
+        for (int k = 0; k < 3; ++k)
+            d += n[k] * (p->v[3][k] - p->v[0][k]);
+        if (d == 0)
+            continue; /* flat: draw again */
+        p->nv = 4;
+        /* Orient so that each face's normal points away from the 4th vertex. */
+        static const int f[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}};
+        static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+        p->nf = 4;
+        for (int i = 0; i < 4; ++i) {
+            p->faces[i][0] = f[i][0];
+            p->faces[i][1] = d > 0 ? f[i][2] : f[i][1];
+            p->faces[i][2] = d > 0 ? f[i][1] : f[i][2];
+        }
+        p->ne = 6;
+        memcpy(p->edges, e, sizeof e);
+        return;
+    }
+}
+
+static noctMesh *ipoly_mesh(const ipoly *p)
+{
+    poly_list l = {0};
+    for (int i = 0; i < p->nv; ++i)
+        pl_vertex(&l, (double)p->v[i][0], (double)p->v[i][1], (double)p->v[i][2]);
+    for (int f = 0; f < p->nf; ++f) {
+        uint32_t c[3] = {(uint32_t)p->faces[f][0], (uint32_t)p->faces[f][1],
+                         (uint32_t)p->faces[f][2]};
+        pl_poly(&l, 3, c);
+    }
+    return pl_mesh(&l);
+}
+
+START_TEST(random_tetrahedra_against_sat)
+{
+    uint64_t rng = 31337 + (uint64_t)_i;
+    int hits = 0, misses = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        ipoly a, b;
+        ipoly_tetra(&a, &rng, 3);
+        ipoly_tetra(&b, &rng, 3);
+        long long ta[3] = {0, 0, 0}, tb[3];
+        for (int k = 0; k < 3; ++k)
+            tb[k] = (long long)test_rand_below(&rng, 7) - 3;
+        bool want = sat_intersect(&a, ta, &b, tb);
+        noctMesh *ma = ipoly_mesh(&a), *mb = ipoly_mesh(&b);
+        double da[3] = {0, 0, 0}, db[3] = {(double)tb[0], (double)tb[1], (double)tb[2]};
+        bool got = collide(ma, da, mb, db, NOCT_ACCURACY_EXACT);
+        if (got != want)
+            ck_abort_msg("trial %d: exact %d, SAT %d", trial, got, want);
+        EXPECT(collide(mb, db, ma, da, NOCT_ACCURACY_EXACT) == want);
+        if (want)
+            EXPECT(collide(ma, da, mb, db, NOCT_ACCURACY_BOX));
+        hits += want;
+        misses += !want;
+        noctMeshDestroy(ma);
+        noctMeshDestroy(mb);
+    }
+    ck_assert_int_gt(hits, 40); /* both outcomes well represented */
+    ck_assert_int_gt(misses, 40);
+}
+END_TEST
+
+/* Tetrahedra whose bases lie in the plane z = 0, one apex below and one
+ * above: they meet exactly where their bases overlap, so every answer goes
+ * through the coplanar branch of the edge-triangle test. */
+START_TEST(random_coplanar_bases_against_sat)
+{
+    uint64_t rng = 4711 + (uint64_t)_i;
+    int hits = 0, misses = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        ipoly t[2];
+        for (int s = 0; s < 2; ++s) {
+            for (;;) {
+                for (int i = 0; i < 3; ++i) {
+                    t[s].v[i][0] = (long long)test_rand_below(&rng, 9) - 4;
+                    t[s].v[i][1] = (long long)test_rand_below(&rng, 9) - 4;
+                    t[s].v[i][2] = 0;
+                }
+                long long area = (t[s].v[1][0] - t[s].v[0][0]) * (t[s].v[2][1] - t[s].v[0][1]) -
+                                 (t[s].v[1][1] - t[s].v[0][1]) * (t[s].v[2][0] - t[s].v[0][0]);
+                if (area != 0)
+                    break;
+            }
+            t[s].v[3][0] = (long long)test_rand_below(&rng, 5) - 2;
+            t[s].v[3][1] = (long long)test_rand_below(&rng, 5) - 2;
+            t[s].v[3][2] = s == 0 ? -3 : 3;
+            t[s].nv = 4;
+            static const int f[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}};
+            static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+            t[s].nf = 4;
+            memcpy(t[s].faces, f, sizeof f);
+            t[s].ne = 6;
+            memcpy(t[s].edges, e, sizeof e);
+        }
+        const long long zero[3] = {0, 0, 0};
+        bool want = sat_intersect(&t[0], zero, &t[1], zero);
+        noctMesh *ma = ipoly_mesh(&t[0]), *mb = ipoly_mesh(&t[1]);
+        bool got = collide(ma, ORIGIN, mb, ORIGIN, NOCT_ACCURACY_EXACT);
+        if (got != want)
+            ck_abort_msg("trial %d: exact %d, SAT %d", trial, got, want);
+        EXPECT(collide(mb, ORIGIN, ma, ORIGIN, NOCT_ACCURACY_EXACT) == want);
+        hits += want;
+        misses += !want;
+        noctMeshDestroy(ma);
+        noctMeshDestroy(mb);
+    }
+    ck_assert_int_gt(hits, 30);
+    ck_assert_int_gt(misses, 30);
+}
+END_TEST
+
+/* ---- random non-convex star-shaped meshes ------------------------------------ */
+
+/* A cube with corners (±2, ±2, ±2) whose 6 face centres sit at r (1 to 4)
+ * along their axes: 24 triangles (corner, corner, centre). With r < 2 the
+ * face is dented: the solid is not convex. It is star-shaped about the
+ * origin, so it is exactly the union of the 24 tetrahedra (origin,
+ * triangle). */
+typedef struct star {
+    long long v[14][3];
+    int tri[24][3];
+} star;
+
+static void make_star(star *s, uint64_t *rng)
+{
+    for (int i = 0; i < 8; ++i) {
+        s->v[i][0] = (i & 4) ? 2 : -2;
+        s->v[i][1] = (i & 2) ? 2 : -2;
+        s->v[i][2] = (i & 1) ? 2 : -2;
+    }
+    /* Faces: axis, sign, and the 4 corners counter-clockwise from outside. */
+    static const int quad[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                   {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    static const int axis[6] = {0, 0, 1, 1, 2, 2}, sign[6] = {-1, 1, -1, 1, -1, 1};
+    for (int f = 0; f < 6; ++f) {
+        long long r = 1 + (long long)test_rand_below(rng, 4);
+        long long *c = s->v[8 + f];
+        c[0] = c[1] = c[2] = 0;
+        c[axis[f]] = sign[f] * r;
+        for (int e = 0; e < 4; ++e) {
+            s->tri[4 * f + e][0] = quad[f][e];
+            s->tri[4 * f + e][1] = quad[f][(e + 1) % 4];
+            s->tri[4 * f + e][2] = 8 + f;
+        }
+    }
+}
+
+static noctMesh *star_mesh(const star *s)
+{
+    poly_list l = {0};
+    for (int i = 0; i < 14; ++i)
+        pl_vertex(&l, (double)s->v[i][0], (double)s->v[i][1], (double)s->v[i][2]);
+    for (int t = 0; t < 24; ++t) {
+        uint32_t c[3] = {(uint32_t)s->tri[t][0], (uint32_t)s->tri[t][1],
+                         (uint32_t)s->tri[t][2]};
+        pl_poly(&l, 3, c);
+    }
+    return pl_mesh(&l);
+}
+
+static void cone(const star *s, int t, ipoly *p)
+{
+    memset(p, 0, sizeof *p);
+    p->nv = 4;
+    for (int k = 0; k < 3; ++k) {
+        p->v[0][k] = 0;
+        p->v[1][k] = s->v[s->tri[t][0]][k];
+        p->v[2][k] = s->v[s->tri[t][1]][k];
+        p->v[3][k] = s->v[s->tri[t][2]][k];
+    }
+    static const int f[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    static const int e[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    p->nf = 4;
+    memcpy(p->faces, f, sizeof f); /* normals' sign is irrelevant to SAT */
+    p->ne = 6;
+    memcpy(p->edges, e, sizeof e);
+}
+
+START_TEST(random_star_meshes_against_cones)
+{
+    uint64_t rng = 777 + (uint64_t)_i;
+    int hits = 0, misses = 0, nonconvex = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+        star a, b;
+        make_star(&a, &rng);
+        make_star(&b, &rng);
+        long long tb[3];
+        for (int k = 0; k < 3; ++k)
+            tb[k] = (long long)test_rand_below(&rng, 11) - 5;
+        const long long ta[3] = {0, 0, 0};
+        bool want = false;
+        for (int i = 0; i < 24 && !want; ++i) {
+            ipoly ca;
+            cone(&a, i, &ca);
+            for (int j = 0; j < 24 && !want; ++j) {
+                ipoly cb;
+                cone(&b, j, &cb);
+                want = sat_intersect(&ca, ta, &cb, tb);
+            }
+        }
+        noctMesh *ma = star_mesh(&a), *mb = star_mesh(&b);
+        nonconvex += !noctMeshIsConvex(ma);
+        double da[3] = {0, 0, 0}, db[3] = {(double)tb[0], (double)tb[1], (double)tb[2]};
+        bool got = collide(ma, da, mb, db, NOCT_ACCURACY_EXACT);
+        if (got != want)
+            ck_abort_msg("trial %d: exact %d, cones %d", trial, got, want);
+        EXPECT(collide(mb, db, ma, da, NOCT_ACCURACY_EXACT) == want);
+        if (want) {
+            EXPECT(collide(ma, da, mb, db, NOCT_ACCURACY_BOX));
+        }
+        hits += want;
+        misses += !want;
+        noctMeshDestroy(ma);
+        noctMeshDestroy(mb);
+    }
+    ck_assert_int_gt(hits, 3);
+    ck_assert_int_gt(misses, 3);
+    ck_assert_int_gt(nonconvex, 10);
+}
+END_TEST
+
+/* The convex level on hulls never misses a collision with real depth, and
+ * on convex solids agrees with the exact level except within its
+ * tolerance of touching. */
+START_TEST(convex_level_one_sided)
+{
+    uint64_t rng = 2024;
+    int checked = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        star a, b;
+        make_star(&a, &rng);
+        make_star(&b, &rng);
+        noctMesh *ma = star_mesh(&a), *mb = star_mesh(&b);
+        /* Non-integer offsets: touching is then essentially impossible. */
+        double da[3] = {0, 0, 0}, db[3];
+        for (int k = 0; k < 3; ++k)
+            db[k] = ((double)test_rand_below(&rng, 1u << 20) / (1u << 20) - 0.5) * 12;
+        bool exact = collide(ma, da, mb, db, NOCT_ACCURACY_EXACT);
+        bool cvx = collide(ma, da, mb, db, NOCT_ACCURACY_CONVEX);
+        if (exact)
+            EXPECT(cvx);
+        if (noctMeshIsConvex(ma) && noctMeshIsConvex(mb)) {
+            EXPECT(cvx == exact);
+            ++checked;
+        }
+        noctMeshDestroy(ma);
+        noctMeshDestroy(mb);
+    }
+    ck_assert_int_gt(checked, 0);
+}
+END_TEST
+
+/* ---- mesh validation ----------------------------------------------------------- */
+
+static noctStatus try_mesh(const poly_list *p, noctError *err)
+{
+    noctMesh *m = (noctMesh *)1;
+    noctStatus st = noctMeshCreate(p->v, p->nv, p->sizes, p->np, p->idx, &m, err);
+    if (st == NOCT_OK)
+        noctMeshDestroy(m);
+    else
+        ck_assert_ptr_null(m);
+    return st;
+}
+
+START_TEST(bad_meshes_are_rejected)
+{
+    double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    poly_list good = pl_box(lo, hi), p;
+    noctError err;
+    ck_assert_int_eq(try_mesh(&good, &err), NOCT_OK);
+
+    p = good;
+    p.v[3 * 5 + 1] = NAN;
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(err.index, 5);
+    ck_assert_msg(strstr(err.message, "vertex 5") != NULL, "%s", err.message);
+    p.v[3 * 5 + 1] = INFINITY;
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_NONFINITE);
+
+    p = good;
+    p.idx[9] = 8; /* polygon 2 names vertex 8 of 8 */
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_INDEX);
+    ck_assert_int_eq(err.index, 2);
+
+    p = good;
+    p.np = 5; /* a face missing: open */
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_OPEN);
+
+    p = good; /* one face reversed */
+    uint32_t t = p.idx[4 * 3 + 1];
+    p.idx[4 * 3 + 1] = p.idx[4 * 3 + 3];
+    p.idx[4 * 3 + 3] = t;
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_ORIENTATION);
+
+    p = good; /* a repeated corner */
+    p.idx[1] = p.idx[0];
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_DEGENERATE);
+    ck_assert_int_eq(err.index, 0);
+
+    p = good; /* a bent face: vertex 7 (1,1,1) lifted out of x = 1 */
+    p.v[3 * 7] = 1.25;
+    ck_assert_int_eq(try_mesh(&p, &err), NOCT_ERR_NONPLANAR);
+
+    p = good; /* a non-convex (bow-tie) quad */
+    t = p.idx[1];
+    p.idx[1] = p.idx[2];
+    p.idx[2] = t;
+    noctStatus st = try_mesh(&p, &err);
+    ck_assert(st == NOCT_ERR_NONCONVEX || st == NOCT_ERR_DEGENERATE);
+
+    poly_list flat = {0}; /* four coplanar triangles: no volume */
+    const double pts[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    for (int i = 0; i < 4; ++i)
+        pl_vertex(&flat, pts[i][0], pts[i][1], pts[i][2]);
+    const uint32_t f[4][3] = {{0, 1, 2}, {1, 3, 2}, {0, 2, 1}, {1, 2, 3}};
+    for (int i = 0; i < 4; ++i)
+        pl_poly(&flat, 3, f[i]);
+    ck_assert_int_ne(try_mesh(&flat, &err), NOCT_OK);
+
+    poly_list tiny = good;
+    tiny.nv = 3;
+    ck_assert_int_eq(try_mesh(&tiny, &err), NOCT_ERR_DEGENERATE);
+
+    /* An inside-out mesh is accepted as the same solid. */
+    p = good;
+    for (size_t i = 0; i < p.np; ++i) {
+        t = p.idx[4 * i + 1];
+        p.idx[4 * i + 1] = p.idx[4 * i + 3];
+        p.idx[4 * i + 3] = t;
+    }
+    noctMesh *m = pl_mesh(&p), *g = pl_mesh(&good);
+    const double touch[3] = {1, 0, 0}, apart[3] = {1 + 0x1p-40, 0, 0};
+    ck_assert(collide(m, ORIGIN, g, touch, NOCT_ACCURACY_EXACT));
+    ck_assert(!collide(m, ORIGIN, g, apart, NOCT_ACCURACY_EXACT));
+    noctMeshDestroy(m);
+    noctMeshDestroy(g);
+}
+END_TEST
+
+START_TEST(box_constructors)
+{
+    noctMesh *m = NULL;
+    noctError err;
+    ck_assert_int_eq(noctMeshCreateBox(1, 2, 3, &m, &err), NOCT_OK);
+    double lo[3], hi[3];
+    noctMeshBounds(m, lo, hi);
+    ck_assert(lo[0] == -1 && lo[1] == -2 && lo[2] == -3);
+    ck_assert(hi[0] == 1 && hi[1] == 2 && hi[2] == 3);
+    ck_assert_uint_eq(noctMeshVertexCount(m), 8);
+    ck_assert_uint_eq(noctMeshTriangleCount(m), 12);
+    ck_assert(noctMeshIsConvex(m));
+    noctMeshDestroy(m);
+    ck_assert_int_eq(noctMeshCreateBox(0, 1, 1, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_null(m);
+    ck_assert_int_eq(noctMeshCreateBox(-1, 1, 1, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctMeshCreateBox(NAN, 1, 1, &m, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctMeshCreateBox(1, INFINITY, 1, &m, &err), NOCT_ERR_NONFINITE);
+    const double half[3] = {1, 1, 1};
+    const double shear[9] = {1, 0.5, 0, 0, 1, 0, 0, 0, 1};
+    const double mirror[9] = {-1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const double ident[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    ck_assert_int_eq(noctMeshCreateOrientedBox(half, shear, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctMeshCreateOrientedBox(half, mirror, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctMeshCreateOrientedBox(half, ident, &m, &err), NOCT_OK);
+    ck_assert(noctMeshIsConvex(m));
+    noctMeshDestroy(m);
+}
+END_TEST
+
+/* ---- mesh files ------------------------------------------------------------------ */
+
+/* Write text to a new file named NAME in a fresh temporary directory;
+ * returns its path (valid until the next call). */
+static const char *write_temp(const char *name, const char *text)
+{
+    static char dir[64], path[128];
+    if (dir[0] == '\0') {
+        strcpy(dir, "/tmp/noct-test-XXXXXX");
+        ck_assert_ptr_nonnull(mkdtemp(dir));
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+static const char CUBE_OFF[] =
+    "OFF\n"
+    "# a unit cube\n"
+    "8 6 12\n"
+    "0 0 0\n0 0 1\n0 1 0\n0 1 1\n1 0 0\n1 0 1\n1 1 0\n1 1 1\n"
+    "4 0 1 3 2\n4 4 6 7 5\n4 0 4 5 1\n4 2 3 7 6\n4 0 2 6 4\n"
+    "4 1 5 7 3 255 0 0\n";
+
+static const char CUBE_OBJ[] =
+    "# a unit cube\n"
+    "o cube\n"
+    "v 0 0 0\nv 0 0 1\nv 0 1 0\nv 0 1 1\nv 1 0 0\nv 1 0 1\nv 1 1 0\nv 1 1 1\n"
+    "vn 0 0 1\nvt 0 0\n"
+    "s off\n"
+    "f 1/1/1 2/1/1 4/1/1 3/1/1\n"
+    "f 5//1 7//1 8//1 6//1\n"
+    "f 1 5 6 2\n"
+    "f 3 4 8 7\n"
+    "f -8 -6 -2 -4\n"
+    "f 2 6 8 4\n";
+
+/* Read text as a file called name and expect status and a message that
+ * contains want (the file name and line, typically). */
+static void expect_read(const char *name, const char *text, noctStatus status,
+                        const char *want)
+{
+    const char *path = write_temp(name, text);
+    noctMesh *m = (noctMesh *)1;
+    noctError err = {0};
+    noctStatus st = noctMeshRead(path, &m, &err);
+    ck_assert_msg(st == status, "%s: got %s (%s), want %s", name,
+                  noctStatusString(st), err.message, noctStatusString(status));
+    if (st == NOCT_OK) {
+        ck_assert_uint_ge(noctMeshVertexCount(m), 4);
+        noctMeshDestroy(m);
+        return;
+    }
+    ck_assert_ptr_null(m);
+    ck_assert_msg(strstr(err.message, path) != NULL, "no path in '%s'", err.message);
+    ck_assert_msg(strstr(err.message, want) != NULL, "'%s' lacks '%s'", err.message,
+                  want);
+}
+
+START_TEST(read_off_files)
+{
+    expect_read("cube.off", CUBE_OFF, NOCT_OK, "");
+    expect_read("inline.OFF", "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", NOCT_OK, "");
+    expect_read("empty.off", "", NOCT_ERR_PARSE, "empty file");
+    expect_read("header.off", "OFX\n8 6 12\n", NOCT_ERR_PARSE, ":1: expected the OFF header");
+    expect_read("number.off", "OFF\n8 6 12\n0 0 0\n0 0 1x\n", NOCT_ERR_PARSE,
+                ":4: not a number: '1x'");
+    expect_read("nan.off", "OFF\n8 6 12\n0 0 0\nnan 0 1\n", NOCT_ERR_NONFINITE, ":4:");
+    expect_read("short.off", "OFF\n8 6 12\n0 0 0\n0 0\n", NOCT_ERR_PARSE,
+                ":4: expected 3 coordinates");
+    expect_read("truncated.off", "OFF\n8 6 12\n0 0 0\n", NOCT_ERR_PARSE,
+                "file ends before all vertices");
+    expect_read("huge.off", "OFF\n999999999999 1 0\n", NOCT_ERR_TOO_LARGE, ":2:");
+    expect_read("negative.off", "OFF\n-8 6 12\n", NOCT_ERR_PARSE, "not a count");
+    char bad_index[sizeof CUBE_OFF + 16];
+    strcpy(bad_index, CUBE_OFF);
+    *strstr(bad_index, "4 0 4 5 1") = '\0';
+    strcat(bad_index, "4 0 4 5 9\n4 2 3 7 6\n4 0 2 6 4\n4 1 5 7 3\n");
+    expect_read("index.off", bad_index, NOCT_ERR_INDEX, ":14: face 2: vertex index 9");
+    char open[sizeof CUBE_OFF];
+    strcpy(open, CUBE_OFF);
+    *strstr(open, "4 1 5 7 3") = '\0';
+    expect_read("open.off", open, NOCT_ERR_PARSE, "file ends before all faces");
+    char five[sizeof CUBE_OFF];
+    strcpy(five, CUBE_OFF);
+    memcpy(strstr(five, "8 6 12"), "8 5 12", 6);
+    expect_read("open2.off", five, NOCT_ERR_OPEN, "is used by 1 polygon");
+    expect_read("count.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 1\n",
+                NOCT_ERR_PARSE, ":7: expected a face's corner count");
+}
+END_TEST
+
+START_TEST(read_obj_files)
+{
+    expect_read("cube.obj", CUBE_OBJ, NOCT_OK, "");
+    expect_read("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 5\n",
+                NOCT_ERR_INDEX, ":5: face 0: bad vertex reference '5'");
+    expect_read("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", NOCT_ERR_INDEX,
+                ":4:");
+    expect_read("line.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", NOCT_ERR_PARSE,
+                ":3: unsupported statement 'l'");
+    expect_read("coords.obj", "v 0 0\n", NOCT_ERR_PARSE, ":1: expected 3 coordinates");
+    expect_read("inf.obj", "v 0 0 inf\n", NOCT_ERR_NONFINITE, ":1:");
+    expect_read("face.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", NOCT_ERR_PARSE,
+                ":3: a face needs at least 3 corners");
+    expect_read("garbage.obj", "v 0 0 0\nf a b c\n", NOCT_ERR_PARSE,
+                "bad vertex reference 'a'");
+    /* Validation errors name the face's line. */
+    char reversed[sizeof CUBE_OBJ];
+    strcpy(reversed, CUBE_OBJ);
+    memcpy(strstr(reversed, "f 1 5 6 2"), "f 2 6 5 1", 9);
+    expect_read("reversed.obj", reversed, NOCT_ERR_ORIENTATION, "in the same direction");
+    expect_read("format.stl", "solid\n", NOCT_ERR_INVALID, "unknown mesh format");
+    noctMesh *m = (noctMesh *)1;
+    noctError err;
+    ck_assert_int_eq(noctMeshRead("/nonexistent/dir/x.off", &m, &err), NOCT_ERR_IO);
+    ck_assert_ptr_null(m);
+    ck_assert(strstr(err.message, "/nonexistent/dir/x.off: cannot open") != NULL);
+}
+END_TEST
+
+START_TEST(status_strings)
+{
+    for (int s = 0; s < NOCT_STATUS_COUNT; ++s) {
+        const char *t = noctStatusString((noctStatus)s);
+        ck_assert_ptr_nonnull(t);
+        ck_assert_uint_gt(strlen(t), 3);
+        for (int u = 0; u < s; ++u)
+            ck_assert_str_ne(t, noctStatusString((noctStatus)u));
+    }
+    ck_assert_str_eq(noctStatusString((noctStatus)999), "unknown status");
+    ck_assert_str_eq(noctAccuracyName(NOCT_ACCURACY_EXACT), "exact");
+    ck_assert_str_eq(noctAccuracyName((noctAccuracy)7), "unknown");
+}
+END_TEST
+
+START_TEST(collide_rejects_bad_input)
+{
+    noctMesh *m = NULL;
+    ck_assert_int_eq(noctMeshCreateBox(1, 1, 1, &m, NULL), NOCT_OK);
+    bool hit = true;
+    const double bad[3] = {NAN, 0, 0}, inf[3] = {0, INFINITY, 0};
+    ck_assert_int_eq(noctCollide(m, bad, m, ORIGIN, NOCT_ACCURACY_EXACT, &hit, NULL),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctCollide(m, ORIGIN, m, inf, NOCT_ACCURACY_BOX, &hit, NULL),
+                     NOCT_ERR_NONFINITE);
+    const double huge[3] = {1.7e308, 0, 0};
+    ck_assert_int_eq(noctCollide(m, huge, m, ORIGIN, NOCT_ACCURACY_CONVEX, &hit, NULL),
+                     NOCT_ERR_TOO_LARGE);
+    ck_assert_int_eq(noctCollide(m, ORIGIN, m, ORIGIN, (noctAccuracy)9, &hit, NULL),
+                     NOCT_ERR_INVALID);
+    /* Counters: a box reject never reaches a costlier stage. */
+    noctNarrowStats st = {0};
+    const double far[3] = {5, 0, 0};
+    ck_assert_int_eq(noctCollide(m, ORIGIN, m, far, NOCT_ACCURACY_EXACT, &hit, &st),
+                     NOCT_OK);
+    ck_assert(!hit);
+    ck_assert_uint_eq(st.box_tests, 1);
+    ck_assert_uint_eq(st.box_rejects, 1);
+    ck_assert_uint_eq(st.exact_tests + st.convex_tests + st.triangle_pairs, 0);
+    noctMeshDestroy(m);
+}
+END_TEST
+
+#ifndef NOCT_EFFICIENT
+START_TEST(die_null_arguments)
+{
+    noctMesh *m = NULL;
+    bool hit;
+    double lo[3];
+    noctMeshCreateBox(1, 1, 1, &m, NULL);
+    switch (_i) {
+    case 0: noctMeshCreate(NULL, 0, NULL, 0, NULL, NULL, NULL); break;
+    case 1: noctCollide(m, NULL, m, ORIGIN, NOCT_ACCURACY_BOX, &hit, NULL); break;
+    case 2: noctCollide(m, ORIGIN, m, ORIGIN, NOCT_ACCURACY_BOX, NULL, NULL); break;
+    case 3: noctMeshBounds(m, lo, NULL); break;
+    case 4: noctMeshRead(NULL, &m, NULL); break;
+    default: noctMeshCreateBox(1, 1, 1, NULL, NULL); break;
+    }
+}
+END_TEST
+#endif
+
+static Suite *narrowphase_suite(void)
+{
+    Suite *s = suite_create("narrowphase");
+    TCase *tc = tcase_create("hard cases");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, faces_exactly_touching);
+    tcase_add_test(tc, edges_crossing_at_a_point);
+    tcase_add_test(tc, vertex_exactly_on_face);
+    tcase_add_test(tc, coplanar_overlapping_faces);
+    tcase_add_test(tc, parallel_and_nearly_parallel);
+    tcase_add_test(tc, tilted_boxes_near_contact);
+    tcase_add_test(tc, tiny_and_far);
+    tcase_add_test(tc, containment_and_identity);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("random against brute force");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, random_tetrahedra_against_sat, 0, 4);
+    tcase_add_loop_test(tc, random_coplanar_bases_against_sat, 0, 4);
+    tcase_add_loop_test(tc, random_star_meshes_against_cones, 0, 4);
+    tcase_add_test(tc, convex_level_one_sided);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("meshes and files");
+    tcase_add_test(tc, bad_meshes_are_rejected);
+    tcase_add_test(tc, box_constructors);
+    tcase_add_test(tc, read_off_files);
+    tcase_add_test(tc, read_obj_files);
+    tcase_add_test(tc, status_strings);
+    tcase_add_test(tc, collide_rejects_bad_input);
+    suite_add_tcase(s, tc);
+
+#ifndef NOCT_EFFICIENT
+    TCase *d = tcase_create("requires clauses");
+    tcase_set_tags(d, "death");
+    tcase_add_loop_test_raise_signal(d, die_null_arguments, SIGABRT, 0, 6);
+    suite_add_tcase(s, d);
+#endif
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(narrowphase_suite());
+    srunner_run_all(sr, CK_ENV);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
