@@ -10,7 +10,15 @@ tools_bench_octree_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_bench_octree_efficient_LDADD = lib/libnoctree-efficient.la
 EXTRA_DIST += tools/bench-octree.sh
 
-bench: tools/bench-octree-defensive tools/bench-octree-efficient
+# What accuracy costs: the narrowphase levels, against the efficient build.
+noinst_PROGRAMS += tools/bench-narrowphase
+tools_bench_narrowphase_SOURCES = tools/bench-narrowphase.c
+tools_bench_narrowphase_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_bench_narrowphase_LDADD = lib/libnoctree-efficient.la
+
+bench: tools/bench-octree-defensive tools/bench-octree-efficient \
+		tools/bench-narrowphase
 	BENCH_BINDIR=tools $(SHELL) $(srcdir)/tools/bench-octree.sh
+	tools/bench-narrowphase
 .PHONY: bench
-CLEANFILES += bench-octree.csv
+CLEANFILES += bench-octree.csv bench-narrowphase.csv
