@@ -264,20 +264,21 @@ static noctStatus read_off(reader *r, mesh_data *d, noctError *err)
 /* ---- OBJ ----------------------------------------------------------------------- */
 
 /* An OBJ face corner: "i", "i/t", "i/t/n" or "i//n"; 1-based, or negative
- * for relative to the end of the vertices read so far. */
-static bool obj_corner(const char *tok, size_t nv, uint32_t *out, long *raw)
+ * for relative to the end of the vertices read so far. Returns NOCT_OK,
+ * NOCT_ERR_PARSE for a malformed corner or NOCT_ERR_INDEX for one that
+ * names no vertex read so far. */
+static noctStatus obj_corner(const char *tok, size_t nv, uint32_t *out)
 {
     char *end;
     errno = 0;
     long i = strtol(tok, &end, 10);
     if (end == tok || (*end != '\0' && *end != '/') || errno != 0)
-        return false;
-    *raw = i;
+        return NOCT_ERR_PARSE;
     long idx = i > 0 ? i - 1 : (long)nv + i;
     if (i == 0 || idx < 0 || (size_t)idx >= nv)
-        return false;
+        return NOCT_ERR_INDEX;
     *out = (uint32_t)idx;
-    return true;
+    return NOCT_OK;
 }
 
 static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
@@ -303,13 +304,11 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
             uint32_t n = 0;
             char *t;
             while (st == NOCT_OK && (t = token(r)) != NULL) {
-                long raw = 0;
+                noctStatus cs;
                 if (!grow((void **)&corners, &ccap, n + 1, sizeof *corners))
                     st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
-                else if (!obj_corner(t, d->nv, &corners[n], &raw))
-                    st = noct_fail(err, raw != 0 || isdigit((unsigned char)t[0]) ||
-                                   t[0] == '-' ? NOCT_ERR_INDEX : NOCT_ERR_PARSE,
-                                   (long)d->np, r->line,
+                else if ((cs = obj_corner(t, d->nv, &corners[n])) != NOCT_OK)
+                    st = noct_fail(err, cs, (long)d->np, r->line,
                                    "%s:%ld: face %zu: bad vertex reference '%s' "
                                    "(%zu vertices so far)", r->path, r->line,
                                    d->np, t, d->nv);

@@ -965,6 +965,10 @@ START_TEST(read_obj_files)
                 ":3: a face needs at least 3 corners");
     expect_read("garbage.obj", "v 0 0 0\nf a b c\n", NOCT_ERR_PARSE,
                 "bad vertex reference 'a'");
+    expect_read("suffix.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1x 2 3\n",
+                NOCT_ERR_PARSE, ":4: face 0: bad vertex reference '1x'");
+    expect_read("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n",
+                NOCT_ERR_INDEX, "bad vertex reference '-4'");
     /* Validation errors name the face's line. */
     char reversed[sizeof CUBE_OBJ];
     strcpy(reversed, CUBE_OBJ);
