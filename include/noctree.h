@@ -12,5 +12,6 @@
 #include <noctree/status.h>
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/world.h>
 
 #endif /* NOCTREE_H */

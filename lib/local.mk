@@ -13,7 +13,8 @@ noctree_sources = \
 	lib/neighbor.c \
 	lib/octree.c \
 	lib/predicates.c \
-	lib/predicates.h
+	lib/predicates.h \
+	lib/world.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 
@@ -46,7 +47,8 @@ noctreeinclude_HEADERS = \
 	include/noctree/neighbor.h \
 	include/noctree/octree.h \
 	include/noctree/octree_inline.h \
-	include/noctree/status.h
+	include/noctree/status.h \
+	include/noctree/world.h
 nodist_noctreeinclude_HEADERS = include/noctree/version.h
 include_HEADERS = include/noctree.h
 

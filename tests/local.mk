@@ -8,11 +8,11 @@ if HAVE_CHECK
 check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates
+	tests/check-predicates tests/check-world tests/check-world-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates
+	tests/check-predicates tests/check-world tests/check-world-efficient
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -48,6 +48,15 @@ tests_check_predicates_SOURCES = tests/check_predicates.c lib/predicates.c \
 tests_check_predicates_CFLAGS = $(tests_check_octree_CFLAGS) $(GMP_CFLAGS)
 tests_check_predicates_LDADD = lib/libnoctree.la $(GMP_LIBS) $(CHECK_LIBS)
 
+tests_check_world_SOURCES = tests/check_world.c $(test_common)
+tests_check_world_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_world_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_world_efficient_SOURCES = $(tests_check_world_SOURCES)
+tests_check_world_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_world_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh \
 	tests/inline-client.c
@@ -58,12 +67,13 @@ AM_TESTS_ENVIRONMENT = \
 	export CC NM srcdir top_srcdir top_builddir;
 
 # Valgrind runs the suites in one process (no fork), so the death tests,
-# which abort by design, are left out by their tag.
+# which abort by design, are left out by their tag; so are the "slow" test
+# cases (whole benchmark scenes), which the other builds run.
 VALGRIND = valgrind
 check-valgrind: $(check_PROGRAMS)
 	@set -e; for t in $(check_PROGRAMS); do \
 	  echo "valgrind $$t"; \
-	  CK_FORK=no CK_EXCLUDE_TAGS=death $(LIBTOOL) --mode=execute \
+	  CK_FORK=no CK_EXCLUDE_TAGS='death slow' $(LIBTOOL) --mode=execute \
 	    $(VALGRIND) -q --error-exitcode=1 --leak-check=full \
 	    --errors-for-leak-kinds=definite,indirect ./$$t; \
 	done

@@ -1,0 +1,338 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file noctree/world.h
+ * @brief The collision world: moving objects, the N-objects octree that cuts
+ * the candidate pairs, simple dynamics and contact events.
+ *
+ * @defgroup world Collision world
+ * @brief The report's collision detection system (sections 1.2, 2.2-2.4) as
+ * an embeddable world.
+ *
+ * A world holds objects: a mesh (borrowed; it must outlive the world), a
+ * position, a unit direction and a speed. noctWorldStep() runs one step:
+ * 1. **motion** (effect #NOCT_EFFECT_MOTION): each object with a non-zero
+ *    speed moves, `p += d * speed`;
+ * 2. **maintenance**: the octree is brought up to date (see below);
+ * 3. **pair search**: a depth-first walk over the leaves that hold more
+ *    than one object hands each candidate pair to the narrowphase exactly
+ *    once per step, at the world's accuracy (narrowphase.h);
+ * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
+ *    colliding at this step;
+ * 5. **response** (#NOCT_EFFECT_RESPONSE): every object in at least one
+ *    pair that began colliding reverses its direction once (SCENES.md's
+ *    contact-begin rule; the colliding set before step 1 is empty).
+ *
+ * **The octree.** Objects are inserted into every leaf their bounding box
+ * overlaps (closed boxes, cells closed on every side); a leaf splits when
+ * its N+1st object arrives, unless it is at the maximum depth, and hands its
+ * objects to the children they overlap. When an object leaves a leaf and
+ * the leaf's siblings together hold N or fewer distinct objects, they merge
+ * back into their parent. The root never loses an object: when a box would
+ * leave it, the tree is rebuilt around a root twice as large.
+ *
+ * **Maintenance modes.** #NOCT_MAINTAIN_INCREMENTAL is the report's
+ * section 2.4: for each moving object and each leaf it spans, a fast test
+ * for a box still inside the leaf; a leave check (remove, then merge); an
+ * enter check through octGtEqNeighbor() in the quantized directions of
+ * motion (octVectorToDirections()), each neighbor checked once per object
+ * per step thanks to a stamp in the node. An object that moves farther in
+ * one step than the size of a leaf it spans is re-inserted from the root
+ * instead, so the tree is exact whatever the speeds. Static objects
+ * (speed 0) cost nothing. #NOCT_MAINTAIN_REBUILD rebuilds the tree every
+ * step, for comparison. Setting N to #NOCT_N_EXHAUSTIVE (the report's
+ * "N = big") never splits the root: the exhaustive algorithm.
+ *
+ * **Determinism.** Pair lists are sorted by object index; the same
+ * operations give the same results on every run, in both builds and in
+ * every maintenance mode.
+ * @{
+ */
+#ifndef NOCTREE_WORLD_H
+#define NOCTREE_WORLD_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/export.h>
+#include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
+#include <noctree/octree.h>
+#include <noctree/status.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** @brief A collision world; opaque. */
+typedef struct noctWorld noctWorld;
+
+/**
+ * @brief A handle to an object of a world.
+ *
+ * Handles are values. Once the object is removed its slot may be reused,
+ * but with a new generation, so a stale handle is detected
+ * (#NOCT_ERR_INVALID) rather than naming another object.
+ */
+typedef struct noctObjectId {
+    uint32_t index;      /**< Slot of the object in the world. */
+    uint32_t generation; /**< Generation of the slot; 0 is never valid. */
+} noctObjectId;
+
+/** @brief Two objects, the one with the smaller index first. */
+typedef struct noctPair {
+    noctObjectId a; /**< The object with the smaller index. */
+    noctObjectId b; /**< The object with the larger index. */
+} noctPair;
+
+/** N that never splits the root: the exhaustive algorithm ("N = big"). */
+#define NOCT_N_EXHAUSTIVE 0x7fffffff
+
+/** @brief What a world simulates: OR these into noctWorldDef::effects. */
+enum noctEffect {
+    NOCT_EFFECT_MOTION = 1u << 0,   /**< Objects move by their velocity. */
+    NOCT_EFFECT_EVENTS = 1u << 1,   /**< Contact-begin and -end lists. */
+    NOCT_EFFECT_RESPONSE = 1u << 2  /**< Contact-begin reverses directions
+                                         (implies the events' bookkeeping). */
+};
+
+/** @brief How the octree follows the objects. */
+typedef enum noctMaintenance {
+    NOCT_MAINTAIN_INCREMENTAL, /**< Report section 2.4, by neighbor finding. */
+    NOCT_MAINTAIN_REBUILD      /**< Rebuild the whole tree every step. */
+} noctMaintenance;
+
+/** @brief Parameters of a world; fill with noctDefaultWorldDef(). */
+typedef struct noctWorldDef {
+    int N;                  /**< Most objects per leaf (1 or more), or
+                                 #NOCT_N_EXHAUSTIVE. Default 10. */
+    int max_depth;          /**< Deepest leaf generation (1 to 40); leaves
+                                 there may hold more than N. Default 10.
+                                 N + 1 objects that overlap each other can
+                                 never be separated, so the leaves over
+                                 their overlap split down to this depth:
+                                 with a small N, keep it small. */
+    noctAccuracy accuracy;  /**< Narrowphase level. Default exact. */
+    unsigned effects;       /**< #noctEffect bits. Default: all. */
+    noctMaintenance maintenance; /**< Default incremental. */
+} noctWorldDef;
+
+/**
+ * @brief Per-stage work and time, totalled over the world's steps.
+ *
+ * A stage that a world's effects leave out does no work: its counters and
+ * time stay zero.
+ */
+typedef struct noctWorldCounters {
+    uint64_t steps;            /**< Steps run. */
+    uint64_t moved;            /**< Object moves (motion). */
+    uint64_t inside_fast;      /**< Maintenance: boxes still inside their
+                                    only leaf, found by the fast test. */
+    uint64_t leaves_left;      /**< Maintenance: removals from leaves. */
+    uint64_t leaves_entered;   /**< Maintenance: additions to leaves. */
+    uint64_t neighbor_queries; /**< Maintenance: octGtEqNeighbor() calls. */
+    uint64_t reinserts;        /**< Maintenance: fast objects re-inserted
+                                    from the root. */
+    uint64_t splits;           /**< Leaves split. */
+    uint64_t merges;           /**< Sibling groups merged. */
+    uint64_t rebuilds;         /**< Whole-tree rebuilds (rebuild mode, and
+                                    root growth). */
+    uint64_t leaves_visited;   /**< Pair search: leaves with 2+ objects. */
+    uint64_t candidate_pairs;  /**< Pair search: pairs in a shared leaf. */
+    uint64_t tested_pairs;     /**< Pairs handed to the narrowphase. */
+    uint64_t colliding_pairs;  /**< Pairs found colliding. */
+    uint64_t events;           /**< Contact-begin plus contact-end events. */
+    uint64_t reversals;        /**< Response: direction reversals. */
+    noctNarrowStats narrow;    /**< The narrowphase's own counters. */
+    double seconds_motion;     /**< Time in motion. */
+    double seconds_maintenance;/**< Time keeping the octree up to date. */
+    double seconds_pairs;      /**< Time in the pair search, narrowphase
+                                    included. */
+    double seconds_response;   /**< Time in events and response. */
+} noctWorldCounters;
+
+/**
+ * @brief Return the default world parameters.
+ * @return N = 10, max_depth = 10, exact accuracy, every effect,
+ *         incremental maintenance.
+ */
+NOCT_API noctWorldDef noctDefaultWorldDef(void);
+
+/**
+ * @brief Create an empty world.
+ * @param[in]  def   The parameters.
+ * @param[out] world Receives the world on success, NULL otherwise.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p def and @p world are not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID if a parameter is out of range;
+ *         #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world,
+                                    noctError *err);
+
+/**
+ * @brief Destroy a world (not the meshes its objects use).
+ * @param[in] world A world, or NULL.
+ */
+NOCT_API void noctWorldDestroy(noctWorld *world);
+
+/**
+ * @brief Add an object.
+ * @param[in]  world     The world.
+ * @param[in]  mesh      Its shape; must outlive the world.
+ * @param[in]  position  Its translation.
+ * @param[in]  direction Its direction of motion; normalized here (ignored
+ *                       when @p speed is 0, and may then be zero).
+ * @param[in]  speed     Distance per step, 0 for a static object.
+ * @param[out] id        Receives the new object's handle.
+ * @param[out] err       Receives the details of a failure, or NULL.
+ * @pre @p world, @p mesh, @p position, @p direction and @p id are not NULL.
+ * @post On #NOCT_OK the object is in the octree; it takes part in the
+ *       next step.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE for a NaN or infinite value;
+ *         #NOCT_ERR_INVALID for a negative speed or a zero direction with a
+ *         non-zero speed; #NOCT_ERR_TOO_LARGE for a position beyond
+ *         #NOCT_MAX_COORDINATE or more than 2^31 objects; #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldAdd(noctWorld *world, const noctMesh *mesh,
+                                 const double position[3],
+                                 const double direction[3], double speed,
+                                 noctObjectId *id, noctError *err);
+
+/**
+ * @brief Remove an object.
+ * @param[in] world The world.
+ * @param[in] id    The object.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK the object is gone from the tree and the pair lists;
+ *       its handle is stale.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle.
+ */
+NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id);
+
+/**
+ * @brief Run one step.
+ * @param[in]  world The world.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_TOO_LARGE if an object moved beyond
+ *         #NOCT_MAX_COORDINATE; #NOCT_ERR_NOMEM; a narrowphase status. After
+ *         a failure the world is left as it was before the failing stage's
+ *         step and should be destroyed.
+ */
+NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
+
+/**
+ * @brief The pairs colliding after the last step (or none before the
+ *        first), sorted by (a.index, b.index).
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, valid until the next
+ *                   call that changes the world.
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs.
+ */
+NOCT_API size_t noctWorldColliding(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The pairs that began colliding at the last step, sorted.
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, as for
+ *                   noctWorldColliding().
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs; 0 without #NOCT_EFFECT_EVENTS or
+ *         #NOCT_EFFECT_RESPONSE.
+ */
+NOCT_API size_t noctWorldBegan(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The pairs that stopped colliding at the last step, sorted.
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, as for
+ *                   noctWorldColliding().
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs; 0 without #NOCT_EFFECT_EVENTS or
+ *         #NOCT_EFFECT_RESPONSE.
+ */
+NOCT_API size_t noctWorldEnded(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief Read an object's position and direction.
+ * @param[in]  world     The world.
+ * @param[in]  id        The object.
+ * @param[out] position  Receives its position, or NULL.
+ * @param[out] direction Receives its unit direction, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle.
+ */
+NOCT_API noctStatus noctWorldObject(const noctWorld *world, noctObjectId id,
+                                    double position[3], double direction[3]);
+
+/**
+ * @brief Return the number of objects.
+ * @param[in] world The world.
+ * @pre @p world is not NULL.
+ * @return The number of live objects.
+ */
+NOCT_API size_t noctWorldObjectCount(const noctWorld *world);
+
+/**
+ * @brief Copy the world's counters.
+ * @param[in]  world    The world.
+ * @param[out] counters Receives the totals since the world was created.
+ * @pre @p world and @p counters are not NULL.
+ */
+NOCT_API void noctWorldGetCounters(const noctWorld *world,
+                                   noctWorldCounters *counters);
+
+/**
+ * @brief Check the whole structure, for tests and debugging.
+ *
+ * The heavier of the two tiers of checking: walks the whole tree. Checks
+ * that the octree is well formed, that every object is in exactly the
+ * leaves its box overlaps and that those leaves list it once, that no leaf
+ * holds more than N objects unless at the maximum depth, and that no group
+ * of leaf siblings holds N or fewer distinct objects (it should have
+ * merged; rebuild mode and the exhaustive N aside).
+ * @param[in]  world The world.
+ * @param[out] err   Receives the first problem found, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_NUMERIC with a description.
+ */
+NOCT_API noctStatus noctWorldValidate(const noctWorld *world, noctError *err);
+
+/**
+ * @brief The octree's root, to inspect with the octree ADT (read only).
+ *
+ * Each node's datum is private to the world: print with a NULL printer.
+ * @param[in] world The world.
+ * @pre @p world is not NULL.
+ * @return The root; valid until the next call that changes the world.
+ */
+NOCT_API octNode *noctWorldRoot(const noctWorld *world);
+
+/**
+ * @brief Add the report's test set t_k (SCENES.md, "Planes").
+ *
+ * Two planes of axis-aligned unit cubes, each a central cube and @p k
+ * rings, moving towards each other at speed 0.05.
+ * @param[in]  world     The world.
+ * @param[in]  k         Number of rings, 0 to 1000.
+ * @param[in]  unit_cube A cube of edge 1 centred on the origin, such as
+ *                       noctMeshCreateBox(0.5, 0.5, 0.5); must outlive the
+ *                       world.
+ * @param[out] err       Receives the details of a failure, or NULL.
+ * @pre @p world and @p unit_cube are not NULL.
+ * @post On #NOCT_OK the world holds 2 (2k + 1)^2 more objects, added left
+ *       plane first, row by row.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for k out of range; any status of
+ *         noctWorldAdd().
+ */
+NOCT_API noctStatus noctWorldAddPlanes(noctWorld *world, int k,
+                                       const noctMesh *unit_cube, noctError *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+/** @} */
+#endif /* NOCTREE_WORLD_H */

@@ -1,0 +1,1047 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The collision world: the report's system on top of the octree ADT,
+ * neighbor finding and the narrowphase.
+ *
+ * Every node's datum is a cell: its cube (lo, size) and, for a leaf, the
+ * indices of the objects whose boxes overlap it. The eight children's
+ * cells are allocated together, like the nodes. Every object keeps the
+ * list of leaves it is in (its spans).
+ *
+ * Cells are closed for overlap (touching counts) and half-open for
+ * ownership of a point ([lo, lo + size), closed at the root's upper
+ * faces): the pair search tests a pair only in the one leaf that owns the
+ * lower corner of the two boxes' overlap, so each pair is tested once per
+ * step with no table of tested pairs.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <noctree/neighbor.h>
+#include <noctree/world.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+
+typedef struct cell {
+    double lo[3];
+    double size;
+    uint32_t *objs;      /* leaf: objects overlapping the cell */
+    uint32_t count, cap;
+    uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
+    uint64_t stamp_step; /* this node as a neighbor */
+} cell;
+
+typedef struct object {
+    const noctMesh *mesh;
+    double pos[3], dir[3], speed;
+    double lo[3], hi[3];   /* placed bounding box */
+    octNode **spans;       /* leaves it is in */
+    uint32_t nspans, capspans;
+    uint32_t generation;
+    bool alive;
+    bool entering;         /* maintenance: needs the enter phase */
+} object;
+
+typedef struct pair_list {
+    noctPair *p;
+    size_t n, cap;
+} pair_list;
+
+struct noctWorld {
+    noctWorldDef def;
+    object *obj;
+    uint32_t nslots, capslots;
+    uint32_t *free_slots;
+    uint32_t nfree;
+    size_t alive;
+    size_t moving;         /* live objects with a non-zero speed */
+    octNode *root;
+    uint64_t step;
+    uint64_t *mark;        /* per object: epoch stamp for distinct counts */
+    uint64_t epoch;
+    octNode **work;        /* enter check's worklist */
+    size_t nwork, capwork;
+    pair_list colliding, previous, began, ended;
+    noctWorldCounters c;
+    noctStatus deferred;   /* an allocation failure inside a walk */
+};
+
+/* ---- small helpers ------------------------------------------------------ */
+
+static double seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static cell *cell_of(const octNode *n)
+{
+    return octData(n);
+}
+
+static bool grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem)
+{
+    if (need <= *cap)
+        return true;
+    uint32_t c = *cap ? *cap : 4;
+    while (c < need)
+        c *= 2;
+    void *q = realloc(*p, (size_t)c * elem);
+    if (q == NULL)
+        return false;
+    *p = q;
+    *cap = c;
+    return true;
+}
+
+static bool overlaps(const object *o, const cell *c)
+{
+    for (int k = 0; k < 3; ++k)
+        if (o->hi[k] < c->lo[k] || o->lo[k] > c->lo[k] + c->size)
+            return false;
+    return true;
+}
+
+static bool strictly_inside(const object *o, const cell *c)
+{
+    for (int k = 0; k < 3; ++k)
+        if (o->lo[k] <= c->lo[k] || o->hi[k] >= c->lo[k] + c->size)
+            return false;
+    return true;
+}
+
+static void place_box(object *o)
+{
+    for (int k = 0; k < 3; ++k) {
+        o->lo[k] = o->mesh->lo[k] + o->pos[k];
+        o->hi[k] = o->mesh->hi[k] + o->pos[k];
+    }
+}
+
+static bool leaf_has(const cell *c, uint32_t id)
+{
+    for (uint32_t i = 0; i < c->count; ++i)
+        if (c->objs[i] == id)
+            return true;
+    return false;
+}
+
+static void span_remove(object *o, const octNode *leaf)
+{
+    for (uint32_t i = 0; i < o->nspans; ++i)
+        if (o->spans[i] == leaf) {
+            o->spans[i] = o->spans[--o->nspans];
+            return;
+        }
+}
+
+static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
+{
+    cell *c = cell_of(leaf);
+    object *o = &w->obj[id];
+    if (!grow_array((void **)&c->objs, &c->cap, c->count + 1, sizeof *c->objs) ||
+        !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
+        return false;
+    c->objs[c->count++] = id;
+    o->spans[o->nspans++] = leaf;
+    return true;
+}
+
+/* ---- split and merge ------------------------------------------------------ */
+
+static bool split_leaf(noctWorld *w, octNode *leaf);
+
+/* Add object id to the leaf, splitting it if it now holds N + 1. */
+static bool add_and_split(noctWorld *w, octNode *leaf, uint32_t id)
+{
+    if (!leaf_add(w, leaf, id))
+        return false;
+    cell *c = cell_of(leaf);
+    if ((int)c->count > w->def.N && octGeneration(leaf) < w->def.max_depth)
+        return split_leaf(w, leaf);
+    return true;
+}
+
+/* Give the leaf 8 children and hand each object to the children its box
+ * overlaps (which may split in turn). */
+static bool split_leaf(noctWorld *w, octNode *leaf)
+{
+    cell *pc = cell_of(leaf);
+    cell *kids = calloc(8, sizeof *kids);
+    if (kids == NULL || !octSplit(leaf)) {
+        free(kids);
+        return false;
+    }
+    double half = pc->size / 2;
+    for (int i = 0; i < 8; ++i) {
+        kids[i].lo[0] = pc->lo[0] + ((i & 4) ? half : 0);
+        kids[i].lo[1] = pc->lo[1] + ((i & 2) ? half : 0);
+        kids[i].lo[2] = pc->lo[2] + ((i & 1) ? half : 0);
+        kids[i].size = half;
+        octSwapData(octChild(leaf, (octDirection)(OCT_LDB + i)), &kids[i]);
+    }
+    uint32_t *objs = pc->objs, count = pc->count;
+    pc->objs = NULL;
+    pc->count = pc->cap = 0;
+    ++w->c.splits;
+    bool ok = true;
+    for (uint32_t j = 0; j < count; ++j)
+        span_remove(&w->obj[objs[j]], leaf);
+    for (uint32_t j = 0; j < count && ok; ++j)
+        for (int i = 0; i < 8 && ok; ++i)
+            if (overlaps(&w->obj[objs[j]], &kids[i]))
+                ok = add_and_split(w, octChild(leaf, (octDirection)(OCT_LDB + i)), objs[j]);
+    free(objs);
+    return ok;
+}
+
+/* Detach and free the cells of every node below n (not n's own), so that
+ * octJoin(n, NULL) finds no client data. */
+static void free_cells_below(octNode *n)
+{
+    if (!octIsSplit(n))
+        return;
+    cell *block = cell_of(octChild(n, OCT_LDB)); /* the 8 are one block */
+    for (int i = 0; i < 8; ++i) {
+        octNode *k = octChild(n, (octDirection)(OCT_LDB + i));
+        free_cells_below(k);
+        cell *c = octSwapData(k, NULL);
+        free(c->objs);
+    }
+    free(block);
+}
+
+/* If all of p's children are leaves holding N or fewer distinct objects,
+ * merge them into p; then try p's parent. */
+static bool try_merge(noctWorld *w, octNode *p)
+{
+    while (p != NULL && w->def.N != NOCT_N_EXHAUSTIVE) {
+        uint32_t distinct = 0;
+        ++w->epoch;
+        for (int i = 0; i < 8; ++i) {
+            octNode *k = octChild(p, (octDirection)(OCT_LDB + i));
+            if (octIsSplit(k))
+                return true;
+            cell *c = cell_of(k);
+            for (uint32_t j = 0; j < c->count; ++j)
+                if (w->mark[c->objs[j]] != w->epoch) {
+                    w->mark[c->objs[j]] = w->epoch;
+                    ++distinct;
+                }
+        }
+        if ((int)distinct > w->def.N)
+            return true;
+        cell *pc = cell_of(p);
+        pc->objs = malloc((distinct ? distinct : 1) * sizeof *pc->objs);
+        if (pc->objs == NULL)
+            return false;
+        pc->cap = distinct ? distinct : 1;
+        pc->count = 0;
+        ++w->epoch;
+        for (int i = 0; i < 8; ++i) {
+            octNode *k = octChild(p, (octDirection)(OCT_LDB + i));
+            cell *c = cell_of(k);
+            for (uint32_t j = 0; j < c->count; ++j) {
+                uint32_t id = c->objs[j];
+                span_remove(&w->obj[id], k);
+                if (w->mark[id] != w->epoch) {
+                    w->mark[id] = w->epoch;
+                    pc->objs[pc->count++] = id;
+                }
+            }
+        }
+        free_cells_below(p);
+        octJoin(p, NULL);
+        for (uint32_t j = 0; j < pc->count; ++j) {
+            object *o = &w->obj[pc->objs[j]];
+            if (!grow_array((void **)&o->spans, &o->capspans, o->nspans + 1,
+                            sizeof *o->spans))
+                return false;
+            o->spans[o->nspans++] = p;
+        }
+        ++w->c.merges;
+        p = octParent(p);
+    }
+    return true;
+}
+
+static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
+{
+    cell *c = cell_of(leaf);
+    for (uint32_t i = 0; i < c->count; ++i)
+        if (c->objs[i] == id) {
+            c->objs[i] = c->objs[--c->count];
+            break;
+        }
+    span_remove(&w->obj[id], leaf);
+    ++w->c.leaves_left;
+    return try_merge(w, octParent(leaf));
+}
+
+/* Add id to every leaf under n that its box overlaps and lacks it. If the
+ * worklist is on, newly entered leaves are pushed to it. */
+static bool insert_below(noctWorld *w, octNode *n, uint32_t id, bool push)
+{
+    const object *o = &w->obj[id];
+    if (!overlaps(o, cell_of(n)))
+        return true;
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i)
+            if (!insert_below(w, octChild(n, (octDirection)(OCT_LDB + i)), id, push))
+                return false;
+        return true;
+    }
+    if (leaf_has(cell_of(n), id))
+        return true;
+    ++w->c.leaves_entered;
+    if (push) {
+        if (w->nwork == w->capwork) {
+            size_t cap = w->capwork ? 2 * w->capwork : 64;
+            octNode **q = realloc(w->work, cap * sizeof *q);
+            if (q == NULL)
+                return false;
+            w->work = q;
+            w->capwork = cap;
+        }
+        w->work[w->nwork++] = n;
+    }
+    return add_and_split(w, n, id);
+}
+
+/* ---- building the tree ---------------------------------------------------------- */
+
+static void destroy_tree(noctWorld *w)
+{
+    if (w->root == NULL)
+        return;
+    free_cells_below(w->root);
+    if (octIsSplit(w->root))
+        octJoin(w->root, NULL);
+    cell *rc = octSwapData(w->root, NULL);
+    free(rc->objs);
+    free(rc);
+    octDispose(w->root);
+    w->root = NULL;
+    for (uint32_t i = 0; i < w->nslots; ++i)
+        w->obj[i].nspans = 0;
+}
+
+/* Build the tree afresh around every live object: a root cube whose size
+ * is a power of two at least twice the objects' extent (and at least
+ * min_size), aligned to half its size so that every cell's corner and size
+ * are exact. */
+static noctStatus rebuild(noctWorld *w, double min_size)
+{
+    destroy_tree(w);
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    bool any = false;
+    for (uint32_t i = 0; i < w->nslots; ++i) {
+        const object *o = &w->obj[i];
+        if (!o->alive)
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = any ? fmin(lo[k], o->lo[k]) : o->lo[k];
+            hi[k] = any ? fmax(hi[k], o->hi[k]) : o->hi[k];
+        }
+        any = true;
+    }
+    double extent = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    double size = 1;
+    while (size < 2 * extent || size < min_size)
+        size *= 2;
+    while (size > 2 * extent && size / 2 >= min_size && size > 0x1p-40)
+        size /= 2;
+    cell *rc = calloc(1, sizeof *rc);
+    w->root = octCreate();
+    if (rc == NULL || w->root == NULL) {
+        free(rc);
+        if (w->root)
+            octDispose(w->root);
+        w->root = NULL;
+        return NOCT_ERR_NOMEM;
+    }
+    rc->size = size;
+    for (int k = 0; k < 3; ++k) { /* the boxes' span fits in the middle */
+        double h = size / 2;
+        rc->lo[k] = floor(lo[k] / h) * h;
+        if (rc->lo[k] + size < hi[k]) /* cannot happen: size >= 2 extent */
+            rc->lo[k] = lo[k];
+    }
+    octSwapData(w->root, rc);
+    ++w->c.rebuilds;
+    for (uint32_t i = 0; i < w->nslots; ++i)
+        if (w->obj[i].alive && !insert_below(w, w->root, i, false))
+            return NOCT_ERR_NOMEM;
+    return NOCT_OK;
+}
+
+static bool inside_root(const noctWorld *w, const object *o)
+{
+    const cell *rc = cell_of(w->root);
+    for (int k = 0; k < 3; ++k)
+        if (o->lo[k] < rc->lo[k] || o->hi[k] > rc->lo[k] + rc->size)
+            return false;
+    return true;
+}
+
+/* ---- incremental maintenance ------------------------------------------------- */
+
+/*
+ * Maintenance (report 2.4) runs in two phases over the moving objects, so
+ * that every split sees leaf lists that match the objects' new boxes.
+ *
+ * Phase A, per object: the fast test (a box strictly inside its only leaf
+ * needs nothing), then the leave check: remove the object from the leaves
+ * its box no longer overlaps, merging siblings that together hold N or
+ * fewer distinct objects. Returns whether phase B is needed.
+ */
+static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
+{
+    object *o = &w->obj[id];
+    *enter = false;
+    if (o->nspans == 1 && strictly_inside(o, cell_of(o->spans[0]))) {
+        ++w->c.inside_fast;
+        return NOCT_OK;
+    }
+    for (uint32_t i = 0; i < o->nspans;) {
+        if (overlaps(o, cell_of(o->spans[i]))) {
+            ++i;
+            continue;
+        }
+        if (!leaf_remove(w, o->spans[i], id))
+            return NOCT_ERR_NOMEM;
+        i = 0; /* merges may have rewritten the list */
+    }
+    *enter = true;
+    return NOCT_OK;
+}
+
+/*
+ * Phase B, per object: the enter check. The leaves a box overlaps are
+ * connected, so a flood from the leaves it is still in finds them all.
+ * From each leaf whose boundary the box reaches, query the
+ * greater-or-equal neighbors in the directions it reaches (for a box that
+ * was inside its leaves, the quantized directions of its motion), each
+ * neighbor node once per object per step (the node's stamp), and add the
+ * object to the leaves below it that the box overlaps; newly entered
+ * leaves join the flood. A box that left every leaf it was in (it moved
+ * farther than its leaves are wide) is re-inserted from the root.
+ */
+static noctStatus enter_phase(noctWorld *w, uint32_t id)
+{
+    object *o = &w->obj[id];
+    if (o->nspans == 0) {
+        ++w->c.reinserts;
+        return insert_below(w, w->root, id, false) ? NOCT_OK : NOCT_ERR_NOMEM;
+    }
+    if (w->capwork < o->nspans) {
+        octNode **q = realloc(w->work, o->nspans * sizeof *q);
+        if (q == NULL)
+            return NOCT_ERR_NOMEM;
+        w->work = q;
+        w->capwork = o->nspans;
+    }
+    memcpy(w->work, o->spans, o->nspans * sizeof *o->spans);
+    w->nwork = o->nspans;
+    for (size_t wi = 0; wi < w->nwork; ++wi) {
+        const cell *lc = cell_of(w->work[wi]);
+        /* Per axis: 0, and -1 / +1 if the box reaches that face. */
+        int reach[3][3], nr[3];
+        for (int k = 0; k < 3; ++k) {
+            nr[k] = 0;
+            reach[k][nr[k]++] = 0;
+            if (o->lo[k] <= lc->lo[k])
+                reach[k][nr[k]++] = -1;
+            if (o->hi[k] >= lc->lo[k] + lc->size)
+                reach[k][nr[k]++] = 1;
+        }
+        if (nr[0] + nr[1] + nr[2] == 3)
+            continue; /* strictly inside: no neighbor can be reached */
+        for (int a = 0; a < nr[0]; ++a)
+            for (int b = 0; b < nr[1]; ++b)
+                for (int c = 0; c < nr[2]; ++c) {
+                    double v[3] = {reach[0][a], reach[1][b], reach[2][c]};
+                    octDirection d[OCT_MAX_MOTION_DIRECTIONS];
+                    size_t nd = octVectorToDirections(v[0], v[1], v[2], d);
+                    if (nd == 0)
+                        continue;
+                    /* The last direction listed has all of v's axes. */
+                    octNode *nb = octGtEqNeighbor(w->work[wi], d[nd - 1]);
+                    ++w->c.neighbor_queries;
+                    if (nb == NULL)
+                        continue;
+                    cell *nc = cell_of(nb);
+                    if (nc->stamp_step == w->step && nc->stamp_obj == id)
+                        continue;
+                    nc->stamp_step = w->step;
+                    nc->stamp_obj = id;
+                    if (!insert_below(w, nb, id, true))
+                        return NOCT_ERR_NOMEM;
+                }
+    }
+    return NOCT_OK;
+}
+
+static noctStatus maintain(noctWorld *w)
+{
+    noctStatus st = NOCT_OK;
+    for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i)
+        if (w->obj[i].alive && w->obj[i].speed != 0)
+            st = leave_phase(w, i, &w->obj[i].entering);
+    for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i)
+        if (w->obj[i].alive && w->obj[i].entering)
+            st = enter_phase(w, i);
+    return st;
+}
+
+/* ---- pair search, events, response ------------------------------------------- */
+
+static bool pairs_push(pair_list *l, noctPair p)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        noctPair *q = realloc(l->p, cap * sizeof *q);
+        if (q == NULL)
+            return false;
+        l->p = q;
+        l->cap = cap;
+    }
+    l->p[l->n++] = p;
+    return true;
+}
+
+static int cmp_pair(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
+
+/* Does the leaf own point p: [lo, lo + size) per axis, closed at the
+ * root's upper faces? */
+static bool owns(const cell *c, const cell *root, const double p[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        double hi = c->lo[k] + c->size;
+        if (p[k] < c->lo[k] || p[k] > hi)
+            return false;
+        if (p[k] == hi && hi != root->lo[k] + root->size)
+            return false;
+    }
+    return true;
+}
+
+static noctStatus search_leaf(noctWorld *w, const cell *c)
+{
+    const cell *rc = cell_of(w->root);
+    ++w->c.leaves_visited;
+    for (uint32_t i = 0; i < c->count; ++i) {
+        const object *a = &w->obj[c->objs[i]];
+        for (uint32_t j = i + 1; j < c->count; ++j) {
+            const object *b = &w->obj[c->objs[j]];
+            ++w->c.candidate_pairs;
+            double corner[3];
+            bool apart = false;
+            for (int k = 0; k < 3; ++k) {
+                apart = apart || a->hi[k] < b->lo[k] || b->hi[k] < a->lo[k];
+                corner[k] = fmax(a->lo[k], b->lo[k]);
+            }
+            if (apart || !owns(c, rc, corner))
+                continue;
+            ++w->c.tested_pairs;
+            bool hit;
+            noctStatus st = noctCollide(a->mesh, a->pos, b->mesh, b->pos,
+                                        w->def.accuracy, &hit, &w->c.narrow);
+            if (st != NOCT_OK)
+                return st;
+            if (!hit)
+                continue;
+            uint32_t ia = c->objs[i], ib = c->objs[j];
+            if (ia > ib) {
+                uint32_t t = ia;
+                ia = ib;
+                ib = t;
+            }
+            noctPair p = {{ia, w->obj[ia].generation}, {ib, w->obj[ib].generation}};
+            if (!pairs_push(&w->colliding, p))
+                return NOCT_ERR_NOMEM;
+        }
+    }
+    return NOCT_OK;
+}
+
+static noctStatus search(noctWorld *w, octNode *n)
+{
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i) {
+            noctStatus st = search(w, octChild(n, (octDirection)(OCT_LDB + i)));
+            if (st != NOCT_OK)
+                return st;
+        }
+        return NOCT_OK;
+    }
+    const cell *c = cell_of(n);
+    return c->count > 1 ? search_leaf(w, c) : NOCT_OK;
+}
+
+/* began = colliding - previous, ended = previous - colliding (sorted). */
+static noctStatus diff_events(noctWorld *w)
+{
+    w->began.n = w->ended.n = 0;
+    size_t i = 0, j = 0;
+    const pair_list *now = &w->colliding, *before = &w->previous;
+    while (i < now->n || j < before->n) {
+        int c = i == now->n ? 1 : j == before->n ? -1 : cmp_pair(&now->p[i], &before->p[j]);
+        if (c == 0 && now->p[i].a.generation == before->p[j].a.generation &&
+            now->p[i].b.generation == before->p[j].b.generation) {
+            ++i;
+            ++j;
+        } else if (c <= 0) {
+            if (!pairs_push(&w->began, now->p[i++]))
+                return NOCT_ERR_NOMEM;
+        } else if (!pairs_push(&w->ended, before->p[j++])) {
+            return NOCT_ERR_NOMEM;
+        }
+    }
+    w->c.events += w->began.n + w->ended.n;
+    return NOCT_OK;
+}
+
+/* ---- public API ----------------------------------------------------------------- */
+
+noctWorldDef noctDefaultWorldDef(void)
+{
+    noctWorldDef d;
+    d.N = 10;
+    d.max_depth = 10;
+    d.accuracy = NOCT_ACCURACY_EXACT;
+    d.effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE;
+    d.maintenance = NOCT_MAINTAIN_INCREMENTAL;
+    return d;
+}
+
+noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError *err)
+{
+    NOCT_REQUIRE(def != NULL && world != NULL);
+    *world = NULL;
+    if (def->N < 1)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "N is %d; it must be at least 1",
+                         def->N);
+    if (def->max_depth < 1 || def->max_depth > 40)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "max_depth is %d; it must be 1 to 40", def->max_depth);
+    if (def->accuracy != NOCT_ACCURACY_BOX && def->accuracy != NOCT_ACCURACY_CONVEX &&
+        def->accuracy != NOCT_ACCURACY_EXACT)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown accuracy %d",
+                         (int)def->accuracy);
+    if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
+                                   NOCT_EFFECT_RESPONSE))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown effect bits 0x%x",
+                         def->effects);
+    if (def->maintenance != NOCT_MAINTAIN_INCREMENTAL &&
+        def->maintenance != NOCT_MAINTAIN_REBUILD)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown maintenance mode %d",
+                         (int)def->maintenance);
+    noctWorld *w = calloc(1, sizeof *w);
+    if (w == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    w->def = *def;
+    *world = w;
+    return NOCT_OK;
+}
+
+void noctWorldDestroy(noctWorld *w)
+{
+    if (w == NULL)
+        return;
+    destroy_tree(w);
+    for (uint32_t i = 0; i < w->nslots; ++i)
+        free(w->obj[i].spans);
+    free(w->obj);
+    free(w->free_slots);
+    free(w->mark);
+    free(w->work);
+    free(w->colliding.p);
+    free(w->previous.p);
+    free(w->began.p);
+    free(w->ended.p);
+    free(w);
+}
+
+static object *lookup(const noctWorld *w, noctObjectId id)
+{
+    if (id.index >= w->nslots || !w->obj[id.index].alive ||
+        w->obj[id.index].generation != id.generation)
+        return NULL;
+    return &w->obj[id.index];
+}
+
+noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double position[3],
+                        const double direction[3], double speed, noctObjectId *id,
+                        noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && mesh != NULL && position != NULL && direction != NULL);
+    NOCT_REQUIRE(id != NULL);
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(position[k]) || !isfinite(direction[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "object position or direction is not finite");
+    if (!isfinite(speed))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "object speed is not finite");
+    if (speed < 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "object speed %g is negative",
+                         speed);
+    for (int k = 0; k < 3; ++k)
+        if (fabs(position[k]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "object position beyond %g", NOCT_MAX_COORDINATE);
+    double len = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                      direction[2] * direction[2]);
+    if (speed > 0 && !(len > 0 && isfinite(len)))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "a moving object needs a non-zero direction");
+    uint32_t slot;
+    if (w->nfree > 0) {
+        slot = w->free_slots[--w->nfree];
+    } else {
+        if (w->nslots >= 0x80000000u)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
+        uint32_t cap = w->capslots;
+        if (!grow_array((void **)&w->obj, &w->capslots, w->nslots + 1, sizeof *w->obj))
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        if (!grow_array((void **)&w->mark, &cap, w->nslots + 1, sizeof *w->mark))
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        slot = w->nslots++;
+        memset(&w->obj[slot], 0, sizeof w->obj[slot]);
+        w->mark[slot] = 0;
+    }
+    object *o = &w->obj[slot];
+    o->mesh = mesh;
+    o->speed = speed;
+    for (int k = 0; k < 3; ++k) {
+        o->pos[k] = position[k];
+        o->dir[k] = speed > 0 ? direction[k] / len : 0;
+    }
+    o->generation = o->generation + 1 ? o->generation + 1 : 1;
+    o->alive = true;
+    o->nspans = 0;
+    place_box(o);
+    ++w->alive;
+    w->moving += speed > 0;
+    id->index = slot;
+    id->generation = o->generation;
+    noctStatus st;
+    if (w->root == NULL || !inside_root(w, o))
+        st = rebuild(w, w->root ? 2 * cell_of(w->root)->size : 0);
+    else
+        st = insert_below(w, w->root, slot, false) ? NOCT_OK : NOCT_ERR_NOMEM;
+    if (st != NOCT_OK)
+        return noct_fail(err, st, -1, 0, "out of memory");
+    return NOCT_OK;
+}
+
+noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
+{
+    NOCT_REQUIRE(w != NULL);
+    object *o = lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    while (o->nspans > 0)
+        if (!leaf_remove(w, o->spans[0], id.index))
+            return NOCT_ERR_NOMEM;
+    o->alive = false;
+    --w->alive;
+    w->moving -= o->speed > 0;
+    uint32_t cap = w->nfree;
+    if (!grow_array((void **)&w->free_slots, &cap, w->nfree + 1, sizeof *w->free_slots))
+        return NOCT_ERR_NOMEM;
+    w->free_slots[w->nfree++] = id.index;
+    /* Drop its pairs from the lists a caller may read. */
+    pair_list *lists[2] = {&w->colliding, &w->previous};
+    for (int l = 0; l < 2; ++l) {
+        size_t k = 0;
+        for (size_t i = 0; i < lists[l]->n; ++i)
+            if (lists[l]->p[i].a.index != id.index && lists[l]->p[i].b.index != id.index)
+                lists[l]->p[k++] = lists[l]->p[i];
+        lists[l]->n = k;
+    }
+    w->began.n = w->ended.n = 0;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldStep(noctWorld *w, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    ++w->step;
+    ++w->c.steps;
+    noctStatus st = NOCT_OK;
+    double t0 = seconds();
+    bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->moving > 0;
+    if (moving) {
+        for (uint32_t i = 0; i < w->nslots; ++i) {
+            object *o = &w->obj[i];
+            if (!o->alive || o->speed == 0)
+                continue;
+            for (int k = 0; k < 3; ++k)
+                o->pos[k] += o->dir[k] * o->speed;
+            if (fabs(o->pos[0]) > NOCT_MAX_COORDINATE ||
+                fabs(o->pos[1]) > NOCT_MAX_COORDINATE ||
+                fabs(o->pos[2]) > NOCT_MAX_COORDINATE)
+                return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
+                                 "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
+            place_box(o);
+            ++w->c.moved;
+        }
+    }
+    double t1 = seconds();
+    if (moving)
+        w->c.seconds_motion += t1 - t0;
+    if (w->root != NULL && moving) {
+        bool escaped = false;
+        for (uint32_t i = 0; i < w->nslots && !escaped; ++i)
+            escaped = w->obj[i].alive && w->obj[i].speed > 0 && !inside_root(w, &w->obj[i]);
+        if (w->def.maintenance == NOCT_MAINTAIN_REBUILD || escaped)
+            st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
+        else
+            st = maintain(w);
+        w->c.seconds_maintenance += seconds() - t1;
+        if (st != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "octree maintenance: %s",
+                             noctStatusString(st));
+    }
+    double t2 = seconds();
+    pair_list tmp = w->previous;
+    w->previous = w->colliding;
+    w->colliding = tmp;
+    w->colliding.n = 0;
+    if (w->root != NULL)
+        st = search(w, w->root);
+    if (st != NOCT_OK)
+        return noct_fail(err, st, -1, 0, "pair search: %s", noctStatusString(st));
+    qsort(w->colliding.p, w->colliding.n, sizeof *w->colliding.p, cmp_pair);
+    w->c.colliding_pairs += w->colliding.n;
+    double t3 = seconds();
+    w->c.seconds_pairs += t3 - t2;
+    if (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)) {
+        st = diff_events(w);
+        if (st != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "events: out of memory");
+        if (w->def.effects & NOCT_EFFECT_RESPONSE) {
+            ++w->epoch;
+            for (size_t i = 0; i < w->began.n; ++i) {
+                uint32_t ids[2] = {w->began.p[i].a.index, w->began.p[i].b.index};
+                for (int s = 0; s < 2; ++s) {
+                    if (w->mark[ids[s]] == w->epoch)
+                        continue;
+                    w->mark[ids[s]] = w->epoch;
+                    for (int k = 0; k < 3; ++k)
+                        w->obj[ids[s]].dir[k] = -w->obj[ids[s]].dir[k];
+                    ++w->c.reversals;
+                }
+            }
+        }
+        w->c.seconds_response += seconds() - t3;
+    }
+    return NOCT_OK;
+}
+
+size_t noctWorldColliding(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->colliding.p;
+    return w->colliding.n;
+}
+
+size_t noctWorldBegan(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->began.p;
+    return w->began.n;
+}
+
+size_t noctWorldEnded(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->ended.p;
+    return w->ended.n;
+}
+
+noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[3],
+                           double direction[3])
+{
+    NOCT_REQUIRE(w != NULL);
+    const object *o = lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    if (position != NULL)
+        memcpy(position, o->pos, sizeof o->pos);
+    if (direction != NULL)
+        memcpy(direction, o->dir, sizeof o->dir);
+    return NOCT_OK;
+}
+
+size_t noctWorldObjectCount(const noctWorld *w)
+{
+    NOCT_REQUIRE(w != NULL);
+    return w->alive;
+}
+
+void noctWorldGetCounters(const noctWorld *w, noctWorldCounters *counters)
+{
+    NOCT_REQUIRE(w != NULL && counters != NULL);
+    *counters = w->c;
+}
+
+octNode *noctWorldRoot(const noctWorld *w)
+{
+    NOCT_REQUIRE(w != NULL);
+    return w->root;
+}
+
+noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && unit_cube != NULL);
+    if (k < 0 || k > 1000)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "planes: %d rings; it must be 0 to 1000", k);
+    for (int side = 0; side < 2; ++side) {
+        const double dir[3] = {side == 0 ? 1 : -1, 0, 0};
+        for (int i = -k; i <= k; ++i)
+            for (int j = -k; j <= k; ++j) {
+                int r = abs(i) > abs(j) ? abs(i) : abs(j);
+                double x = 3.02 + 0.1 * r;
+                double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
+                noctObjectId id;
+                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &id, err);
+                if (st != NOCT_OK)
+                    return st;
+            }
+    }
+    return NOCT_OK;
+}
+
+/* ---- validation walk ----------------------------------------------------------- */
+
+#define BAD(...) noct_fail(err, NOCT_ERR_NUMERIC, -1, 0, __VA_ARGS__)
+
+static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
+                                noctError *err)
+{
+    const cell *c = cell_of(n);
+    if (c == NULL)
+        return BAD("a node has no cell");
+    if (octIsSplit(n)) {
+        if (c->count != 0)
+            return BAD("an inner node holds objects");
+        bool all_leaves = true;
+        for (int i = 0; i < 8; ++i) {
+            octNode *k = octChild(n, (octDirection)(OCT_LDB + i));
+            const cell *kc = cell_of(k);
+            if (kc->size != c->size / 2 ||
+                kc->lo[0] != c->lo[0] + ((i & 4) ? c->size / 2 : 0) ||
+                kc->lo[1] != c->lo[1] + ((i & 2) ? c->size / 2 : 0) ||
+                kc->lo[2] != c->lo[2] + ((i & 1) ? c->size / 2 : 0))
+                return BAD("child %d's cell does not match its parent's", i);
+            if (octParent(k) != n || octGeneration(k) != octGeneration(n) + 1)
+                return BAD("child %d's links are wrong", i);
+            noctStatus st = validate_node(w, k, refs, err);
+            if (st != NOCT_OK)
+                return st;
+            all_leaves = all_leaves && !octIsSplit(k);
+        }
+        if (all_leaves && w->def.maintenance == NOCT_MAINTAIN_INCREMENTAL) {
+            /* distinct objects among the 8 leaves */
+            uint32_t ids[8 * 64], n_ids = 0;
+            bool many = false;
+            for (int i = 0; i < 8 && !many; ++i) {
+                const cell *kc = cell_of(octChild(n, (octDirection)(OCT_LDB + i)));
+                for (uint32_t j = 0; j < kc->count && !many; ++j) {
+                    bool seen = false;
+                    for (uint32_t q = 0; q < n_ids && !seen; ++q)
+                        seen = ids[q] == kc->objs[j];
+                    if (!seen) {
+                        if (n_ids == sizeof ids / sizeof *ids)
+                            many = true;
+                        else
+                            ids[n_ids++] = kc->objs[j];
+                    }
+                }
+            }
+            if (!many && (int)n_ids <= w->def.N)
+                return BAD("siblings at generation %d hold %u distinct objects "
+                           "(N = %d) but were not merged", octGeneration(n) + 1, n_ids,
+                           w->def.N);
+        }
+        return NOCT_OK;
+    }
+    if ((int)c->count > w->def.N && octGeneration(n) < w->def.max_depth)
+        return BAD("a leaf at generation %d holds %u objects (N = %d)", octGeneration(n),
+                   c->count, w->def.N);
+    for (uint32_t j = 0; j < c->count; ++j) {
+        uint32_t id = c->objs[j];
+        if (id >= w->nslots || !w->obj[id].alive)
+            return BAD("a leaf lists a dead object %u", id);
+        for (uint32_t q = 0; q < j; ++q)
+            if (c->objs[q] == id)
+                return BAD("a leaf lists object %u twice", id);
+        if (!overlaps(&w->obj[id], c))
+            return BAD("object %u is in a leaf its box does not overlap", id);
+        bool spanned = false;
+        for (uint32_t s = 0; s < w->obj[id].nspans && !spanned; ++s)
+            spanned = w->obj[id].spans[s] == n;
+        if (!spanned)
+            return BAD("object %u is in a leaf missing from its spans", id);
+        ++refs[id];
+    }
+    return NOCT_OK;
+}
+
+/* Count the leaves under n that box o overlaps. */
+static size_t overlapped_leaves(const object *o, octNode *n)
+{
+    if (!overlaps(o, cell_of(n)))
+        return 0;
+    if (!octIsSplit(n))
+        return 1;
+    size_t s = 0;
+    for (int i = 0; i < 8; ++i)
+        s += overlapped_leaves(o, octChild(n, (octDirection)(OCT_LDB + i)));
+    return s;
+}
+
+noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (w->root == NULL)
+        return w->alive == 0 ? NOCT_OK : BAD("objects but no tree");
+    if (octParent(w->root) != NULL || octGeneration(w->root) != 0)
+        return BAD("the root is not a root");
+    size_t *refs = calloc(w->nslots ? w->nslots : 1, sizeof *refs);
+    if (refs == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    noctStatus st = validate_node(w, w->root, refs, err);
+    for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i) {
+        const object *o = &w->obj[i];
+        if (!o->alive)
+            continue;
+        if (!inside_root(w, o))
+            st = BAD("object %u is outside the root", i);
+        else if (refs[i] != o->nspans)
+            st = BAD("object %u: %zu leaves list it, its spans count %u", i, refs[i],
+                     o->nspans);
+        else if (overlapped_leaves(o, w->root) != refs[i])
+            st = BAD("object %u is in %zu leaves but its box overlaps %zu", i, refs[i],
+                     overlapped_leaves(o, w->root));
+    }
+    free(refs);
+    return st;
+}

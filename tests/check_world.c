@@ -1,0 +1,409 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Check suite for the collision world (include/noctree/world.h).
+ *
+ * Oracles: the closed-form event counts of the planes scenes (SCENES.md),
+ * identical event sequences across N and maintenance modes, a brute-force
+ * all-pairs exact test after every step of random scenes, and the world's
+ * whole-structure validation walk after every step.
+ */
+#include <check.h>
+#include <math.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/world.h>
+
+#include "testutil.h"
+
+static noctWorld *make_world(int N, int depth, noctMaintenance mode)
+{
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = N;
+    def.max_depth = depth;
+    def.maintenance = mode;
+    noctWorld *w = NULL;
+    noctError err;
+    ck_assert_msg(noctWorldCreate(&def, &w, &err) == NOCT_OK, "%s", err.message);
+    return w;
+}
+
+static void step_ok(noctWorld *w)
+{
+    noctError err;
+    noctStatus st = noctWorldStep(w, &err);
+    ck_assert_msg(st == NOCT_OK, "step: %s", err.message);
+}
+
+static void validate_ok(noctWorld *w)
+{
+    noctError err;
+    noctStatus st = noctWorldValidate(w, &err);
+    ck_assert_msg(st == NOCT_OK, "validate: %s", err.message);
+}
+
+/* ---- planes: closed-form counts, the same events for every N and mode ---- */
+
+/* Run t_k for 200 steps; return the number of contact-begin events and a
+ * hash of the whole event sequence (step, pair) in *hash. */
+static size_t run_planes(int k, int N, noctMaintenance mode, int validate_every,
+                         uint64_t *hash)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(N, 6, mode);
+    ck_assert_int_eq(noctWorldAddPlanes(w, k, cube, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldObjectCount(w), (size_t)(2 * (2 * k + 1) * (2 * k + 1)));
+    size_t begins = 0;
+    uint64_t h = 1469598103934665603u;
+    for (int s = 1; s <= 200; ++s) {
+        step_ok(w);
+        const noctPair *p;
+        size_t n = noctWorldBegan(w, &p);
+        begins += n;
+        for (size_t i = 0; i < n; ++i) {
+            h = (h ^ (uint64_t)s) * 1099511628211u;
+            h = (h ^ p[i].a.index) * 1099511628211u;
+            h = (h ^ p[i].b.index) * 1099511628211u;
+            /* Each begin is a facing pair: same row, opposite planes. */
+            size_t per = (size_t)((2 * k + 1) * (2 * k + 1));
+            EXPECT(p[i].a.index < per && p[i].b.index == p[i].a.index + per);
+        }
+        if (validate_every > 0 && s % validate_every == 0)
+            validate_ok(w);
+    }
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+    *hash = h;
+    return begins;
+}
+
+START_TEST(planes_counts_across_N_and_modes)
+{
+    static const int ks[] = {0, 1, 2, 3, 5, 10};
+    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE};
+    int k = ks[_i];
+    size_t want = (size_t)((2 * k + 1) * (2 * k + 1));
+    uint64_t first = 0;
+    for (size_t n = 0; n < sizeof Ns / sizeof *Ns; ++n)
+        for (int mode = 0; mode < 2; ++mode) {
+            uint64_t h;
+            size_t got = run_planes(k, Ns[n], (noctMaintenance)mode, k <= 3 ? 5 : 50, &h);
+            ck_assert_msg(got == want, "t%d, N = %d, mode %d: %zu begins, want %zu", k,
+                          Ns[n], mode, got, want);
+            if (n == 0 && mode == 0)
+                first = h;
+            ck_assert_msg(h == first, "t%d, N = %d, mode %d: event sequence differs", k,
+                          Ns[n], mode);
+        }
+}
+END_TEST
+
+START_TEST(planes_t30)
+{
+    uint64_t h1, h2;
+    ck_assert_uint_eq(run_planes(30, 10, NOCT_MAINTAIN_INCREMENTAL, 100, &h1), 61 * 61);
+    ck_assert_uint_eq(run_planes(30, 50, NOCT_MAINTAIN_REBUILD, 0, &h2), 61 * 61);
+    ck_assert(h1 == h2);
+}
+END_TEST
+
+/* The facing pair of ring r first overlaps at step 51 + 2 r and reverses. */
+START_TEST(planes_timing_and_reversal)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(5, 6, NOCT_MAINTAIN_INCREMENTAL);
+    ck_assert_int_eq(noctWorldAddPlanes(w, 2, cube, NULL), NOCT_OK);
+    int first_step[3] = {0, 0, 0};
+    for (int s = 1; s <= 200; ++s) {
+        step_ok(w);
+        const noctPair *p;
+        size_t n = noctWorldBegan(w, &p);
+        for (size_t i = 0; i < n; ++i) {
+            int row = (int)p[i].a.index; /* index = (i + k) (2k+1) + (j + k) */
+            int ii = row / 5 - 2, jj = row % 5 - 2;
+            int r = abs(ii) > abs(jj) ? abs(ii) : abs(jj);
+            if (first_step[r] == 0)
+                first_step[r] = s;
+            ck_assert_int_eq(s, 51 + 2 * r);
+            double d[3];
+            ck_assert_int_eq(noctWorldObject(w, p[i].a, NULL, d), NOCT_OK);
+            ck_assert(d[0] == -1.0); /* the left cube now moves left */
+        }
+    }
+    ck_assert(first_step[0] == 51 && first_step[1] == 53 && first_step[2] == 55);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* ---- random scenes against brute force ------------------------------------ */
+
+static int cmp_pair(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
+
+START_TEST(random_scenes_against_brute_force)
+{
+    uint64_t rng = 99 + (uint64_t)_i;
+    noctMaintenance mode = _i % 2 ? NOCT_MAINTAIN_REBUILD : NOCT_MAINTAIN_INCREMENTAL;
+    int N = 1 + (int)(_i % 4) * 3;
+    noctWorld *w = make_world(N, 7, mode);
+    enum { NOBJ = 70, NMESH = 5 };
+    noctMesh *meshes[NMESH];
+    /* From tiny to larger than a node; dyadic sizes so touching happens. */
+    static const double half[NMESH] = {0x1p-6, 0.25, 0.5, 1.5, 4};
+    for (int m = 0; m < NMESH; ++m)
+        ck_assert_int_eq(noctMeshCreateBox(half[m], half[m] * 0.75, half[m] * 0.5,
+                                           &meshes[m], NULL), NOCT_OK);
+    noctObjectId ids[NOBJ];
+    const noctMesh *mesh_of[NOBJ];
+    for (int i = 0; i < NOBJ; ++i) {
+        bool cluster = i < NOBJ / 2;
+        double pos[3], dir[3];
+        for (int k = 0; k < 3; ++k) {
+            pos[k] = cluster ? (double)test_rand_below(&rng, 16) * 0.25
+                             : (double)test_rand_below(&rng, 64) * 0.5 - 16;
+            dir[k] = (double)test_rand_below(&rng, 3) - 1;
+        }
+        if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0)
+            dir[0] = 1;
+        /* A fifth static; a few fast (several node sizes per step). */
+        double speed = i % 5 == 0 ? 0 : i % 7 == 0 ? 3.0 : 0.25;
+        mesh_of[i] = meshes[test_rand_below(&rng, NMESH)];
+        ck_assert_int_eq(noctWorldAdd(w, mesh_of[i], pos, dir, speed, &ids[i], NULL),
+                         NOCT_OK);
+    }
+    validate_ok(w);
+    noctPair *want = malloc(NOBJ * NOBJ * sizeof *want);
+    for (int s = 0; s < 40; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        size_t nwant = 0;
+        double pi[3], pj[3];
+        for (int i = 0; i < NOBJ; ++i) {
+            ck_assert_int_eq(noctWorldObject(w, ids[i], pi, NULL), NOCT_OK);
+            for (int j = i + 1; j < NOBJ; ++j) {
+                noctWorldObject(w, ids[j], pj, NULL);
+                bool hit;
+                ck_assert_int_eq(noctCollide(mesh_of[i], pi, mesh_of[j], pj,
+                                             NOCT_ACCURACY_EXACT, &hit, NULL), NOCT_OK);
+                if (hit)
+                    want[nwant++] = (noctPair){ids[i], ids[j]};
+            }
+        }
+        qsort(want, nwant, sizeof *want, cmp_pair);
+        const noctPair *got;
+        size_t ngot = noctWorldColliding(w, &got);
+        ck_assert_msg(ngot == nwant, "step %d: %zu colliding pairs, brute force %zu", s,
+                      ngot, nwant);
+        for (size_t i = 0; i < nwant; ++i)
+            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+    }
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_gt(c.colliding_pairs, 0);
+    if (mode == NOCT_MAINTAIN_INCREMENTAL) {
+        ck_assert_uint_gt(c.neighbor_queries, 0);
+        ck_assert_uint_gt(c.leaves_left, 0);
+    }
+    free(want);
+    noctWorldDestroy(w);
+    for (int m = 0; m < NMESH; ++m)
+        noctMeshDestroy(meshes[m]);
+}
+END_TEST
+
+/* Objects that leave the initial root make the tree grow, and collisions
+ * out there are still found. */
+START_TEST(root_grows)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(2, 8, NOCT_MAINTAIN_INCREMENTAL);
+    const double a[3] = {0, 0, 0}, b[3] = {100, 0, 0}, toward[3] = {1, 0, 0},
+                 back[3] = {-1, 0, 0};
+    noctObjectId ia, ib;
+    ck_assert_int_eq(noctWorldAdd(w, cube, a, toward, 1, &ia, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, b, back, 0, &ib, NULL), NOCT_OK);
+    int hits = 0;
+    for (int s = 0; s < 120; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        const noctPair *p;
+        hits += (int)noctWorldBegan(w, &p);
+    }
+    ck_assert_int_eq(hits, 1);
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_ge(c.rebuilds, 1);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* ---- effects cost nothing when off --------------------------------------- */
+
+START_TEST(effects_off_cost_nothing)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    for (int variant = 0; variant < 3; ++variant) {
+        noctWorldDef def = noctDefaultWorldDef();
+        def.effects = variant == 0 ? 0u
+                    : variant == 1 ? (unsigned)NOCT_EFFECT_MOTION
+                                   : (unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS);
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldAddPlanes(w, 1, cube, NULL), NOCT_OK);
+        noctWorldCounters built; /* building the tree is not a step's work */
+        noctWorldGetCounters(w, &built);
+        for (int s = 0; s < 80; ++s)
+            step_ok(w);
+        noctWorldCounters c;
+        noctWorldGetCounters(w, &c);
+        c.splits -= built.splits;
+        c.leaves_entered -= built.leaves_entered;
+        c.rebuilds -= built.rebuilds;
+        ck_assert_uint_eq(c.steps, 80);
+        ck_assert_uint_eq(c.reversals, 0); /* no response in any variant */
+        ck_assert(c.seconds_response == 0 || variant == 2);
+        if (variant == 0) { /* detection only: nothing moves or is maintained */
+            ck_assert_uint_eq(c.moved, 0);
+            ck_assert(c.seconds_motion == 0 && c.seconds_maintenance == 0);
+            ck_assert_uint_eq(c.inside_fast + c.leaves_left + c.leaves_entered +
+                              c.neighbor_queries + c.splits + c.merges, 0);
+        } else {
+            ck_assert_uint_eq(c.moved, 80 * 18);
+        }
+        if (variant < 2)
+            ck_assert_uint_eq(c.events, 0);
+        else
+            ck_assert_uint_gt(c.events, 0);
+        noctWorldDestroy(w);
+    }
+    /* A world of static objects does no maintenance either. */
+    noctWorld *w = make_world(2, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double p[3] = {0, 0, 0}, d[3] = {1, 0, 0};
+    noctObjectId id;
+    for (int i = 0; i < 5; ++i)
+        ck_assert_int_eq(noctWorldAdd(w, cube, p, d, 0, &id, NULL), NOCT_OK);
+    noctWorldCounters built, c;
+    noctWorldGetCounters(w, &built);
+    for (int s = 0; s < 10; ++s)
+        step_ok(w);
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_eq(c.moved + c.inside_fast + c.neighbor_queries + c.leaves_left, 0);
+    ck_assert_uint_eq(c.splits + c.leaves_entered + c.rebuilds,
+                      built.splits + built.leaves_entered + built.rebuilds);
+    ck_assert(c.seconds_maintenance == 0);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* ---- handles and bad input -------------------------------------------------- */
+
+START_TEST(handles_and_bad_input)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(2, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double p[3] = {0, 0, 0}, q[3] = {0.5, 0, 0}, d[3] = {1, 0, 0};
+    noctObjectId a, b, c;
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, d, 0, &a, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, q, d, 0, &b, NULL), NOCT_OK);
+    step_ok(w);
+    const noctPair *pairs;
+    ck_assert_uint_eq(noctWorldColliding(w, &pairs), 1);
+    ck_assert_int_eq(noctWorldRemove(w, a), NOCT_OK);
+    ck_assert_uint_eq(noctWorldColliding(w, &pairs), 0);
+    ck_assert_int_eq(noctWorldRemove(w, a), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldObject(w, a, NULL, NULL), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, d, 0, &c, NULL), NOCT_OK);
+    ck_assert_uint_eq(c.index, a.index);          /* the slot is reused */
+    ck_assert_uint_ne(c.generation, a.generation); /* with a new generation */
+    ck_assert_int_eq(noctWorldObject(w, a, NULL, NULL), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldObject(w, c, NULL, NULL), NOCT_OK);
+    noctObjectId bogus = {999, 1};
+    ck_assert_int_eq(noctWorldRemove(w, bogus), NOCT_ERR_INVALID);
+    validate_ok(w);
+    noctError err;
+    const double nan3[3] = {NAN, 0, 0}, zero[3] = {0, 0, 0}, far[3] = {1e200, 0, 0};
+    ck_assert_int_eq(noctWorldAdd(w, cube, nan3, d, 1, &c, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, zero, 1, &c, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, d, -1, &c, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, d, INFINITY, &c, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldAdd(w, cube, far, d, 1, &c, &err), NOCT_ERR_TOO_LARGE);
+    ck_assert_int_eq(noctWorldAddPlanes(w, -1, cube, &err), NOCT_ERR_INVALID);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 2);
+    noctWorldDestroy(w);
+
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = 0;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_null(w);
+    def = noctDefaultWorldDef();
+    def.max_depth = 41;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_ERR_INVALID);
+    def = noctDefaultWorldDef();
+    def.effects = 1u << 9;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_ERR_INVALID);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+#ifndef NOCT_EFFICIENT
+START_TEST(die_null_world)
+{
+    switch (_i) {
+    case 0: noctWorldStep(NULL, NULL); break;
+    case 1: noctWorldCreate(NULL, NULL, NULL); break;
+    default: noctWorldValidate(NULL, NULL); break;
+    }
+}
+END_TEST
+#endif
+
+int main(void)
+{
+    Suite *s = suite_create("world");
+    TCase *tc = tcase_create("planes");
+    tcase_set_tags(tc, "slow"); /* left out under valgrind */
+    tcase_set_timeout(tc, 600);
+    tcase_add_loop_test(tc, planes_counts_across_N_and_modes, 0, 6);
+    tcase_add_test(tc, planes_t30);
+    tcase_add_test(tc, planes_timing_and_reversal);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("random scenes");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
+    tcase_add_test(tc, root_grows);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("more random scenes");
+    tcase_set_tags(tc, "slow");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, random_scenes_against_brute_force, 2, 8);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("effects and handles");
+    tcase_add_test(tc, effects_off_cost_nothing);
+    tcase_add_test(tc, handles_and_bad_input);
+    suite_add_tcase(s, tc);
+#ifndef NOCT_EFFICIENT
+    TCase *d = tcase_create("requires clauses");
+    tcase_set_tags(d, "death");
+    tcase_add_loop_test_raise_signal(d, die_null_world, SIGABRT, 0, 3);
+    suite_add_tcase(s, d);
+#endif
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_ENV);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
