@@ -39,7 +39,7 @@ typedef struct cell {
 
 typedef struct object {
     const noctMesh *mesh;
-    double pos[3], dir[3], speed;
+    double pos[3], vel[3], speed; /* vel = speed * unit direction */
     double lo[3], hi[3];   /* placed bounding box */
     octNode **spans;       /* leaves it is in */
     uint32_t nspans, capspans;
@@ -68,6 +68,8 @@ struct noctWorld {
     octNode **work;        /* enter check's worklist */
     size_t nwork, capwork;
     pair_list colliding, previous, began, ended;
+    noctMesh **owned;      /* meshes the scene builders made */
+    size_t nowned, capowned;
     noctWorldCounters c;
     noctStatus deferred;   /* an allocation failure inside a walk */
 };
@@ -625,6 +627,8 @@ noctWorldDef noctDefaultWorldDef(void)
     d.accuracy = NOCT_ACCURACY_EXACT;
     d.effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE;
     d.maintenance = NOCT_MAINTAIN_INCREMENTAL;
+    for (int k = 0; k < 3; ++k)
+        d.walls_lo[k] = d.walls_hi[k] = 0;
     return d;
 }
 
@@ -643,13 +647,20 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown accuracy %d",
                          (int)def->accuracy);
     if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
-                                   NOCT_EFFECT_RESPONSE))
+                                   NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown effect bits 0x%x",
                          def->effects);
     if (def->maintenance != NOCT_MAINTAIN_INCREMENTAL &&
         def->maintenance != NOCT_MAINTAIN_REBUILD)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown maintenance mode %d",
                          (int)def->maintenance);
+    if (def->effects & NOCT_EFFECT_WALLS)
+        for (int k = 0; k < 3; ++k)
+            if (!isfinite(def->walls_lo[k]) || !isfinite(def->walls_hi[k]) ||
+                !(def->walls_lo[k] < def->walls_hi[k]))
+                return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                                 "the walls need a finite container with lo < hi "
+                                 "on every axis");
     noctWorld *w = calloc(1, sizeof *w);
     if (w == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
@@ -673,6 +684,9 @@ void noctWorldDestroy(noctWorld *w)
     free(w->previous.p);
     free(w->began.p);
     free(w->ended.p);
+    for (size_t i = 0; i < w->nowned; ++i)
+        noctMeshDestroy(w->owned[i]);
+    free(w->owned);
     free(w);
 }
 
@@ -726,9 +740,12 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     object *o = &w->obj[slot];
     o->mesh = mesh;
     o->speed = speed;
+    /* A unit direction is used as given: velocity = speed * d, exactly. */
+    double scale = fabs(len - 1) <= 1e-9 ? 1 : 1 / len;
     for (int k = 0; k < 3; ++k) {
         o->pos[k] = position[k];
-        o->dir[k] = speed > 0 ? direction[k] / len : 0;
+        o->vel[k] = speed > 0 ? speed * (scale == 1 ? direction[k] : direction[k] * scale)
+                              : 0;
     }
     o->generation = o->generation + 1 ? o->generation + 1 : 1;
     o->alive = true;
@@ -791,7 +808,12 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             if (!o->alive || o->speed == 0)
                 continue;
             for (int k = 0; k < 3; ++k)
-                o->pos[k] += o->dir[k] * o->speed;
+                o->pos[k] += o->vel[k];
+            if (w->def.effects & NOCT_EFFECT_WALLS)
+                for (int k = 0; k < 3; ++k)
+                    if ((o->pos[k] < w->def.walls_lo[k] && o->vel[k] < 0) ||
+                        (o->pos[k] > w->def.walls_hi[k] && o->vel[k] > 0))
+                        o->vel[k] = -o->vel[k];
             if (fabs(o->pos[0]) > NOCT_MAX_COORDINATE ||
                 fabs(o->pos[1]) > NOCT_MAX_COORDINATE ||
                 fabs(o->pos[2]) > NOCT_MAX_COORDINATE)
@@ -843,7 +865,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
                         continue;
                     w->mark[ids[s]] = w->epoch;
                     for (int k = 0; k < 3; ++k)
-                        w->obj[ids[s]].dir[k] = -w->obj[ids[s]].dir[k];
+                        w->obj[ids[s]].vel[k] = -w->obj[ids[s]].vel[k];
                     ++w->c.reversals;
                 }
             }
@@ -884,7 +906,8 @@ noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[
     if (position != NULL)
         memcpy(position, o->pos, sizeof o->pos);
     if (direction != NULL)
-        memcpy(direction, o->dir, sizeof o->dir);
+        for (int k = 0; k < 3; ++k)
+            direction[k] = o->speed > 0 ? o->vel[k] / o->speed : 0;
     return NOCT_OK;
 }
 
@@ -925,6 +948,72 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                 if (st != NOCT_OK)
                     return st;
             }
+    }
+    return NOCT_OK;
+}
+
+double noctGasContainerSize(size_t n)
+{
+    return cbrt(10.0 * (double)n);
+}
+
+/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them. */
+static uint64_t splitmix64(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+static double unit_draw(uint64_t *state)
+{
+    return (double)(splitmix64(state) >> 11) * 0x1p-53;
+}
+
+noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (n < 1 || n > 10000000)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "gas: %zu boxes; it must be 1 to 10000000", n);
+    if (w->nowned + n > w->capowned) {
+        size_t cap = w->nowned + n;
+        noctMesh **q = realloc(w->owned, cap * sizeof *q);
+        if (q == NULL)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        w->owned = q;
+        w->capowned = cap;
+    }
+    const double pi = 3.141592653589793;
+    const double lb = noctGasContainerSize(n);
+    uint64_t state = 42;
+    for (size_t i = 0; i < n; ++i) {
+        double half[3];
+        for (int k = 0; k < 3; ++k)
+            half[k] = 0.25 + 0.5 * unit_draw(&state);
+        double u1 = unit_draw(&state), u2 = unit_draw(&state), u3 = unit_draw(&state);
+        double x = sqrt(1 - u1) * sin(2 * pi * u2), y = sqrt(1 - u1) * cos(2 * pi * u2);
+        double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
+        const double r[9] = {
+            1 - 2 * (y * y + z * z), 2 * (x * y - z * qw), 2 * (x * z + y * qw),
+            2 * (x * y + z * qw), 1 - 2 * (x * x + z * z), 2 * (y * z - x * qw),
+            2 * (x * z - y * qw), 2 * (y * z + x * qw), 1 - 2 * (x * x + y * y)};
+        double centre[3];
+        for (int k = 0; k < 3; ++k)
+            centre[k] = lb * unit_draw(&state);
+        double dz = 2 * unit_draw(&state) - 1, phi = 2 * pi * unit_draw(&state);
+        const double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi),
+                               dz};
+        noctMesh *m;
+        noctStatus st = noctMeshCreateOrientedBox(half, r, &m, err);
+        if (st != NOCT_OK)
+            return st;
+        w->owned[w->nowned++] = m;
+        noctObjectId id;
+        st = noctWorldAdd(w, m, centre, dir, 0.05, &id, err);
+        if (st != NOCT_OK)
+            return st;
     }
     return NOCT_OK;
 }

@@ -109,6 +109,52 @@ START_TEST(planes_t30)
 }
 END_TEST
 
+/* gas_1000 (SCENES.md): 6 212 contact-begin events in 200 steps, the
+ * answer ODE, FCL and a brute-force reference agree on; the same event
+ * sequence in both maintenance modes. */
+static size_t run_gas(size_t n, int N, noctMaintenance mode, uint64_t *hash)
+{
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = N;
+    def.max_depth = 8;
+    def.maintenance = mode;
+    def.effects |= NOCT_EFFECT_WALLS;
+    double lb = noctGasContainerSize(n);
+    for (int k = 0; k < 3; ++k) {
+        def.walls_lo[k] = 0;
+        def.walls_hi[k] = lb;
+    }
+    noctWorld *w;
+    noctError err;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_OK);
+    ck_assert_msg(noctWorldAddGas(w, n, &err) == NOCT_OK, "%s", err.message);
+    size_t begins = 0;
+    uint64_t h = 1469598103934665603u;
+    for (int s = 1; s <= 200; ++s) {
+        step_ok(w);
+        const noctPair *p;
+        size_t nb = noctWorldBegan(w, &p);
+        begins += nb;
+        for (size_t i = 0; i < nb; ++i)
+            h = ((h ^ (uint64_t)s) * 1099511628211u ^ p[i].a.index ^
+                 ((uint64_t)p[i].b.index << 32)) * 1099511628211u;
+        if (s % 50 == 0)
+            validate_ok(w);
+    }
+    noctWorldDestroy(w);
+    *hash = h;
+    return begins;
+}
+
+START_TEST(gas_1000_known_answer)
+{
+    uint64_t h1, h2;
+    ck_assert_uint_eq(run_gas(1000, 10, NOCT_MAINTAIN_INCREMENTAL, &h1), 6212);
+    ck_assert_uint_eq(run_gas(1000, 30, NOCT_MAINTAIN_REBUILD, &h2), 6212);
+    ck_assert(h1 == h2);
+}
+END_TEST
+
 /* The facing pair of ring r first overlaps at step 51 + 2 r and reverses. */
 START_TEST(planes_timing_and_reversal)
 {
@@ -379,6 +425,7 @@ int main(void)
     tcase_set_timeout(tc, 600);
     tcase_add_loop_test(tc, planes_counts_across_N_and_modes, 0, 6);
     tcase_add_test(tc, planes_t30);
+    tcase_add_test(tc, gas_1000_known_answer);
     tcase_add_test(tc, planes_timing_and_reversal);
     suite_add_tcase(s, tc);
     tc = tcase_create("random scenes");

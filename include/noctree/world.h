@@ -11,7 +11,9 @@
  * A world holds objects: a mesh (borrowed; it must outlive the world), a
  * position, a unit direction and a speed. noctWorldStep() runs one step:
  * 1. **motion** (effect #NOCT_EFFECT_MOTION): each object with a non-zero
- *    speed moves, `p += d * speed`;
+ *    speed moves by its velocity, `p += v`, where `v = speed * d` was
+ *    computed once when the object was added; then, with
+ *    #NOCT_EFFECT_WALLS, the container's walls turn it back;
  * 2. **maintenance**: the octree is brought up to date (see below);
  * 3. **pair search**: a depth-first walk over the leaves that hold more
  *    than one object hands each candidate pair to the narrowphase exactly
@@ -92,8 +94,12 @@ typedef struct noctPair {
 enum noctEffect {
     NOCT_EFFECT_MOTION = 1u << 0,   /**< Objects move by their velocity. */
     NOCT_EFFECT_EVENTS = 1u << 1,   /**< Contact-begin and -end lists. */
-    NOCT_EFFECT_RESPONSE = 1u << 2  /**< Contact-begin reverses directions
+    NOCT_EFFECT_RESPONSE = 1u << 2, /**< Contact-begin reverses directions
                                          (implies the events' bookkeeping). */
+    NOCT_EFFECT_WALLS = 1u << 3     /**< After moving, an object whose position
+                                         is outside the container on an axis
+                                         and still moving outward has that
+                                         velocity component negated. */
 };
 
 /** @brief How the octree follows the objects. */
@@ -115,6 +121,9 @@ typedef struct noctWorldDef {
     noctAccuracy accuracy;  /**< Narrowphase level. Default exact. */
     unsigned effects;       /**< #noctEffect bits. Default: all. */
     noctMaintenance maintenance; /**< Default incremental. */
+    double walls_lo[3];     /**< The container's low corner, for
+                                 #NOCT_EFFECT_WALLS. Default 0. */
+    double walls_hi[3];     /**< The container's high corner. Default 0. */
 } noctWorldDef;
 
 /**
@@ -181,8 +190,11 @@ NOCT_API void noctWorldDestroy(noctWorld *world);
  * @param[in]  world     The world.
  * @param[in]  mesh      Its shape; must outlive the world.
  * @param[in]  position  Its translation.
- * @param[in]  direction Its direction of motion; normalized here (ignored
- *                       when @p speed is 0, and may then be zero).
+ * @param[in]  direction Its direction of motion (ignored when @p speed is
+ *                       0, and may then be zero). A direction within 1e-9
+ *                       of unit length is used as given, so the velocity
+ *                       is `speed * direction` bit for bit, as the
+ *                       benchmark scenes specify; others are normalized.
  * @param[in]  speed     Distance per step, 0 for a static object.
  * @param[out] id        Receives the new object's handle.
  * @param[out] err       Receives the details of a failure, or NULL.
@@ -329,6 +341,30 @@ NOCT_API octNode *noctWorldRoot(const noctWorld *world);
  */
 NOCT_API noctStatus noctWorldAddPlanes(noctWorld *world, int k,
                                        const noctMesh *unit_cube, noctError *err);
+
+/**
+ * @brief The side of gas_n's cubic container, `cbrt(10 n)`.
+ * @param[in] n Number of boxes.
+ * @return The container's side length Lb.
+ */
+NOCT_API double noctGasContainerSize(size_t n);
+
+/**
+ * @brief Add the scene gas_n (SCENES.md, "Gas"): n oriented boxes with
+ *        seeded random sizes, orientations, positions and directions.
+ *
+ * The world owns the n box meshes it creates. For the scene as defined,
+ * create the world with #NOCT_EFFECT_WALLS and the container
+ * `[0, noctGasContainerSize(n)]` on every axis.
+ * @param[in]  world The world.
+ * @param[in]  n     Number of boxes, 1 to 10 000 000.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK the world holds n more objects, in the scene's order.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for n out of range; any status of
+ *         noctMeshCreateOrientedBox() or noctWorldAdd().
+ */
+NOCT_API noctStatus noctWorldAddGas(noctWorld *world, size_t n, noctError *err);
 
 #ifdef __cplusplus
 }
