@@ -16,9 +16,16 @@ tools_bench_narrowphase_SOURCES = tools/bench-narrowphase.c
 tools_bench_narrowphase_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_bench_narrowphase_LDADD = lib/libnoctree-efficient.la
 
+# The collision world on the SCENES.md families.
+noinst_PROGRAMS += tools/bench-world
+tools_bench_world_SOURCES = tools/bench-world.c
+tools_bench_world_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_bench_world_LDADD = lib/libnoctree-efficient.la
+
 bench: tools/bench-octree-defensive tools/bench-octree-efficient \
-		tools/bench-narrowphase
+		tools/bench-narrowphase tools/bench-world
 	BENCH_BINDIR=tools $(SHELL) $(srcdir)/tools/bench-octree.sh
 	tools/bench-narrowphase
+	tools/bench-world
 .PHONY: bench
-CLEANFILES += bench-octree.csv bench-narrowphase.csv
+CLEANFILES += bench-octree.csv bench-narrowphase.csv bench-world.csv

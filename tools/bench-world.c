@@ -1,0 +1,225 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * bench-world: the collision world on the SCENES.md families.
+ *
+ * For each scene and N: per-step wall time (median and 90th percentile
+ * over the steps), ns per object per step, setup time, the contact-begin
+ * events (which must not depend on N), the peak memory of the run, and the
+ * ratio of the exhaustive algorithm's median to this N's. Each run is a
+ * child process, so its peak memory is its own. Exhaustive runs are left
+ * out above --max-exhaustive objects (default 2000): they cost n^2 per
+ * step, and no figure is extrapolated here. Writes bench-world.csv.
+ *
+ * Usage: bench-world [--quick] [--steps S] [--max-exhaustive N] [SCENE...]
+ *   SCENE is planes:K or gas:N (default planes:10 planes:30 planes:100
+ *   gas:1000 gas:10000; --quick: planes:3 gas:200, 20 steps).
+ */
+#define _DEFAULT_SOURCE /* wait4(2): the peak memory of one child */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <noctree/world.h>
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+typedef struct result {
+    double median, p90, setup;
+    size_t objects, begins;
+    int ok;
+} result;
+
+/* Run one configuration; called in a child process. */
+static result run(const char *scene, int N, int steps)
+{
+    result r = {0};
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = N;
+    def.max_depth = 8;
+    noctMesh *cube = NULL;
+    noctError err;
+    size_t n = 0;
+    int k = 0;
+    bool gas = strncmp(scene, "gas:", 4) == 0;
+    if (gas) {
+        n = (size_t)atol(scene + 4);
+        def.effects |= NOCT_EFFECT_WALLS;
+        double lb = noctGasContainerSize(n);
+        for (int a = 0; a < 3; ++a) {
+            def.walls_lo[a] = 0;
+            def.walls_hi[a] = lb;
+        }
+    } else {
+        k = atoi(scene + 7);
+    }
+    double t0 = now();
+    noctWorld *w;
+    if (noctWorldCreate(&def, &w, &err) != NOCT_OK ||
+        (gas ? noctWorldAddGas(w, n, &err)
+             : (noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err) != NOCT_OK
+                    ? NOCT_ERR_INVALID
+                    : noctWorldAddPlanes(w, k, cube, &err))) != NOCT_OK) {
+        fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
+        return r;
+    }
+    r.setup = now() - t0;
+    r.objects = noctWorldObjectCount(w);
+    double *t = malloc((size_t)steps * sizeof *t);
+    for (int s = 0; s < steps; ++s) {
+        double a = now();
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
+            return r;
+        }
+        t[s] = now() - a;
+        const noctPair *p;
+        r.begins += noctWorldBegan(w, &p);
+    }
+    qsort(t, (size_t)steps, sizeof *t, cmp_double);
+    r.median = t[steps / 2];
+    r.p90 = t[(steps * 9) / 10 < steps ? (steps * 9) / 10 : steps - 1];
+    r.ok = 1;
+    free(t);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+    return r;
+}
+
+int main(int argc, char **argv)
+{
+    int steps = 200, max_exhaustive = 2000, nscenes = 0;
+    const char *scenes[32];
+    bool quick = false;
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc)
+            steps = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--max-exhaustive") == 0 && i + 1 < argc)
+            max_exhaustive = atoi(argv[++i]);
+        else if ((strncmp(argv[i], "planes:", 7) == 0 || strncmp(argv[i], "gas:", 4) == 0) &&
+                 nscenes < 32)
+            scenes[nscenes++] = argv[i];
+        else {
+            fprintf(stderr, "usage: bench-world [--quick] [--steps S] "
+                            "[--max-exhaustive N] [planes:K | gas:N]...\n");
+            return 2;
+        }
+    }
+    if (steps < 1 || steps > 100000) {
+        fputs("bench-world: --steps must be 1 to 100000\n", stderr);
+        return 2;
+    }
+    if (nscenes == 0) {
+        static const char *def_scenes[] = {"planes:10", "planes:30", "planes:100",
+                                           "gas:1000", "gas:10000"};
+        static const char *quick_scenes[] = {"planes:3", "gas:200"};
+        const char **src = quick ? quick_scenes : def_scenes;
+        nscenes = quick ? 2 : 5;
+        for (int i = 0; i < nscenes; ++i)
+            scenes[i] = src[i];
+    }
+    if (quick)
+        steps = 20;
+    static const int Ns[] = {NOCT_N_EXHAUSTIVE, 5, 10, 30, 50};
+    FILE *csv = fopen("bench-world.csv", "w");
+    if (csv == NULL) {
+        perror("bench-world: bench-world.csv");
+        return EXIT_FAILURE;
+    }
+    fprintf(csv, "scene,objects,N,steps,median_s,p90_s,ns_per_object_step,setup_s,"
+                 "begins,peak_kib,exhaustive_ratio\n");
+    printf("collision world, %d steps per run, single thread\n", steps);
+    printf("%-12s %8s %5s %11s %11s %9s %8s %8s %10s %8s\n", "scene", "objects", "N",
+           "median ms", "p90 ms", "ns/obj", "setup s", "begins", "peak MiB",
+           "big/N");
+    for (int s = 0; s < nscenes; ++s) {
+        double big_median = 0;
+        for (size_t ni = 0; ni < sizeof Ns / sizeof *Ns; ++ni) {
+            int fds[2];
+            if (pipe(fds) != 0) {
+                perror("bench-world: pipe");
+                return EXIT_FAILURE;
+            }
+            pid_t pid = fork();
+            if (pid == 0) {
+                close(fds[0]);
+                result r = {0};
+                /* The exhaustive run is skipped above the cap. */
+                bool skip = false;
+                if (Ns[ni] == NOCT_N_EXHAUSTIVE) {
+                    size_t n = strncmp(scenes[s], "gas:", 4) == 0
+                                   ? (size_t)atol(scenes[s] + 4)
+                                   : (size_t)(2 * (2 * atol(scenes[s] + 7) + 1) *
+                                              (2 * atol(scenes[s] + 7) + 1));
+                    skip = n > (size_t)max_exhaustive;
+                }
+                if (!skip)
+                    r = run(scenes[s], Ns[ni], steps);
+                else
+                    r.ok = 2;
+                ssize_t wr = write(fds[1], &r, sizeof r);
+                _exit(wr == (ssize_t)sizeof r ? 0 : 1);
+            }
+            close(fds[1]);
+            result r;
+            ssize_t got = read(fds[0], &r, sizeof r);
+            close(fds[0]);
+            int status;
+            struct rusage ru;
+            wait4(pid, &status, 0, &ru);
+            const char *nname = Ns[ni] == NOCT_N_EXHAUSTIVE ? "big" : NULL;
+            char nbuf[16];
+            if (nname == NULL) {
+                snprintf(nbuf, sizeof nbuf, "%d", Ns[ni]);
+                nname = nbuf;
+            }
+            if (got != (ssize_t)sizeof r || !WIFEXITED(status) || r.ok == 0) {
+                printf("%-12s %8s %5s   failed\n", scenes[s], "", nname);
+                continue;
+            }
+            if (r.ok == 2) {
+                printf("%-12s %8s %5s   skipped: exhaustive above %d objects\n",
+                       scenes[s], "", nname, max_exhaustive);
+                continue;
+            }
+            if (Ns[ni] == NOCT_N_EXHAUSTIVE)
+                big_median = r.median;
+            double ratio = big_median > 0 ? big_median / r.median : 0;
+            double peak = (double)ru.ru_maxrss / 1024;
+            printf("%-12s %8zu %5s %11.3f %11.3f %9.0f %8.2f %8zu %10.1f ", scenes[s],
+                   r.objects, nname, 1e3 * r.median, 1e3 * r.p90,
+                   1e9 * r.median / (double)r.objects, r.setup, r.begins, peak);
+            if (ratio > 0)
+                printf("%8.2f\n", ratio);
+            else
+                printf("%8s\n", "-");
+            fprintf(csv, "%s,%zu,%s,%d,%.6g,%.6g,%.1f,%.3f,%zu,%ld,%.3f\n", scenes[s],
+                    r.objects, nname, steps, r.median, r.p90,
+                    1e9 * r.median / (double)r.objects, r.setup, r.begins,
+                    ru.ru_maxrss, ratio);
+            fflush(stdout);
+        }
+    }
+    fclose(csv);
+    puts("(big/N: the exhaustive median over this N's, measured in this run; "
+         "raw figures in bench-world.csv)");
+    return EXIT_SUCCESS;
+}
