@@ -394,6 +394,26 @@ static int cmp_dir_edge(const void *x, const void *y)
     return (p->a > q->a) - (p->a < q->a);
 }
 
+/* Add direction d to a list of unique directions up to sign (within a
+ * relative 1e-12, which only affects how many axes are tried). Returns false
+ * when the list is full. */
+static bool add_direction(double list[][3], size_t *n, const double d[3])
+{
+    double len = norm3(d);
+    if (!(len > 0))
+        return true;
+    double u[3] = {d[0] / len, d[1] / len, d[2] / len};
+    for (size_t i = 0; i < *n; ++i) {
+        double dp = dot3(list[i], u);
+        if (fabs(fabs(dp) - 1) < 1e-12)
+            return true;
+    }
+    if (*n == NOCT_SAT_MAX)
+        return false;
+    memcpy(list[(*n)++], u, sizeof u);
+    return true;
+}
+
 static noctStatus compute_convexity(noctMesh *m, noctError *err)
 {
     size_t ne = 3 * m->nt;
@@ -406,9 +426,11 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
                                       m->tri[3 * t + (c + 1) % 3],
                                       m->tri[3 * t + (c + 2) % 3], (uint32_t)t};
     qsort(e, ne, sizeof *e, cmp_dir_edge);
-    bool convex = true;
+    bool convex = true, sat = true;
+    m->nsat_faces = m->nsat_edges = 0;
     /* Triangles from one polygon share interior edges: still checked, and
-     * coplanar (sign 0), which is allowed. */
+     * coplanar (sign 0), which is allowed. A real (non-coplanar) edge is an
+     * edge direction for the separating-axis filter. */
     for (size_t i = 0; i + 1 < ne && convex; i += 2) {
         const dir_edge *p = &e[i], *q = &e[i + 1];
         const double *t0 = &m->v[3 * m->tri[3 * p->tri]];
@@ -418,7 +440,34 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
          * >= 0 means below. */
         if (noct_orient3d(t0, t1, t2, &m->v[3 * q->far], NULL) < 0)
             convex = false;
+        /* An edge between triangles whose planes differ is an edge of the
+         * solid, not a diagonal of a (nearly) flat polygon. */
+        double np[3], nq[3], a[3], b[3];
+        sub3(t1, t0, a);
+        sub3(t2, t0, b);
+        cross3(a, b, np);
+        sub3(&m->v[3 * m->tri[3 * q->tri + 1]], &m->v[3 * m->tri[3 * q->tri]], a);
+        sub3(&m->v[3 * m->tri[3 * q->tri + 2]], &m->v[3 * m->tri[3 * q->tri]], b);
+        cross3(a, b, nq);
+        double c = dot3(np, nq) / (norm3(np) * norm3(nq));
+        if (sat && c < 1 - 1e-9) {
+            double d[3];
+            sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
+            sat = add_direction(m->sat_edge, &m->nsat_edges, d);
+        }
     }
+    for (size_t t = 0; t < m->nt && sat; ++t) {
+        double a[3], b[3], n[3];
+        sub3(&m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t]], a);
+        sub3(&m->v[3 * m->tri[3 * t + 2]], &m->v[3 * m->tri[3 * t]], b);
+        cross3(a, b, n);
+        sat = add_direction(m->sat_face, &m->nsat_faces, n);
+    }
+    /* The filter needs no convexity to be sound (a solid lies inside the
+     * hull of its vertices), only to be useful: small meshes with few
+     * directions, typically convex ones. */
+    if (!sat || m->nv > 4 * NOCT_SAT_MAX)
+        m->nsat_faces = m->nsat_edges = 0;
     free(e);
     m->convex = convex;
     return NOCT_OK;

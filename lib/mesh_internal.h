@@ -16,6 +16,10 @@
  * (count > 0) holds triangles [first, first + count) of the mesh's
  * triangle array, which is stored in BVH order; an inner node's children
  * are nodes[first] and nodes[first + 1]. */
+/* The separating-axis filter serves convex meshes with at most this many
+ * distinct face normals and distinct edge directions. */
+#define NOCT_SAT_MAX 16
+
 typedef struct bvh_node {
     double lo[3], hi[3];
     uint32_t first;
@@ -34,6 +38,10 @@ struct noctMesh {
     double centre[3];   /* mean of the hull vertices */
     size_t nnodes;
     bvh_node *nodes;    /* nodes[0] is the root */
+    /* Separating-axis filter (small meshes with few directions, else
+     * nsat_* = 0): unique face normal and edge directions, up to sign. */
+    size_t nsat_faces, nsat_edges;
+    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
 };
 
 /* Fill err (if not NULL) and return status. */

@@ -1026,6 +1026,42 @@ START_TEST(collide_rejects_bad_input)
 }
 END_TEST
 
+/* The separating-axis filter proves a pair apart that only the exact
+ * stage could otherwise, and never rejects one that touches. */
+START_TEST(sat_filter_rejects_soundly)
+{
+    const double c = sqrt(0.5);
+    const double rz[9] = {c, -c, 0, c, c, 0, 0, 0, 1}, half[3] = {1, 1, 1};
+    noctMesh *d;
+    ck_assert_int_eq(noctMeshCreateOrientedBox(half, rz, &d, NULL), NOCT_OK);
+    noctNarrowStats st = {0};
+    bool hit = true;
+    const double apart[3] = {1.5, 1.5, 0}; /* boxes overlap, diamonds do not */
+    ck_assert_int_eq(noctCollide(d, ORIGIN, d, apart, NOCT_ACCURACY_EXACT, &hit, &st),
+                     NOCT_OK);
+    ck_assert(!hit);
+    ck_assert_uint_eq(st.box_rejects, 0);
+    ck_assert_uint_eq(st.sat_rejects, 1);
+    ck_assert_uint_eq(st.triangle_pairs, 0);
+    const double deep[3] = {1, 1, 0};
+    ck_assert_int_eq(noctCollide(d, ORIGIN, d, deep, NOCT_ACCURACY_EXACT, &hit, &st),
+                     NOCT_OK);
+    ck_assert(hit);
+    ck_assert_uint_eq(st.sat_rejects, 1);
+    noctMeshDestroy(d);
+    /* Touching axis-aligned boxes: the filter must let them through. */
+    noctMesh *b;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &b, NULL), NOCT_OK);
+    const double touch[3] = {1, 0.25, 0};
+    noctNarrowStats s2 = {0};
+    ck_assert_int_eq(noctCollide(b, ORIGIN, b, touch, NOCT_ACCURACY_EXACT, &hit, &s2),
+                     NOCT_OK);
+    ck_assert(hit);
+    ck_assert_uint_eq(s2.sat_rejects, 0);
+    noctMeshDestroy(b);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_arguments)
 {
@@ -1075,6 +1111,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, read_obj_files);
     tcase_add_test(tc, status_strings);
     tcase_add_test(tc, collide_rejects_bad_input);
+    tcase_add_test(tc, sat_filter_rejects_soundly);
     suite_add_tcase(s, tc);
 
 #ifndef NOCT_EFFICIENT

@@ -29,8 +29,11 @@
  *   objects' size, and report separations that narrow; for non-convex
  *   solids it tests the hulls, so it may also report collisions that do
  *   not exist (never, beyond that tolerance, miss one).
- * - #NOCT_ACCURACY_EXACT: box test, then each mesh's bounding-volume
- *   hierarchy to find the triangle pairs whose boxes overlap, then, for
+ * - #NOCT_ACCURACY_EXACT: box test; for two small meshes (such as boxes), a
+ *   separating-axis test that only ever rejects, and only when the gap
+ *   exceeds a rigorous bound on its rounding error (the solids lie inside
+ *   the hulls of their placed vertices, so this proves them apart); then
+ *   each mesh's bounding-volume hierarchy to find the triangle pairs whose boxes overlap, then, for
  *   those, every edge of one triangle against the other and vice versa;
  *   if no boundaries meet, whether one solid contains a vertex of the
  *   other. Every decision is an orientation sign computed exactly (a
@@ -77,6 +80,8 @@ typedef struct noctNarrowStats {
     uint64_t containment_tests; /**< Point-in-solid tests. */
     uint64_t exact_fallbacks; /**< Orientation signs the filter could not
                                    decide, computed with GMP. */
+    uint64_t sat_rejects;     /**< Exact level: pairs of small meshes
+                                   a separating axis proved apart. */
 } noctNarrowStats;
 
 /**
