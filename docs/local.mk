@@ -10,7 +10,7 @@ EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md
 
 if HAVE_DOXYGEN
 doc: docs/Doxyfile $(noctreeinclude_HEADERS) $(include_HEADERS) docs/mainpage.md
-	$(AM_V_GEN)rm -rf docs/html docs/man && $(DOXYGEN) docs/Doxyfile
+	$(AM_V_GEN)rm -rf docs/html docs/man/man3 && $(DOXYGEN) docs/Doxyfile
 else
 doc:
 	@echo "make doc needs Doxygen: apt-get install doxygen, then re-run configure" >&2
@@ -20,5 +20,5 @@ endif
 
 clean-local: clean-doc
 clean-doc:
-	-rm -rf docs/html docs/man
+	-rm -rf docs/html docs/man/man3
 .PHONY: clean-doc

@@ -13,5 +13,6 @@
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
 #include <noctree/world.h>
+#include <noctree/scene.h>
 
 #endif /* NOCTREE_H */

@@ -14,6 +14,7 @@ noctree_sources = \
 	lib/octree.c \
 	lib/predicates.c \
 	lib/predicates.h \
+	lib/scene.c \
 	lib/world.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
@@ -47,6 +48,7 @@ noctreeinclude_HEADERS = \
 	include/noctree/neighbor.h \
 	include/noctree/octree.h \
 	include/noctree/octree_inline.h \
+	include/noctree/scene.h \
 	include/noctree/status.h \
 	include/noctree/world.h
 nodist_noctreeinclude_HEADERS = include/noctree/version.h

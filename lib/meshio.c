@@ -121,8 +121,11 @@ static char *token(reader *r)
 static noctStatus fail_at(const reader *r, noctError *err, noctStatus st,
                           const char *what, const char *tok)
 {
-    return noct_fail(err, st, -1, r->line, "%s:%ld: %s%s%s%s", r->path, r->line,
-                     what, tok ? " '" : "", tok ? tok : "", tok ? "'" : "");
+    char where[32] = "";
+    if (r->line > 0)
+        snprintf(where, sizeof where, ":%ld", r->line);
+    return noct_fail(err, st, -1, r->line, "%s%s: %s%s%s%s", r->path, where, what,
+                     tok ? " '" : "", tok ? tok : "", tok ? "'" : "");
 }
 
 static bool parse_double(const char *tok, double *out)

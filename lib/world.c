@@ -923,6 +923,21 @@ void noctWorldGetCounters(const noctWorld *w, noctWorldCounters *counters)
     *counters = w->c;
 }
 
+double noctWorldMaxStepRatio(const noctWorld *w)
+{
+    NOCT_REQUIRE(w != NULL);
+    double worst = 0;
+    for (uint32_t i = 0; i < w->nslots; ++i) {
+        const object *o = &w->obj[i];
+        if (!o->alive || o->speed == 0)
+            continue;
+        const noctMesh *m = o->mesh;
+        double extent = fmin(fmin(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]), m->hi[2] - m->lo[2]);
+        worst = fmax(worst, o->speed / extent);
+    }
+    return worst;
+}
+
 octNode *noctWorldRoot(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);

@@ -1,6 +1,13 @@
 # SPDX-License-Identifier: MIT
 # Command-line tools and benchmark programs.
 
+# Installed tools, each with its section 1 man page.
+bin_PROGRAMS = tools/noctree-sim
+tools_noctree_sim_SOURCES = tools/noctree-sim.c
+tools_noctree_sim_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_noctree_sim_LDADD = lib/libnoctree-efficient.la
+dist_man_MANS = docs/man/noctree-sim.1 docs/man/noctree-scene.5
+
 # The octree ADT benchmark, once per build (make bench runs both).
 noinst_PROGRAMS += tools/bench-octree-defensive tools/bench-octree-efficient
 tools_bench_octree_defensive_SOURCES = tools/bench-octree.c

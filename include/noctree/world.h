@@ -288,6 +288,20 @@ NOCT_API noctStatus noctWorldObject(const noctWorld *world, noctObjectId id,
 NOCT_API size_t noctWorldObjectCount(const noctWorld *world);
 
 /**
+ * @brief How far the fastest object moves in a step, relative to its size.
+ *
+ * The report's fidelity constraint: the time-step method (as here, without
+ * sub-stepping) only sees collisions if objects move little compared to
+ * their sizes. Above 0.5, two such objects moving head-on can pass
+ * through each other between two steps unseen.
+ * @param[in] world The world.
+ * @pre @p world is not NULL.
+ * @return The largest speed / (smallest extent of the box) over the moving
+ *         objects; 0 if none moves.
+ */
+NOCT_API double noctWorldMaxStepRatio(const noctWorld *world);
+
+/**
  * @brief Copy the world's counters.
  * @param[in]  world    The world.
  * @param[out] counters Receives the totals since the world was created.

@@ -1,0 +1,496 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Scene files (noctree-scene(5)) and the built-in families. A file is
+ * parsed to the end, every line checked, before the caller can build
+ * anything from it.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "config.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/scene.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+
+typedef struct scene_mesh {
+    char *name;
+    noctMesh *mesh;
+} scene_mesh;
+
+typedef struct scene_object {
+    size_t mesh;
+    double pos[3], dir[3], speed;
+} scene_object;
+
+typedef struct scene_family {
+    int gas;      /* 0 planes, 1 gas */
+    long size;
+} scene_family;
+
+struct noctScene {
+    noctWorldDef def;
+    int steps;
+    scene_mesh *meshes;
+    size_t nmeshes, capmeshes;
+    scene_object *objects;
+    size_t nobjects, capobjects;
+    scene_family families[16];
+    size_t nfamilies;
+    noctMesh *unit_cube; /* for planes families */
+};
+
+void noctSceneDestroy(noctScene *s)
+{
+    if (s == NULL)
+        return;
+    for (size_t i = 0; i < s->nmeshes; ++i) {
+        free(s->meshes[i].name);
+        noctMeshDestroy(s->meshes[i].mesh);
+    }
+    free(s->meshes);
+    free(s->objects);
+    noctMeshDestroy(s->unit_cube);
+    free(s);
+}
+
+noctWorldDef *noctSceneDef(noctScene *s)
+{
+    NOCT_REQUIRE(s != NULL);
+    return &s->def;
+}
+
+int noctSceneSteps(const noctScene *s)
+{
+    NOCT_REQUIRE(s != NULL);
+    return s->steps;
+}
+
+static noctScene *scene_new(void)
+{
+    noctScene *s = calloc(1, sizeof *s);
+    if (s != NULL) {
+        s->def = noctDefaultWorldDef();
+        s->steps = 200;
+    }
+    return s;
+}
+
+/* ---- parsing ------------------------------------------------------------------ */
+
+typedef struct parser {
+    const char *path;
+    long line;
+    char *save;       /* strtok_r state */
+    noctError *err;
+} parser;
+
+static noctStatus perr(parser *p, noctStatus st, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* Fail at the current line: "path:line: what". */
+static noctStatus perr(parser *p, noctStatus st, const char *fmt, ...)
+{
+    char what[200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return noct_fail(p->err, st, -1, p->line, "%s:%ld: %s", p->path, p->line, what);
+}
+
+static char *next(parser *p)
+{
+    return strtok_r(NULL, " \t\r\n", &p->save);
+}
+
+static noctStatus number(parser *p, const char *what, double *out)
+{
+    char *tok = next(p);
+    if (tok == NULL)
+        return perr(p, NOCT_ERR_PARSE, "missing %s", what);
+    char *end;
+    *out = strtod(tok, &end);
+    if (end == tok || *end != '\0')
+        return perr(p, NOCT_ERR_PARSE, "not a number: '%s'", tok);
+    if (!isfinite(*out))
+        return perr(p, NOCT_ERR_NONFINITE, "not a finite number: '%s'", tok);
+    return NOCT_OK;
+}
+
+static noctStatus integer(parser *p, const char *what, long lo, long hi, long *out)
+{
+    char *tok = next(p);
+    if (tok == NULL)
+        return perr(p, NOCT_ERR_PARSE, "missing %s", what);
+    char *end;
+    errno = 0;
+    *out = strtol(tok, &end, 10);
+    if (end == tok || *end != '\0' || errno != 0)
+        return perr(p, NOCT_ERR_PARSE, "not an integer: '%s'", tok);
+    if (*out < lo || *out > hi) {
+        char range[96];
+        snprintf(range, sizeof range, "%s %ld is out of range (%ld to %ld)", what, *out,
+                 lo, hi);
+        return perr(p, NOCT_ERR_INVALID, "%s", range);
+    }
+    return NOCT_OK;
+}
+
+static noctStatus end_of_line(parser *p)
+{
+    char *tok = next(p);
+    return tok ? perr(p, NOCT_ERR_PARSE, "unexpected '%s'", tok) : NOCT_OK;
+}
+
+static noctStatus numbers(parser *p, const char *what, double *out, int n)
+{
+    for (int i = 0; i < n; ++i) {
+        noctStatus st = number(p, what, &out[i]);
+        if (st != NOCT_OK)
+            return st;
+    }
+    return NOCT_OK;
+}
+
+/* Resolve a mesh file path relative to the scene file's folder. */
+static char *relative_path(const char *scene_path, const char *file)
+{
+    const char *slash = strrchr(scene_path, '/');
+    size_t dir = file[0] == '/' || slash == NULL ? 0 : (size_t)(slash - scene_path) + 1;
+    char *out = malloc(dir + strlen(file) + 1);
+    if (out != NULL) {
+        memcpy(out, scene_path, dir);
+        strcpy(out + dir, file);
+    }
+    return out;
+}
+
+static noctStatus parse_mesh(parser *p, noctScene *s)
+{
+    char *name = next(p), *kind = next(p);
+    if (name == NULL || kind == NULL)
+        return perr(p, NOCT_ERR_PARSE, "expected 'mesh NAME box|file ...'");
+    for (size_t i = 0; i < s->nmeshes; ++i)
+        if (strcmp(s->meshes[i].name, name) == 0)
+            return perr(p, NOCT_ERR_INVALID, "mesh '%s' is defined twice", name);
+    noctMesh *m = NULL;
+    noctError inner = {0};
+    noctStatus st;
+    if (strcmp(kind, "box") == 0) {
+        double h[3];
+        if ((st = numbers(p, "half-extent", h, 3)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        st = noctMeshCreateBox(h[0], h[1], h[2], &m, &inner);
+    } else if (strcmp(kind, "file") == 0) {
+        char *file = next(p);
+        if (file == NULL)
+            return perr(p, NOCT_ERR_PARSE, "missing the mesh file name");
+        if ((st = end_of_line(p)) != NOCT_OK)
+            return st;
+        char *full = relative_path(p->path, file);
+        if (full == NULL)
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
+        st = noctMeshRead(full, &m, &inner);
+        free(full);
+    } else {
+        return perr(p, NOCT_ERR_PARSE, "unknown mesh kind '%s' (box or file)", kind);
+    }
+    if (st != NOCT_OK)
+        return noct_fail(p->err, st, inner.index, p->line, "%s:%ld: mesh '%s': %s",
+                         p->path, p->line, name, inner.message);
+    if (s->nmeshes == s->capmeshes) {
+        size_t cap = s->capmeshes ? 2 * s->capmeshes : 8;
+        scene_mesh *q = realloc(s->meshes, cap * sizeof *q);
+        if (q == NULL) {
+            noctMeshDestroy(m);
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
+        }
+        s->meshes = q;
+        s->capmeshes = cap;
+    }
+    s->meshes[s->nmeshes].name = strdup(name);
+    s->meshes[s->nmeshes++].mesh = m;
+    return s->meshes[s->nmeshes - 1].name ? NOCT_OK
+                                           : perr(p, NOCT_ERR_NOMEM, "out of memory");
+}
+
+static noctStatus parse_object(parser *p, noctScene *s)
+{
+    char *name = next(p);
+    if (name == NULL)
+        return perr(p, NOCT_ERR_PARSE, "expected 'object MESH X Y Z [DX DY DZ SPEED]'");
+    size_t mi = s->nmeshes;
+    for (size_t i = 0; i < s->nmeshes; ++i)
+        if (strcmp(s->meshes[i].name, name) == 0)
+            mi = i;
+    if (mi == s->nmeshes)
+        return perr(p, NOCT_ERR_INVALID, "unknown mesh '%s' (define it first)", name);
+    scene_object o = {mi, {0, 0, 0}, {0, 0, 0}, 0};
+    noctStatus st = numbers(p, "position", o.pos, 3);
+    if (st != NOCT_OK)
+        return st;
+    char *tok = next(p);
+    if (tok != NULL) {
+        /* push the token back: re-parse from it */
+        char *end;
+        o.dir[0] = strtod(tok, &end);
+        if (end == tok || *end != '\0')
+            return perr(p, NOCT_ERR_PARSE, "not a number: '%s'", tok);
+        if (!isfinite(o.dir[0]))
+            return perr(p, NOCT_ERR_NONFINITE, "not a finite number: '%s'", tok);
+        if ((st = numbers(p, "direction", &o.dir[1], 2)) != NOCT_OK ||
+            (st = number(p, "speed", &o.speed)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        if (o.speed < 0)
+            return perr(p, NOCT_ERR_INVALID, "negative speed");
+        if (o.speed > 0 && o.dir[0] == 0 && o.dir[1] == 0 && o.dir[2] == 0)
+            return perr(p, NOCT_ERR_INVALID, "a moving object needs a non-zero direction");
+    }
+    for (int k = 0; k < 3; ++k)
+        if (fabs(o.pos[k]) > NOCT_MAX_COORDINATE)
+            return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");
+    if (s->nobjects == s->capobjects) {
+        size_t cap = s->capobjects ? 2 * s->capobjects : 64;
+        scene_object *q = realloc(s->objects, cap * sizeof *q);
+        if (q == NULL)
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
+        s->objects = q;
+        s->capobjects = cap;
+    }
+    s->objects[s->nobjects++] = o;
+    return NOCT_OK;
+}
+
+static noctStatus parse_line(parser *p, noctScene *s, char *kw)
+{
+    noctStatus st;
+    long v;
+    if (strcmp(kw, "N") == 0) {
+        char *tok = next(p);
+        if (tok != NULL && strcmp(tok, "big") == 0) {
+            s->def.N = NOCT_N_EXHAUSTIVE;
+            return end_of_line(p);
+        }
+        if (tok == NULL)
+            return perr(p, NOCT_ERR_PARSE, "missing N");
+        char *end;
+        errno = 0;
+        v = strtol(tok, &end, 10);
+        if (end == tok || *end != '\0' || errno != 0)
+            return perr(p, NOCT_ERR_PARSE, "N must be an integer or 'big', not '%s'", tok);
+        if (v < 1 || v > INT_MAX - 1)
+            return perr(p, NOCT_ERR_INVALID, "N must be at least 1 (or 'big'), not '%s'", tok);
+        s->def.N = (int)v;
+        return end_of_line(p);
+    }
+    if (strcmp(kw, "max-depth") == 0) {
+        if ((st = integer(p, "max-depth", 1, 40, &v)) != NOCT_OK)
+            return st;
+        s->def.max_depth = (int)v;
+        return end_of_line(p);
+    }
+    if (strcmp(kw, "steps") == 0) {
+        if ((st = integer(p, "steps", 1, 10000000, &v)) != NOCT_OK)
+            return st;
+        s->steps = (int)v;
+        return end_of_line(p);
+    }
+    if (strcmp(kw, "accuracy") == 0) {
+        char *tok = next(p);
+        if (tok == NULL)
+            return perr(p, NOCT_ERR_PARSE, "missing the accuracy (box, convex or exact)");
+        if (strcmp(tok, "box") == 0)
+            s->def.accuracy = NOCT_ACCURACY_BOX;
+        else if (strcmp(tok, "convex") == 0)
+            s->def.accuracy = NOCT_ACCURACY_CONVEX;
+        else if (strcmp(tok, "exact") == 0)
+            s->def.accuracy = NOCT_ACCURACY_EXACT;
+        else
+            return perr(p, NOCT_ERR_INVALID, "unknown accuracy '%s' (box, convex or exact)",
+                        tok);
+        return end_of_line(p);
+    }
+    if (strcmp(kw, "maintenance") == 0) {
+        char *tok = next(p);
+        if (tok != NULL && strcmp(tok, "incremental") == 0)
+            s->def.maintenance = NOCT_MAINTAIN_INCREMENTAL;
+        else if (tok != NULL && strcmp(tok, "rebuild") == 0)
+            s->def.maintenance = NOCT_MAINTAIN_REBUILD;
+        else
+            return perr(p, NOCT_ERR_INVALID,
+                        "maintenance must be 'incremental' or 'rebuild'");
+        return end_of_line(p);
+    }
+    if (strcmp(kw, "effects") == 0) {
+        unsigned e = 0;
+        char *tok;
+        while ((tok = next(p)) != NULL) {
+            if (strcmp(tok, "motion") == 0)
+                e |= NOCT_EFFECT_MOTION;
+            else if (strcmp(tok, "events") == 0)
+                e |= NOCT_EFFECT_EVENTS;
+            else if (strcmp(tok, "response") == 0)
+                e |= NOCT_EFFECT_RESPONSE;
+            else if (strcmp(tok, "walls") == 0)
+                e |= NOCT_EFFECT_WALLS;
+            else if (strcmp(tok, "none") != 0)
+                return perr(p, NOCT_ERR_INVALID,
+                            "unknown effect '%s' (motion, events, response, walls, none)",
+                            tok);
+        }
+        s->def.effects = e;
+        return NOCT_OK;
+    }
+    if (strcmp(kw, "walls") == 0) {
+        double w[6];
+        if ((st = numbers(p, "wall coordinate", w, 6)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        for (int k = 0; k < 3; ++k) {
+            if (!(w[k] < w[k + 3]))
+                return perr(p, NOCT_ERR_INVALID, "walls: each low coordinate must be below "
+                            "the high one");
+            s->def.walls_lo[k] = w[k];
+            s->def.walls_hi[k] = w[k + 3];
+        }
+        s->def.effects |= NOCT_EFFECT_WALLS;
+        return NOCT_OK;
+    }
+    if (strcmp(kw, "mesh") == 0)
+        return parse_mesh(p, s);
+    if (strcmp(kw, "object") == 0)
+        return parse_object(p, s);
+    if (strcmp(kw, "family") == 0) {
+        char *tok = next(p);
+        if (s->nfamilies == sizeof s->families / sizeof *s->families)
+            return perr(p, NOCT_ERR_TOO_LARGE, "too many families");
+        scene_family f;
+        if (tok != NULL && strcmp(tok, "planes") == 0) {
+            f.gas = 0;
+            st = integer(p, "planes rings", 0, 1000, &f.size);
+        } else if (tok != NULL && strcmp(tok, "gas") == 0) {
+            f.gas = 1;
+            st = integer(p, "gas boxes", 1, 10000000, &f.size);
+        } else {
+            return perr(p, NOCT_ERR_INVALID, "unknown family '%s' (planes or gas)",
+                        tok ? tok : "");
+        }
+        if (st != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        s->families[s->nfamilies++] = f;
+        return NOCT_OK;
+    }
+    return perr(p, NOCT_ERR_PARSE, "unknown statement '%s'", kw);
+}
+
+noctStatus noctSceneRead(const char *path, noctScene **scene, noctError *err)
+{
+    NOCT_REQUIRE(path != NULL && scene != NULL);
+    *scene = NULL;
+    FILE *f = fopen(path, "r");
+    if (f == NULL)
+        return noct_fail(err, NOCT_ERR_IO, -1, 0, "%s: cannot open: %s", path,
+                         strerror(errno));
+    noctScene *s = scene_new();
+    if (s == NULL) {
+        fclose(f);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    parser p = {path, 0, NULL, err};
+    char *buf = NULL;
+    size_t cap = 0;
+    noctStatus st = NOCT_OK;
+    while (st == NOCT_OK && getline(&buf, &cap, f) >= 0) {
+        ++p.line;
+        char *hash = strchr(buf, '#');
+        if (hash != NULL)
+            *hash = '\0';
+        char *kw = strtok_r(buf, " \t\r\n", &p.save);
+        if (kw != NULL)
+            st = parse_line(&p, s, kw);
+    }
+    if (st == NOCT_OK && ferror(f))
+        st = noct_fail(err, NOCT_ERR_IO, -1, p.line, "%s:%ld: read error", path, p.line);
+    if (st == NOCT_OK && s->nobjects == 0 && s->nfamilies == 0)
+        st = noct_fail(err, NOCT_ERR_INVALID, -1, 0, "%s: the scene has no objects", path);
+    free(buf);
+    fclose(f);
+    if (st != NOCT_OK) {
+        noctSceneDestroy(s);
+        return st;
+    }
+    *scene = s;
+    return NOCT_OK;
+}
+
+noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
+{
+    NOCT_REQUIRE(spec != NULL && scene != NULL);
+    *scene = NULL;
+    const char *colon = strchr(spec, ':');
+    char *end = NULL;
+    long size = colon ? strtol(colon + 1, &end, 10) : -1;
+    int gas = colon && (size_t)(colon - spec) == 3 && strncmp(spec, "gas", 3) == 0;
+    int planes = colon && (size_t)(colon - spec) == 6 && strncmp(spec, "planes", 6) == 0;
+    if ((!gas && !planes) || end == colon + 1 || (end && *end != '\0') ||
+        (planes && (size < 0 || size > 1000)) || (gas && (size < 1 || size > 10000000)))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "unknown scene '%s' (planes:K with K 0 to 1000, or gas:N with N "
+                         "1 to 10000000)", spec);
+    noctScene *s = scene_new();
+    if (s == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    s->families[s->nfamilies++] = (scene_family){gas, size};
+    if (gas) {
+        double lb = noctGasContainerSize((size_t)size);
+        for (int k = 0; k < 3; ++k) {
+            s->def.walls_lo[k] = 0;
+            s->def.walls_hi[k] = lb;
+        }
+        s->def.effects |= NOCT_EFFECT_WALLS;
+    }
+    *scene = s;
+    return NOCT_OK;
+}
+
+noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err)
+{
+    NOCT_REQUIRE(sc != NULL && world != NULL);
+    noctScene *s = (noctScene *)sc; /* the cube is made once, on demand */
+    *world = NULL;
+    noctWorld *w;
+    noctStatus st = noctWorldCreate(&s->def, &w, err);
+    if (st != NOCT_OK)
+        return st;
+    for (size_t i = 0; i < s->nfamilies && st == NOCT_OK; ++i) {
+        if (s->families[i].gas) {
+            st = noctWorldAddGas(w, (size_t)s->families[i].size, err);
+        } else {
+            if (s->unit_cube == NULL)
+                st = noctMeshCreateBox(0.5, 0.5, 0.5, &s->unit_cube, err);
+            if (st == NOCT_OK)
+                st = noctWorldAddPlanes(w, (int)s->families[i].size, s->unit_cube, err);
+        }
+    }
+    for (size_t i = 0; i < s->nobjects && st == NOCT_OK; ++i) {
+        const scene_object *o = &s->objects[i];
+        noctObjectId id;
+        st = noctWorldAdd(w, s->meshes[o->mesh].mesh, o->pos, o->dir, o->speed, &id, err);
+    }
+    if (st != NOCT_OK) {
+        noctWorldDestroy(w);
+        return st;
+    }
+    *world = w;
+    return NOCT_OK;
+}

@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * noctree-sim: run a scene (a file, or a built-in family) in the collision
+ * world and report its contact events and where the time went.
+ * See noctree-sim(1) and noctree-scene(5).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <noctree.h>
+
+static const char usage[] =
+    "usage: noctree-sim [OPTIONS] SCENE-FILE\n"
+    "       noctree-sim [OPTIONS] --scene planes:K|gas:N\n"
+    "Run a scene in the libnoctree collision world.\n"
+    "\n"
+    "  --scene FAMILY        a built-in scene: planes:K (the report's t_K) or gas:N\n"
+    "  --N N|big             most objects per octree leaf (big: exhaustive)\n"
+    "  --max-depth D         deepest octree level, 1 to 40\n"
+    "  --accuracy LEVEL      box, convex or exact\n"
+    "  --maintenance MODE    incremental or rebuild\n"
+    "  --steps S             number of steps\n"
+    "  --events              print every contact event: STEP begin|end A B\n"
+    "  --quiet               no progress bar\n"
+    "  --help                this text\n"
+    "  --version             the version\n"
+    "\n"
+    "Exit status: 0 on success, 1 if the simulation failed, 2 for bad usage or input.\n";
+
+static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Report a usage error and return the exit status for it. */
+static int bad(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "noctree-sim: ");
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, "\nTry 'noctree-sim --help'.\n");
+    va_end(ap);
+    return 2;
+}
+
+static bool parse_long(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    *out = strtol(s, &end, 10);
+    return end != s && *end == '\0' && errno == 0 && *out >= lo && *out <= hi;
+}
+
+static void progress(int step, int steps)
+{
+    int width = 40, done = (int)((long)width * step / steps);
+    fprintf(stderr, "\r[%.*s%*s] %3d%% step %d/%d", done,
+            "########################################", width - done, "",
+            (int)(100L * step / steps), step, steps);
+    if (step == steps)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+int main(int argc, char **argv)
+{
+    const char *family = NULL, *file = NULL, *opt_N = NULL, *opt_acc = NULL,
+               *opt_maint = NULL;
+    long depth = 0, steps = 0;
+    bool events = false, quiet = false;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        bool has_value = i + 1 < argc;
+        if (strcmp(a, "--help") == 0) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            printf("noctree-sim %s\n", NOCT_VERSION_STRING);
+            return 0;
+        } else if (strcmp(a, "--events") == 0) {
+            events = true;
+        } else if (strcmp(a, "--quiet") == 0) {
+            quiet = true;
+        } else if (strcmp(a, "--scene") == 0 && has_value) {
+            family = argv[++i];
+        } else if (strcmp(a, "--N") == 0 && has_value) {
+            opt_N = argv[++i];
+        } else if (strcmp(a, "--accuracy") == 0 && has_value) {
+            opt_acc = argv[++i];
+        } else if (strcmp(a, "--maintenance") == 0 && has_value) {
+            opt_maint = argv[++i];
+        } else if (strcmp(a, "--max-depth") == 0 && has_value) {
+            if (!parse_long(argv[++i], 1, 40, &depth))
+                return bad("--max-depth must be 1 to 40, not '%s'", argv[i]);
+        } else if (strcmp(a, "--steps") == 0 && has_value) {
+            if (!parse_long(argv[++i], 1, 10000000, &steps))
+                return bad("--steps must be 1 to 10000000, not '%s'", argv[i]);
+        } else if (a[0] == '-' && a[1] != '\0') {
+            return bad("unknown option or missing value: '%s'", a);
+        } else if (file == NULL) {
+            file = a;
+        } else {
+            return bad("more than one scene file: '%s'", a);
+        }
+    }
+    if ((family == NULL) == (file == NULL))
+        return bad("give one scene: a file or --scene FAMILY");
+
+    noctScene *scene;
+    noctError err;
+    noctStatus st = family ? noctSceneFamily(family, &scene, &err)
+                           : noctSceneRead(file, &scene, &err);
+    if (st != NOCT_OK) {
+        fprintf(stderr, "noctree-sim: %s\n", err.message);
+        return 2;
+    }
+    noctWorldDef *def = noctSceneDef(scene);
+    if (opt_N != NULL) {
+        long n;
+        if (strcmp(opt_N, "big") == 0)
+            def->N = NOCT_N_EXHAUSTIVE;
+        else if (parse_long(opt_N, 1, INT_MAX - 1, &n))
+            def->N = (int)n;
+        else
+            return noctSceneDestroy(scene), bad("--N must be a positive integer or 'big', not '%s'", opt_N);
+    }
+    if (opt_acc != NULL) {
+        if (strcmp(opt_acc, "box") == 0)
+            def->accuracy = NOCT_ACCURACY_BOX;
+        else if (strcmp(opt_acc, "convex") == 0)
+            def->accuracy = NOCT_ACCURACY_CONVEX;
+        else if (strcmp(opt_acc, "exact") == 0)
+            def->accuracy = NOCT_ACCURACY_EXACT;
+        else
+            return noctSceneDestroy(scene), bad("--accuracy must be box, convex or exact, not '%s'", opt_acc);
+    }
+    if (opt_maint != NULL) {
+        if (strcmp(opt_maint, "incremental") == 0)
+            def->maintenance = NOCT_MAINTAIN_INCREMENTAL;
+        else if (strcmp(opt_maint, "rebuild") == 0)
+            def->maintenance = NOCT_MAINTAIN_REBUILD;
+        else
+            return noctSceneDestroy(scene), bad("--maintenance must be incremental or rebuild, not '%s'", opt_maint);
+    }
+    if (depth > 0)
+        def->max_depth = (int)depth;
+    int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
+
+    noctWorld *w;
+    st = noctSceneBuild(scene, &w, &err);
+    if (st != NOCT_OK) {
+        fprintf(stderr, "noctree-sim: %s\n", err.message);
+        noctSceneDestroy(scene);
+        return 2;
+    }
+    double ratio = noctWorldMaxStepRatio(w);
+    if (ratio > 0.5)
+        fprintf(stderr, "noctree-sim: warning: an object moves %.2f times its smallest "
+                "size per step; objects can pass through each other unseen (the "
+                "report's fidelity constraint)\n", ratio);
+    bool bar = !quiet && !events && isatty(STDERR_FILENO);
+    size_t begins = 0, ends = 0;
+    int status = 0;
+    for (int s = 1; s <= nsteps; ++s) {
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            fprintf(stderr, "noctree-sim: step %d: %s\n", s, err.message);
+            status = 1;
+            break;
+        }
+        const noctPair *p;
+        size_t nb = noctWorldBegan(w, &p);
+        begins += nb;
+        for (size_t i = 0; events && i < nb; ++i)
+            printf("%d begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        size_t ne = noctWorldEnded(w, &p);
+        ends += ne;
+        for (size_t i = 0; events && i < ne; ++i)
+            printf("%d end %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (bar && (s % 5 == 0 || s == nsteps))
+            progress(s, nsteps);
+    }
+    if (status == 0) {
+        noctWorldCounters c;
+        noctWorldGetCounters(w, &c);
+        const noctPair *p;
+        double total = c.seconds_motion + c.seconds_maintenance + c.seconds_pairs +
+                       c.seconds_response;
+        printf("objects %zu\nsteps %d\nN %s%.0d\naccuracy %s\n", noctWorldObjectCount(w),
+               nsteps, def->N == NOCT_N_EXHAUSTIVE ? "big" : "",
+               def->N == NOCT_N_EXHAUSTIVE ? 0 : def->N, noctAccuracyName(def->accuracy));
+        printf("contact begins %zu\ncontact ends %zu\ncolliding at the end %zu\n", begins,
+               ends, noctWorldColliding(w, &p));
+        printf("time per step %.3f ms (motion %.3f, maintenance %.3f, pairs and "
+               "narrowphase %.3f, events and response %.3f)\n",
+               1e3 * total / nsteps, 1e3 * c.seconds_motion / nsteps,
+               1e3 * c.seconds_maintenance / nsteps, 1e3 * c.seconds_pairs / nsteps,
+               1e3 * c.seconds_response / nsteps);
+        printf("per step: %.1f candidate pairs, %.1f tested, %.1f colliding; %.1f "
+               "neighbor queries, %.2f splits, %.2f merges\n",
+               (double)c.candidate_pairs / nsteps, (double)c.tested_pairs / nsteps,
+               (double)c.colliding_pairs / nsteps, (double)c.neighbor_queries / nsteps,
+               (double)c.splits / nsteps, (double)c.merges / nsteps);
+    }
+    noctWorldDestroy(w);
+    noctSceneDestroy(scene);
+    return status;
+}
