@@ -170,7 +170,8 @@ static char *relative_path(const char *scene_path, const char *file)
     size_t dir = file[0] == '/' || slash == NULL ? 0 : (size_t)(slash - scene_path) + 1;
     char *out = malloc(dir + strlen(file) + 1);
     if (out != NULL) {
-        memcpy(out, scene_path, dir);
+        if (dir > 0)
+            memcpy(out, scene_path, dir);
         strcpy(out + dir, file);
     }
     return out;

@@ -848,7 +848,8 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         st = search(w, w->root);
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s", noctStatusString(st));
-    qsort(w->colliding.p, w->colliding.n, sizeof *w->colliding.p, cmp_pair);
+    if (w->colliding.n > 1)
+        qsort(w->colliding.p, w->colliding.n, sizeof *w->colliding.p, cmp_pair);
     w->c.colliding_pairs += w->colliding.n;
     double t3 = seconds();
     w->c.seconds_pairs += t3 - t2;
