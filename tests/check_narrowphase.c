@@ -1125,9 +1125,5 @@ static Suite *narrowphase_suite(void)
 
 int main(void)
 {
-    SRunner *sr = srunner_create(narrowphase_suite());
-    srunner_run_all(sr, CK_ENV);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    return run_suite(narrowphase_suite());
 }

@@ -184,9 +184,5 @@ int main(void)
     tcase_add_test(tc, orient3d_near_coplanar);
     tcase_add_test(tc, extreme_magnitudes);
     suite_add_tcase(s, tc);
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_ENV);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    return run_suite(s);
 }

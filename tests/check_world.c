@@ -448,9 +448,5 @@ int main(void)
     tcase_add_loop_test_raise_signal(d, die_null_world, SIGABRT, 0, 3);
     suite_add_tcase(s, d);
 #endif
-    SRunner *sr = srunner_create(s);
-    srunner_run_all(sr, CK_ENV);
-    int failed = srunner_ntests_failed(sr);
-    srunner_free(sr);
-    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    return run_suite(s);
 }

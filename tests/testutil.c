@@ -4,6 +4,15 @@
 
 #include "testutil.h"
 
+int run_suite(Suite *suite)
+{
+    SRunner *sr = srunner_create(suite);
+    srunner_run_all(sr, CK_ENV);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 uint64_t test_rand(uint64_t *state)
 {
     uint64_t z = (*state += 0x9e3779b97f4a7c15u);

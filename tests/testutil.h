@@ -22,6 +22,10 @@
             ck_abort_msg("%s:%d: expected %s", __FILE__, __LINE__, #cond);  \
     } while (0)
 
+/* Run a suite with Check's runner (verbosity from CK_VERBOSITY) and return
+ * the process exit status: EXIT_SUCCESS iff every test passed. */
+int run_suite(Suite *suite);
+
 /* splitmix64: small, seedable, identical on every platform. */
 uint64_t test_rand(uint64_t *state);
 /* Uniform integer in [0, n). */
