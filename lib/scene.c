@@ -345,9 +345,12 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
                 e |= NOCT_EFFECT_RESPONSE;
             else if (strcmp(tok, "walls") == 0)
                 e |= NOCT_EFFECT_WALLS;
+            else if (strcmp(tok, "substep") == 0)
+                e |= NOCT_EFFECT_SUBSTEP;
             else if (strcmp(tok, "none") != 0)
                 return perr(p, NOCT_ERR_INVALID,
-                            "unknown effect '%s' (motion, events, response, walls, none)",
+                            "unknown effect '%s' (motion, events, response, walls, "
+                            "substep, none)",
                             tok);
         }
         s->def.effects = e;

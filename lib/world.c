@@ -597,7 +597,6 @@ static noctStatus search(noctWorld *w, octNode *n)
 /* began = colliding - previous, ended = previous - colliding (sorted). */
 static noctStatus diff_events(noctWorld *w)
 {
-    w->began.n = w->ended.n = 0;
     size_t i = 0, j = 0;
     const pair_list *now = &w->colliding, *before = &w->previous;
     while (i < now->n || j < before->n) {
@@ -647,7 +646,8 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown accuracy %d",
                          (int)def->accuracy);
     if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
-                                   NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS))
+                                   NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS |
+                                   NOCT_EFFECT_SUBSTEP))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown effect bits 0x%x",
                          def->effects);
     if (def->maintenance != NOCT_MAINTAIN_INCREMENTAL &&
@@ -794,11 +794,10 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
     return NOCT_OK;
 }
 
-noctStatus noctWorldStep(noctWorld *w, noctError *err)
+/* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
+static noctStatus substep(noctWorld *w, double fraction, noctError *err)
 {
-    NOCT_REQUIRE(w != NULL);
-    ++w->step;
-    ++w->c.steps;
+    ++w->step; /* the stamps' clock: one tick per sub-step */
     noctStatus st = NOCT_OK;
     double t0 = seconds();
     bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->moving > 0;
@@ -808,7 +807,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             if (!o->alive || o->speed == 0)
                 continue;
             for (int k = 0; k < 3; ++k)
-                o->pos[k] += o->vel[k];
+                o->pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
             if (w->def.effects & NOCT_EFFECT_WALLS)
                 for (int k = 0; k < 3; ++k)
                     if ((o->pos[k] < w->def.walls_lo[k] && o->vel[k] < 0) ||
@@ -854,12 +853,13 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     double t3 = seconds();
     w->c.seconds_pairs += t3 - t2;
     if (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)) {
+        size_t from_began = w->began.n;
         st = diff_events(w);
         if (st != NOCT_OK)
             return noct_fail(err, st, -1, 0, "events: out of memory");
         if (w->def.effects & NOCT_EFFECT_RESPONSE) {
             ++w->epoch;
-            for (size_t i = 0; i < w->began.n; ++i) {
+            for (size_t i = from_began; i < w->began.n; ++i) {
                 uint32_t ids[2] = {w->began.p[i].a.index, w->began.p[i].b.index};
                 for (int s = 0; s < 2; ++s) {
                     if (w->mark[ids[s]] == w->epoch)
@@ -872,6 +872,26 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             }
         }
         w->c.seconds_response += seconds() - t3;
+    }
+    return NOCT_OK;
+}
+
+noctStatus noctWorldStep(noctWorld *w, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    ++w->c.steps;
+    w->began.n = w->ended.n = 0;
+    int k = 1;
+    if ((w->def.effects & NOCT_EFFECT_SUBSTEP) && (w->def.effects & NOCT_EFFECT_MOTION)) {
+        double ratio = noctWorldMaxStepRatio(w);
+        /* Each sub-step moves every object at most half its smallest size. */
+        k = ratio > 0.5 ? (int)fmin(ceil(2 * ratio), 1 << 20) : 1;
+        w->c.substeps += (uint64_t)k;
+    }
+    for (int i = 0; i < k; ++i) {
+        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / k, err);
+        if (st != NOCT_OK)
+            return st;
     }
     return NOCT_OK;
 }

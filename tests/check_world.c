@@ -354,6 +354,50 @@ START_TEST(effects_off_cost_nothing)
 }
 END_TEST
 
+/* Thin plates closing at 2 per step skip past each other between steps;
+ * with sub-steps they meet once and turn back. */
+START_TEST(substeps_stop_tunnelling)
+{
+    noctMesh *plate;
+    ck_assert_int_eq(noctMeshCreateBox(0.1, 2, 2, &plate, NULL), NOCT_OK);
+    for (int with = 0; with < 2; ++with) {
+        noctWorldDef def = noctDefaultWorldDef();
+        if (with)
+            def.effects |= NOCT_EFFECT_SUBSTEP;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        const double pa[3] = {-5, 0, 0}, pb[3] = {5.3, 0, 0};
+        const double right[3] = {1, 0, 0}, left[3] = {-1, 0, 0};
+        noctObjectId a, b;
+        ck_assert_int_eq(noctWorldAdd(w, plate, pa, right, 1, &a, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldAdd(w, plate, pb, left, 1, &b, NULL), NOCT_OK);
+        ck_assert(noctWorldMaxStepRatio(w) == 5);
+        size_t begins = 0;
+        for (int s = 0; s < 10; ++s) {
+            step_ok(w);
+            validate_ok(w);
+            const noctPair *p;
+            begins += noctWorldBegan(w, &p);
+        }
+        noctWorldCounters c;
+        noctWorldGetCounters(w, &c);
+        double pos[3];
+        ck_assert_int_eq(noctWorldObject(w, a, pos, NULL), NOCT_OK);
+        if (with) {
+            ck_assert_uint_eq(begins, 1);
+            ck_assert_uint_eq(c.substeps, 10 * 10);
+            ck_assert(pos[0] < -3); /* it turned back */
+        } else {
+            ck_assert_uint_eq(begins, 0); /* tunnelled */
+            ck_assert_uint_eq(c.substeps, 0);
+            ck_assert(pos[0] > 4);
+        }
+        noctWorldDestroy(w);
+    }
+    noctMeshDestroy(plate);
+}
+END_TEST
+
 /* ---- handles and bad input -------------------------------------------------- */
 
 START_TEST(handles_and_bad_input)
@@ -440,6 +484,7 @@ int main(void)
     suite_add_tcase(s, tc);
     tc = tcase_create("effects and handles");
     tcase_add_test(tc, effects_off_cost_nothing);
+    tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
     suite_add_tcase(s, tc);
 #ifndef NOCT_EFFICIENT

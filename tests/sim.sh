@@ -86,6 +86,19 @@ bad_scene badoff.scene ":1: mesh 'a': .*short.off.*file ends" 'mesh a file short
 bad_scene empty.scene ": the scene has no objects" '# nothing'
 expect_run 2 "cannot open" "$tmp/does-not-exist.scene"
 
+# The fidelity warning, and sub-steps that keep plates from tunnelling.
+cat > "$tmp/fast.scene" <<'SCENE'
+steps 10
+mesh plate box 0.1 2 2
+object plate -5 0 0    1 0 0 1
+object plate 5.3 0 0 -1 0 0 1
+SCENE
+expect_run 0 'warning: an object moves 5.00 times' --quiet "$tmp/fast.scene"
+expect_run 0 '^contact begins 0$' --quiet "$tmp/fast.scene"
+expect_run 0 '^contact begins 1$' --quiet --substep "$tmp/fast.scene"
+"$sim" --quiet --substep "$tmp/fast.scene" 2>&1 | grep -q warning &&
+    fail "--substep still warns" || ok
+
 # Bad usage: exit 2.
 expect_run 2 'give one scene' --quiet
 expect_run 2 "unknown scene 'nope:3'" --scene nope:3

@@ -26,6 +26,7 @@ static const char usage[] =
     "  --accuracy LEVEL      box, convex or exact\n"
     "  --maintenance MODE    incremental or rebuild\n"
     "  --steps S             number of steps\n"
+    "  --substep             split steps so fast objects cannot pass through others\n"
     "  --events              print every contact event: STEP begin|end A B\n"
     "  --quiet               no progress bar\n"
     "  --help                this text\n"
@@ -71,7 +72,7 @@ int main(int argc, char **argv)
     const char *family = NULL, *file = NULL, *opt_N = NULL, *opt_acc = NULL,
                *opt_maint = NULL;
     long depth = 0, steps = 0;
-    bool events = false, quiet = false;
+    bool events = false, quiet = false, substep = false;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -85,6 +86,8 @@ int main(int argc, char **argv)
             events = true;
         } else if (strcmp(a, "--quiet") == 0) {
             quiet = true;
+        } else if (strcmp(a, "--substep") == 0) {
+            substep = true;
         } else if (strcmp(a, "--scene") == 0 && has_value) {
             family = argv[++i];
         } else if (strcmp(a, "--N") == 0 && has_value) {
@@ -148,6 +151,8 @@ int main(int argc, char **argv)
     }
     if (depth > 0)
         def->max_depth = (int)depth;
+    if (substep)
+        def->effects |= NOCT_EFFECT_SUBSTEP;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
 
     noctWorld *w;
@@ -158,10 +163,10 @@ int main(int argc, char **argv)
         return 2;
     }
     double ratio = noctWorldMaxStepRatio(w);
-    if (ratio > 0.5)
+    if (ratio > 0.5 && !(def->effects & NOCT_EFFECT_SUBSTEP))
         fprintf(stderr, "noctree-sim: warning: an object moves %.2f times its smallest "
                 "size per step; objects can pass through each other unseen (the "
-                "report's fidelity constraint)\n", ratio);
+                "report's fidelity constraint): use --substep\n", ratio);
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0;
     int status = 0;

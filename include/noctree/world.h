@@ -44,6 +44,11 @@
  * step, for comparison. Setting N to #NOCT_N_EXHAUSTIVE (the report's
  * "N = big") never splits the root: the exhaustive algorithm.
  *
+ * **Sub-steps.** With #NOCT_EFFECT_SUBSTEP a step may be several sub-steps
+ * (each the sequence above with a fraction of the velocity); the began and
+ * ended lists then hold every sub-step's events, in sub-step order, each
+ * sub-step's sorted, and the colliding list is the last sub-step's.
+ *
  * **Determinism.** Pair lists are sorted by object index; the same
  * operations give the same results on every run, in both builds and in
  * every maintenance mode.
@@ -96,10 +101,19 @@ enum noctEffect {
     NOCT_EFFECT_EVENTS = 1u << 1,   /**< Contact-begin and -end lists. */
     NOCT_EFFECT_RESPONSE = 1u << 2, /**< Contact-begin reverses directions
                                          (implies the events' bookkeeping). */
-    NOCT_EFFECT_WALLS = 1u << 3     /**< After moving, an object whose position
+    NOCT_EFFECT_WALLS = 1u << 3,    /**< After moving, an object whose position
                                          is outside the container on an axis
                                          and still moving outward has that
                                          velocity component negated. */
+    NOCT_EFFECT_SUBSTEP = 1u << 4   /**< Split a step into k sub-steps of
+                                         velocity / k, k chosen so that no
+                                         object moves more than half its
+                                         smallest size per sub-step (see
+                                         noctWorldMaxStepRatio()); detection,
+                                         events and response run at every
+                                         sub-step. For scenes whose objects
+                                         may otherwise pass through each
+                                         other between steps. */
 };
 
 /** @brief How the octree follows the objects. */
@@ -134,6 +148,7 @@ typedef struct noctWorldDef {
  */
 typedef struct noctWorldCounters {
     uint64_t steps;            /**< Steps run. */
+    uint64_t substeps;         /**< Sub-steps run (#NOCT_EFFECT_SUBSTEP). */
     uint64_t moved;            /**< Object moves (motion). */
     uint64_t inside_fast;      /**< Maintenance: boxes still inside their
                                     only leaf, found by the fast test. */
@@ -246,7 +261,8 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
 NOCT_API size_t noctWorldColliding(const noctWorld *world, const noctPair **pairs);
 
 /**
- * @brief The pairs that began colliding at the last step, sorted.
+ * @brief The pairs that began colliding at the last step, sorted (by
+ *        sub-step, then by pair, with #NOCT_EFFECT_SUBSTEP).
  * @param[in]  world The world.
  * @param[out] pairs Receives a pointer to the list, as for
  *                   noctWorldColliding().
@@ -257,7 +273,8 @@ NOCT_API size_t noctWorldColliding(const noctWorld *world, const noctPair **pair
 NOCT_API size_t noctWorldBegan(const noctWorld *world, const noctPair **pairs);
 
 /**
- * @brief The pairs that stopped colliding at the last step, sorted.
+ * @brief The pairs that stopped colliding at the last step, sorted (by
+ *        sub-step, then by pair, with #NOCT_EFFECT_SUBSTEP).
  * @param[in]  world The world.
  * @param[out] pairs Receives a pointer to the list, as for
  *                   noctWorldColliding().
