@@ -155,6 +155,14 @@ START_TEST(gas_1000_known_answer)
 }
 END_TEST
 
+/* gas_10000: 77 281 events, the reference's answer. */
+START_TEST(gas_10000_known_answer)
+{
+    uint64_t h;
+    ck_assert_uint_eq(run_gas(10000, 30, NOCT_MAINTAIN_INCREMENTAL, &h), 77281);
+}
+END_TEST
+
 /* The facing pair of ring r first overlaps at step 51 + 2 r and reverses. */
 START_TEST(planes_timing_and_reversal)
 {
@@ -470,6 +478,7 @@ int main(void)
     tcase_add_loop_test(tc, planes_counts_across_N_and_modes, 0, 6);
     tcase_add_test(tc, planes_t30);
     tcase_add_test(tc, gas_1000_known_answer);
+    tcase_add_test(tc, gas_10000_known_answer);
     tcase_add_test(tc, planes_timing_and_reversal);
     suite_add_tcase(s, tc);
     tc = tcase_create("random scenes");
