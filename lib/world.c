@@ -41,6 +41,7 @@ typedef struct object {
     const noctMesh *mesh;
     double pos[3], vel[3], speed; /* vel = speed * unit direction */
     double lo[3], hi[3];   /* placed bounding box */
+    double olo[3], ohi[3]; /* the box before the last move */
     octNode **spans;       /* leaves it is in */
     uint32_t nspans, capspans;
     uint32_t generation;
@@ -435,6 +436,11 @@ static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
  * object to the leaves below it that the box overlaps; newly entered
  * leaves join the flood. A box that left every leaf it was in (it moved
  * farther than its leaves are wide) is re-inserted from the root.
+ *
+ * A query is skipped when the part of the new box inside the leaf-sized
+ * cube across that face, edge or vertex lies inside the old box: every
+ * leaf there that the new box overlaps overlapped the old box, so the
+ * object is in it already (phase A only removed leaves the new box left).
  */
 static noctStatus enter_phase(noctWorld *w, uint32_t id)
 {
@@ -470,6 +476,15 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
             for (int b = 0; b < nr[1]; ++b)
                 for (int c = 0; c < nr[2]; ++c) {
                     double v[3] = {reach[0][a], reach[1][b], reach[2][c]};
+                    bool covered = true;
+                    for (int k = 0; k < 3 && covered; ++k) {
+                        double clo = lc->lo[k] + v[k] * lc->size;
+                        double ilo = fmax(o->lo[k], clo);
+                        double ihi = fmin(o->hi[k], clo + lc->size);
+                        covered = ilo >= o->olo[k] && ihi <= o->ohi[k];
+                    }
+                    if (covered)
+                        continue;
                     octDirection d[OCT_MAX_MOTION_DIRECTIONS];
                     size_t nd = octVectorToDirections(v[0], v[1], v[2], d);
                     if (nd == 0)
@@ -806,6 +821,8 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             object *o = &w->obj[i];
             if (!o->alive || o->speed == 0)
                 continue;
+            memcpy(o->olo, o->lo, sizeof o->lo);
+            memcpy(o->ohi, o->hi, sizeof o->hi);
             for (int k = 0; k < 3; ++k)
                 o->pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
             if (w->def.effects & NOCT_EFFECT_WALLS)
