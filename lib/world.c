@@ -54,8 +54,17 @@ typedef struct pair_list {
     size_t n, cap;
 } pair_list;
 
+/* A leaf's objects' boxes, gathered for the pair search's all-pairs loop
+ * so that it reads one contiguous array instead of scattered objects. */
+typedef struct leaf_box {
+    double lo[3], hi[3];
+    uint32_t id;
+} leaf_box;
+
 struct noctWorld {
     noctWorldDef def;
+    leaf_box *gather;      /* pair search scratch */
+    uint32_t capgather;
     object *obj;
     uint32_t nslots, capslots;
     uint32_t *free_slots;
@@ -560,28 +569,37 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
 {
     const cell *rc = cell_of(w->root);
     ++w->c.leaves_visited;
+    if (!grow_array((void **)&w->gather, &w->capgather, c->count, sizeof *w->gather))
+        return NOCT_ERR_NOMEM;
+    leaf_box *g = w->gather;
     for (uint32_t i = 0; i < c->count; ++i) {
-        const object *a = &w->obj[c->objs[i]];
+        const object *o = &w->obj[c->objs[i]];
+        memcpy(g[i].lo, o->lo, sizeof o->lo);
+        memcpy(g[i].hi, o->hi, sizeof o->hi);
+        g[i].id = c->objs[i];
+    }
+    w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
+    for (uint32_t i = 0; i < c->count; ++i) {
+        const leaf_box *a = &g[i];
         for (uint32_t j = i + 1; j < c->count; ++j) {
-            const object *b = &w->obj[c->objs[j]];
-            ++w->c.candidate_pairs;
-            double corner[3];
-            bool apart = false;
-            for (int k = 0; k < 3; ++k) {
-                apart = apart || a->hi[k] < b->lo[k] || b->hi[k] < a->lo[k];
-                corner[k] = fmax(a->lo[k], b->lo[k]);
-            }
-            if (apart || !owns(c, rc, corner))
+            const leaf_box *b = &g[j];
+            if (a->hi[0] < b->lo[0] || b->hi[0] < a->lo[0] || a->hi[1] < b->lo[1] ||
+                b->hi[1] < a->lo[1] || a->hi[2] < b->lo[2] || b->hi[2] < a->lo[2])
+                continue;
+            const double corner[3] = {fmax(a->lo[0], b->lo[0]), fmax(a->lo[1], b->lo[1]),
+                                      fmax(a->lo[2], b->lo[2])};
+            if (!owns(c, rc, corner))
                 continue;
             ++w->c.tested_pairs;
+            const object *oa = &w->obj[a->id], *ob = &w->obj[b->id];
             bool hit;
-            noctStatus st = noctCollide(a->mesh, a->pos, b->mesh, b->pos,
+            noctStatus st = noctCollide(oa->mesh, oa->pos, ob->mesh, ob->pos,
                                         w->def.accuracy, &hit, &w->c.narrow);
             if (st != NOCT_OK)
                 return st;
             if (!hit)
                 continue;
-            uint32_t ia = c->objs[i], ib = c->objs[j];
+            uint32_t ia = a->id, ib = b->id;
             if (ia > ib) {
                 uint32_t t = ia;
                 ia = ib;
@@ -695,6 +713,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->free_slots);
     free(w->mark);
     free(w->work);
+    free(w->gather);
     free(w->colliding.p);
     free(w->previous.p);
     free(w->began.p);
