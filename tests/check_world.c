@@ -100,12 +100,23 @@ START_TEST(planes_counts_across_N_and_modes)
 }
 END_TEST
 
-START_TEST(planes_t30)
+/* t20 and t30: every N incrementally, and rebuild mode once; the same
+ * events throughout. (k <= 10 runs every N in both modes above.) */
+START_TEST(planes_t20_t30)
 {
-    uint64_t h1, h2;
-    ck_assert_uint_eq(run_planes(30, 10, NOCT_MAINTAIN_INCREMENTAL, 100, &h1), 61 * 61);
-    ck_assert_uint_eq(run_planes(30, 50, NOCT_MAINTAIN_REBUILD, 0, &h2), 61 * 61);
-    ck_assert(h1 == h2);
+    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE};
+    int k = _i == 0 ? 20 : 30;
+    size_t want = (size_t)((2 * k + 1) * (2 * k + 1));
+    uint64_t first = 0, h;
+    for (size_t n = 0; n < sizeof Ns / sizeof *Ns; ++n) {
+        ck_assert_uint_eq(run_planes(k, Ns[n], NOCT_MAINTAIN_INCREMENTAL,
+                                     n == 3 ? 100 : 0, &h), want);
+        if (n == 0)
+            first = h;
+        ck_assert_msg(h == first, "t%d, N = %d: event sequence differs", k, Ns[n]);
+    }
+    ck_assert_uint_eq(run_planes(k, 50, NOCT_MAINTAIN_REBUILD, 0, &h), want);
+    ck_assert(h == first);
 }
 END_TEST
 
@@ -476,7 +487,7 @@ int main(void)
     tcase_set_tags(tc, "slow"); /* left out under valgrind */
     tcase_set_timeout(tc, 600);
     tcase_add_loop_test(tc, planes_counts_across_N_and_modes, 0, 6);
-    tcase_add_test(tc, planes_t30);
+    tcase_add_loop_test(tc, planes_t20_t30, 0, 2);
     tcase_add_test(tc, gas_1000_known_answer);
     tcase_add_test(tc, gas_10000_known_answer);
     tcase_add_test(tc, planes_timing_and_reversal);
