@@ -81,7 +81,6 @@ struct noctWorld {
     noctMesh **owned;      /* meshes the scene builders made */
     size_t nowned, capowned;
     noctWorldCounters c;
-    noctStatus deferred;   /* an allocation failure inside a walk */
 };
 
 /* ---- small helpers ------------------------------------------------------ */
