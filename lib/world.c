@@ -346,8 +346,14 @@ static void destroy_tree(noctWorld *w)
 
 /* Build the tree afresh around every live object: a root cube whose size
  * is a power of two at least twice the objects' extent (and at least
- * min_size), aligned to half its size so that every cell's corner and size
- * are exact. */
+ * min_size). Its corner is the largest point of the lattice (m + s) h
+ * (h half the size, m an integer) at or below the objects' low corner, so
+ * the root contains them all; the shift s, a 20-bit binary fraction, keeps
+ * cell boundaries at every depth off the round coordinates scenes like to
+ * use (a grid of objects at integer positions would otherwise straddle
+ * boundaries everywhere and miss the fast path), while every cell corner
+ * stays an exact dyadic number. */
+#define ROOT_SHIFT (347127.0 / 1048576.0)
 static noctStatus rebuild(noctWorld *w, double min_size)
 {
     destroy_tree(w);
@@ -367,8 +373,8 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     double size = 1;
     while (size < 2 * extent || size < min_size)
         size *= 2;
-    while (size > 2 * extent && size / 2 >= min_size && size > 0x1p-40)
-        size /= 2;
+    while (size / 2 >= 2 * extent && size / 2 >= min_size && size > 0x1p-40)
+        size /= 2; /* the smallest power of two >= 2 extent (and min_size) */
     cell *rc = calloc(1, sizeof *rc);
     w->root = octCreate();
     if (rc == NULL || w->root == NULL) {
@@ -379,11 +385,15 @@ static noctStatus rebuild(noctWorld *w, double min_size)
         return NOCT_ERR_NOMEM;
     }
     rc->size = size;
-    for (int k = 0; k < 3; ++k) { /* the boxes' span fits in the middle */
-        double h = size / 2;
-        rc->lo[k] = floor(lo[k] / h) * h;
-        if (rc->lo[k] + size < hi[k]) /* cannot happen: size >= 2 extent */
-            rc->lo[k] = lo[k];
+    for (int k = 0; k < 3; ++k) {
+        /* lo - h < corner <= lo, so corner + 2 h > lo + h >= hi. The
+         * lattice point is exact while |m| < 2^32; beyond that (objects
+         * very far from the origin for their size) fall back to the plain
+         * lattice m h. */
+        double h = size / 2, m = floor(lo[k] / h - ROOT_SHIFT);
+        rc->lo[k] = fabs(m) < 0x1p32 ? (m + ROOT_SHIFT) * h : floor(lo[k] / h) * h;
+        if (rc->lo[k] > lo[k] || rc->lo[k] + size < hi[k])
+            rc->lo[k] = floor(lo[k] / h) * h; /* a rounding safeguard */
     }
     octSwapData(w->root, rc);
     ++w->c.rebuilds;
