@@ -348,12 +348,49 @@ static void destroy_tree(noctWorld *w)
  * is a power of two at least twice the objects' extent (and at least
  * min_size). Its corner is the largest point of the lattice (m + s) h
  * (h half the size, m an integer) at or below the objects' low corner, so
- * the root contains them all; the shift s, a 20-bit binary fraction, keeps
- * cell boundaries at every depth off the round coordinates scenes like to
- * use (a grid of objects at integer positions would otherwise straddle
- * boundaries everywhere and miss the fast path), while every cell corner
- * stays an exact dyadic number. */
-#define ROOT_SHIFT (347127.0 / 1048576.0)
+ * the root contains them all. The shift s, a 20-bit binary fraction, moves
+ * cell boundaries off the round coordinates scenes like to use (a grid of
+ * objects at integer positions would otherwise straddle boundaries
+ * everywhere and miss the fast path) while every cell corner stays an
+ * exact dyadic number. No single shift suits every scale, so rebuild tries
+ * a few and keeps the one with which the fewest objects straddle the
+ * boundaries of cells about twice their typical size. */
+static const double ROOT_SHIFTS[] = {347127.0 / 1048576.0, 611953.0 / 1048576.0,
+                                     95349.0 / 1048576.0, 869381.0 / 1048576.0};
+
+/* The root corner on the lattice (m + s) h at or below lo. */
+static void root_corner(const double lo[3], const double hi[3], double size, double s,
+                        double corner[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        /* lo - h < corner <= lo, so corner + 2 h > lo + h >= hi. The
+         * lattice point is exact while |m| < 2^32; beyond that (objects
+         * very far from the origin for their size) fall back to m h. */
+        double h = size / 2, m = floor(lo[k] / h - s);
+        corner[k] = fabs(m) < 0x1p32 ? (m + s) * h : floor(lo[k] / h) * h;
+        if (corner[k] > lo[k] || corner[k] + size < hi[k])
+            corner[k] = floor(lo[k] / h) * h; /* a rounding safeguard */
+    }
+}
+
+/* Of a sample of the objects, how many straddle a boundary of the cells
+ * of size c laid from corner? */
+static size_t straddling(const noctWorld *w, const double corner[3], double c,
+                         uint32_t stride)
+{
+    size_t n = 0;
+    for (uint32_t i = 0; i < w->nslots; i += stride) {
+        const object *o = &w->obj[i];
+        if (!o->alive)
+            continue;
+        for (int k = 0; k < 3; ++k)
+            if (floor((o->lo[k] - corner[k]) / c) != floor((o->hi[k] - corner[k]) / c)) {
+                ++n;
+                break;
+            }
+    }
+    return n;
+}
 static noctStatus rebuild(noctWorld *w, double min_size)
 {
     destroy_tree(w);
@@ -385,15 +422,30 @@ static noctStatus rebuild(noctWorld *w, double min_size)
         return NOCT_ERR_NOMEM;
     }
     rc->size = size;
-    for (int k = 0; k < 3; ++k) {
-        /* lo - h < corner <= lo, so corner + 2 h > lo + h >= hi. The
-         * lattice point is exact while |m| < 2^32; beyond that (objects
-         * very far from the origin for their size) fall back to the plain
-         * lattice m h. */
-        double h = size / 2, m = floor(lo[k] / h - ROOT_SHIFT);
-        rc->lo[k] = fabs(m) < 0x1p32 ? (m + ROOT_SHIFT) * h : floor(lo[k] / h) * h;
-        if (rc->lo[k] > lo[k] || rc->lo[k] + size < hi[k])
-            rc->lo[k] = floor(lo[k] / h) * h; /* a rounding safeguard */
+    /* Cells about twice the objects' mean size (a sample of at most about
+     * 4096 objects), and the shift that makes the fewest straddle them. */
+    uint32_t stride = w->nslots > 4096 ? w->nslots / 4096 : 1;
+    double mean = 0;
+    size_t counted = 0;
+    for (uint32_t i = 0; i < w->nslots; i += stride)
+        if (w->obj[i].alive) {
+            const object *o = &w->obj[i];
+            mean += fmax(fmax(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]), o->hi[2] - o->lo[2]);
+            ++counted;
+        }
+    double c = size;
+    if (counted > 0)
+        while (c / 2 >= 2 * (mean / (double)counted) && c > size * 0x1p-30)
+            c /= 2;
+    size_t best = SIZE_MAX;
+    for (size_t i = 0; i < sizeof ROOT_SHIFTS / sizeof *ROOT_SHIFTS; ++i) {
+        double corner[3];
+        root_corner(lo, hi, size, ROOT_SHIFTS[i], corner);
+        size_t n = counted > 0 ? straddling(w, corner, c, stride) : 0;
+        if (n < best) {
+            best = n;
+            memcpy(rc->lo, corner, sizeof corner);
+        }
     }
     octSwapData(w->root, rc);
     ++w->c.rebuilds;
