@@ -466,7 +466,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
     /* The filter needs no convexity to be sound (a solid lies inside the
      * hull of its vertices), only to be useful: small meshes with few
      * directions, typically convex ones. */
-    if (!sat || m->nv > 4 * NOCT_SAT_MAX)
+    if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
     free(e);
     m->convex = convex;

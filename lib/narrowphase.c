@@ -297,15 +297,17 @@ static bool box_inside(const placed *A, const placed *B)
     return true;
 }
 
-/* The projections of o's placed vertices on axis u: [*lo, *hi]. */
-static void project(const placed *o, const double u[3], double *lo, double *hi)
+/* The filter serves meshes of at most this many vertices (mesh.c). */
+#define SAT_MAX_VERTICES (4 * NOCT_SAT_MAX)
+
+/* The projections of n placed vertices on axis u: [*lo, *hi]. */
+static void project(double (*v)[3], size_t n, const double u[3], double *lo,
+                    double *hi)
 {
     *lo = INFINITY;
     *hi = -INFINITY;
-    for (size_t i = 0; i < o->m->nv; ++i) {
-        double p[3];
-        place(o, (uint32_t)i, p);
-        double d = u[0] * p[0] + u[1] * p[1] + u[2] * p[2];
+    for (size_t i = 0; i < n; ++i) {
+        double d = u[0] * v[i][0] + u[1] * v[i][1] + u[2] * v[i][2];
         *lo = fmin(*lo, d);
         *hi = fmax(*hi, d);
     }
@@ -324,6 +326,12 @@ static bool sat_separated(const placed *A, const placed *B)
     const noctMesh *a = A->m, *b = B->m;
     if (a->nsat_faces == 0 || b->nsat_faces == 0)
         return false;
+    /* Place the vertices once; every axis projects the same points. */
+    double va[SAT_MAX_VERTICES][3], vb[SAT_MAX_VERTICES][3];
+    for (size_t i = 0; i < a->nv; ++i)
+        place(A, (uint32_t)i, va[i]);
+    for (size_t i = 0; i < b->nv; ++i)
+        place(B, (uint32_t)i, vb[i]);
     double M = 0;
     for (int k = 0; k < 3; ++k)
         M = fmax(M, fmax(fmax(fabs(a->lo[k] + A->t[k]), fabs(a->hi[k] + A->t[k])),
@@ -348,8 +356,8 @@ static bool sat_separated(const placed *A, const placed *B)
             continue; /* (nearly) parallel edges: no useful axis */
         double margin = 4 * 3 * 0x1p-53 * l1 * M + 1e-300;
         double alo, ahi, blo, bhi;
-        project(A, u, &alo, &ahi);
-        project(B, u, &blo, &bhi);
+        project(va, a->nv, u, &alo, &ahi);
+        project(vb, b->nv, u, &blo, &bhi);
         if (blo - ahi > margin || alo - bhi > margin)
             return true;
     }

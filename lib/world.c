@@ -823,11 +823,17 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     } else {
         if (w->nslots >= 0x80000000u)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
+        /* obj and mark share one capacity, capslots. */
         uint32_t cap = w->capslots;
-        if (!grow_array((void **)&w->obj, &w->capslots, w->nslots + 1, sizeof *w->obj))
+        if (!grow_array((void **)&w->obj, &cap, w->nslots + 1, sizeof *w->obj))
             return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        if (!grow_array((void **)&w->mark, &cap, w->nslots + 1, sizeof *w->mark))
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        if (cap != w->capslots) {
+            uint64_t *mark = realloc(w->mark, cap * sizeof *mark);
+            if (mark == NULL)
+                return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+            w->mark = mark;
+            w->capslots = cap;
+        }
         slot = w->nslots++;
         memset(&w->obj[slot], 0, sizeof w->obj[slot]);
         w->mark[slot] = 0;
