@@ -22,4 +22,32 @@
  * compiled out (NDEBUG) in the efficient one. */
 #define NOCT_REQUIRE(cond) assert(cond)
 
+/*
+ * The accessors as the library's own clients (world.c) call them: through
+ * the checked, exported functions in the defensive build, and straight to
+ * the fields in the efficient one, as an efficient client's inline
+ * accessors do (a call through the PLT per node otherwise).
+ */
+#ifdef NDEBUG
+#  define NOCT_NODE_DATA(n) ((n)->data_)
+#  define NOCT_NODE_IS_SPLIT(n) ((n)->children_ != NULL)
+#  define NOCT_NODE_CHILD(n, o) (&(n)->children_[(o) - OCT_LDB])
+#  define NOCT_NODE_PARENT(n) ((n)->parent_)
+#else
+#  define NOCT_NODE_DATA(n) octData(n)
+#  define NOCT_NODE_IS_SPLIT(n) octIsSplit(n)
+#  define NOCT_NODE_CHILD(n, o) octChild((n), (o))
+#  define NOCT_NODE_PARENT(n) octParent(n)
+#endif
+
+/* The direction whose axes are those of (x, y, z) that are not zero, on
+ * the side of their signs; OCT_OMEGA for (0, 0, 0). */
+octDirection noct_direction_of(int x, int y, int z);
+
+/* min and max of finite doubles (the library validates coordinates before
+ * they get here). Unlike fmin and fmax these compile to one instruction
+ * instead of a libm call on the hot paths. */
+static inline double noct_min(double a, double b) { return b < a ? b : a; }
+static inline double noct_max(double a, double b) { return b > a ? b : a; }
+
 #endif /* NOCT_LIB_INTERNAL_H */

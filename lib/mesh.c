@@ -258,8 +258,8 @@ static void tri_bounds(const noctMesh *m, uint32_t t, double lo[3], double hi[3]
     for (int c = 0; c < 3; ++c) {
         const double *p = &m->v[3 * m->tri[3 * t + c]];
         for (int k = 0; k < 3; ++k) {
-            lo[k] = fmin(lo[k], p[k]);
-            hi[k] = fmax(hi[k], p[k]);
+            lo[k] = noct_min(lo[k], p[k]);
+            hi[k] = noct_max(hi[k], p[k]);
         }
     }
 }
@@ -315,10 +315,10 @@ static void bvh_split(bvh_build *b, uint32_t n, uint32_t first, uint32_t count,
         double lo[3], hi[3];
         tri_bounds(b->m, b->order[i], lo, hi);
         for (int k = 0; k < 3; ++k) {
-            node->lo[k] = fmin(node->lo[k], lo[k]);
-            node->hi[k] = fmax(node->hi[k], hi[k]);
-            clo[k] = fmin(clo[k], b->centroid[3 * b->order[i] + k]);
-            chi[k] = fmax(chi[k], b->centroid[3 * b->order[i] + k]);
+            node->lo[k] = noct_min(node->lo[k], lo[k]);
+            node->hi[k] = noct_max(node->hi[k], hi[k]);
+            clo[k] = noct_min(clo[k], b->centroid[3 * b->order[i] + k]);
+            chi[k] = noct_max(chi[k], b->centroid[3 * b->order[i] + k]);
         }
     }
     if (count <= BVH_LEAF) {
@@ -591,8 +591,8 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
     }
     for (size_t i = 0; i < nvertices; ++i)
         for (int k = 0; k < 3; ++k) {
-            m->lo[k] = fmin(m->lo[k], m->v[3 * i + k]);
-            m->hi[k] = fmax(m->hi[k], m->v[3 * i + k]);
+            m->lo[k] = noct_min(m->lo[k], m->v[3 * i + k]);
+            m->hi[k] = noct_max(m->hi[k], m->v[3 * i + k]);
         }
     /* Fan triangulation, and the signed volume to fix the orientation. */
     double volume = 0;

@@ -79,7 +79,7 @@ static bool within_2d(int k, const double p[3], const double a[3], const double 
 {
     for (int s = 1; s <= 2; ++s) {
         int i = (k + s) % 3;
-        if (p[i] < fmin(a[i], b[i]) || p[i] > fmax(a[i], b[i]))
+        if (p[i] < noct_min(a[i], b[i]) || p[i] > noct_max(a[i], b[i]))
             return false;
     }
     return true;
@@ -114,22 +114,23 @@ static bool seg_seg_3d(const exact_ctx *x, const double p[3], const double q[3],
     int axis = 0;
     double best = -1;
     for (int k = 0; k < 3; ++k) {
-        double lo = fmin(fmin(p[k], q[k]), fmin(a[k], b[k]));
-        double hi = fmax(fmax(p[k], q[k]), fmax(a[k], b[k]));
+        double lo = noct_min(noct_min(p[k], q[k]), noct_min(a[k], b[k]));
+        double hi = noct_max(noct_max(p[k], q[k]), noct_max(a[k], b[k]));
         if (hi - lo > best) {
             best = hi - lo;
             axis = k;
         }
     }
-    return fmax(fmin(p[axis], q[axis]), fmin(a[axis], b[axis])) <=
-           fmin(fmax(p[axis], q[axis]), fmax(a[axis], b[axis]));
+    return noct_max(noct_min(p[axis], q[axis]), noct_min(a[axis], b[axis])) <=
+           noct_min(noct_max(p[axis], q[axis]), noct_max(a[axis], b[axis]));
 }
 
-/* Closed segment pq meets closed triangle abc (any of them degenerate). */
+/* Closed segment pq meets closed triangle abc (any of them degenerate);
+ * s1 and s2 are the signs of o3(a, b, c, p) and o3(a, b, c, q). */
 static bool seg_tri(const exact_ctx *x, const double p[3], const double q[3],
-                    const double a[3], const double b[3], const double c[3])
+                    int s1, int s2, const double a[3], const double b[3],
+                    const double c[3])
 {
-    int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
     if (s1 * s2 > 0)
         return false;
     if (s1 != 0 || s2 != 0) {
@@ -154,12 +155,30 @@ static bool seg_tri(const exact_ctx *x, const double p[3], const double q[3],
            seg_seg_3d(x, p, q, c, a);
 }
 
+/*
+ * Closed triangles a and b meet. Each vertex's side of the other
+ * triangle's plane is computed once: when all three vertices of one
+ * triangle lie strictly on one side of the other's plane, they cannot
+ * meet (the common case, six predicates); otherwise an edge of one meets
+ * the other triangle, tested with the signs already known.
+ */
 static bool tri_tri(const exact_ctx *x, double a[3][3], double b[3][3])
 {
-    for (int e = 0; e < 3; ++e)
-        if (seg_tri(x, a[e], a[(e + 1) % 3], b[0], b[1], b[2]) ||
-            seg_tri(x, b[e], b[(e + 1) % 3], a[0], a[1], a[2]))
+    int sa[3], sb[3];
+    for (int i = 0; i < 3; ++i)
+        sb[i] = o3(x, a[0], a[1], a[2], b[i]);
+    if (sb[0] == sb[1] && sb[1] == sb[2] && sb[0] != 0)
+        return false;
+    for (int i = 0; i < 3; ++i)
+        sa[i] = o3(x, b[0], b[1], b[2], a[i]);
+    if (sa[0] == sa[1] && sa[1] == sa[2] && sa[0] != 0)
+        return false;
+    for (int e = 0; e < 3; ++e) {
+        int f = (e + 1) % 3;
+        if (seg_tri(x, a[e], a[f], sa[e], sa[f], b[0], b[1], b[2]) ||
+            seg_tri(x, b[e], b[f], sb[e], sb[f], a[0], a[1], a[2]))
             return true;
+    }
     return false;
 }
 
@@ -308,8 +327,8 @@ static void project(double (*v)[3], size_t n, const double u[3], double *lo,
     *hi = -INFINITY;
     for (size_t i = 0; i < n; ++i) {
         double d = u[0] * v[i][0] + u[1] * v[i][1] + u[2] * v[i][2];
-        *lo = fmin(*lo, d);
-        *hi = fmax(*hi, d);
+        *lo = noct_min(*lo, d);
+        *hi = noct_max(*hi, d);
     }
 }
 
@@ -334,8 +353,8 @@ static bool sat_separated(const placed *A, const placed *B)
         place(B, (uint32_t)i, vb[i]);
     double M = 0;
     for (int k = 0; k < 3; ++k)
-        M = fmax(M, fmax(fmax(fabs(a->lo[k] + A->t[k]), fabs(a->hi[k] + A->t[k])),
-                         fmax(fabs(b->lo[k] + B->t[k]), fabs(b->hi[k] + B->t[k]))));
+        M = noct_max(M, noct_max(noct_max(fabs(a->lo[k] + A->t[k]), fabs(a->hi[k] + A->t[k])),
+                         noct_max(fabs(b->lo[k] + B->t[k]), fabs(b->hi[k] + B->t[k]))));
     size_t naxes = a->nsat_faces + b->nsat_faces + a->nsat_edges * b->nsat_edges;
     for (size_t i = 0; i < naxes; ++i) {
         double u[3];
