@@ -21,7 +21,10 @@ noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 
 noctree_ldflags = -version-info $(NOCT_LT_VERSION) -no-undefined
 if HAVE_LD_VERSION_SCRIPT
-noctree_ldflags += -Wl,--version-script=$(srcdir)/lib/libnoctree.sym
+# -Bsymbolic-functions: the library's calls to its own exported functions
+# (the world's to octGtEqNeighbor, say) bind inside it, not through the PLT.
+noctree_ldflags += -Wl,--version-script=$(srcdir)/lib/libnoctree.sym \
+	-Wl,-Bsymbolic-functions
 endif
 
 lib_LTLIBRARIES += lib/libnoctree.la lib/libnoctree-efficient.la

@@ -311,6 +311,11 @@ static unsigned sign_index(double v)
     return v > 0 ? 1u : v < 0 ? 2u : 0u;
 }
 
+octDirection noct_direction_of(int x, int y, int z)
+{
+    return BY_SIGNS[sign_index(x)][sign_index(y)][sign_index(z)];
+}
+
 size_t octVectorToDirections(double x, double y, double z,
                              octDirection dirs[OCT_MAX_MOTION_DIRECTIONS])
 {

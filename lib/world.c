@@ -94,7 +94,7 @@ static double seconds(void)
 
 static cell *cell_of(const octNode *n)
 {
-    return octData(n);
+    return NOCT_NODE_DATA(n);
 }
 
 static bool grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem)
@@ -196,7 +196,7 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
         kids[i].lo[1] = pc->lo[1] + ((i & 2) ? half : 0);
         kids[i].lo[2] = pc->lo[2] + ((i & 1) ? half : 0);
         kids[i].size = half;
-        octSwapData(octChild(leaf, (octDirection)(OCT_LDB + i)), &kids[i]);
+        octSwapData(NOCT_NODE_CHILD(leaf, (octDirection)(OCT_LDB + i)), &kids[i]);
     }
     uint32_t *objs = pc->objs, count = pc->count;
     pc->objs = NULL;
@@ -208,7 +208,7 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
     for (uint32_t j = 0; j < count && ok; ++j)
         for (int i = 0; i < 8 && ok; ++i)
             if (overlaps(&w->obj[objs[j]], &kids[i]))
-                ok = add_and_split(w, octChild(leaf, (octDirection)(OCT_LDB + i)), objs[j]);
+                ok = add_and_split(w, NOCT_NODE_CHILD(leaf, (octDirection)(OCT_LDB + i)), objs[j]);
     free(objs);
     return ok;
 }
@@ -217,11 +217,11 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
  * octJoin(n, NULL) finds no client data. */
 static void free_cells_below(octNode *n)
 {
-    if (!octIsSplit(n))
+    if (!NOCT_NODE_IS_SPLIT(n))
         return;
-    cell *block = cell_of(octChild(n, OCT_LDB)); /* the 8 are one block */
+    cell *block = cell_of(NOCT_NODE_CHILD(n, OCT_LDB)); /* the 8 are one block */
     for (int i = 0; i < 8; ++i) {
-        octNode *k = octChild(n, (octDirection)(OCT_LDB + i));
+        octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
         free_cells_below(k);
         cell *c = octSwapData(k, NULL);
         free(c->objs);
@@ -237,8 +237,8 @@ static bool try_merge(noctWorld *w, octNode *p)
         uint32_t distinct = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
-            octNode *k = octChild(p, (octDirection)(OCT_LDB + i));
-            if (octIsSplit(k))
+            octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
+            if (NOCT_NODE_IS_SPLIT(k))
                 return true;
             cell *c = cell_of(k);
             for (uint32_t j = 0; j < c->count; ++j)
@@ -257,7 +257,7 @@ static bool try_merge(noctWorld *w, octNode *p)
         pc->count = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
-            octNode *k = octChild(p, (octDirection)(OCT_LDB + i));
+            octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
             cell *c = cell_of(k);
             for (uint32_t j = 0; j < c->count; ++j) {
                 uint32_t id = c->objs[j];
@@ -278,7 +278,7 @@ static bool try_merge(noctWorld *w, octNode *p)
             o->spans[o->nspans++] = p;
         }
         ++w->c.merges;
-        p = octParent(p);
+        p = NOCT_NODE_PARENT(p);
     }
     return true;
 }
@@ -293,7 +293,7 @@ static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
         }
     span_remove(&w->obj[id], leaf);
     ++w->c.leaves_left;
-    return try_merge(w, octParent(leaf));
+    return try_merge(w, NOCT_NODE_PARENT(leaf));
 }
 
 /* Add id to every leaf under n that its box overlaps and lacks it. If the
@@ -303,9 +303,9 @@ static bool insert_below(noctWorld *w, octNode *n, uint32_t id, bool push)
     const object *o = &w->obj[id];
     if (!overlaps(o, cell_of(n)))
         return true;
-    if (octIsSplit(n)) {
+    if (NOCT_NODE_IS_SPLIT(n)) {
         for (int i = 0; i < 8; ++i)
-            if (!insert_below(w, octChild(n, (octDirection)(OCT_LDB + i)), id, push))
+            if (!insert_below(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)), id, push))
                 return false;
         return true;
     }
@@ -333,7 +333,7 @@ static void destroy_tree(noctWorld *w)
     if (w->root == NULL)
         return;
     free_cells_below(w->root);
-    if (octIsSplit(w->root))
+    if (NOCT_NODE_IS_SPLIT(w->root))
         octJoin(w->root, NULL);
     cell *rc = octSwapData(w->root, NULL);
     free(rc->objs);
@@ -401,12 +401,12 @@ static noctStatus rebuild(noctWorld *w, double min_size)
         if (!o->alive)
             continue;
         for (int k = 0; k < 3; ++k) {
-            lo[k] = any ? fmin(lo[k], o->lo[k]) : o->lo[k];
-            hi[k] = any ? fmax(hi[k], o->hi[k]) : o->hi[k];
+            lo[k] = any ? noct_min(lo[k], o->lo[k]) : o->lo[k];
+            hi[k] = any ? noct_max(hi[k], o->hi[k]) : o->hi[k];
         }
         any = true;
     }
-    double extent = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    double extent = noct_max(noct_max(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
     double size = 1;
     while (size < 2 * extent || size < min_size)
         size *= 2;
@@ -430,7 +430,8 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     for (uint32_t i = 0; i < w->nslots; i += stride)
         if (w->obj[i].alive) {
             const object *o = &w->obj[i];
-            mean += fmax(fmax(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]), o->hi[2] - o->lo[2]);
+            mean += noct_max(noct_max(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]),
+                             o->hi[2] - o->lo[2]);
             ++counted;
         }
     double c = size;
@@ -545,22 +546,20 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
         for (int a = 0; a < nr[0]; ++a)
             for (int b = 0; b < nr[1]; ++b)
                 for (int c = 0; c < nr[2]; ++c) {
-                    double v[3] = {reach[0][a], reach[1][b], reach[2][c]};
+                    const int v[3] = {reach[0][a], reach[1][b], reach[2][c]};
                     bool covered = true;
                     for (int k = 0; k < 3 && covered; ++k) {
                         double clo = lc->lo[k] + v[k] * lc->size;
-                        double ilo = fmax(o->lo[k], clo);
-                        double ihi = fmin(o->hi[k], clo + lc->size);
+                        double ilo = noct_max(o->lo[k], clo);
+                        double ihi = noct_min(o->hi[k], clo + lc->size);
                         covered = ilo >= o->olo[k] && ihi <= o->ohi[k];
                     }
                     if (covered)
                         continue;
-                    octDirection d[OCT_MAX_MOTION_DIRECTIONS];
-                    size_t nd = octVectorToDirections(v[0], v[1], v[2], d);
-                    if (nd == 0)
+                    octDirection d = noct_direction_of(v[0], v[1], v[2]);
+                    if (d == OCT_OMEGA)
                         continue;
-                    /* The last direction listed has all of v's axes. */
-                    octNode *nb = octGtEqNeighbor(w->work[wi], d[nd - 1]);
+                    octNode *nb = octGtEqNeighbor(w->work[wi], d);
                     ++w->c.neighbor_queries;
                     if (nb == NULL)
                         continue;
@@ -626,6 +625,29 @@ static bool owns(const cell *c, const cell *root, const double p[3])
     return true;
 }
 
+static int cmp_lower_x(const void *x, const void *y)
+{
+    const leaf_box *a = x, *b = y;
+    return (a->lo[0] > b->lo[0]) - (a->lo[0] < b->lo[0]);
+}
+
+/* Insertion sort for the leaves of up to a few dozen objects that N makes
+ * common, qsort(3) for the crowded ones at the maximum depth. */
+static void sort_by_lower_x(leaf_box *g, uint32_t n)
+{
+    if (n > 64) {
+        qsort(g, n, sizeof *g, cmp_lower_x);
+        return;
+    }
+    for (uint32_t i = 1; i < n; ++i) {
+        leaf_box t = g[i];
+        uint32_t j = i;
+        for (; j > 0 && g[j - 1].lo[0] > t.lo[0]; --j)
+            g[j] = g[j - 1];
+        g[j] = t;
+    }
+}
+
 static noctStatus search_leaf(noctWorld *w, const cell *c)
 {
     const cell *rc = cell_of(w->root);
@@ -640,15 +662,23 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
         g[i].id = c->objs[i];
     }
     w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
+    /* Sweep along x: with the boxes sorted by lower x, the boxes that
+     * overlap a in x are the ones after it that start before a ends. The
+     * exhaustive mode keeps the report's test of every pair. */
+    bool sweep = w->def.N != NOCT_N_EXHAUSTIVE;
+    if (sweep)
+        sort_by_lower_x(g, c->count);
     for (uint32_t i = 0; i < c->count; ++i) {
         const leaf_box *a = &g[i];
         for (uint32_t j = i + 1; j < c->count; ++j) {
             const leaf_box *b = &g[j];
+            if (sweep && b->lo[0] > a->hi[0])
+                break;
             if (a->hi[0] < b->lo[0] || b->hi[0] < a->lo[0] || a->hi[1] < b->lo[1] ||
                 b->hi[1] < a->lo[1] || a->hi[2] < b->lo[2] || b->hi[2] < a->lo[2])
                 continue;
-            const double corner[3] = {fmax(a->lo[0], b->lo[0]), fmax(a->lo[1], b->lo[1]),
-                                      fmax(a->lo[2], b->lo[2])};
+            const double corner[3] = {noct_max(a->lo[0], b->lo[0]), noct_max(a->lo[1], b->lo[1]),
+                                      noct_max(a->lo[2], b->lo[2])};
             if (!owns(c, rc, corner))
                 continue;
             ++w->c.tested_pairs;
@@ -676,9 +706,9 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
 
 static noctStatus search(noctWorld *w, octNode *n)
 {
-    if (octIsSplit(n)) {
+    if (NOCT_NODE_IS_SPLIT(n)) {
         for (int i = 0; i < 8; ++i) {
-            noctStatus st = search(w, octChild(n, (octDirection)(OCT_LDB + i)));
+            noctStatus st = search(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
             if (st != NOCT_OK)
                 return st;
         }
@@ -988,7 +1018,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     if ((w->def.effects & NOCT_EFFECT_SUBSTEP) && (w->def.effects & NOCT_EFFECT_MOTION)) {
         double ratio = noctWorldMaxStepRatio(w);
         /* Each sub-step moves every object at most half its smallest size. */
-        k = ratio > 0.5 ? (int)fmin(ceil(2 * ratio), 1 << 20) : 1;
+        k = ratio > 0.5 ? (int)noct_min(ceil(2 * ratio), 1 << 20) : 1;
         w->c.substeps += (uint64_t)k;
     }
     for (int i = 0; i < k; ++i) {
@@ -1056,8 +1086,9 @@ double noctWorldMaxStepRatio(const noctWorld *w)
         if (!o->alive || o->speed == 0)
             continue;
         const noctMesh *m = o->mesh;
-        double extent = fmin(fmin(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]), m->hi[2] - m->lo[2]);
-        worst = fmax(worst, o->speed / extent);
+        double extent = noct_min(noct_min(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]),
+                                 m->hi[2] - m->lo[2]);
+        worst = noct_max(worst, o->speed / extent);
     }
     return worst;
 }
@@ -1167,31 +1198,31 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
     const cell *c = cell_of(n);
     if (c == NULL)
         return BAD("a node has no cell");
-    if (octIsSplit(n)) {
+    if (NOCT_NODE_IS_SPLIT(n)) {
         if (c->count != 0)
             return BAD("an inner node holds objects");
         bool all_leaves = true;
         for (int i = 0; i < 8; ++i) {
-            octNode *k = octChild(n, (octDirection)(OCT_LDB + i));
+            octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
             const cell *kc = cell_of(k);
             if (kc->size != c->size / 2 ||
                 kc->lo[0] != c->lo[0] + ((i & 4) ? c->size / 2 : 0) ||
                 kc->lo[1] != c->lo[1] + ((i & 2) ? c->size / 2 : 0) ||
                 kc->lo[2] != c->lo[2] + ((i & 1) ? c->size / 2 : 0))
                 return BAD("child %d's cell does not match its parent's", i);
-            if (octParent(k) != n || octGeneration(k) != octGeneration(n) + 1)
+            if (NOCT_NODE_PARENT(k) != n || octGeneration(k) != octGeneration(n) + 1)
                 return BAD("child %d's links are wrong", i);
             noctStatus st = validate_node(w, k, refs, err);
             if (st != NOCT_OK)
                 return st;
-            all_leaves = all_leaves && !octIsSplit(k);
+            all_leaves = all_leaves && !NOCT_NODE_IS_SPLIT(k);
         }
         if (all_leaves && w->def.maintenance == NOCT_MAINTAIN_INCREMENTAL) {
             /* distinct objects among the 8 leaves */
             uint32_t ids[8 * 64], n_ids = 0;
             bool many = false;
             for (int i = 0; i < 8 && !many; ++i) {
-                const cell *kc = cell_of(octChild(n, (octDirection)(OCT_LDB + i)));
+                const cell *kc = cell_of(NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
                 for (uint32_t j = 0; j < kc->count && !many; ++j) {
                     bool seen = false;
                     for (uint32_t q = 0; q < n_ids && !seen; ++q)
@@ -1238,11 +1269,11 @@ static size_t overlapped_leaves(const object *o, octNode *n)
 {
     if (!overlaps(o, cell_of(n)))
         return 0;
-    if (!octIsSplit(n))
+    if (!NOCT_NODE_IS_SPLIT(n))
         return 1;
     size_t s = 0;
     for (int i = 0; i < 8; ++i)
-        s += overlapped_leaves(o, octChild(n, (octDirection)(OCT_LDB + i)));
+        s += overlapped_leaves(o, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
     return s;
 }
 
@@ -1251,7 +1282,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
     NOCT_REQUIRE(w != NULL);
     if (w->root == NULL)
         return w->alive == 0 ? NOCT_OK : BAD("objects but no tree");
-    if (octParent(w->root) != NULL || octGeneration(w->root) != 0)
+    if (NOCT_NODE_PARENT(w->root) != NULL || octGeneration(w->root) != 0)
         return BAD("the root is not a root");
     size_t *refs = calloc(w->nslots ? w->nslots : 1, sizeof *refs);
     if (refs == NULL)
