@@ -18,6 +18,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -1097,6 +1098,45 @@ octNode *noctWorldRoot(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);
     return w->root;
+}
+
+void noctWorldPrintCell(FILE *strm, const void *data)
+{
+    NOCT_REQUIRE(strm != NULL && data != NULL);
+    const cell *c = data;
+    fprintf(strm, "lo (%.17g, %.17g, %.17g) size %.17g", c->lo[0], c->lo[1], c->lo[2],
+            c->size);
+    if (c->count > 0) {
+        fprintf(strm, "; objects");
+        for (uint32_t i = 0; i < c->count; ++i)
+            fprintf(strm, " %u", c->objs[i]);
+    }
+}
+
+size_t noctWorldCell(const noctWorld *w, const octNode *node, double lo[3], double *size,
+                     noctObjectId *objects, size_t max)
+{
+    NOCT_REQUIRE(w != NULL && node != NULL && (objects != NULL || max == 0));
+    const cell *c = cell_of(node);
+    if (lo != NULL)
+        memcpy(lo, c->lo, sizeof c->lo);
+    if (size != NULL)
+        *size = c->size;
+    for (uint32_t i = 0; i < c->count && i < max; ++i)
+        objects[i] = (noctObjectId){c->objs[i], w->obj[c->objs[i]].generation};
+    return c->count;
+}
+
+noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
+                              double hi[3])
+{
+    NOCT_REQUIRE(w != NULL && lo != NULL && hi != NULL);
+    const object *o = lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(lo, o->lo, sizeof o->lo);
+    memcpy(hi, o->hi, sizeof o->hi);
+    return NOCT_OK;
 }
 
 noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,

@@ -7,6 +7,7 @@
  * all-pairs exact test after every step of random scenes, and the world's
  * whole-structure validation walk after every step.
  */
+#define _POSIX_C_SOURCE 200809L /* open_memstream(3) */
 #include <check.h>
 #include <math.h>
 #include <signal.h>
@@ -468,6 +469,99 @@ START_TEST(handles_and_bad_input)
 }
 END_TEST
 
+/* ---- inspecting the tree: noctWorldCell, noctWorldObjectBox, the printer ---- */
+
+/* Check every leaf below n against a brute force over the objects' boxes;
+ * return the number of leaves. */
+static size_t check_leaves(noctWorld *w, octNode *n, const noctObjectId *ids, size_t nids)
+{
+    if (octIsSplit(n)) {
+        ck_assert_uint_eq(noctWorldCell(w, n, NULL, NULL, NULL, 0), 0);
+        size_t leaves = 0;
+        for (int i = 0; i < 8; ++i)
+            leaves += check_leaves(w, octChild(n, (octDirection)(OCT_LDB + i)), ids, nids);
+        return leaves;
+    }
+    double lo[3], size;
+    noctObjectId got[256];
+    size_t count = noctWorldCell(w, n, lo, &size, got, 256);
+    ck_assert_uint_le(count, 256);
+    size_t expected = 0;
+    for (size_t i = 0; i < nids; ++i) {
+        double blo[3], bhi[3];
+        ck_assert_int_eq(noctWorldObjectBox(w, ids[i], blo, bhi), NOCT_OK);
+        bool overlap = true;
+        for (int k = 0; k < 3; ++k)
+            overlap &= bhi[k] >= lo[k] && blo[k] <= lo[k] + size;
+        if (!overlap)
+            continue;
+        ++expected;
+        bool listed = false;
+        for (size_t j = 0; j < count; ++j)
+            listed |= got[j].index == ids[i].index && got[j].generation == ids[i].generation;
+        ck_assert_msg(listed, "object %u overlaps a leaf but is not listed", ids[i].index);
+    }
+    ck_assert_uint_eq(count, expected);
+    return 1;
+}
+
+START_TEST(inspect_tree)
+{
+    noctWorld *w = make_world(2, 6, NOCT_MAINTAIN_INCREMENTAL);
+    noctMesh *cube;
+    noctError err;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err), NOCT_OK);
+    noctObjectId ids[40];
+    uint64_t rng = 7;
+    for (size_t i = 0; i < 40; ++i) {
+        double p[3], d[3] = {1, 0, 0};
+        for (int k = 0; k < 3; ++k)
+            p[k] = 20 * (double)(test_rand(&rng) >> 11) * 0x1p-53;
+        ck_assert_int_eq(noctWorldAdd(w, cube, p, d, 0.3, &ids[i], &err), NOCT_OK);
+    }
+    for (int s = 0; s < 5; ++s) {
+        step_ok(w);
+        ck_assert_uint_gt(check_leaves(w, noctWorldRoot(w), ids, 40), 8);
+    }
+    /* A box is the mesh's box placed at the position. */
+    double pos[3], lo[3], hi[3];
+    ck_assert_int_eq(noctWorldObject(w, ids[3], pos, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectBox(w, ids[3], lo, hi), NOCT_OK);
+    for (int k = 0; k < 3; ++k) {
+        ck_assert_double_eq(lo[k], pos[k] - 0.5);
+        ck_assert_double_eq(hi[k], pos[k] + 0.5);
+    }
+    ck_assert_int_eq(noctWorldRemove(w, ids[3]), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectBox(w, ids[3], lo, hi), NOCT_ERR_INVALID);
+    noctWorldDestroy(w);
+
+    /* The printer, through octPrint, on a one-leaf world. */
+    w = make_world(10, 6, NOCT_MAINTAIN_INCREMENTAL);
+    double p0[3] = {0, 0, 0}, p1[3] = {0.75, 0, 0}, d[3] = {1, 0, 0};
+    noctObjectId a, b;
+    ck_assert_int_eq(noctWorldAdd(w, cube, p0, d, 0, &a, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p1, d, 0, &b, &err), NOCT_OK);
+    step_ok(w);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    ck_assert_ptr_nonnull(f);
+    ck_assert(octPrint(noctWorldRoot(w), noctWorldPrintCell, f));
+    fclose(f);
+    double rlo[3], rsize;
+    ck_assert_uint_eq(noctWorldCell(w, noctWorldRoot(w), rlo, &rsize, NULL, 0), 2);
+    char expected[256];
+    snprintf(expected, sizeof expected, "OMEGA 0: lo (%.17g, %.17g, %.17g) size %.17g; "
+             "objects %u %u\n", rlo[0], rlo[1], rlo[2], rsize, a.index, b.index);
+    ck_assert_str_eq(text, expected);
+    /* The root holds both boxes. */
+    ck_assert(rlo[0] <= -0.5 && rlo[0] + rsize >= 1.25);
+    free(text);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_world)
 {
@@ -506,6 +600,7 @@ int main(void)
     tcase_add_test(tc, effects_off_cost_nothing);
     tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
+    tcase_add_test(tc, inspect_tree);
     suite_add_tcase(s, tc);
 #ifndef NOCT_EFFICIENT
     TCase *d = tcase_create("requires clauses");

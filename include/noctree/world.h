@@ -61,6 +61,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <stdio.h>
+
 #include <noctree/export.h>
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
@@ -346,12 +348,57 @@ NOCT_API noctStatus noctWorldValidate(const noctWorld *world, noctError *err);
 /**
  * @brief The octree's root, to inspect with the octree ADT (read only).
  *
- * Each node's datum is private to the world: print with a NULL printer.
+ * Each node's datum is private to the world: read it with noctWorldCell()
+ * and print it with noctWorldPrintCell().
  * @param[in] world The world.
  * @pre @p world is not NULL.
  * @return The root; valid until the next call that changes the world.
  */
 NOCT_API octNode *noctWorldRoot(const noctWorld *world);
+
+/**
+ * @brief An #octItemPrinter for the nodes of noctWorldRoot()'s tree.
+ *
+ * Prints the node's cube and, for a leaf, the indices of its objects, for
+ * example `lo (-8, -8, -8) size 8; objects 0 5 17`. Pass it to octPrint()
+ * to print the N-objects octree as the report does.
+ * @param[in] strm An open stream.
+ * @param[in] data A node's datum from a world's tree.
+ * @pre @p strm is an open FILE*; @p data is octData() of a node of a
+ *      world's current tree.
+ * @post The node's cube and objects are printed on one line, without a
+ *       newline.
+ */
+NOCT_API void noctWorldPrintCell(FILE *strm, const void *data);
+
+/**
+ * @brief Read a node's cube and, for a leaf, its objects.
+ * @param[in]  world   The world.
+ * @param[in]  node    A node of the world's current tree (noctWorldRoot()).
+ * @param[out] lo      Receives the cube's low corner, or NULL.
+ * @param[out] size    Receives the cube's edge length, or NULL.
+ * @param[out] objects Receives the first @p max of the leaf's objects, or
+ *                     NULL when @p max is 0.
+ * @param[in]  max     Room in @p objects.
+ * @pre @p world and @p node are not NULL; @p node belongs to the world's
+ *      current tree; @p objects is not NULL or @p max is 0.
+ * @post min(result, @p max) handles are written, in the leaf's order.
+ * @return The number of objects in the leaf; 0 for a split node.
+ */
+NOCT_API size_t noctWorldCell(const noctWorld *world, const octNode *node, double lo[3],
+                              double *size, noctObjectId *objects, size_t max);
+
+/**
+ * @brief Read an object's bounding box, as placed at its position.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] lo    Receives the box's low corner.
+ * @param[out] hi    Receives the box's high corner.
+ * @pre @p world, @p lo and @p hi are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle.
+ */
+NOCT_API noctStatus noctWorldObjectBox(const noctWorld *world, noctObjectId id,
+                                       double lo[3], double hi[3]);
 
 /**
  * @brief Add the report's test set t_k (SCENES.md, "Planes").
