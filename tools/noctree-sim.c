@@ -5,15 +5,14 @@
  * See noctree-sim(1) and noctree-scene(5).
  */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
-#include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include <noctree.h>
+
+#include "toolutil.h"
 
 static const char usage[] =
     "usage: noctree-sim [OPTIONS] SCENE-FILE\n"
@@ -34,45 +33,13 @@ static const char usage[] =
     "\n"
     "Exit status: 0 on success, 1 if the simulation failed, 2 for bad usage or input.\n";
 
-static int bad(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-
-/* Report a usage error and return the exit status for it. */
-static int bad(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "noctree-sim: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, "\nTry 'noctree-sim --help'.\n");
-    va_end(ap);
-    return 2;
-}
-
-static bool parse_long(const char *s, long lo, long hi, long *out)
-{
-    char *end;
-    errno = 0;
-    *out = strtol(s, &end, 10);
-    return end != s && *end == '\0' && errno == 0 && *out >= lo && *out <= hi;
-}
-
-static void progress(int step, int steps)
-{
-    int width = 40, done = (int)((long)width * step / steps);
-    fprintf(stderr, "\r[%.*s%*s] %3d%% step %d/%d", done,
-            "########################################", width - done, "",
-            (int)(100L * step / steps), step, steps);
-    if (step == steps)
-        fputc('\n', stderr);
-    fflush(stderr);
-}
-
 int main(int argc, char **argv)
 {
     const char *family = NULL, *file = NULL, *opt_N = NULL, *opt_acc = NULL,
                *opt_maint = NULL;
     long depth = 0, steps = 0;
     bool events = false, quiet = false, substep = false;
+    tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
@@ -97,57 +64,42 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--maintenance") == 0 && has_value) {
             opt_maint = argv[++i];
         } else if (strcmp(a, "--max-depth") == 0 && has_value) {
-            if (!parse_long(argv[++i], 1, 40, &depth))
-                return bad("--max-depth must be 1 to 40, not '%s'", argv[i]);
+            if (!tool_parse_long(argv[++i], 1, 40, &depth))
+                return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[i]);
         } else if (strcmp(a, "--steps") == 0 && has_value) {
-            if (!parse_long(argv[++i], 1, 10000000, &steps))
-                return bad("--steps must be 1 to 10000000, not '%s'", argv[i]);
+            if (!tool_parse_long(argv[++i], 1, 10000000, &steps))
+                return tool_usage_error("--steps must be 1 to 10000000, not '%s'", argv[i]);
         } else if (a[0] == '-' && a[1] != '\0') {
-            return bad("unknown option or missing value: '%s'", a);
+            return tool_usage_error("unknown option or missing value: '%s'", a);
         } else if (file == NULL) {
             file = a;
         } else {
-            return bad("more than one scene file: '%s'", a);
+            return tool_usage_error("more than one scene file: '%s'", a);
         }
     }
     if ((family == NULL) == (file == NULL))
-        return bad("give one scene: a file or --scene FAMILY");
+        return tool_usage_error("give one scene: a file or --scene FAMILY");
 
     noctScene *scene;
     noctError err;
     noctStatus st = family ? noctSceneFamily(family, &scene, &err)
                            : noctSceneRead(file, &scene, &err);
     if (st != NOCT_OK) {
-        fprintf(stderr, "noctree-sim: %s\n", err.message);
+        tool_error("%s", err.message);
         return 2;
     }
     noctWorldDef *def = noctSceneDef(scene);
-    if (opt_N != NULL) {
-        long n;
-        if (strcmp(opt_N, "big") == 0)
-            def->N = NOCT_N_EXHAUSTIVE;
-        else if (parse_long(opt_N, 1, INT_MAX - 1, &n))
-            def->N = (int)n;
-        else
-            return noctSceneDestroy(scene), bad("--N must be a positive integer or 'big', not '%s'", opt_N);
-    }
-    if (opt_acc != NULL) {
-        if (strcmp(opt_acc, "box") == 0)
-            def->accuracy = NOCT_ACCURACY_BOX;
-        else if (strcmp(opt_acc, "convex") == 0)
-            def->accuracy = NOCT_ACCURACY_CONVEX;
-        else if (strcmp(opt_acc, "exact") == 0)
-            def->accuracy = NOCT_ACCURACY_EXACT;
-        else
-            return noctSceneDestroy(scene), bad("--accuracy must be box, convex or exact, not '%s'", opt_acc);
-    }
+    if (opt_N != NULL && !tool_parse_N(opt_N, &def->N))
+        return noctSceneDestroy(scene), tool_usage_error("--N must be a positive integer or 'big', not '%s'", opt_N);
+    if (opt_acc != NULL && !tool_parse_accuracy(opt_acc, &def->accuracy))
+        return noctSceneDestroy(scene), tool_usage_error("--accuracy must be box, convex or exact, not '%s'", opt_acc);
     if (opt_maint != NULL) {
         if (strcmp(opt_maint, "incremental") == 0)
             def->maintenance = NOCT_MAINTAIN_INCREMENTAL;
         else if (strcmp(opt_maint, "rebuild") == 0)
             def->maintenance = NOCT_MAINTAIN_REBUILD;
         else
-            return noctSceneDestroy(scene), bad("--maintenance must be incremental or rebuild, not '%s'", opt_maint);
+            return noctSceneDestroy(scene), tool_usage_error("--maintenance must be incremental or rebuild, not '%s'", opt_maint);
     }
     if (depth > 0)
         def->max_depth = (int)depth;
@@ -158,21 +110,21 @@ int main(int argc, char **argv)
     noctWorld *w;
     st = noctSceneBuild(scene, &w, &err);
     if (st != NOCT_OK) {
-        fprintf(stderr, "noctree-sim: %s\n", err.message);
+        tool_error("%s", err.message);
         noctSceneDestroy(scene);
         return 2;
     }
     double ratio = noctWorldMaxStepRatio(w);
     if (ratio > 0.5 && !(def->effects & NOCT_EFFECT_SUBSTEP))
-        fprintf(stderr, "noctree-sim: warning: an object moves %.2f times its smallest "
+        tool_error("warning: an object moves %.2f times its smallest "
                 "size per step; objects can pass through each other unseen (the "
-                "report's fidelity constraint): use --substep\n", ratio);
+                "report's fidelity constraint): use --substep", ratio);
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0;
     int status = 0;
     for (int s = 1; s <= nsteps; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
-            fprintf(stderr, "noctree-sim: step %d: %s\n", s, err.message);
+            tool_error("step %d: %s", s, err.message);
             status = 1;
             break;
         }
@@ -185,8 +137,11 @@ int main(int argc, char **argv)
         ends += ne;
         for (size_t i = 0; events && i < ne; ++i)
             printf("%d end %u %u\n", s, p[i].a.index, p[i].b.index);
-        if (bar && (s % 5 == 0 || s == nsteps))
-            progress(s, nsteps);
+        if (s % 5 == 0 || s == nsteps) {
+            char label[48];
+            snprintf(label, sizeof label, "step %d/%d", s, nsteps);
+            tool_progress(bar, s, nsteps, label);
+        }
     }
     if (status == 0) {
         noctWorldCounters c;

@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * What the command-line tools share: usage errors, number and option
+ * parsing, a clock and the progress bar. Not part of the library.
+ */
+#ifndef NOCT_TOOLS_TOOLUTIL_H
+#define NOCT_TOOLS_TOOLUTIL_H
+
+#include <stdbool.h>
+
+#include <noctree/narrowphase.h>
+
+/* The tool's name, for messages; set once by main. */
+extern const char *tool_name;
+
+/* Print "NAME: message" and a pointer to --help on stderr; return 2, the
+ * exit status for bad usage or input. */
+int tool_usage_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Print "NAME: message" on stderr. */
+void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* s is a whole decimal integer in [lo, hi]. */
+bool tool_parse_long(const char *s, long lo, long hi, long *out);
+
+/* s is a whole finite decimal number in [lo, hi]. */
+bool tool_parse_double(const char *s, double lo, double hi, double *out);
+
+/* s is a positive integer or "big" (NOCT_N_EXHAUSTIVE). */
+bool tool_parse_N(const char *s, int *N);
+
+/* s is "box", "convex" or "exact". */
+bool tool_parse_accuracy(const char *s, noctAccuracy *accuracy);
+
+/* Seconds on a monotonic clock. */
+double tool_now(void);
+
+/* Draw "[####    ]  40% label" on stderr when it is a terminal and bars
+ * are on; done == total ends the line. */
+void tool_progress(bool on, long done, long total, const char *label);
+
+#endif /* NOCT_TOOLS_TOOLUTIL_H */
