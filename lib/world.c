@@ -1104,7 +1104,7 @@ void noctWorldPrintCell(FILE *strm, const void *data)
 {
     NOCT_REQUIRE(strm != NULL && data != NULL);
     const cell *c = data;
-    fprintf(strm, "lo (%.17g, %.17g, %.17g) size %.17g", c->lo[0], c->lo[1], c->lo[2],
+    fprintf(strm, "lo (%.10g, %.10g, %.10g) size %.10g", c->lo[0], c->lo[1], c->lo[2],
             c->size);
     if (c->count > 0) {
         fprintf(strm, "; objects");

@@ -551,7 +551,7 @@ START_TEST(inspect_tree)
     double rlo[3], rsize;
     ck_assert_uint_eq(noctWorldCell(w, noctWorldRoot(w), rlo, &rsize, NULL, 0), 2);
     char expected[256];
-    snprintf(expected, sizeof expected, "OMEGA 0: lo (%.17g, %.17g, %.17g) size %.17g; "
+    snprintf(expected, sizeof expected, "OMEGA 0: lo (%.10g, %.10g, %.10g) size %.10g; "
              "objects %u %u\n", rlo[0], rlo[1], rlo[2], rsize, a.index, b.index);
     ck_assert_str_eq(text, expected);
     /* The root holds both boxes. */

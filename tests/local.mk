@@ -57,8 +57,8 @@ tests_check_world_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_world_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
-TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh
-EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh \
+TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
+EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/inline-client.c
 
 AM_TESTS_ENVIRONMENT = \

@@ -2,11 +2,18 @@
 # Command-line tools and benchmark programs.
 
 # Installed tools, each with its section 1 man page.
-bin_PROGRAMS = tools/noctree-sim
-tools_noctree_sim_SOURCES = tools/noctree-sim.c
+bin_PROGRAMS = tools/noctree-sim tools/noctree-bench tools/octprint
+tools_noctree_sim_SOURCES = tools/noctree-sim.c tools/toolutil.c tools/toolutil.h
 tools_noctree_sim_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_noctree_sim_LDADD = lib/libnoctree-efficient.la
-dist_man_MANS = docs/man/noctree-sim.1 docs/man/noctree-scene.5
+tools_noctree_bench_SOURCES = tools/noctree-bench.c tools/toolutil.c tools/toolutil.h
+tools_noctree_bench_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_noctree_bench_LDADD = lib/libnoctree-efficient.la
+tools_octprint_SOURCES = tools/octprint.c tools/toolutil.c tools/toolutil.h
+tools_octprint_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_octprint_LDADD = lib/libnoctree-efficient.la
+dist_man_MANS = docs/man/noctree-sim.1 docs/man/noctree-bench.1 docs/man/octprint.1 \
+	docs/man/noctree-scene.5
 
 # The octree ADT benchmark, once per build (make bench runs both).
 noinst_PROGRAMS += tools/bench-octree-defensive tools/bench-octree-efficient

@@ -1,0 +1,138 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# octprint and noctree-bench end to end: octprint's tree text against the
+# objects of the scene, its dot and SVG output, noctree-bench --quick's
+# tables and CSV files, and exit status 2 with a message for bad usage.
+set -u
+: "${top_builddir:=..}"
+octprint="$top_builddir/tools/octprint"
+bench="$top_builddir/tools/noctree-bench"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0 passes=0
+
+ok() { passes=$((passes + 1)); }
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+check() { # check DESCRIPTION COMMAND...: the command succeeds
+    desc=$1
+    shift
+    if "$@"; then ok; else fail "$desc"; fi
+}
+
+# expect_run PROGRAM STATUS PATTERN ARGS...: exit status and a line of output.
+expect_run() {
+    prog=$1 want=$2 pattern=$3
+    shift 3
+    "$prog" "$@" > "$tmp/out" 2>&1
+    got=$?
+    if [ "$got" -ne "$want" ]; then
+        fail "$prog $*: exit $got, want $want"; sed 's/^/  /' "$tmp/out"
+    elif ! grep -q -e "$pattern" "$tmp/out"; then
+        fail "$prog $*: no '$pattern' in:"; sed 's/^/  /' "$tmp/out"
+    else
+        ok
+    fi
+}
+
+# ---- octprint ------------------------------------------------------------
+
+"$octprint" --scene planes:3 --step 60 --dot "$tmp/t3.dot" --svg "$tmp/t3.svg" \
+    > "$tmp/t3.txt" 2> "$tmp/err"
+check "octprint planes:3 --step 60 exits 0" [ $? -eq 0 ]
+check "octprint: nothing on stderr" [ ! -s "$tmp/err" ]
+check "octprint: header names 98 objects and step 60" \
+    grep -q '^# planes:3, N = 10, step 60: 98 objects' "$tmp/t3.txt"
+check "octprint: one root line" [ "$(grep -c '^OMEGA 0: ' "$tmp/t3.txt")" -eq 1 ]
+# Every node line: indentation of two spaces per generation, a child type,
+# the generation, the cube; the node count is 1 + 8 * (split nodes).
+awk 'NR > 1 {
+        match($0, /^ */); ind = RLENGTH
+        if ($0 !~ /^ *(OMEGA|[LR][DU][BF]) [0-9]+: lo \([^)]*\) size [0-9.e+-]+(; objects( [0-9]+)+)?$/)
+            { print "bad line " NR ": " $0; bad = 1 }
+        split($0, w, " "); g = w[2]; sub(":", "", g)
+        if (ind != 2 * g) { print "bad indent " NR; bad = 1 }
+        nodes++; if (g > maxg) maxg = g
+     } END { exit bad }' "$tmp/t3.txt" > "$tmp/awk" 2>&1
+check "octprint: every line well formed ($(head -1 "$tmp/awk"))" [ ! -s "$tmp/awk" ]
+# Leaves are the nodes not followed by a deeper line; all 98 objects appear.
+objs=$(grep -o 'objects.*' "$tmp/t3.txt" | tr ' ' '\n' | grep -E '^[0-9]+$' | sort -un | wc -l)
+check "octprint: the leaves hold all 98 objects (got $objs)" [ "$objs" -eq 98 ]
+nodes=$(($(wc -l < "$tmp/t3.txt") - 1))
+check "octprint: node count is 1 mod 8 ($nodes)" [ $((nodes % 8)) -eq 1 ]
+check "octprint: dot has one node per tree node" \
+    [ "$(grep -c '^  n[0-9]* \[label' "$tmp/t3.dot")" -eq "$nodes" ]
+check "octprint: dot has nodes-1 edges" \
+    [ "$(grep -c -- '->' "$tmp/t3.dot")" -eq $((nodes - 1)) ]
+check "octprint: dot is closed" [ "$(tail -1 "$tmp/t3.dot")" = "}" ]
+if command -v dot > /dev/null 2>&1; then
+    check "octprint: graphviz reads the dot" dot -Tsvg "$tmp/t3.dot" -o "$tmp/t3-dot.svg"
+fi
+check "octprint: the SVG is closed" [ "$(tail -1 "$tmp/t3.svg")" = "</svg>" ]
+# The z = 0 slice cuts one cube per (plane, row): 2 * 7 = 14 boxes.
+check "octprint: the slice draws 14 cubes" \
+    [ "$(grep -c '<title>object ' "$tmp/t3.svg")" -eq 14 ]
+"$octprint" --scene planes:3 --step 60 --N big > "$tmp/big.txt"
+check "octprint --N big: the root is the only node" [ "$(wc -l < "$tmp/big.txt")" -eq 2 ]
+expect_run "$octprint" 0 '^usage' --help
+expect_run "$octprint" 0 '^octprint [0-9]' --version
+expect_run "$octprint" 2 'give one scene' --step 3
+expect_run "$octprint" 2 '^octprint: --step must be 0 to' --scene planes:1 --step -4
+expect_run "$octprint" 2 '^octprint: --slice must look like' --scene planes:1 --slice w=2
+expect_run "$octprint" 2 '^octprint: --N must be' --scene planes:1 --N 0
+expect_run "$octprint" 2 "unknown option" --scene planes:1 --frobnicate
+printf 'steps 10\nobject cube 0 0 0\n' > "$tmp/bad.scene"
+expect_run "$octprint" 2 "^octprint: $tmp/bad.scene:2:" "$tmp/bad.scene"
+expect_run "$octprint" 1 '^octprint: /nonexistent/t.svg:' --scene planes:1 --svg /nonexistent/t.svg
+
+# ---- noctree-bench --quick -------------------------------------------------
+
+out="$tmp/bench"
+"$bench" --quick --all --out "$out" > "$tmp/bench.txt" 2> "$tmp/bench.err"
+check "noctree-bench --quick --all exits 0" [ $? -eq 0 ]
+check "bench: nothing on stderr" [ ! -s "$tmp/bench.err" ]
+for title in 'Table 1, reproduced' 'At scale' 'Where the time goes' 'What accuracy costs'; do
+    check "bench: section '$title'" grep -q "== $title" "$tmp/bench.txt"
+done
+# Table 1: rows N=5 ... N=big over sets t0 ... t3.
+check "bench: table rows" [ "$(grep -c '^N=\(5\|10\|30\|50\|big\) ' "$tmp/bench.txt")" -eq 10 ]
+check "bench: set header" grep -q '^set  *t0  *t1  *t2  *t3$' "$tmp/bench.txt"
+check "bench: the verdict line" \
+    grep -q '^\(smallest set at which the octree is significantly faster: \|no set at which\)' \
+    "$tmp/bench.txt"
+# CSV files: a header and one row per run (4 sets x 5 N x 3 repeats).
+check "bench: table1.csv rows" [ "$(wc -l < "$out/table1.csv")" -eq 61 ]
+check "bench: scale.csv rows" [ "$(wc -l < "$out/scale.csv")" -eq 31 ]
+check "bench: table1-stats.csv rows" [ "$(wc -l < "$out/table1-stats.csv")" -eq 5 ]
+check "bench: accuracy.csv rows (3 scenes x 6)" [ "$(wc -l < "$out/accuracy.csv")" -eq 19 ]
+check "bench: stages.csv rows" [ "$(wc -l < "$out/stages.csv")" -eq 3 ]
+# Every run of a set found the same contact-begin count, whatever N.
+check "bench: begins agree across N" \
+    [ "$(awk -F, 'NR > 1 { print $1, $9 }' "$out/table1.csv" | sort -u | wc -l)" -eq 4 ]
+# Closed forms: t_k in 20 steps has no begins yet (the first at step 51).
+check "bench: no begins within 20 steps" \
+    [ "$(awk -F, 'NR > 1 && $9 != 0' "$out/table1.csv" | wc -l)" -eq 0 ]
+# The reference row (exact with sub-steps) has no error against itself;
+# the box level in the notch scene has false collisions.
+check "bench: reference row is error free" \
+    [ "$(awk -F, '$3 == "exact" && $4 == 1 && ($7 + $8 + $10) != 0' "$out/accuracy.csv" | wc -l)" -eq 0 ]
+check "bench: box level errs on notch" \
+    [ "$(awk -F, '$1 ~ /^notch/ && $3 == "box" && $4 == 0 { print $7 }' "$out/accuracy.csv")" -gt 0 ]
+check "bench: exact level without sub-steps misses on notch" \
+    [ "$(awk -F, '$1 ~ /^notch/ && $3 == "exact" && $4 == 0 { print $7 + $8 }' "$out/accuracy.csv")" -gt 0 ]
+if command -v gnuplot > /dev/null 2>&1; then
+    for p in fig9 fig10 scaling accuracy; do
+        check "bench: $p.svg drawn" grep -q '</svg>' "$out/$p.svg"
+    done
+else
+    check "bench: says plots were skipped" grep -q 'plots skipped' "$tmp/bench.txt"
+fi
+expect_run "$bench" 0 '^usage' --help
+expect_run "$bench" 2 '^noctree-bench: --repeats must be 2 to 64' --repeats 1
+expect_run "$bench" 2 '^noctree-bench: --sections takes' --sections table1,nope
+expect_run "$bench" 2 '^noctree-bench: --budget must be' --budget nan
+expect_run "$bench" 2 "unknown option" --frobnicate
+: > "$tmp/file"
+expect_run "$bench" 2 "is not a folder" --quick --out "$tmp/file"
+
+echo "tools: $passes passed, $fails failed"
+[ "$fails" -eq 0 ]

@@ -1,0 +1,948 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * noctree-bench: the report's timing experiment (its Table 1, Figures 9
+ * and 10) done with repeats and statistics, at scale, with the time of
+ * each stage and what accuracy costs. See noctree-bench(1).
+ *
+ * Runs are interleaved: each repeat visits every configuration of a
+ * section once, in a fresh shuffled order, so that drift of the machine
+ * (frequency, other load) spreads over all configurations alike instead
+ * of biasing the ones that ran last.
+ *
+ * Statistics. A cell is the median of its repeats. Per scene, the ratio of
+ * the exhaustive median to the best N's median gets a 95% percentile
+ * bootstrap interval (resampling each configuration's repeats), and a
+ * one-sided permutation test of "the exhaustive run is not slower" on the
+ * mean log time (exact over all relabellings up to 20 repeats per side,
+ * sampled beyond), multiplied by the number of N compared (Bonferroni),
+ * because the best N is picked from the same data.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <noctree.h>
+
+#include "toolutil.h"
+
+static const char usage[] =
+    "usage: noctree-bench [OPTIONS]\n"
+    "The report's timing experiment: Table 1 with statistics, at scale, where\n"
+    "the time goes and what accuracy costs. Tables on stdout, CSV files and\n"
+    "plots in the output folder.\n"
+    "\n"
+    "  --sections LIST   comma-separated: table1, stages, accuracy, scale\n"
+    "                    (default table1,stages,accuracy)\n"
+    "  --all             every section, scale included (tens of minutes)\n"
+    "  --quick           small scenes and few steps, to check the tool runs\n"
+    "  --repeats R       runs per configuration (default 5; 3 at scale)\n"
+    "  --steps S         steps per run (default 200; 50 at scale)\n"
+    "  --budget SEC      most seconds an exhaustive run may take; longer runs\n"
+    "                    stop early and are extrapolated (default 10)\n"
+    "  --out DIR         folder for CSV files and plots (default noctree-bench-out)\n"
+    "  --no-plots        do not run gnuplot\n"
+    "  --quiet           no progress bar\n"
+    "  --help            this text\n"
+    "  --version         the version\n"
+    "\n"
+    "Exit status: 0 on success, 1 if a run failed, 2 for bad usage.\n";
+
+enum { SEC_TABLE1 = 1, SEC_STAGES = 2, SEC_ACCURACY = 4, SEC_SCALE = 8 };
+
+typedef struct options {
+    unsigned sections;
+    bool quick, plots, bar;
+    int repeats, steps;     /* 0: the section's default */
+    double budget;
+    const char *out;
+} options;
+
+static options opt = {SEC_TABLE1 | SEC_STAGES | SEC_ACCURACY, false, true, true, 0, 0,
+                      10.0, "noctree-bench-out"};
+
+/* ---- randomness and statistics ------------------------------------------ */
+
+static uint64_t rng_state = 0x6e6f637472656521u;
+
+static uint64_t rng_next(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+static size_t rng_below(size_t n)
+{
+    return (size_t)(rng_next() % n);
+}
+
+static void shuffle(size_t *v, size_t n)
+{
+    for (size_t i = n; i > 1; --i) {
+        size_t j = rng_below(i), t = v[i - 1];
+        v[i - 1] = v[j];
+        v[j] = t;
+    }
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static double median(const double *v, size_t n)
+{
+    double t[64];
+    if (n == 0 || n > 64)
+        return NAN;
+    memcpy(t, v, n * sizeof *t);
+    qsort(t, n, sizeof *t, cmp_double);
+    return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+/* Half the range, relative to the median. */
+static double spread(const double *v, size_t n)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < n; ++i) {
+        lo = fmin(lo, v[i]);
+        hi = fmax(hi, v[i]);
+    }
+    return 0.5 * (hi - lo) / median(v, n);
+}
+
+/* 95% percentile bootstrap interval of median(a) / median(b). */
+static void bootstrap_ratio(const double *a, const double *b, size_t n, double ci[2])
+{
+    enum { B = 4000 };
+    static double r[B];
+    double ra[64], rb[64];
+    for (int k = 0; k < B; ++k) {
+        for (size_t i = 0; i < n; ++i) {
+            ra[i] = a[rng_below(n)];
+            rb[i] = b[rng_below(n)];
+        }
+        r[k] = median(ra, n) / median(rb, n);
+    }
+    qsort(r, B, sizeof *r, cmp_double);
+    ci[0] = r[(int)(0.025 * B)];
+    ci[1] = r[(int)(0.975 * B) - 1];
+}
+
+/*
+ * One-sided permutation test of H0 "a and b are exchangeable" against
+ * "a is slower": the share of relabellings of the 2n runs whose mean log
+ * time difference is at least the observed one.
+ */
+static double permutation_p(const double *a, const double *b, size_t n)
+{
+    double all[128], total = 0, observed = 0;
+    for (size_t i = 0; i < n; ++i) {
+        all[i] = log(a[i]);
+        all[n + i] = log(b[i]);
+        total += all[i] + all[n + i];
+        observed += all[i];
+    }
+    size_t m = 2 * n, hits = 0, count = 0;
+    const double eps = 1e-12 * (fabs(observed) + 1);
+    if (m <= 20) {
+        /* Every subset of n of the 2n runs labelled "a". */
+        for (uint32_t mask = 0; mask < (1u << m); ++mask) {
+            if ((size_t)__builtin_popcount(mask) != n)
+                continue;
+            double s = 0;
+            for (size_t i = 0; i < m; ++i)
+                if (mask & (1u << i))
+                    s += all[i];
+            ++count;
+            hits += s >= observed - eps;
+        }
+    } else {
+        size_t idx[128];
+        for (size_t i = 0; i < m; ++i)
+            idx[i] = i;
+        for (count = 0; count < 20000; ++count) {
+            shuffle(idx, m);
+            double s = 0;
+            for (size_t i = 0; i < n; ++i)
+                s += all[idx[i]];
+            hits += s >= observed - eps;
+        }
+        ++hits, ++count; /* the observed labelling itself */
+    }
+    (void)total;
+    return (double)hits / (double)count;
+}
+
+/* ---- scenes and runs ------------------------------------------------------ */
+
+/*
+ * notch:n, the near-contact scene of non-convex meshes. n pairs, each a
+ * static U-shaped prism (3 x 3 x 1, bars 0.25 thick) and a cube of edge
+ * 0.3 moving along x inside the U's notch, so the cube's box lies inside
+ * the U's box and inside its convex hull all the time while the solids
+ * touch only when the cube reaches a bar. Half the cubes move 0.04 per
+ * step; the other half 0.7, fast enough to jump over a bar between two
+ * steps unless the world sub-steps.
+ */
+#define NOTCH_T 0.25
+
+static noctStatus notch_mesh(noctMesh **u, noctError *err)
+{
+    const double t = NOTCH_T;
+    const double outline[8][2] = {{0, 0}, {3, 0}, {3, 3}, {3 - t, 3},
+                                  {3 - t, t}, {t, t}, {t, 3}, {0, 3}};
+    /* The outline (counter-clockwise seen from +z) cut into triangles. */
+    static const uint32_t cap[6][3] = {{0, 1, 4}, {0, 4, 5}, {1, 2, 3},
+                                       {1, 3, 4}, {0, 5, 6}, {0, 6, 7}};
+    double v[16 * 3];
+    for (int i = 0; i < 16; ++i) {
+        v[3 * i] = outline[i % 8][0];
+        v[3 * i + 1] = outline[i % 8][1];
+        v[3 * i + 2] = i < 8 ? 0 : 1;
+    }
+    uint32_t idx[28 * 3], sizes[28];
+    size_t n = 0;
+    for (int i = 0; i < 6; ++i) {
+        uint32_t top[3] = {cap[i][0] + 8, cap[i][1] + 8, cap[i][2] + 8};
+        uint32_t bottom[3] = {cap[i][0], cap[i][2], cap[i][1]};
+        memcpy(&idx[n], top, sizeof top), n += 3;
+        memcpy(&idx[n], bottom, sizeof bottom), n += 3;
+    }
+    for (uint32_t i = 0; i < 8; ++i) {
+        uint32_t j = (i + 1) % 8;
+        uint32_t side[6] = {i, j, j + 8, i, j + 8, i + 8};
+        memcpy(&idx[n], side, sizeof side), n += 6;
+    }
+    for (int i = 0; i < 28; ++i)
+        sizes[i] = 3;
+    return noctMeshCreate(v, 16, sizes, 28, idx, u, err);
+}
+
+typedef struct scene_world {
+    noctWorld *w;
+    noctScene *scene; /* planes and gas */
+    noctMesh *meshes[2]; /* notch */
+} scene_world;
+
+static void scene_world_free(scene_world *sw)
+{
+    noctWorldDestroy(sw->w);
+    noctSceneDestroy(sw->scene);
+    noctMeshDestroy(sw->meshes[0]);
+    noctMeshDestroy(sw->meshes[1]);
+    memset(sw, 0, sizeof *sw);
+}
+
+/* Build a scene with the given N, accuracy and extra effects. */
+static noctStatus build(const char *spec, int N, noctAccuracy acc, unsigned effects_on,
+                        unsigned effects_off, scene_world *sw, noctError *err)
+{
+    memset(sw, 0, sizeof *sw);
+    noctStatus st;
+    if (strncmp(spec, "notch:", 6) == 0) {
+        long n = atol(spec + 6);
+        noctWorldDef def = noctDefaultWorldDef();
+        def.N = N;
+        def.accuracy = acc;
+        def.effects = (def.effects | effects_on) & ~effects_off;
+        if ((st = noctWorldCreate(&def, &sw->w, err)) != NOCT_OK ||
+            (st = notch_mesh(&sw->meshes[0], err)) != NOCT_OK ||
+            (st = noctMeshCreateBox(0.15, 0.15, 0.15, &sw->meshes[1], err)) != NOCT_OK)
+            return st;
+        long g = (long)ceil(sqrt((double)n));
+        uint64_t seed = 42;
+        for (long i = 0; i < n; ++i) {
+            double base[3] = {5.0 * (double)(i % g), 5.0 * (double)(i / g), 0};
+            seed = seed * 6364136223846793005u + 1442695040888963407u;
+            double u = (double)(seed >> 11) * 0x1p-53;
+            double cube[3] = {base[0] + NOTCH_T + 0.15 + u * (3 - 2 * NOTCH_T - 0.3),
+                              base[1] + 1.5, 0.5};
+            double dir[3] = {i % 4 < 2 ? 1 : -1, 0, 0};
+            noctObjectId id;
+            if ((st = noctWorldAdd(sw->w, sw->meshes[0], base, dir, 0, &id, err)) != NOCT_OK ||
+                (st = noctWorldAdd(sw->w, sw->meshes[1], cube, dir, i % 2 ? 0.7 : 0.04,
+                                   &id, err)) != NOCT_OK)
+                return st;
+        }
+        return NOCT_OK;
+    }
+    if ((st = noctSceneFamily(spec, &sw->scene, err)) != NOCT_OK)
+        return st;
+    noctWorldDef *def = noctSceneDef(sw->scene);
+    def->N = N;
+    def->accuracy = acc;
+    def->effects = (def->effects | effects_on) & ~effects_off;
+    return noctSceneBuild(sw->scene, &sw->w, err);
+}
+
+/* A colliding pair at a step, for comparing trajectories. */
+typedef struct pair_at {
+    uint32_t step, a, b;
+} pair_at;
+
+typedef struct pair_log {
+    pair_at *p;
+    size_t n, cap;
+} pair_log;
+
+static bool log_pairs(pair_log *l, uint32_t step, const noctPair *p, size_t n)
+{
+    if (l->n + n > l->cap) {
+        size_t cap = l->cap ? l->cap : 1024;
+        while (cap < l->n + n)
+            cap *= 2;
+        pair_at *q = realloc(l->p, cap * sizeof *q);
+        if (q == NULL)
+            return false;
+        l->p = q;
+        l->cap = cap;
+    }
+    for (size_t i = 0; i < n; ++i)
+        l->p[l->n++] = (pair_at){step, p[i].a.index, p[i].b.index};
+    return true;
+}
+
+static int cmp_pair_at(const pair_at *x, const pair_at *y)
+{
+    if (x->step != y->step)
+        return x->step < y->step ? -1 : 1;
+    if (x->a != y->a)
+        return x->a < y->a ? -1 : 1;
+    return (x->b > y->b) - (x->b < y->b);
+}
+
+/* Entries only in x, only in y; the first step where they differ. Both
+ * logs are sorted (steps in order, pairs sorted within a step). */
+static void log_diff(const pair_log *x, const pair_log *y, size_t *only_x, size_t *only_y,
+                     uint32_t *first)
+{
+    size_t i = 0, j = 0;
+    *only_x = *only_y = 0;
+    *first = 0;
+    while (i < x->n || j < y->n) {
+        int c = i == x->n ? 1 : j == y->n ? -1 : cmp_pair_at(&x->p[i], &y->p[j]);
+        if (c == 0) {
+            ++i, ++j;
+            continue;
+        }
+        uint32_t s = c < 0 ? x->p[i].step : y->p[j].step;
+        if (*first == 0 || s < *first)
+            *first = s;
+        if (c < 0)
+            ++*only_x, ++i;
+        else
+            ++*only_y, ++j;
+    }
+}
+
+typedef struct run_result {
+    double seconds;      /* for all the steps asked (extrapolated if cut) */
+    int steps_run;
+    bool extrapolated;
+    size_t objects, begins;
+    noctWorldCounters c;
+} run_result;
+
+/*
+ * Run one configuration for `steps` steps, timing the step calls only
+ * (setup excluded). With budget > 0 the run stops once it has taken
+ * longer, and its time is extrapolated. Logs colliding pairs and
+ * contact-begin events when asked.
+ */
+static bool run(const char *spec, int N, noctAccuracy acc, unsigned on, unsigned off,
+                int steps, double budget, run_result *r, pair_log *colliding,
+                pair_log *begins)
+{
+    scene_world sw;
+    noctError err;
+    memset(r, 0, sizeof *r);
+    if (build(spec, N, acc, on, off, &sw, &err) != NOCT_OK) {
+        tool_error("%s: %s", spec, err.message);
+        scene_world_free(&sw);
+        return false;
+    }
+    r->objects = noctWorldObjectCount(sw.w);
+    double elapsed = 0;
+    for (int s = 1; s <= steps; ++s) {
+        double t0 = tool_now();
+        noctStatus st = noctWorldStep(sw.w, &err);
+        elapsed += tool_now() - t0;
+        if (st != NOCT_OK) {
+            tool_error("%s, N %d, step %d: %s", spec, N, s, err.message);
+            scene_world_free(&sw);
+            return false;
+        }
+        const noctPair *p;
+        size_t nb = noctWorldBegan(sw.w, &p);
+        r->begins += nb;
+        if ((begins && !log_pairs(begins, (uint32_t)s, p, nb)) ||
+            (colliding && (nb = noctWorldColliding(sw.w, &p),
+                           !log_pairs(colliding, (uint32_t)s, p, nb)))) {
+            tool_error("out of memory");
+            scene_world_free(&sw);
+            return false;
+        }
+        r->steps_run = s;
+        if (budget > 0 && elapsed > budget && s < steps) {
+            r->extrapolated = true;
+            break;
+        }
+    }
+    r->seconds = elapsed * steps / r->steps_run;
+    noctWorldGetCounters(sw.w, &r->c);
+    scene_world_free(&sw);
+    return true;
+}
+
+/* ---- output helpers --------------------------------------------------------- */
+
+static FILE *open_out(const char *name)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", opt.out, name);
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        tool_error("%s: %s", path, strerror(errno));
+    return f;
+}
+
+static bool have_gnuplot(void)
+{
+    static int known = -1;
+    if (known < 0)
+        known = system("command -v gnuplot >/dev/null 2>&1") == 0;
+    return known;
+}
+
+/* Run a gnuplot script written to DIR/name.gp, making DIR/name.svg. */
+static void plot(const char *name, const char *script)
+{
+    if (!opt.plots)
+        return;
+    if (!have_gnuplot()) {
+        static bool told;
+        if (!told)
+            printf("(plots skipped: gnuplot is not installed; the CSV files hold the data)\n");
+        told = true;
+        return;
+    }
+    char path[4096], cmd[8400];
+    snprintf(path, sizeof path, "%s/%s.gp", opt.out, name);
+    FILE *f = fopen(path, "w");
+    if (f == NULL) {
+        tool_error("%s: %s", path, strerror(errno));
+        return;
+    }
+    fprintf(f, "set terminal svg size 800,560 dynamic font 'sans,13'\n"
+               "set output '%s/%s.svg'\nset datafile separator ','\n"
+               "set key outside right\nset grid\n%s",
+            opt.out, name, script);
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "gnuplot '%s'", path);
+    fflush(stdout);
+    if (system(cmd) != 0)
+        tool_error("gnuplot failed on %s", path);
+    else
+        printf("plot: %s/%s.svg\n", opt.out, name);
+}
+
+static const char *n_name(int N, char buf[16])
+{
+    if (N == NOCT_N_EXHAUSTIVE)
+        return "big";
+    snprintf(buf, 16, "%d", N);
+    return buf;
+}
+
+/* Short label of a scene: t10 for planes:10, as in the report. */
+static const char *scene_label(const char *spec, char buf[32])
+{
+    if (strncmp(spec, "planes:", 7) == 0)
+        snprintf(buf, 32, "t%s", spec + 7);
+    else
+        snprintf(buf, 32, "%s", spec);
+    return buf;
+}
+
+/* ---- timing sections: Table 1 and the scale table ---------------------------- */
+
+static const int NS[] = {5, 10, 30, 50, NOCT_N_EXHAUSTIVE};
+enum { NN = sizeof NS / sizeof *NS, MAX_REPEATS = 64 };
+
+typedef struct timing {
+    const char *spec;
+    size_t objects;
+    double t[NN][MAX_REPEATS];
+    bool extrapolated[NN];
+    size_t begins[NN];
+} timing;
+
+static bool timing_section(const char *title, const char *csv, const char *const *specs,
+                           size_t nspecs, int repeats, int steps, timing *tm)
+{
+    size_t nruns = nspecs * NN, done = 0, total = nruns * (size_t)repeats;
+    size_t *order = malloc(nruns * sizeof *order);
+    FILE *f = open_out(csv);
+    if (order == NULL || f == NULL) {
+        free(order);
+        if (f)
+            fclose(f);
+        return false;
+    }
+    fprintf(f, "scene,objects,N,repeat,steps,seconds,extrapolated,steps_run,begins\n");
+    for (size_t i = 0; i < nspecs; ++i) {
+        memset(&tm[i], 0, sizeof tm[i]);
+        tm[i].spec = specs[i];
+    }
+    printf("\n== %s ==\n", title);
+    fflush(stdout);
+    bool ok = true;
+    for (int rep = 0; rep < repeats && ok; ++rep) {
+        for (size_t i = 0; i < nruns; ++i)
+            order[i] = i;
+        shuffle(order, nruns);
+        for (size_t k = 0; k < nruns && ok; ++k) {
+            size_t si = order[k] / NN, ni = order[k] % NN;
+            char label[64], nb[16];
+            snprintf(label, sizeof label, "repeat %d/%d %s N=%s", rep + 1, repeats,
+                     specs[si], n_name(NS[ni], nb));
+            tool_progress(opt.bar, (long)done, (long)total, label);
+            run_result r;
+            bool big = NS[ni] == NOCT_N_EXHAUSTIVE;
+            ok = run(specs[si], NS[ni], NOCT_ACCURACY_EXACT, 0, 0, steps,
+                     big ? opt.budget : 0, &r, NULL, NULL);
+            if (!ok)
+                break;
+            tm[si].objects = r.objects;
+            tm[si].t[ni][rep] = r.seconds;
+            tm[si].extrapolated[ni] |= r.extrapolated;
+            tm[si].begins[ni] = r.begins;
+            fprintf(f, "%s,%zu,%s,%d,%d,%.9g,%d,%d,%zu\n", specs[si], r.objects,
+                    n_name(NS[ni], nb), rep + 1, steps, r.seconds, r.extrapolated,
+                    r.steps_run, r.begins);
+            ++done;
+        }
+    }
+    tool_progress(opt.bar, (long)total, (long)total, ok ? "done" : "failed");
+    free(order);
+    fclose(f);
+    return ok;
+}
+
+/* Print the table (rows N, columns scenes) and the statistics; write the
+ * statistics CSV. */
+static void timing_report(const char *stats_csv, const char *medians_csv, timing *tm,
+                          size_t nspecs, int repeats, int steps)
+{
+    char lb[32], nb[16];
+    FILE *mf = open_out(medians_csv);
+    if (mf) {
+        fprintf(mf, "scene,objects");
+        for (int ni = 0; ni < NN; ++ni)
+            fprintf(mf, ",N_%s", n_name(NS[ni], nb));
+        for (size_t i = 0; i < nspecs; ++i) {
+            fprintf(mf, "\n%s,%zu", tm[i].spec, tm[i].objects);
+            for (int ni = 0; ni < NN; ++ni)
+                fprintf(mf, ",%.9g", median(tm[i].t[ni], (size_t)repeats));
+        }
+        fputc('\n', mf);
+        fclose(mf);
+    }
+    printf("seconds for %d steps, median of %d interleaved runs (+-: half the range, "
+           "%% of the median; ~: extrapolated from a run cut at the %.0f s budget)\n",
+           steps, repeats, opt.budget);
+    for (size_t c0 = 0; c0 < nspecs; c0 += 6) {
+        size_t c1 = c0 + 6 < nspecs ? c0 + 6 : nspecs;
+        printf("\n%-8s", "set");
+        for (size_t i = c0; i < c1; ++i)
+            printf(" %15s", scene_label(tm[i].spec, lb));
+        printf("\n%-8s", "objects");
+        for (size_t i = c0; i < c1; ++i)
+            printf(" %15zu", tm[i].objects);
+        for (int ni = 0; ni < NN; ++ni) {
+            printf("\nN=%-6s", n_name(NS[ni], nb));
+            for (size_t i = c0; i < c1; ++i) {
+                char cell[40];
+                snprintf(cell, sizeof cell, "%s%.3g +-%.0f%%", tm[i].extrapolated[ni] ? "~" : "",
+                         median(tm[i].t[ni], (size_t)repeats),
+                         100 * spread(tm[i].t[ni], (size_t)repeats));
+                printf(" %15s", cell);
+            }
+        }
+        printf("\n");
+    }
+    FILE *f = open_out(stats_csv);
+    if (f)
+        fprintf(f, "scene,objects,best_N,ratio,ci_low,ci_high,p_adjusted,significant,"
+                   "extrapolated,begins_agree\n");
+    printf("\nexhaustive (N=big) against the best N, per set: ratio of medians, 95%% "
+           "bootstrap interval,\none-sided permutation p (x%d for picking the best N)\n",
+           NN - 1);
+    printf("%-12s %9s %7s %9s %19s %9s  %s\n", "set", "objects", "best N", "big/best",
+           "95% interval", "p", "octree faster?");
+    const char *first = NULL;
+    size_t first_objects = 0;
+    for (size_t i = 0; i < nspecs; ++i) {
+        int best = 0;
+        for (int ni = 1; ni < NN - 1; ++ni)
+            if (median(tm[i].t[ni], (size_t)repeats) < median(tm[i].t[best], (size_t)repeats))
+                best = ni;
+        const double *big = tm[i].t[NN - 1], *bt = tm[i].t[best];
+        double ratio = median(big, (size_t)repeats) / median(bt, (size_t)repeats), ci[2];
+        bootstrap_ratio(big, bt, (size_t)repeats, ci);
+        double p = fmin(1, (NN - 1) * permutation_p(big, bt, (size_t)repeats));
+        bool extrap = tm[i].extrapolated[NN - 1];
+        bool sig = !extrap && p < 0.05 && ci[0] > 1;
+        bool agree = true;
+        for (int ni = 0; ni < NN; ++ni)
+            agree &= tm[i].extrapolated[ni] || tm[i].begins[ni] == tm[i].begins[best];
+        if (sig && first == NULL) {
+            first = tm[i].spec;
+            first_objects = tm[i].objects;
+        }
+        char ivl[48];
+        snprintf(ivl, sizeof ivl, "[%.3g, %.3g]", ci[0], ci[1]);
+        printf("%-12s %9zu %7s %9.3g %19s %9.3g  %s%s\n", scene_label(tm[i].spec, lb),
+               tm[i].objects, n_name(NS[best], nb), ratio, ivl, p,
+               extrap ? "not tested (extrapolated)" : sig ? "yes, significantly"
+               : ratio > 1 ? "not significantly" : "no",
+               agree ? "" : "  (EVENT COUNTS DIFFER ACROSS N)");
+        if (f)
+            fprintf(f, "%s,%zu,%s,%.6g,%.6g,%.6g,%.6g,%d,%d,%d\n", tm[i].spec, tm[i].objects,
+                    n_name(NS[best], nb), ratio, ci[0], ci[1], p, sig, extrap, agree);
+    }
+    if (f)
+        fclose(f);
+    if (first)
+        printf("smallest set at which the octree is significantly faster: %s (%zu objects)\n",
+               scene_label(first, lb), first_objects);
+    else
+        printf("no set at which the octree is significantly faster\n");
+}
+
+/* Plot the per-N medians CSV (columns scene, objects, then one per N):
+ * y = median seconds times `scale` / (objects if per_object). */
+static void timing_plot(const char *name, const char *medians, const char *title,
+                        const char *ylabel, double scale, bool per_object, bool logscale,
+                        double xmin)
+{
+    char script[4096];
+    int n = snprintf(script, sizeof script,
+                     "set title '%s'\nset xlabel 'objects'\nset ylabel '%s'\n%s"
+                     "set xrange [%g:*]\nplot ",
+                     title, ylabel, logscale ? "set logscale xy\n" : "", xmin);
+    for (int ni = 0; ni < NN; ++ni) {
+        char nb[16];
+        n += snprintf(script + n, sizeof script - (size_t)n,
+                      "%s'%s/%s' skip 1 using 2:($%d*%.17g%s) with linespoints "
+                      "title 'N = %s'",
+                      ni ? ", " : "", opt.out, medians, ni + 3, scale,
+                      per_object ? "/$2" : "", n_name(NS[ni], nb));
+    }
+    snprintf(script + n, sizeof script - (size_t)n, "\n");
+    plot(name, script);
+}
+
+/* ---- where the time goes ------------------------------------------------------ */
+
+static bool stages_section(const char *const *specs, size_t nspecs, int N, int repeats,
+                           int steps)
+{
+    enum { FULL, BOX, CONVEX, EXACT, NCFG };
+    static const noctAccuracy acc[NCFG] = {NOCT_ACCURACY_EXACT, NOCT_ACCURACY_BOX,
+                                           NOCT_ACCURACY_CONVEX, NOCT_ACCURACY_EXACT};
+    printf("\n== Where the time goes (N = %d, ms per step, median of %d runs) ==\n", N,
+           repeats);
+    printf("motion, maintenance and events+response from the full simulation; the pair\n"
+           "search and each narrowphase level from runs with the response off, so that\n"
+           "the three levels see the same motion (level = its run minus the box run;\n"
+           "a level cheaper than the noise shows as 0 here, as measured in stages.csv)\n");
+    FILE *f = open_out("stages.csv");
+    if (f == NULL)
+        return false;
+    fprintf(f, "scene,objects,N,motion_ms,maintenance_ms,pairs_box_ms,convex_level_ms,"
+               "exact_level_ms,response_ms,total_ms,candidate_pairs,tested_pairs,"
+               "neighbor_queries,exact_fallbacks\n");
+    printf("%-12s %8s %8s %11s %11s %8s %8s %9s %8s  %s\n", "scene", "objects", "motion",
+           "maintenance", "pairs+box", "convex", "exact", "response", "total",
+           "per step: candidates, tested, neighbor queries");
+    size_t total = nspecs * NCFG * (size_t)repeats, done = 0;
+    for (size_t i = 0; i < nspecs; ++i) {
+        double v[NCFG][4][MAX_REPEATS];
+        run_result r = {0}, first = {0};
+        for (int rep = 0; rep < repeats; ++rep)
+            for (int c = 0; c < NCFG; ++c) {
+                char label[64];
+                snprintf(label, sizeof label, "%s run %d/%d", specs[i], rep + 1, repeats);
+                tool_progress(opt.bar, (long)done++, (long)total, label);
+                if (!run(specs[i], N, acc[c], 0, c == FULL ? 0 : NOCT_EFFECT_RESPONSE, steps,
+                         0, &r, NULL, NULL)) {
+                    fclose(f);
+                    return false;
+                }
+                if (c == FULL && rep == 0)
+                    first = r;
+                v[c][0][rep] = 1e3 * r.c.seconds_motion / steps;
+                v[c][1][rep] = 1e3 * r.c.seconds_maintenance / steps;
+                v[c][2][rep] = 1e3 * r.c.seconds_pairs / steps;
+                v[c][3][rep] = 1e3 * r.c.seconds_response / steps;
+            }
+        tool_progress(opt.bar, (long)done, (long)total, "");
+        size_t n = (size_t)repeats;
+        double motion = median(v[FULL][0], n), maint = median(v[FULL][1], n),
+               resp = median(v[FULL][3], n), pbox = median(v[BOX][2], n),
+               cvx = median(v[CONVEX][2], n) - pbox, ex = median(v[EXACT][2], n) - pbox,
+               tot = motion + maint + median(v[FULL][2], n) + resp;
+        char lb[32];
+        printf("%-12s %8zu %8.3f %11.3f %11.3f %8.3f %8.3f %9.3f %8.3f  %.0f, %.0f, %.0f\n",
+               scene_label(specs[i], lb), first.objects, motion, maint, pbox, fmax(0, cvx),
+               fmax(0, ex), resp,
+               tot, (double)first.c.candidate_pairs / steps,
+               (double)first.c.tested_pairs / steps,
+               (double)first.c.neighbor_queries / steps);
+        fprintf(f, "%s,%zu,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.1f,%.1f,%.1f,%llu\n",
+                specs[i], first.objects, N, motion, maint, pbox, cvx, ex, resp, tot,
+                (double)first.c.candidate_pairs / steps, (double)first.c.tested_pairs / steps,
+                (double)first.c.neighbor_queries / steps,
+                (unsigned long long)first.c.narrow.exact_fallbacks);
+    }
+    fclose(f);
+    return true;
+}
+
+/* ---- what accuracy costs -------------------------------------------------------- */
+
+static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int repeats,
+                             int steps)
+{
+    enum { NCFG = 6 };
+    static const noctAccuracy acc[3] = {NOCT_ACCURACY_BOX, NOCT_ACCURACY_CONVEX,
+                                        NOCT_ACCURACY_EXACT};
+    printf("\n== What accuracy costs (N = %d, %d steps, time: median of %d runs) ==\n", N,
+           steps, repeats);
+    printf("reference: exact with sub-steps. false/missed: colliding (pair, step) entries\n"
+           "the reference lacks/has; begins differing: contact-begin events (each one\n"
+           "reverses two objects) not shared with the reference; diverges: first step that\n"
+           "differs ('-': never)\n");
+    FILE *f = open_out("accuracy.csv");
+    if (f == NULL)
+        return false;
+    fprintf(f, "scene,objects,accuracy,substep,ms_per_step,colliding_per_step,false,"
+               "missed,begins,begins_differing,first_divergence\n");
+    printf("%-12s %-7s %-8s %10s %10s %9s %9s %8s %9s %9s\n", "scene", "level", "substep",
+           "ms/step", "colliding", "false", "missed", "begins", "differing", "diverges");
+    size_t total = nspecs * NCFG * (size_t)repeats, done = 0;
+    bool ok = true;
+    for (size_t i = 0; i < nspecs && ok; ++i) {
+        pair_log col[NCFG] = {{0}}, beg[NCFG] = {{0}};
+        double t[NCFG][MAX_REPEATS];
+        run_result first[NCFG];
+        for (int rep = 0; rep < repeats && ok; ++rep)
+            for (int c = 0; c < NCFG && ok; ++c) {
+                char label[64];
+                snprintf(label, sizeof label, "%s run %d/%d", specs[i], rep + 1, repeats);
+                tool_progress(opt.bar, (long)done++, (long)total, label);
+                run_result r;
+                ok = run(specs[i], N, acc[c % 3], c >= 3 ? NOCT_EFFECT_SUBSTEP : 0, 0, steps,
+                         0, &r, rep == 0 ? &col[c] : NULL, rep == 0 ? &beg[c] : NULL);
+                t[c][rep] = 1e3 * r.seconds / steps;
+                if (rep == 0)
+                    first[c] = r;
+            }
+        tool_progress(opt.bar, (long)done, (long)total, "");
+        for (int c = 0; c < NCFG && ok; ++c) {
+            size_t fx, mx, bx, by;
+            uint32_t d1, d2;
+            log_diff(&col[c], &col[NCFG - 1], &fx, &mx, &d1);
+            log_diff(&beg[c], &beg[NCFG - 1], &bx, &by, &d2);
+            uint32_t div = d1 && d2 ? (d1 < d2 ? d1 : d2) : d1 ? d1 : d2;
+            char lb[32], ds[16];
+            snprintf(ds, sizeof ds, "%u", div);
+            double ms = median(t[c], (size_t)repeats);
+            printf("%-12s %-7s %-8s %10.4f %10.1f %9zu %9zu %8zu %9zu %9s\n",
+                   scene_label(specs[i], lb), noctAccuracyName(acc[c % 3]),
+                   c >= 3 ? "yes" : "no", ms, (double)col[c].n / steps, fx, mx,
+                   first[c].begins, bx + by, div ? ds : "-");
+            fprintf(f, "%s,%zu,%s,%d,%.6g,%.3f,%zu,%zu,%zu,%zu,%u\n", specs[i],
+                    first[c].objects, noctAccuracyName(acc[c % 3]), c >= 3, ms,
+                    (double)col[c].n / steps, fx, mx, first[c].begins, bx + by, div);
+        }
+        for (int c = 0; c < NCFG; ++c) {
+            free(col[c].p);
+            free(beg[c].p);
+        }
+    }
+    fclose(f);
+    return ok;
+}
+
+/* ---- main ------------------------------------------------------------------------ */
+
+static bool parse_sections(const char *s, unsigned *out)
+{
+    static const struct { const char *name; unsigned bit; } all[] = {
+        {"table1", SEC_TABLE1}, {"stages", SEC_STAGES},
+        {"accuracy", SEC_ACCURACY}, {"scale", SEC_SCALE}};
+    *out = 0;
+    while (*s) {
+        size_t len = strcspn(s, ",");
+        unsigned bit = 0;
+        for (size_t i = 0; i < sizeof all / sizeof *all; ++i)
+            if (strlen(all[i].name) == len && strncmp(s, all[i].name, len) == 0)
+                bit = all[i].bit;
+        if (bit == 0)
+            return false;
+        *out |= bit;
+        s += len + (s[len] == ',');
+    }
+    return *out != 0;
+}
+
+int main(int argc, char **argv)
+{
+    tool_name = "noctree-bench";
+    bool quiet = false;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        bool has = i + 1 < argc;
+        long v;
+        if (strcmp(a, "--help") == 0) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            printf("noctree-bench %s\n", NOCT_VERSION_STRING);
+            return 0;
+        } else if (strcmp(a, "--quick") == 0) {
+            opt.quick = true;
+        } else if (strcmp(a, "--all") == 0) {
+            opt.sections = SEC_TABLE1 | SEC_STAGES | SEC_ACCURACY | SEC_SCALE;
+        } else if (strcmp(a, "--no-plots") == 0) {
+            opt.plots = false;
+        } else if (strcmp(a, "--quiet") == 0) {
+            quiet = true;
+        } else if (strcmp(a, "--sections") == 0 && has) {
+            if (!parse_sections(argv[++i], &opt.sections))
+                return tool_usage_error("--sections takes table1, stages, accuracy and "
+                                        "scale separated by commas, not '%s'", argv[i]);
+        } else if (strcmp(a, "--repeats") == 0 && has) {
+            if (!tool_parse_long(argv[++i], 2, MAX_REPEATS, &v))
+                return tool_usage_error("--repeats must be 2 to %d, not '%s'", MAX_REPEATS,
+                                        argv[i]);
+            opt.repeats = (int)v;
+        } else if (strcmp(a, "--steps") == 0 && has) {
+            if (!tool_parse_long(argv[++i], 1, 100000, &v))
+                return tool_usage_error("--steps must be 1 to 100000, not '%s'", argv[i]);
+            opt.steps = (int)v;
+        } else if (strcmp(a, "--budget") == 0 && has) {
+            if (!tool_parse_double(argv[++i], 0.001, 1e6, &opt.budget))
+                return tool_usage_error("--budget must be a number of seconds from 0.001 "
+                                        "to 1e6, not '%s'", argv[i]);
+        } else if (strcmp(a, "--out") == 0 && has) {
+            opt.out = argv[++i];
+            if (*opt.out == '\0')
+                return tool_usage_error("--out needs a folder name");
+        } else {
+            return tool_usage_error("unknown option or missing value: '%s'", a);
+        }
+    }
+    opt.bar = !quiet && isatty(STDERR_FILENO);
+    if (mkdir(opt.out, 0777) != 0 && errno != EEXIST) {
+        tool_error("cannot create %s: %s", opt.out, strerror(errno));
+        return 2;
+    }
+    struct stat sb;
+    if (stat(opt.out, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
+        tool_error("%s is not a folder", opt.out);
+        return 2;
+    }
+
+    printf("noctree-bench %s: exact accuracy unless said, the efficient library, one "
+           "thread%s\n", NOCT_VERSION_STRING, opt.quick ? ", QUICK MODE (timings "
+           "are not meaningful)" : "");
+    int status = 0;
+    if (opt.sections & SEC_TABLE1) {
+        static const char *full[] = {"planes:0", "planes:1", "planes:2", "planes:3",
+                                     "planes:4", "planes:5", "planes:6", "planes:7",
+                                     "planes:8", "planes:9", "planes:10"};
+        size_t n = opt.quick ? 4 : 11;
+        int repeats = opt.repeats ? opt.repeats : opt.quick ? 3 : 5;
+        int steps = opt.steps ? opt.steps : opt.quick ? 20 : 200;
+        timing tm[11];
+        if (timing_section("Table 1, reproduced: the report's test sets t0 ... t10",
+                           "table1.csv", full, n, repeats, steps, tm)) {
+            timing_report("table1-stats.csv", "table1-medians.csv", tm, n, repeats, steps);
+            timing_plot("fig9", "table1-medians.csv", "Figure 9: test set size against time",
+                        "seconds", 1, false, false, 0);
+            timing_plot("fig10", "table1-medians.csv",
+                        "Figure 10: the right-hand side of Figure 9", "seconds", 1, false,
+                        false, opt.quick ? 0 : 338);
+        } else {
+            status = 1;
+        }
+    }
+    if (opt.sections & SEC_SCALE) {
+        static const char *full[] = {"planes:30", "planes:50", "planes:100", "planes:300",
+                                     "gas:10000", "gas:100000"};
+        static const char *quick[] = {"planes:6", "gas:500"};
+        size_t n = opt.quick ? 2 : 6;
+        int repeats = opt.repeats ? opt.repeats : 3;
+        int steps = opt.steps ? opt.steps : opt.quick ? 10 : 50;
+        timing tm[6];
+        if (timing_section("At scale", "scale.csv", opt.quick ? quick : full, n, repeats,
+                           steps, tm)) {
+            timing_report("scale-stats.csv", "scale-medians.csv", tm, n, repeats, steps);
+            timing_plot("scaling", "scale-medians.csv",
+                        "Scaling: ns per object per step (planes and gas)",
+                        "ns per object per step", 1e9 / steps, true, true, 1);
+        } else {
+            status = 1;
+        }
+    }
+    if (status == 0 && (opt.sections & SEC_STAGES)) {
+        static const char *full[] = {"planes:10", "planes:30", "gas:1000", "gas:10000"};
+        static const char *quick[] = {"planes:3", "gas:200"};
+        if (!stages_section(opt.quick ? quick : full, opt.quick ? 2 : 4, 30,
+                            opt.repeats ? opt.repeats : 3,
+                            opt.steps ? opt.steps : opt.quick ? 20 : 200))
+            status = 1;
+    }
+    if (status == 0 && (opt.sections & SEC_ACCURACY)) {
+        static const char *full[] = {"planes:10", "gas:1000", "notch:64"};
+        static const char *quick[] = {"planes:2", "gas:100", "notch:8"};
+        if (accuracy_section(opt.quick ? quick : full, 3, 30, opt.repeats ? opt.repeats : 3,
+                             opt.steps ? opt.steps : opt.quick ? 60 : 200)) {
+            char script[2048];
+            snprintf(script, sizeof script,
+                     "set terminal svg size 1200,480 dynamic font 'sans,12'\n"
+                     "set output '%s/accuracy.svg'\nunset key\n"
+                     "set multiplot layout 1,3 title 'What accuracy costs: time against "
+                     "error (reference: exact, sub-stepped)'\n"
+                     "set xlabel 'ms per step'\nset ylabel 'false + missed colliding "
+                     "(pair, step)'\nset yrange [-0.5:*]\n"
+                     "set offsets graph 0.15, graph 0.3, graph 0.1, "
+                     "graph 0.1\n"
+                     "do for [s in 'planes gas notch'] {\n"
+                     "  set title s\n"
+                     "  plot '%s/accuracy.csv' skip 1 using 5:(strstrt(strcol(1), s) == 1 ? "
+                     "$7 + $8 : NaN):(strcol(3).($4 != 0 ? '+sub' : '')) with labels "
+                     "point pt 7 offset 0.6,0.6 left rotate by 20\n}\n"
+                     "unset multiplot\n",
+                     opt.out, opt.out);
+            plot("accuracy", script);
+        } else {
+            status = 1;
+        }
+    }
+    printf("\nCSV files%s in %s/\n", opt.plots && have_gnuplot() ? " and plots" : "",
+           opt.out);
+    return status;
+}

@@ -1,0 +1,341 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * octprint: the report's octPrint as a tool. Builds a scene's N-objects
+ * octree, runs it to a given step and prints the tree: the text of
+ * octPrint (child type, generation, the node's cube and a leaf's objects),
+ * and on request Graphviz dot of the tree and an SVG slice of the cells
+ * with the objects' boxes drawn in (as the report's Figures 5 to 7).
+ * See octprint(1).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree.h>
+
+#include "toolutil.h"
+
+static const char usage[] =
+    "usage: octprint [OPTIONS] SCENE-FILE\n"
+    "       octprint [OPTIONS] --scene planes:K|gas:N\n"
+    "Print a scene's N-objects octree after a number of steps.\n"
+    "\n"
+    "  --scene FAMILY     a built-in scene: planes:K or gas:N\n"
+    "  --step S           run S steps first (default 0: the tree as built)\n"
+    "  --N N|big          most objects per octree leaf\n"
+    "  --max-depth D      deepest octree level, 1 to 40\n"
+    "  --dot FILE         also write the tree as Graphviz dot ('-': stdout)\n"
+    "  --svg FILE         also draw a slice of the cells and objects as SVG\n"
+    "  --slice AXIS=V     the slice: x, y or z equal to V (default: z through\n"
+    "                     the middle of the root)\n"
+    "  --no-text          do not print the octPrint text\n"
+    "  --help             this text\n"
+    "  --version          the version\n"
+    "\n"
+    "Exit status: 0 on success, 1 if the run or a write failed, 2 for bad usage\n"
+    "or input.\n";
+
+static const char *const PALETTE[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2",
+                                      "#59a14f", "#edc948", "#b07aa1", "#ff9da7"};
+
+static FILE *open_or_stdout(const char *path)
+{
+    if (strcmp(path, "-") == 0)
+        return stdout;
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        tool_error("%s: %s", path, strerror(errno));
+    return f;
+}
+
+static bool close_checked(FILE *f, const char *path)
+{
+    bool ok = !ferror(f);
+    if (f != stdout)
+        ok &= fclose(f) == 0;
+    else
+        ok &= fflush(f) == 0;
+    if (!ok)
+        tool_error("%s: write error", path);
+    return ok;
+}
+
+/* ---- Graphviz dot ----------------------------------------------------------- */
+
+static void dot_node(FILE *f, const noctWorld *w, octNode *n, unsigned long *next,
+                     unsigned long parent)
+{
+    unsigned long me = (*next)++;
+    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
+    if (octIsSplit(n))
+        fprintf(f, "  n%lu [label=\"%s\\ng%d\"];\n", me, octDirToStr(octChildType(n)),
+                octGeneration(n));
+    else
+        fprintf(f, "  n%lu [label=\"%s\\ng%d\\n%zu obj\", shape=box, style=filled, "
+                   "fillcolor=\"%s\"];\n",
+                me, octDirToStr(octChildType(n)), octGeneration(n), count,
+                count == 0 ? "white" : count == 1 ? "#dbe9f6" : "#f6c6c6");
+    if (me != 0)
+        fprintf(f, "  n%lu -> n%lu;\n", parent, me);
+    if (octIsSplit(n))
+        for (int i = 0; i < 8; ++i)
+            dot_node(f, w, octChild(n, (octDirection)(OCT_LDB + i)), next, me);
+}
+
+static bool write_dot(const char *path, const noctWorld *w, const char *title)
+{
+    FILE *f = open_or_stdout(path);
+    if (f == NULL)
+        return false;
+    unsigned long next = 0;
+    fprintf(f, "digraph octree {\n  label=\"%s\";\n  node [fontsize=10];\n", title);
+    dot_node(f, w, noctWorldRoot(w), &next, 0);
+    fprintf(f, "}\n");
+    return close_checked(f, path);
+}
+
+/* ---- SVG slice ----------------------------------------------------------------- */
+
+typedef struct slice {
+    int axis, u, v;  /* the cut axis and the two drawn axes */
+    double at;       /* the cut's coordinate */
+    double lo[2], scale, height;
+} slice;
+
+static double sx(const slice *s, double x)
+{
+    return 20 + (x - s->lo[0]) * s->scale;
+}
+
+static double sy(const slice *s, double y)
+{
+    return 20 + s->height - (y - s->lo[1]) * s->scale;
+}
+
+/* Leaves cut by the plane, as rectangles. */
+static void svg_cells(FILE *f, const noctWorld *w, octNode *n, const slice *s)
+{
+    double lo[3], size;
+    size_t count = noctWorldCell(w, n, lo, &size, NULL, 0);
+    if (s->at < lo[s->axis] || s->at > lo[s->axis] + size)
+        return;
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i)
+            svg_cells(f, w, octChild(n, (octDirection)(OCT_LDB + i)), s);
+        return;
+    }
+    fprintf(f, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.3f\" height=\"%.3f\" fill=\"%s\" "
+               "stroke=\"#555\" stroke-width=\"0.6\"><title>%s g%d: %zu objects</title>"
+               "</rect>\n",
+            sx(s, lo[s->u]), sy(s, lo[s->v] + size), size * s->scale, size * s->scale,
+            count > 1 ? "#fbeaea" : "white", octDirToStr(octChildType(n)), octGeneration(n),
+            count);
+}
+
+/* Object boxes cut by the plane. */
+static void svg_objects(FILE *f, const noctWorld *w, octNode *n, const slice *s,
+                        unsigned char *drawn, size_t ndrawn)
+{
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i)
+            svg_objects(f, w, octChild(n, (octDirection)(OCT_LDB + i)), s, drawn, ndrawn);
+        return;
+    }
+    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
+    noctObjectId *ids = malloc((count + 1) * sizeof *ids);
+    if (ids == NULL)
+        return;
+    noctWorldCell(w, n, NULL, NULL, ids, count);
+    for (size_t i = 0; i < count; ++i) {
+        double lo[3], hi[3];
+        if (ids[i].index < ndrawn && drawn[ids[i].index])
+            continue;
+        if (noctWorldObjectBox(w, ids[i], lo, hi) != NOCT_OK ||
+            s->at < lo[s->axis] || s->at > hi[s->axis])
+            continue;
+        if (ids[i].index < ndrawn)
+            drawn[ids[i].index] = 1;
+        fprintf(f, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.3f\" height=\"%.3f\" "
+                   "fill=\"%s\" fill-opacity=\"0.55\" stroke=\"#222\" stroke-width=\"0.8\">"
+                   "<title>object %u</title></rect>\n",
+                sx(s, lo[s->u]), sy(s, hi[s->v]), (hi[s->u] - lo[s->u]) * s->scale,
+                (hi[s->v] - lo[s->v]) * s->scale, PALETTE[ids[i].index % 8], ids[i].index);
+    }
+    free(ids);
+}
+
+/* The union of the objects' boxes. */
+static void objects_extent(const noctWorld *w, octNode *n, double lo[3], double hi[3])
+{
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i)
+            objects_extent(w, octChild(n, (octDirection)(OCT_LDB + i)), lo, hi);
+        return;
+    }
+    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
+    noctObjectId *ids = malloc((count + 1) * sizeof *ids);
+    if (ids == NULL)
+        return;
+    noctWorldCell(w, n, NULL, NULL, ids, count);
+    for (size_t i = 0; i < count; ++i) {
+        double a[3], b[3];
+        if (noctWorldObjectBox(w, ids[i], a, b) == NOCT_OK)
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = a[k] < lo[k] ? a[k] : lo[k];
+                hi[k] = b[k] > hi[k] ? b[k] : hi[k];
+            }
+    }
+    free(ids);
+}
+
+static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
+                      bool at_given, const char *title)
+{
+    static const char *names = "xyz";
+    double lo[3], size, olo[3] = {1e308, 1e308, 1e308}, ohi[3] = {-1e308, -1e308, -1e308};
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    objects_extent(w, noctWorldRoot(w), olo, ohi);
+    slice s = {axis, axis == 0 ? 1 : 0, axis == 2 ? 1 : 2, 0, {0, 0}, 0, 760};
+    /* The view: the objects' extent in the drawn axes with a margin, or the
+     * root when there are no objects; by default the cut goes through the
+     * middle of the objects. */
+    double view = size;
+    s.lo[0] = lo[s.u];
+    s.lo[1] = lo[s.v];
+    if (olo[0] <= ohi[0]) {
+        double eu = ohi[s.u] - olo[s.u], ev = ohi[s.v] - olo[s.v];
+        view = 1.1 * (eu > ev ? eu : ev) + 1e-9;
+        s.lo[0] = 0.5 * (olo[s.u] + ohi[s.u]) - view / 2;
+        s.lo[1] = 0.5 * (olo[s.v] + ohi[s.v]) - view / 2;
+        s.at = at_given ? at : 0.5 * (olo[axis] + ohi[axis]);
+    } else {
+        s.at = at_given ? at : lo[axis] + size / 2;
+    }
+    s.scale = 760 / view;
+    FILE *f = open_or_stdout(path);
+    if (f == NULL)
+        return false;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"860\" "
+               "viewBox=\"0 0 800 860\" font-family=\"sans-serif\" font-size=\"14\">\n"
+               "<rect width=\"800\" height=\"860\" fill=\"white\"/>\n"
+               "<clipPath id=\"view\"><rect x=\"20\" y=\"20\" width=\"760\" "
+               "height=\"760\"/></clipPath>\n<g clip-path=\"url(#view)\">\n");
+    svg_cells(f, w, noctWorldRoot(w), &s);
+    size_t n = noctWorldObjectCount(w) * 4 + 1024;
+    unsigned char *drawn = calloc(n, 1);
+    svg_objects(f, w, noctWorldRoot(w), &s, drawn, drawn ? n : 0);
+    free(drawn);
+    fprintf(f, "</g>\n<text x=\"20\" y=\"808\">%s</text>\n"
+               "<text x=\"20\" y=\"830\">leaves and object boxes cut by %c = %.6g (%c to "
+               "the right, %c up); shaded: leaves with 2+ objects</text>\n</svg>\n",
+            title, names[axis], s.at, names[s.u], names[s.v]);
+    return close_checked(f, path);
+}
+
+/* ---- main ------------------------------------------------------------------------- */
+
+int main(int argc, char **argv)
+{
+    tool_name = "octprint";
+    const char *family = NULL, *file = NULL, *opt_N = NULL, *dot = NULL, *svg = NULL,
+               *opt_slice = NULL;
+    long steps = 0, depth = 0;
+    bool text = true;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        bool has = i + 1 < argc;
+        if (strcmp(a, "--help") == 0) {
+            fputs(usage, stdout);
+            return 0;
+        } else if (strcmp(a, "--version") == 0) {
+            printf("octprint %s\n", NOCT_VERSION_STRING);
+            return 0;
+        } else if (strcmp(a, "--no-text") == 0) {
+            text = false;
+        } else if (strcmp(a, "--scene") == 0 && has) {
+            family = argv[++i];
+        } else if (strcmp(a, "--N") == 0 && has) {
+            opt_N = argv[++i];
+        } else if (strcmp(a, "--dot") == 0 && has) {
+            dot = argv[++i];
+        } else if (strcmp(a, "--svg") == 0 && has) {
+            svg = argv[++i];
+        } else if (strcmp(a, "--slice") == 0 && has) {
+            opt_slice = argv[++i];
+        } else if (strcmp(a, "--step") == 0 && has) {
+            if (!tool_parse_long(argv[++i], 0, 10000000, &steps))
+                return tool_usage_error("--step must be 0 to 10000000, not '%s'", argv[i]);
+        } else if (strcmp(a, "--max-depth") == 0 && has) {
+            if (!tool_parse_long(argv[++i], 1, 40, &depth))
+                return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[i]);
+        } else if (a[0] == '-' && a[1] != '\0') {
+            return tool_usage_error("unknown option or missing value: '%s'", a);
+        } else if (file == NULL) {
+            file = a;
+        } else {
+            return tool_usage_error("more than one scene file: '%s'", a);
+        }
+    }
+    if ((family == NULL) == (file == NULL))
+        return tool_usage_error("give one scene: a file or --scene FAMILY");
+    int axis = 2;
+    double at = 0;
+    if (opt_slice != NULL) {
+        const char *p = strchr("xyz", opt_slice[0]);
+        if (opt_slice[0] == '\0' || p == NULL || opt_slice[1] != '=' ||
+            !tool_parse_double(opt_slice + 2, -1e100, 1e100, &at))
+            return tool_usage_error("--slice must look like z=0.5, not '%s'", opt_slice);
+        axis = (int)(p - "xyz");
+    }
+    if (dot && svg && strcmp(dot, "-") == 0 && strcmp(svg, "-") == 0)
+        return tool_usage_error("--dot and --svg cannot both write to stdout");
+
+    noctScene *scene;
+    noctError err;
+    noctStatus st = family ? noctSceneFamily(family, &scene, &err)
+                           : noctSceneRead(file, &scene, &err);
+    if (st != NOCT_OK) {
+        tool_error("%s", err.message);
+        return 2;
+    }
+    noctWorldDef *def = noctSceneDef(scene);
+    if (opt_N != NULL && !tool_parse_N(opt_N, &def->N))
+        return noctSceneDestroy(scene),
+               tool_usage_error("--N must be a positive integer or 'big', not '%s'", opt_N);
+    if (depth > 0)
+        def->max_depth = (int)depth;
+    noctWorld *w;
+    if ((st = noctSceneBuild(scene, &w, &err)) != NOCT_OK) {
+        tool_error("%s", err.message);
+        noctSceneDestroy(scene);
+        return 2;
+    }
+    int status = 0;
+    for (long s = 1; s <= steps && status == 0; ++s)
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            tool_error("step %ld: %s", s, err.message);
+            status = 1;
+        }
+    char title[256], nb[16];
+    snprintf(nb, sizeof nb, "%d", def->N);
+    snprintf(title, sizeof title, "%s, N = %s, step %ld", family ? family : file,
+             def->N == NOCT_N_EXHAUSTIVE ? "big" : nb, steps);
+    if (status == 0 && text) {
+        printf("# %s: %zu objects; each line: child type, generation: cube (low corner, "
+               "edge) and a leaf's objects\n", title, noctWorldObjectCount(w));
+        if (!octPrint(noctWorldRoot(w), noctWorldPrintCell, stdout) || fflush(stdout) != 0) {
+            tool_error("write error on stdout");
+            status = 1;
+        }
+    }
+    if (status == 0 && dot && !write_dot(dot, w, title))
+        status = 1;
+    if (status == 0 && svg && !write_svg(svg, w, axis, at, opt_slice != NULL, title))
+        status = 1;
+    noctWorldDestroy(w);
+    noctSceneDestroy(scene);
+    return status;
+}
