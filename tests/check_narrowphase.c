@@ -1028,6 +1028,34 @@ END_TEST
 
 /* The separating-axis filter proves a pair apart that only the exact
  * stage could otherwise, and never rejects one that touches. */
+
+/* Each level's time goes to its own counter, and only a level that ran
+ * takes time. */
+START_TEST(level_timings)
+{
+    noctMesh *box;
+    noctError err;
+    ck_assert_int_eq(noctMeshCreateBox(1, 1, 1, &box, &err), NOCT_OK);
+    const double ta[3] = {0, 0, 0}, near[3] = {1.5, 0.2, 0}, far[3] = {9, 0, 0};
+    static const noctAccuracy levels[] = {NOCT_ACCURACY_BOX, NOCT_ACCURACY_CONVEX,
+                                          NOCT_ACCURACY_EXACT};
+    for (int l = 0; l < 3; ++l) {
+        noctNarrowStats st = {0};
+        bool hit;
+        ck_assert_int_eq(noctCollide(box, ta, box, far, levels[l], &hit, &st), NOCT_OK);
+        ck_assert(!hit);
+        ck_assert(st.seconds_convex == 0 && st.seconds_exact == 0); /* box rejects */
+        for (int i = 0; i < 200; ++i) {
+            ck_assert_int_eq(noctCollide(box, ta, box, near, levels[l], &hit, &st), NOCT_OK);
+            ck_assert(hit);
+        }
+        ck_assert(l == 1 ? st.seconds_convex > 0 : st.seconds_convex == 0);
+        ck_assert(l == 2 ? st.seconds_exact > 0 : st.seconds_exact == 0);
+    }
+    noctMeshDestroy(box);
+}
+END_TEST
+
 START_TEST(sat_filter_rejects_soundly)
 {
     const double c = sqrt(0.5);
@@ -1112,6 +1140,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, status_strings);
     tcase_add_test(tc, collide_rejects_bad_input);
     tcase_add_test(tc, sat_filter_rejects_soundly);
+    tcase_add_test(tc, level_timings);
     suite_add_tcase(s, tc);
 
 #ifndef NOCT_EFFICIENT

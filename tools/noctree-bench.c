@@ -627,6 +627,7 @@ static void timing_report(const char *stats_csv, const char *medians_csv, timing
                scene_label(first, lb), first_objects);
     else
         printf("no set at which the octree is significantly faster\n");
+    fflush(stdout);
 }
 
 /* Plot the per-N medians CSV (columns scene, objects, then one per N):
@@ -657,63 +658,67 @@ static void timing_plot(const char *name, const char *medians, const char *title
 static bool stages_section(const char *const *specs, size_t nspecs, int N, int repeats,
                            int steps)
 {
-    enum { FULL, BOX, CONVEX, EXACT, NCFG };
-    static const noctAccuracy acc[NCFG] = {NOCT_ACCURACY_EXACT, NOCT_ACCURACY_BOX,
-                                           NOCT_ACCURACY_CONVEX, NOCT_ACCURACY_EXACT};
+    enum { EXACT, CONVEX, NCFG, NV = 7 };
+    static const noctAccuracy acc[NCFG] = {NOCT_ACCURACY_EXACT, NOCT_ACCURACY_CONVEX};
     printf("\n== Where the time goes (N = %d, ms per step, median of %d runs) ==\n", N,
            repeats);
-    printf("motion, maintenance and events+response from the full simulation; the pair\n"
-           "search and each narrowphase level from runs with the response off, so that\n"
-           "the three levels see the same motion (level = its run minus the box run;\n"
-           "a level cheaper than the noise shows as 0 here, as measured in stages.csv)\n");
+    printf("a run at exact accuracy, and one at convex accuracy for its convex level;\n"
+           "pair search includes the box tests; the narrowphase levels are timed per\n"
+           "pair inside the library\n");
     FILE *f = open_out("stages.csv");
     if (f == NULL)
         return false;
-    fprintf(f, "scene,objects,N,motion_ms,maintenance_ms,pairs_box_ms,convex_level_ms,"
+    fprintf(f, "scene,objects,N,motion_ms,maintenance_ms,pair_search_ms,convex_level_ms,"
                "exact_level_ms,response_ms,total_ms,candidate_pairs,tested_pairs,"
-               "neighbor_queries,exact_fallbacks\n");
+               "neighbor_queries,exact_fallbacks,same_trajectory\n");
     printf("%-12s %8s %8s %11s %11s %8s %8s %9s %8s  %s\n", "scene", "objects", "motion",
-           "maintenance", "pairs+box", "convex", "exact", "response", "total",
+           "maintenance", "pair search", "convex", "exact", "response", "total",
            "per step: candidates, tested, neighbor queries");
     size_t total = nspecs * NCFG * (size_t)repeats, done = 0;
     for (size_t i = 0; i < nspecs; ++i) {
-        double v[NCFG][4][MAX_REPEATS];
-        run_result r = {0}, first = {0};
+        double v[NCFG][NV][MAX_REPEATS];
+        run_result r, first[NCFG];
         for (int rep = 0; rep < repeats; ++rep)
             for (int c = 0; c < NCFG; ++c) {
                 char label[64];
                 snprintf(label, sizeof label, "%s run %d/%d", specs[i], rep + 1, repeats);
                 tool_progress(opt.bar, (long)done++, (long)total, label);
-                if (!run(specs[i], N, acc[c], 0, c == FULL ? 0 : NOCT_EFFECT_RESPONSE, steps,
-                         0, &r, NULL, NULL)) {
+                if (!run(specs[i], N, acc[c], 0, 0, steps, 0, &r, NULL, NULL)) {
                     fclose(f);
                     return false;
                 }
-                if (c == FULL && rep == 0)
-                    first = r;
-                v[c][0][rep] = 1e3 * r.c.seconds_motion / steps;
-                v[c][1][rep] = 1e3 * r.c.seconds_maintenance / steps;
-                v[c][2][rep] = 1e3 * r.c.seconds_pairs / steps;
-                v[c][3][rep] = 1e3 * r.c.seconds_response / steps;
+                if (rep == 0)
+                    first[c] = r;
+                const noctWorldCounters *k = &r.c;
+                double levels = k->narrow.seconds_convex + k->narrow.seconds_exact;
+                double part[NV] = {k->seconds_motion, k->seconds_maintenance,
+                                   k->seconds_pairs - levels, k->narrow.seconds_convex,
+                                   k->narrow.seconds_exact, k->seconds_response,
+                                   k->seconds_motion + k->seconds_maintenance +
+                                       k->seconds_pairs + k->seconds_response};
+                for (int p = 0; p < NV; ++p)
+                    v[c][p][rep] = 1e3 * part[p] / steps;
             }
         tool_progress(opt.bar, (long)done, (long)total, "");
         size_t n = (size_t)repeats;
-        double motion = median(v[FULL][0], n), maint = median(v[FULL][1], n),
-               resp = median(v[FULL][3], n), pbox = median(v[BOX][2], n),
-               cvx = median(v[CONVEX][2], n) - pbox, ex = median(v[EXACT][2], n) - pbox,
-               tot = motion + maint + median(v[FULL][2], n) + resp;
+        double m[NV];
+        for (int p = 0; p < NV; ++p)
+            m[p] = median(v[EXACT][p], n);
+        m[3] = median(v[CONVEX][3], n);
+        bool same = first[EXACT].begins == first[CONVEX].begins;
+        const noctWorldCounters *k = &first[EXACT].c;
         char lb[32];
-        printf("%-12s %8zu %8.3f %11.3f %11.3f %8.3f %8.3f %9.3f %8.3f  %.0f, %.0f, %.0f\n",
-               scene_label(specs[i], lb), first.objects, motion, maint, pbox, fmax(0, cvx),
-               fmax(0, ex), resp,
-               tot, (double)first.c.candidate_pairs / steps,
-               (double)first.c.tested_pairs / steps,
-               (double)first.c.neighbor_queries / steps);
-        fprintf(f, "%s,%zu,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.1f,%.1f,%.1f,%llu\n",
-                specs[i], first.objects, N, motion, maint, pbox, cvx, ex, resp, tot,
-                (double)first.c.candidate_pairs / steps, (double)first.c.tested_pairs / steps,
-                (double)first.c.neighbor_queries / steps,
-                (unsigned long long)first.c.narrow.exact_fallbacks);
+        printf("%-12s %8zu %8.3f %11.3f %11.3f %8.3f %8.3f %9.3f %8.3f  %.0f, %.0f, %.0f%s\n",
+               scene_label(specs[i], lb), first[EXACT].objects, m[0], m[1], m[2], m[3], m[4],
+               m[5], m[6], (double)k->candidate_pairs / steps,
+               (double)k->tested_pairs / steps, (double)k->neighbor_queries / steps,
+               same ? "" : " (convex run took another path)");
+        fprintf(f, "%s,%zu,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.1f,%.1f,%.1f,%llu,%d\n",
+                specs[i], first[EXACT].objects, N, m[0], m[1], m[2], m[3], m[4], m[5], m[6],
+                (double)k->candidate_pairs / steps, (double)k->tested_pairs / steps,
+                (double)k->neighbor_queries / steps,
+                (unsigned long long)k->narrow.exact_fallbacks, same);
+        fflush(stdout);
     }
     fclose(f);
     return true;
@@ -780,6 +785,7 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int
             free(col[c].p);
             free(beg[c].p);
         }
+        fflush(stdout);
     }
     fclose(f);
     return ok;

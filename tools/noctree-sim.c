@@ -154,10 +154,14 @@ int main(int argc, char **argv)
                def->N == NOCT_N_EXHAUSTIVE ? 0 : def->N, noctAccuracyName(def->accuracy));
         printf("contact begins %zu\ncontact ends %zu\ncolliding at the end %zu\n", begins,
                ends, noctWorldColliding(w, &p));
-        printf("time per step %.3f ms (motion %.3f, maintenance %.3f, pairs and "
-               "narrowphase %.3f, events and response %.3f)\n",
+        double levels = c.narrow.seconds_convex + c.narrow.seconds_exact;
+        printf("time per step %.3f ms (motion %.3f, maintenance %.3f, pair search and "
+               "box tests %.3f, convex level %.3f, exact level %.3f, events and "
+               "response %.3f)\n",
                1e3 * total / nsteps, 1e3 * c.seconds_motion / nsteps,
-               1e3 * c.seconds_maintenance / nsteps, 1e3 * c.seconds_pairs / nsteps,
+               1e3 * c.seconds_maintenance / nsteps,
+               1e3 * (c.seconds_pairs - levels) / nsteps,
+               1e3 * c.narrow.seconds_convex / nsteps, 1e3 * c.narrow.seconds_exact / nsteps,
                1e3 * c.seconds_response / nsteps);
         printf("per step: %.1f candidate pairs, %.1f tested, %.1f colliding; %.1f "
                "neighbor queries, %.2f splits, %.2f merges\n",

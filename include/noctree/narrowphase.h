@@ -3,7 +3,7 @@
  * @file noctree/narrowphase.h
  * @brief The exhaustive pairwise collision test, at a chosen accuracy.
  *
- * @defgroup narrowphase Narrowphase
+ * @defgroup noctree_narrowphase Narrowphase
  * @brief Does a pair of placed meshes collide? The report's hierarchy of
  * partial decision mechanisms, from a bounding box test to the complete
  * edge-against-polygon test.
@@ -82,6 +82,10 @@ typedef struct noctNarrowStats {
                                    decide, computed with GMP. */
     uint64_t sat_rejects;     /**< Exact level: pairs of small meshes
                                    a separating axis proved apart. */
+    double seconds_convex;    /**< Time in the convex level (GJK), box
+                                   tests excluded. */
+    double seconds_exact;     /**< Time in the exact level, box tests
+                                   excluded. */
 } noctNarrowStats;
 
 /**
