@@ -6,11 +6,35 @@ noinst_PROGRAMS += docs/examples/octree-demo
 docs_examples_octree_demo_SOURCES = docs/examples/octree-demo.c
 docs_examples_octree_demo_LDADD = lib/libnoctree.la
 
-EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md
+EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md \
+	docs/doxygen-header.html $(docs_results)
+docs_results = \
+	docs/results/default.txt \
+	docs/results/fig9.svg docs/results/fig10.svg \
+	docs/results/accuracy.svg docs/results/octprint-t3.svg
+
+# The overview page; the section 1 and 5 pages are in tools/local.mk.
+dist_man_MANS += docs/man/noctree.7
 
 if HAVE_DOXYGEN
-doc: docs/Doxyfile $(noctreeinclude_HEADERS) $(include_HEADERS) docs/mainpage.md
+doc: docs/html/index.html
+docs/html/index.html: docs/Doxyfile $(noctreeinclude_HEADERS) $(include_HEADERS) \
+		docs/mainpage.md docs/results.md docs/doxygen-header.html $(docs_results)
 	$(AM_V_GEN)rm -rf docs/html docs/man/man3 && $(DOXYGEN) docs/Doxyfile
+
+# make install puts the section 3 pages of the public names (oct*, noct*,
+# OCT_*, NOCT_*: not the pages Doxygen makes for struct fields, whose
+# names would clash) in man3dir, and the HTML (no scripts) in htmldir.
+man3dir = $(mandir)/man3
+install-data-local: docs/html/index.html
+	$(MKDIR_P) '$(DESTDIR)$(man3dir)' '$(DESTDIR)$(htmldir)/html'
+	cd docs/man/man3 && for f in oct*.3 noct*.3 OCT_*.3 NOCT_*.3; do \
+	  $(INSTALL_DATA) "$$f" '$(DESTDIR)$(man3dir)' || exit 1; done
+	cd docs/html && for f in *.html *.css *.png *.svg; do \
+	  $(INSTALL_DATA) "$$f" '$(DESTDIR)$(htmldir)/html' || exit 1; done
+uninstall-local:
+	cd '$(DESTDIR)$(man3dir)' && rm -f oct*.3 noct*.3 OCT_*.3 NOCT_*.3
+	rm -rf '$(DESTDIR)$(htmldir)/html'
 else
 doc:
 	@echo "make doc needs Doxygen: apt-get install doxygen, then re-run configure" >&2

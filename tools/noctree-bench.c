@@ -529,6 +529,7 @@ static bool timing_section(const char *title, const char *csv, const char *const
             fprintf(f, "%s,%zu,%s,%d,%d,%.9g,%d,%d,%zu\n", specs[si], r.objects,
                     n_name(NS[ni], nb), rep + 1, steps, r.seconds, r.extrapolated,
                     r.steps_run, r.begins);
+            fflush(f); /* a long run's finished rows survive an interruption */
             ++done;
         }
     }

@@ -3,7 +3,7 @@
  * @file noctree/mesh.h
  * @brief Polyhedral solids given as closed polygon meshes.
  *
- * @defgroup mesh Meshes
+ * @defgroup noctree_mesh Meshes
  * @brief Closed polygon meshes: creation, validation, built-in boxes and
  * OFF and Wavefront OBJ readers.
  *

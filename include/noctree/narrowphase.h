@@ -115,7 +115,8 @@ NOCT_API noctStatus noctCollide(const noctMesh *a, const double ta[3],
 /**
  * @brief Return the name of an accuracy level.
  * @param[in] accuracy A level.
- * @return "box", "convex" or "exact"; "unknown" for another value.
+ * @return The level's name: "box", "convex" or "exact"; "unknown" for
+ *         another value.
  */
 NOCT_API const char *noctAccuracyName(noctAccuracy accuracy);
 

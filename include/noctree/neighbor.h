@@ -3,7 +3,7 @@
  * @file noctree/neighbor.h
  * @brief Neighbor finding in an octree, after Samet.
  *
- * @defgroup neighbor Neighbor finding
+ * @defgroup noctree_neighbor Neighbor finding
  * @brief Samet's table operations and the greater-or-equal face, edge and
  * vertex neighbors (the report's neighbor.h).
  *

@@ -3,7 +3,7 @@
  * @file noctree/octree.h
  * @brief The octree abstract data type: nodes, directions and their operations.
  *
- * @defgroup octree Octree ADT
+ * @defgroup noctree_octree Octree ADT
  * @brief The report's octree abstract data type (octree.h).
  *
  * An octree node (#octNode) is an opaque handle. A root is made with

@@ -4,7 +4,7 @@
  * @brief Scenes: a world's parameters, meshes and objects, from a text file
  * or a built-in family.
  *
- * @defgroup scene Scenes
+ * @defgroup noctree_scene Scenes
  * @brief Scene files (noctree-scene(5)) and the built-in families of
  * SCENES.md.
  *

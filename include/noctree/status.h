@@ -3,7 +3,7 @@
  * @file noctree/status.h
  * @brief Status codes and error details of the collision API.
  *
- * @defgroup status Status codes
+ * @defgroup noctree_status Status codes
  * @brief How the library reports bad input and failures.
  *
  * Functions that can fail for reasons other than a programming error (bad

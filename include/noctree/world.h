@@ -4,7 +4,7 @@
  * @brief The collision world: moving objects, the N-objects octree that cuts
  * the candidate pairs, simple dynamics and contact events.
  *
- * @defgroup world Collision world
+ * @defgroup noctree_world Collision world
  * @brief The report's collision detection system (sections 1.2, 2.2-2.4) as
  * an embeddable world.
  *
