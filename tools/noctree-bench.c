@@ -643,6 +643,11 @@ static void timing_report(const char *stats_csv, const char *medians_csv, timing
         double p = fmin(1, (NN - 1) * permutation_p(big, bt, (size_t)repeats));
         bool extrap = tm[i].extrapolated[NN - 1];
         bool sig = !extrap && p < 0.05 && ci[0] > 1;
+        /* The smallest p the exact test can give: (NN - 1) / C(2r, r). */
+        double pmin = NN - 1;
+        for (int k = 1; k <= repeats; ++k)
+            pmin *= (double)k / (double)(repeats + k);
+        bool testable = pmin < 0.05;
         bool agree = true;
         for (int ni = 0; ni < NN; ++ni)
             agree &= tm[i].extrapolated[ni] || tm[i].begins[ni] == tm[i].begins[best];
@@ -655,6 +660,7 @@ static void timing_report(const char *stats_csv, const char *medians_csv, timing
         printf("%-12s %9zu %7s %9.3g %19s %9.3g  %s%s\n", scene_label(tm[i].spec, lb),
                tm[i].objects, n_name(NS[best], nb), ratio, ivl, p,
                extrap ? "not tested (extrapolated)" : sig ? "yes, significantly"
+               : !testable ? "untestable: too few repeats (use 5)"
                : ratio > 1 ? "not significantly" : "no",
                agree ? "" : "  (EVENT COUNTS DIFFER ACROSS N)");
         if (f)
@@ -672,24 +678,29 @@ static void timing_report(const char *stats_csv, const char *medians_csv, timing
 }
 
 /* Plot the per-N medians CSV (columns scene, objects, then one per N):
- * y = median seconds times `scale` / (objects if per_object). */
+ * y = median seconds times `scale` / (objects if per_object); one line
+ * per N and scene family (planes solid, gas dashed). */
 static void timing_plot(const char *name, const char *medians, const char *title,
                         const char *ylabel, double scale, bool per_object, bool logscale,
-                        double xmin)
+                        double xmin, bool has_gas)
 {
-    char script[4096];
+    static const char *const family[2] = {"planes", "gas"};
+    char script[8192];
     int n = snprintf(script, sizeof script,
                      "set title '%s'\nset xlabel 'objects'\nset ylabel '%s'\n%s"
                      "set xrange [%g:*]\nplot ",
                      title, ylabel, logscale ? "set logscale xy\n" : "", xmin);
-    for (int ni = 0; ni < NN; ++ni) {
-        char nb[16];
-        n += snprintf(script + n, sizeof script - (size_t)n,
-                      "%s'%s/%s' skip 1 using 2:($%d*%.17g%s) with linespoints "
-                      "title 'N = %s'",
-                      ni ? ", " : "", opt.out, medians, ni + 3, scale,
-                      per_object ? "/$2" : "", n_name(NS[ni], nb));
-    }
+    for (int ni = 0; ni < NN; ++ni)
+        for (int fam = 0; fam < (has_gas ? 2 : 1); ++fam) {
+            char nb[16];
+            n += snprintf(script + n, sizeof script - (size_t)n,
+                          "%s'%s/%s' skip 1 using 2:(strstrt(strcol(1), '%s') == 1 ? "
+                          "$%d*%.17g%s : NaN) with linespoints lc %d dt %d "
+                          "title 'N = %s%s'",
+                          ni + fam ? ", " : "", opt.out, medians, family[fam], ni + 3, scale,
+                          per_object ? "/$2" : "", ni + 1, fam + 1, n_name(NS[ni], nb),
+                          has_gas ? (fam ? " gas" : " planes") : "");
+        }
     snprintf(script + n, sizeof script - (size_t)n, "\n");
     plot(name, script);
 }
@@ -928,10 +939,10 @@ int main(int argc, char **argv)
                            "table1.csv", full, n, repeats, steps, tm)) {
             timing_report("table1-stats.csv", "table1-medians.csv", tm, n, repeats, steps);
             timing_plot("fig9", "table1-medians.csv", "Figure 9: test set size against time",
-                        "seconds", 1, false, false, 0);
+                        "seconds", 1, false, false, 0, false);
             timing_plot("fig10", "table1-medians.csv",
                         "Figure 10: the right-hand side of Figure 9", "seconds", 1, false,
-                        false, opt.quick ? 0 : 338);
+                        false, opt.quick ? 0 : 338, false);
         } else {
             status = 1;
         }
@@ -949,7 +960,7 @@ int main(int argc, char **argv)
             timing_report("scale-stats.csv", "scale-medians.csv", tm, n, repeats, steps);
             timing_plot("scaling", "scale-medians.csv",
                         "Scaling: ns per object per step (planes and gas)",
-                        "ns per object per step", 1e9 / steps, true, true, 1);
+                        "ns per object per step", 1e9 / steps, true, true, 1000, true);
         } else {
             status = 1;
         }
