@@ -960,7 +960,8 @@ int main(int argc, char **argv)
             timing_report("scale-stats.csv", "scale-medians.csv", tm, n, repeats, steps);
             timing_plot("scaling", "scale-medians.csv",
                         "Scaling: ns per object per step (planes and gas)",
-                        "ns per object per step", 1e9 / steps, true, true, 1000, true);
+                        "ns per object per step", 1e9 / steps, true, true,
+                        opt.quick ? 1 : 1000, true);
         } else {
             status = 1;
         }
