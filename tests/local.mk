@@ -59,6 +59,7 @@ tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
+	tests/lib.sh \
 	tests/inline-client.c
 
 AM_TESTS_ENVIRONMENT = \

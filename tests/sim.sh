@@ -3,29 +3,11 @@
 # noctree-sim end to end: known event counts, the event log, a scene file,
 # and a precise message with exit status 2 for every kind of bad input.
 set -u
-: "${top_builddir:=..}"
+. "${srcdir:-.}/lib.sh"
 sim="$top_builddir/tools/noctree-sim"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0 passes=0
 
-ok() { passes=$((passes + 1)); }
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-
-# expect_run STATUS PATTERN ARGS...: exit status and a line of output.
-expect_run() {
-    want=$1 pattern=$2
-    shift 2
-    "$sim" "$@" > "$tmp/out" 2>&1
-    got=$?
-    if [ "$got" -ne "$want" ]; then
-        fail "noctree-sim $*: exit $got, want $want"; sed 's/^/  /' "$tmp/out"
-    elif ! grep -q -e "$pattern" "$tmp/out"; then
-        fail "noctree-sim $*: no '$pattern' in:"; sed 's/^/  /' "$tmp/out"
-    else
-        ok
-    fi
-}
+# expect_run STATUS PATTERN ARGS...: noctree-sim's exit status and output.
+expect_run() { expect_prog "$sim" "$@"; }
 
 expect_run 0 '^contact begins 49$' --scene planes:3 --quiet
 expect_run 0 '^contact begins 49$' --scene planes:3 --N big --maintenance rebuild --quiet
@@ -109,5 +91,4 @@ expect_run 2 '--steps must be' --scene planes:1 --steps abc
 expect_run 2 "unknown option" --scene planes:1 --frob
 expect_run 2 '--accuracy must be' --scene planes:1 --accuracy perfect
 
-echo "$passes passed, $fails failed"
-[ "$fails" -eq 0 ]
+finish sim

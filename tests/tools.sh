@@ -4,35 +4,9 @@
 # objects of the scene, its dot and SVG output, noctree-bench --quick's
 # tables and CSV files, and exit status 2 with a message for bad usage.
 set -u
-: "${top_builddir:=..}"
+. "${srcdir:-.}/lib.sh"
 octprint="$top_builddir/tools/octprint"
 bench="$top_builddir/tools/noctree-bench"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0 passes=0
-
-ok() { passes=$((passes + 1)); }
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-check() { # check DESCRIPTION COMMAND...: the command succeeds
-    desc=$1
-    shift
-    if "$@"; then ok; else fail "$desc"; fi
-}
-
-# expect_run PROGRAM STATUS PATTERN ARGS...: exit status and a line of output.
-expect_run() {
-    prog=$1 want=$2 pattern=$3
-    shift 3
-    "$prog" "$@" > "$tmp/out" 2>&1
-    got=$?
-    if [ "$got" -ne "$want" ]; then
-        fail "$prog $*: exit $got, want $want"; sed 's/^/  /' "$tmp/out"
-    elif ! grep -q -e "$pattern" "$tmp/out"; then
-        fail "$prog $*: no '$pattern' in:"; sed 's/^/  /' "$tmp/out"
-    else
-        ok
-    fi
-}
 
 # ---- octprint ------------------------------------------------------------
 
@@ -73,16 +47,16 @@ check "octprint: the slice draws 14 cubes" \
     [ "$(grep -c '<title>object ' "$tmp/t3.svg")" -eq 14 ]
 "$octprint" --scene planes:3 --step 60 --N big > "$tmp/big.txt"
 check "octprint --N big: the root is the only node" [ "$(wc -l < "$tmp/big.txt")" -eq 2 ]
-expect_run "$octprint" 0 '^usage' --help
-expect_run "$octprint" 0 '^octprint [0-9]' --version
-expect_run "$octprint" 2 'give one scene' --step 3
-expect_run "$octprint" 2 '^octprint: --step must be 0 to' --scene planes:1 --step -4
-expect_run "$octprint" 2 '^octprint: --slice must look like' --scene planes:1 --slice w=2
-expect_run "$octprint" 2 '^octprint: --N must be' --scene planes:1 --N 0
-expect_run "$octprint" 2 "unknown option" --scene planes:1 --frobnicate
+expect_prog "$octprint" 0 '^usage' --help
+expect_prog "$octprint" 0 '^octprint [0-9]' --version
+expect_prog "$octprint" 2 'give one scene' --step 3
+expect_prog "$octprint" 2 '^octprint: --step must be 0 to' --scene planes:1 --step -4
+expect_prog "$octprint" 2 '^octprint: --slice must look like' --scene planes:1 --slice w=2
+expect_prog "$octprint" 2 '^octprint: --N must be' --scene planes:1 --N 0
+expect_prog "$octprint" 2 "unknown option" --scene planes:1 --frobnicate
 printf 'steps 10\nobject cube 0 0 0\n' > "$tmp/bad.scene"
-expect_run "$octprint" 2 "^octprint: $tmp/bad.scene:2:" "$tmp/bad.scene"
-expect_run "$octprint" 1 '^octprint: /nonexistent/t.svg:' --scene planes:1 --svg /nonexistent/t.svg
+expect_prog "$octprint" 2 "^octprint: $tmp/bad.scene:2:" "$tmp/bad.scene"
+expect_prog "$octprint" 1 '^octprint: /nonexistent/t.svg:' --scene planes:1 --svg /nonexistent/t.svg
 
 # ---- noctree-bench --quick -------------------------------------------------
 
@@ -126,13 +100,12 @@ if command -v gnuplot > /dev/null 2>&1; then
 else
     check "bench: says plots were skipped" grep -q 'plots skipped' "$tmp/bench.txt"
 fi
-expect_run "$bench" 0 '^usage' --help
-expect_run "$bench" 2 '^noctree-bench: --repeats must be 2 to 64' --repeats 1
-expect_run "$bench" 2 '^noctree-bench: --sections takes' --sections table1,nope
-expect_run "$bench" 2 '^noctree-bench: --budget must be' --budget nan
-expect_run "$bench" 2 "unknown option" --frobnicate
+expect_prog "$bench" 0 '^usage' --help
+expect_prog "$bench" 2 '^noctree-bench: --repeats must be 2 to 64' --repeats 1
+expect_prog "$bench" 2 '^noctree-bench: --sections takes' --sections table1,nope
+expect_prog "$bench" 2 '^noctree-bench: --budget must be' --budget nan
+expect_prog "$bench" 2 "unknown option" --frobnicate
 : > "$tmp/file"
-expect_run "$bench" 2 "is not a folder" --quick --out "$tmp/file"
+expect_prog "$bench" 2 "is not a folder" --quick --out "$tmp/file"
 
-echo "tools: $passes passed, $fails failed"
-[ "$fails" -eq 0 ]
+finish tools

@@ -550,8 +550,8 @@ static bool timing_section(const char *title, const char *csv, const char *const
             run_result r;
             bool big = NS[ni] == NOCT_N_EXHAUSTIVE;
             double n = (double)scene_objects(specs[si]);
-            double predicted = exhaustive_pair_cost() * 0.5 * n * (n - 1) * steps;
-            if (big && predicted > opt.budget) {
+            double predicted = big ? exhaustive_pair_cost() * 0.5 * n * (n - 1) * steps : 0;
+            if (predicted > opt.budget) {
                 r = (run_result){.seconds = predicted, .extrapolated = true,
                                  .objects = (size_t)n};
             } else {

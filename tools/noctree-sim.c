@@ -35,9 +35,10 @@ static const char usage[] =
 
 int main(int argc, char **argv)
 {
-    const char *family = NULL, *file = NULL, *opt_N = NULL, *opt_acc = NULL,
+    tool_scene_args sa = {0};
+    const char *opt_acc = NULL,
                *opt_maint = NULL;
-    long depth = 0, steps = 0;
+    long steps = 0;
     bool events = false, quiet = false, substep = false;
     tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
@@ -55,42 +56,28 @@ int main(int argc, char **argv)
             quiet = true;
         } else if (strcmp(a, "--substep") == 0) {
             substep = true;
-        } else if (strcmp(a, "--scene") == 0 && has_value) {
-            family = argv[++i];
-        } else if (strcmp(a, "--N") == 0 && has_value) {
-            opt_N = argv[++i];
         } else if (strcmp(a, "--accuracy") == 0 && has_value) {
             opt_acc = argv[++i];
         } else if (strcmp(a, "--maintenance") == 0 && has_value) {
             opt_maint = argv[++i];
-        } else if (strcmp(a, "--max-depth") == 0 && has_value) {
-            if (!tool_parse_long(argv[++i], 1, 40, &depth))
-                return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[i]);
         } else if (strcmp(a, "--steps") == 0 && has_value) {
             if (!tool_parse_long(argv[++i], 1, 10000000, &steps))
                 return tool_usage_error("--steps must be 1 to 10000000, not '%s'", argv[i]);
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return tool_usage_error("unknown option or missing value: '%s'", a);
-        } else if (file == NULL) {
-            file = a;
         } else {
-            return tool_usage_error("more than one scene file: '%s'", a);
+            int took = tool_scene_arg(&sa, argc, argv, &i);
+            if (took < 0)
+                return 2;
+            if (took == 0)
+                return tool_usage_error("unknown option or missing value: '%s'", a);
         }
     }
-    if ((family == NULL) == (file == NULL))
-        return tool_usage_error("give one scene: a file or --scene FAMILY");
 
     noctScene *scene;
     noctError err;
-    noctStatus st = family ? noctSceneFamily(family, &scene, &err)
-                           : noctSceneRead(file, &scene, &err);
-    if (st != NOCT_OK) {
-        tool_error("%s", err.message);
-        return 2;
-    }
+    int bad = tool_scene_load(&sa, &scene);
+    if (bad)
+        return bad;
     noctWorldDef *def = noctSceneDef(scene);
-    if (opt_N != NULL && !tool_parse_N(opt_N, &def->N))
-        return noctSceneDestroy(scene), tool_usage_error("--N must be a positive integer or 'big', not '%s'", opt_N);
     if (opt_acc != NULL && !tool_parse_accuracy(opt_acc, &def->accuracy))
         return noctSceneDestroy(scene), tool_usage_error("--accuracy must be box, convex or exact, not '%s'", opt_acc);
     if (opt_maint != NULL) {
@@ -101,15 +88,12 @@ int main(int argc, char **argv)
         else
             return noctSceneDestroy(scene), tool_usage_error("--maintenance must be incremental or rebuild, not '%s'", opt_maint);
     }
-    if (depth > 0)
-        def->max_depth = (int)depth;
     if (substep)
         def->effects |= NOCT_EFFECT_SUBSTEP;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
 
     noctWorld *w;
-    st = noctSceneBuild(scene, &w, &err);
-    if (st != NOCT_OK) {
+    if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
         tool_error("%s", err.message);
         noctSceneDestroy(scene);
         return 2;

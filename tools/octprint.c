@@ -134,60 +134,69 @@ static void svg_cells(FILE *f, const noctWorld *w, octNode *n, const slice *s)
             count);
 }
 
-/* Object boxes cut by the plane. */
-static void svg_objects(FILE *f, const noctWorld *w, octNode *n, const slice *s,
-                        unsigned char *drawn, size_t ndrawn)
+/* An object of the tree with its box. */
+typedef struct obj_box {
+    noctObjectId id;
+    double lo[3], hi[3];
+} obj_box;
+
+typedef struct obj_list {
+    obj_box *v;
+    size_t n, cap;
+    bool failed;
+} obj_list;
+
+/* Append the objects of the leaves below n (with repeats). */
+static void gather_objects(const noctWorld *w, octNode *n, obj_list *l)
 {
     if (octIsSplit(n)) {
         for (int i = 0; i < 8; ++i)
-            svg_objects(f, w, octChild(n, (octDirection)(OCT_LDB + i)), s, drawn, ndrawn);
+            gather_objects(w, octChild(n, (octDirection)(OCT_LDB + i)), l);
         return;
     }
     size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
     noctObjectId *ids = malloc((count + 1) * sizeof *ids);
-    if (ids == NULL)
-        return;
-    noctWorldCell(w, n, NULL, NULL, ids, count);
-    for (size_t i = 0; i < count; ++i) {
-        double lo[3], hi[3];
-        if (ids[i].index < ndrawn && drawn[ids[i].index])
-            continue;
-        if (noctWorldObjectBox(w, ids[i], lo, hi) != NOCT_OK ||
-            s->at < lo[s->axis] || s->at > hi[s->axis])
-            continue;
-        if (ids[i].index < ndrawn)
-            drawn[ids[i].index] = 1;
-        fprintf(f, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.3f\" height=\"%.3f\" "
-                   "fill=\"%s\" fill-opacity=\"0.55\" stroke=\"#222\" stroke-width=\"0.8\">"
-                   "<title>object %u</title></rect>\n",
-                sx(s, lo[s->u]), sy(s, hi[s->v]), (hi[s->u] - lo[s->u]) * s->scale,
-                (hi[s->v] - lo[s->v]) * s->scale, PALETTE[ids[i].index % 8], ids[i].index);
+    if (l->n + count > l->cap) {
+        size_t cap = 2 * (l->n + count) + 16;
+        obj_box *v = realloc(l->v, cap * sizeof *v);
+        if (v != NULL) {
+            l->v = v;
+            l->cap = cap;
+        }
     }
+    if (ids == NULL || l->n + count > l->cap) {
+        l->failed = true;
+        free(ids);
+        return;
+    }
+    noctWorldCell(w, n, NULL, NULL, ids, count);
+    for (size_t i = 0; i < count; ++i)
+        l->v[l->n++].id = ids[i];
     free(ids);
 }
 
-/* The union of the objects' boxes. */
-static void objects_extent(const noctWorld *w, octNode *n, double lo[3], double hi[3])
+static int cmp_obj(const void *x, const void *y)
 {
-    if (octIsSplit(n)) {
-        for (int i = 0; i < 8; ++i)
-            objects_extent(w, octChild(n, (octDirection)(OCT_LDB + i)), lo, hi);
-        return;
-    }
-    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
-    noctObjectId *ids = malloc((count + 1) * sizeof *ids);
-    if (ids == NULL)
-        return;
-    noctWorldCell(w, n, NULL, NULL, ids, count);
-    for (size_t i = 0; i < count; ++i) {
-        double a[3], b[3];
-        if (noctWorldObjectBox(w, ids[i], a, b) == NOCT_OK)
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = a[k] < lo[k] ? a[k] : lo[k];
-                hi[k] = b[k] > hi[k] ? b[k] : hi[k];
-            }
-    }
-    free(ids);
+    const obj_box *a = x, *b = y;
+    return (a->id.index > b->id.index) - (a->id.index < b->id.index);
+}
+
+/* Every object of the tree once, with its box; false if out of memory. */
+static bool tree_objects(const noctWorld *w, obj_list *l)
+{
+    *l = (obj_list){0};
+    gather_objects(w, noctWorldRoot(w), l);
+    if (l->failed)
+        return false;
+    if (l->n > 0)
+        qsort(l->v, l->n, sizeof *l->v, cmp_obj);
+    size_t m = 0;
+    for (size_t i = 0; i < l->n; ++i)
+        if ((m == 0 || l->v[m - 1].id.index != l->v[i].id.index) &&
+            noctWorldObjectBox(w, l->v[i].id, l->v[i].lo, l->v[i].hi) == NOCT_OK)
+            l->v[m++] = l->v[i];
+    l->n = m;
+    return true;
 }
 
 static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
@@ -196,7 +205,17 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
     static const char *names = "xyz";
     double lo[3], size, olo[3] = {1e308, 1e308, 1e308}, ohi[3] = {-1e308, -1e308, -1e308};
     noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
-    objects_extent(w, noctWorldRoot(w), olo, ohi);
+    obj_list objs;
+    if (!tree_objects(w, &objs)) {
+        free(objs.v);
+        tool_error("out of memory");
+        return false;
+    }
+    for (size_t i = 0; i < objs.n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            olo[k] = objs.v[i].lo[k] < olo[k] ? objs.v[i].lo[k] : olo[k];
+            ohi[k] = objs.v[i].hi[k] > ohi[k] ? objs.v[i].hi[k] : ohi[k];
+        }
     slice s = {axis, axis == 0 ? 1 : 0, axis == 2 ? 1 : 2, 0, {0, 0}, 0, 760};
     /* The view: the objects' extent in the drawn axes with a margin, or the
      * root when there are no objects; by default the cut goes through the
@@ -215,8 +234,10 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
     }
     s.scale = 760 / view;
     FILE *f = open_or_stdout(path);
-    if (f == NULL)
+    if (f == NULL) {
+        free(objs.v);
         return false;
+    }
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"860\" "
                "viewBox=\"0 0 800 860\" font-family=\"sans-serif\" font-size=\"14\">\n"
@@ -224,10 +245,18 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
                "<clipPath id=\"view\"><rect x=\"20\" y=\"20\" width=\"760\" "
                "height=\"760\"/></clipPath>\n<g clip-path=\"url(#view)\">\n");
     svg_cells(f, w, noctWorldRoot(w), &s);
-    size_t n = noctWorldObjectCount(w) * 4 + 1024;
-    unsigned char *drawn = calloc(n, 1);
-    svg_objects(f, w, noctWorldRoot(w), &s, drawn, drawn ? n : 0);
-    free(drawn);
+    /* The object boxes the plane cuts. */
+    for (size_t i = 0; i < objs.n; ++i) {
+        const obj_box *o = &objs.v[i];
+        if (s.at < o->lo[axis] || s.at > o->hi[axis])
+            continue;
+        fprintf(f, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.3f\" height=\"%.3f\" "
+                   "fill=\"%s\" fill-opacity=\"0.55\" stroke=\"#222\" stroke-width=\"0.8\">"
+                   "<title>object %u</title></rect>\n",
+                sx(&s, o->lo[s.u]), sy(&s, o->hi[s.v]), (o->hi[s.u] - o->lo[s.u]) * s.scale,
+                (o->hi[s.v] - o->lo[s.v]) * s.scale, PALETTE[o->id.index % 8], o->id.index);
+    }
+    free(objs.v);
     fprintf(f, "</g>\n<text x=\"20\" y=\"808\">%s</text>\n"
                "<text x=\"20\" y=\"830\">leaves and object boxes cut by %c = %.6g (%c to "
                "the right, %c up); shaded: leaves with 2+ objects</text>\n</svg>\n",
@@ -240,9 +269,9 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
 int main(int argc, char **argv)
 {
     tool_name = "octprint";
-    const char *family = NULL, *file = NULL, *opt_N = NULL, *dot = NULL, *svg = NULL,
-               *opt_slice = NULL;
-    long steps = 0, depth = 0;
+    tool_scene_args sa = {0};
+    const char *dot = NULL, *svg = NULL, *opt_slice = NULL;
+    long steps = 0;
     bool text = true;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -255,10 +284,6 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(a, "--no-text") == 0) {
             text = false;
-        } else if (strcmp(a, "--scene") == 0 && has) {
-            family = argv[++i];
-        } else if (strcmp(a, "--N") == 0 && has) {
-            opt_N = argv[++i];
         } else if (strcmp(a, "--dot") == 0 && has) {
             dot = argv[++i];
         } else if (strcmp(a, "--svg") == 0 && has) {
@@ -268,19 +293,14 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--step") == 0 && has) {
             if (!tool_parse_long(argv[++i], 0, 10000000, &steps))
                 return tool_usage_error("--step must be 0 to 10000000, not '%s'", argv[i]);
-        } else if (strcmp(a, "--max-depth") == 0 && has) {
-            if (!tool_parse_long(argv[++i], 1, 40, &depth))
-                return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[i]);
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return tool_usage_error("unknown option or missing value: '%s'", a);
-        } else if (file == NULL) {
-            file = a;
         } else {
-            return tool_usage_error("more than one scene file: '%s'", a);
+            int took = tool_scene_arg(&sa, argc, argv, &i);
+            if (took < 0)
+                return 2;
+            if (took == 0)
+                return tool_usage_error("unknown option or missing value: '%s'", a);
         }
     }
-    if ((family == NULL) == (file == NULL))
-        return tool_usage_error("give one scene: a file or --scene FAMILY");
     int axis = 2;
     double at = 0;
     if (opt_slice != NULL) {
@@ -295,20 +315,12 @@ int main(int argc, char **argv)
 
     noctScene *scene;
     noctError err;
-    noctStatus st = family ? noctSceneFamily(family, &scene, &err)
-                           : noctSceneRead(file, &scene, &err);
-    if (st != NOCT_OK) {
-        tool_error("%s", err.message);
-        return 2;
-    }
+    int bad = tool_scene_load(&sa, &scene);
+    if (bad)
+        return bad;
     noctWorldDef *def = noctSceneDef(scene);
-    if (opt_N != NULL && !tool_parse_N(opt_N, &def->N))
-        return noctSceneDestroy(scene),
-               tool_usage_error("--N must be a positive integer or 'big', not '%s'", opt_N);
-    if (depth > 0)
-        def->max_depth = (int)depth;
     noctWorld *w;
-    if ((st = noctSceneBuild(scene, &w, &err)) != NOCT_OK) {
+    if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
         tool_error("%s", err.message);
         noctSceneDestroy(scene);
         return 2;
@@ -321,7 +333,7 @@ int main(int argc, char **argv)
         }
     char title[256], nb[16];
     snprintf(nb, sizeof nb, "%d", def->N);
-    snprintf(title, sizeof title, "%s, N = %s, step %ld", family ? family : file,
+    snprintf(title, sizeof title, "%s, N = %s, step %ld", sa.family ? sa.family : sa.file,
              def->N == NOCT_N_EXHAUSTIVE ? "big" : nb, steps);
     if (status == 0 && text) {
         printf("# %s: %zu objects; each line: child type, generation: cube (low corner, "

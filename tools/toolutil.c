@@ -77,6 +77,50 @@ bool tool_parse_accuracy(const char *s, noctAccuracy *accuracy)
     return false;
 }
 
+int tool_scene_arg(tool_scene_args *a, int argc, char **argv, int *i)
+{
+    const char *arg = argv[*i];
+    bool has = *i + 1 < argc;
+    long v;
+    if (strcmp(arg, "--scene") == 0 && has) {
+        a->family = argv[++*i];
+    } else if (strcmp(arg, "--N") == 0 && has) {
+        if (!tool_parse_N(argv[++*i], &a->N))
+            return tool_usage_error("--N must be a positive integer or 'big', not '%s'",
+                                    argv[*i]), -1;
+    } else if (strcmp(arg, "--max-depth") == 0 && has) {
+        if (!tool_parse_long(argv[++*i], 1, 40, &v))
+            return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[*i]), -1;
+        a->depth = (int)v;
+    } else if (arg[0] == '-' && arg[1] != '\0') {
+        return 0;
+    } else if (a->file == NULL) {
+        a->file = arg;
+    } else {
+        return tool_usage_error("more than one scene file: '%s'", arg), -1;
+    }
+    return 1;
+}
+
+int tool_scene_load(const tool_scene_args *a, noctScene **scene)
+{
+    if ((a->family == NULL) == (a->file == NULL))
+        return tool_usage_error("give one scene: a file or --scene FAMILY");
+    noctError err;
+    noctStatus st = a->family ? noctSceneFamily(a->family, scene, &err)
+                              : noctSceneRead(a->file, scene, &err);
+    if (st != NOCT_OK) {
+        tool_error("%s", err.message);
+        return 2;
+    }
+    noctWorldDef *def = noctSceneDef(*scene);
+    if (a->N > 0)
+        def->N = a->N;
+    if (a->depth > 0)
+        def->max_depth = a->depth;
+    return 0;
+}
+
 double tool_now(void)
 {
     struct timespec ts;

@@ -9,6 +9,7 @@
 #include <stdbool.h>
 
 #include <noctree/narrowphase.h>
+#include <noctree/scene.h>
 
 /* The tool's name, for messages; set once by main. */
 extern const char *tool_name;
@@ -31,6 +32,23 @@ bool tool_parse_N(const char *s, int *N);
 
 /* s is "box", "convex" or "exact". */
 bool tool_parse_accuracy(const char *s, noctAccuracy *accuracy);
+
+/* The scene a tool runs: a file or --scene FAMILY, with --N and
+ * --max-depth (0: the scene's own values). */
+typedef struct tool_scene_args {
+    const char *family, *file;
+    int N, depth;
+} tool_scene_args;
+
+/* If argv[*i] is --scene, --N or --max-depth with a value, or a scene
+ * file, take it (moving *i past the value) and return 1; return 0 for any
+ * other argument; print a usage error and return -1 for a bad value or a
+ * second scene file. */
+int tool_scene_arg(tool_scene_args *a, int argc, char **argv, int *i);
+
+/* Read the scene (exactly one must have been given) and apply --N and
+ * --max-depth. Returns 0, or the exit status 2 after printing the error. */
+int tool_scene_load(const tool_scene_args *a, noctScene **scene);
 
 /* Seconds on a monotonic clock. */
 double tool_now(void);
