@@ -67,6 +67,7 @@ void noctMeshDestroy(noctMesh *mesh)
     free(mesh->tri);
     free(mesh->hull);
     free(mesh->nodes);
+    free(mesh->plane);
     free(mesh);
 }
 
@@ -427,6 +428,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
                                       m->tri[3 * t + (c + 2) % 3], (uint32_t)t};
     qsort(e, ne, sizeof *e, cmp_dir_edge);
     bool convex = true, sat = true;
+    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
     m->nsat_faces = m->nsat_edges = 0;
     /* Triangles from one polygon share interior edges: still checked, and
      * coplanar (sign 0), which is allowed. A real (non-coplanar) edge is an
@@ -453,7 +455,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         if (sat && c < 1 - 1e-9) {
             double d[3];
             sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
-            sat = add_direction(m->sat_edge, &m->nsat_edges, d);
+            sat = add_direction(sat_edge, &m->nsat_edges, d);
         }
     }
     for (size_t t = 0; t < m->nt && sat; ++t) {
@@ -461,14 +463,33 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         sub3(&m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t]], a);
         sub3(&m->v[3 * m->tri[3 * t + 2]], &m->v[3 * m->tri[3 * t]], b);
         cross3(a, b, n);
-        sat = add_direction(m->sat_face, &m->nsat_faces, n);
+        sat = add_direction(sat_face, &m->nsat_faces, n);
     }
     /* The filter needs no convexity to be sound (a solid lies inside the
      * hull of its vertices), only to be useful: small meshes with few
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
+    memcpy(m->sat_axis, sat_face, m->nsat_faces * sizeof *sat_face);
+    memcpy(m->sat_axis + m->nsat_faces, sat_edge, m->nsat_edges * sizeof *sat_edge);
     free(e);
+    m->plane = NULL;
+    if (m->nsat_faces > 0) {
+        m->plane = malloc(m->nt * sizeof *m->plane);
+        if (m->plane == NULL)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        for (size_t t = 0; t < m->nt; ++t) {
+            const double *p0 = &m->v[3 * m->tri[3 * t]];
+            double a[3], b[3], n[3];
+            sub3(&m->v[3 * m->tri[3 * t + 1]], p0, a);
+            sub3(&m->v[3 * m->tri[3 * t + 2]], p0, b);
+            cross3(a, b, n);
+            double len = norm3(n);
+            for (int k = 0; k < 3; ++k)
+                m->plane[t][k] = len > 0 ? n[k] / len : 0;
+            m->plane[t][3] = dot3(m->plane[t], p0);
+        }
+    }
     m->convex = convex;
     return NOCT_OK;
 }

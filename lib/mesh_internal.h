@@ -26,22 +26,30 @@ typedef struct bvh_node {
     uint32_t count;
 } bvh_node;
 
+/* The fields the exact level's filter reads for every pair come first,
+ * so that they share the first cache lines. */
 struct noctMesh {
     size_t nv;
     double *v;          /* 3 * nv coordinates */
     size_t nt;
     uint32_t *tri;      /* 3 * nt vertex indices, outward, BVH order */
     double lo[3], hi[3];
+    /* Separating-axis filter (small meshes with few directions, else
+     * nsat_* = 0): unique face normal and edge directions, up to sign,
+     * the faces' at sat_axis[0, nsat_faces), the edges' after them. */
+    size_t nsat_faces, nsat_edges;
+    /* With the filter: each triangle's plane (unit outward normal n, offset
+     * d, n.x = d on the plane), in floating point. The exact level's
+     * witness search ranks candidate points by them; the decision itself
+     * is made by exact predicates. NULL without the filter. */
+    double (*plane)[4];
+    double sat_axis[2 * NOCT_SAT_MAX][3];
     bool convex;
     size_t nhull;
     uint32_t *hull;     /* vertices of the convex hull */
     double centre[3];   /* mean of the hull vertices */
     size_t nnodes;
     bvh_node *nodes;    /* nodes[0] is the root */
-    /* Separating-axis filter (small meshes with few directions, else
-     * nsat_* = 0): unique face normal and edge directions, up to sign. */
-    size_t nsat_faces, nsat_edges;
-    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
 };
 
 /* Fill err (if not NULL) and return status. */

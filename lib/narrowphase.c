@@ -334,6 +334,17 @@ static void project(double (*v)[3], size_t n, const double u[3], double *lo,
     }
 }
 
+/* The placed vertices of a mesh with the separating-axis filter. */
+typedef struct placed_vertices {
+    double v[SAT_MAX_VERTICES][3];
+} placed_vertices;
+
+static void place_all(const placed *P, placed_vertices *pv)
+{
+    for (size_t i = 0; i < P->m->nv; ++i)
+        place(P, (uint32_t)i, pv->v[i]);
+}
+
 /*
  * Does some axis separate the placed vertex sets of A and B by more than
  * the rounding error of the projections? Each computed projection is
@@ -342,17 +353,10 @@ static void project(double (*v)[3], size_t n, const double u[3], double *lo,
  * the subtraction) proves the hulls, and so the solids, disjoint. The axes
  * need not be exact: any axis that separates is a proof.
  */
-static bool sat_separated(const placed *A, const placed *B)
+static bool sat_separated(const placed *A, const placed *B, placed_vertices *va,
+                          placed_vertices *vb)
 {
     const noctMesh *a = A->m, *b = B->m;
-    if (a->nsat_faces == 0 || b->nsat_faces == 0)
-        return false;
-    /* Place the vertices once; every axis projects the same points. */
-    double va[SAT_MAX_VERTICES][3], vb[SAT_MAX_VERTICES][3];
-    for (size_t i = 0; i < a->nv; ++i)
-        place(A, (uint32_t)i, va[i]);
-    for (size_t i = 0; i < b->nv; ++i)
-        place(B, (uint32_t)i, vb[i]);
     double M = 0;
     for (int k = 0; k < 3; ++k)
         M = noct_max(M, noct_max(noct_max(fabs(a->lo[k] + A->t[k]), fabs(a->hi[k] + A->t[k])),
@@ -361,13 +365,13 @@ static bool sat_separated(const placed *A, const placed *B)
     for (size_t i = 0; i < naxes; ++i) {
         double u[3];
         if (i < a->nsat_faces) {
-            memcpy(u, a->sat_face[i], sizeof u);
+            memcpy(u, a->sat_axis[i], sizeof u);
         } else if (i < a->nsat_faces + b->nsat_faces) {
-            memcpy(u, b->sat_face[i - a->nsat_faces], sizeof u);
+            memcpy(u, b->sat_axis[i - a->nsat_faces], sizeof u);
         } else {
             size_t j = i - a->nsat_faces - b->nsat_faces;
-            const double *p = a->sat_edge[j / b->nsat_edges];
-            const double *q = b->sat_edge[j % b->nsat_edges];
+            const double *p = a->sat_axis[a->nsat_faces + j / b->nsat_edges];
+            const double *q = b->sat_axis[b->nsat_faces + j % b->nsat_edges];
             u[0] = p[1] * q[2] - p[2] * q[1];
             u[1] = p[2] * q[0] - p[0] * q[2];
             u[2] = p[0] * q[1] - p[1] * q[0];
@@ -377,9 +381,81 @@ static bool sat_separated(const placed *A, const placed *B)
             continue; /* (nearly) parallel edges: no useful axis */
         double margin = 4 * 3 * 0x1p-53 * l1 * M + 1e-300;
         double alo, ahi, blo, bhi;
-        project(va, a->nv, u, &alo, &ahi);
-        project(vb, b->nv, u, &blo, &bhi);
+        project(va->v, a->nv, u, &alo, &ahi);
+        project(vb->v, b->nv, u, &blo, &bhi);
         if (blo - ahi > margin || alo - bhi > margin)
+            return true;
+    }
+    return false;
+}
+
+/* How far point x is outside the placed mesh P by its floating-point
+ * triangle planes: the largest signed distance, negative when x is
+ * (about) inside every plane. Only a ranking; exact_inside decides. */
+static double plane_depth(const placed *P, const double x[3])
+{
+    const noctMesh *m = P->m;
+    const double r[3] = {x[0] - P->t[0], x[1] - P->t[1], x[2] - P->t[2]};
+    double worst = -INFINITY;
+    for (size_t t = 0; t < m->nt; ++t) {
+        const double *pl = m->plane[t];
+        worst = noct_max(worst, pl[0] * r[0] + pl[1] * r[1] + pl[2] * r[2] - pl[3]);
+    }
+    return worst;
+}
+
+/*
+ * Is x strictly on the inner side of every placed triangle's plane of P,
+ * by exact signs? Then every triangle of P's closed surface is seen from
+ * x with a positive signed solid angle, so the surface winds around x a
+ * positive number of times, and x is inside the solid.
+ */
+static bool exact_inside(const placed *P, const placed_vertices *pv, const double x[3],
+                         const exact_ctx *ctx)
+{
+    const noctMesh *m = P->m;
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t *tri = &m->tri[3 * t];
+        if (o3(ctx, pv->v[tri[0]], pv->v[tri[1]], pv->v[tri[2]], x) <= 0)
+            return false;
+    }
+    return true;
+}
+
+/*
+ * A positive early-out for pairs the filter did not separate: look for a
+ * point of both solids. Candidates are the centre of the two placed boxes'
+ * overlap (a point inside both solids, if any is) and the vertex of each
+ * mesh deepest inside the other (a vertex is a point of its own solid).
+ * Floating point ranks them; only a candidate proven inside by exact
+ * signs is a witness, so the answer is the exact level's own. Failing to
+ * find one proves nothing: the triangle tests decide.
+ */
+static bool witness(const placed *A, const placed *B, const placed_vertices *va,
+                    const placed_vertices *vb, const exact_ctx *ctx)
+{
+    double c[3];
+    for (int k = 0; k < 3; ++k)
+        c[k] = 0.5 * (noct_max(A->m->lo[k] + A->t[k], B->m->lo[k] + B->t[k]) +
+                      noct_min(A->m->hi[k] + A->t[k], B->m->hi[k] + B->t[k]));
+    if (plane_depth(A, c) < 0 && plane_depth(B, c) < 0 && exact_inside(A, va, c, ctx) &&
+        exact_inside(B, vb, c, ctx))
+        return true;
+    const struct {
+        const placed *from, *into;
+        const placed_vertices *vf, *vi;
+    } side[2] = {{A, B, va, vb}, {B, A, vb, va}};
+    for (int s = 0; s < 2; ++s) {
+        size_t best = 0;
+        double best_depth = INFINITY;
+        for (size_t i = 0; i < side[s].from->m->nv; ++i) {
+            double d = plane_depth(side[s].into, side[s].vf->v[i]);
+            if (d < best_depth) {
+                best_depth = d;
+                best = i;
+            }
+        }
+        if (best_depth < 0 && exact_inside(side[s].into, side[s].vi, side[s].vf->v[best], ctx))
             return true;
     }
     return false;
@@ -391,11 +467,22 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
     exact_ctx x = {st ? &st->exact_fallbacks : NULL};
     if (st)
         ++st->exact_tests;
-    if (sat_separated(A, B)) {
-        if (st)
-            ++st->sat_rejects;
-        *hit = false;
-        return NOCT_OK;
+    if (A->m->nsat_faces > 0 && B->m->nsat_faces > 0) {
+        placed_vertices va, vb;
+        place_all(A, &va);
+        place_all(B, &vb);
+        if (sat_separated(A, B, &va, &vb)) {
+            if (st)
+                ++st->sat_rejects;
+            *hit = false;
+            return NOCT_OK;
+        }
+        if (witness(A, B, &va, &vb, &x)) {
+            if (st)
+                ++st->witnesses;
+            *hit = true;
+            return NOCT_OK;
+        }
     }
     if (boundaries_meet(A, B, &x, st)) {
         *hit = true;

@@ -520,6 +520,7 @@ START_TEST(random_tetrahedra_against_sat)
 {
     uint64_t rng = 31337 + (uint64_t)_i;
     int hits = 0, misses = 0;
+    noctNarrowStats stats = {0};
     for (int trial = 0; trial < 400; ++trial) {
         ipoly a, b;
         ipoly_tetra(&a, &rng, 3);
@@ -530,7 +531,9 @@ START_TEST(random_tetrahedra_against_sat)
         bool want = sat_intersect(&a, ta, &b, tb);
         noctMesh *ma = ipoly_mesh(&a), *mb = ipoly_mesh(&b);
         double da[3] = {0, 0, 0}, db[3] = {(double)tb[0], (double)tb[1], (double)tb[2]};
-        bool got = collide(ma, da, mb, db, NOCT_ACCURACY_EXACT);
+        bool got = false;
+        ck_assert_int_eq(noctCollide(ma, da, mb, db, NOCT_ACCURACY_EXACT, &got, &stats),
+                         NOCT_OK);
         if (got != want)
             ck_abort_msg("trial %d: exact %d, SAT %d", trial, got, want);
         EXPECT(collide(mb, db, ma, da, NOCT_ACCURACY_EXACT) == want);
@@ -543,6 +546,12 @@ START_TEST(random_tetrahedra_against_sat)
     }
     ck_assert_int_gt(hits, 40); /* both outcomes well represented */
     ck_assert_int_gt(misses, 40);
+    /* Both ways to a hit were taken: a point proved inside both, and
+     * (for touching integer tetrahedra, which share no inner point) the
+     * triangle tests. */
+    ck_assert_uint_gt(stats.witnesses, 0);
+    ck_assert_uint_lt(stats.witnesses, (uint64_t)hits);
+    ck_assert_uint_gt(stats.triangle_pairs, 0);
 }
 END_TEST
 
@@ -1076,6 +1085,9 @@ START_TEST(sat_filter_rejects_soundly)
                      NOCT_OK);
     ck_assert(hit);
     ck_assert_uint_eq(st.sat_rejects, 1);
+    /* deep: the centre of the boxes' overlap is inside both diamonds */
+    ck_assert_uint_eq(st.witnesses, 1);
+    ck_assert_uint_eq(st.triangle_pairs, 0);
     noctMeshDestroy(d);
     /* Touching axis-aligned boxes: the filter must let them through. */
     noctMesh *b;
@@ -1086,6 +1098,10 @@ START_TEST(sat_filter_rejects_soundly)
                      NOCT_OK);
     ck_assert(hit);
     ck_assert_uint_eq(s2.sat_rejects, 0);
+    /* Touching solids share no inner point: no witness, the triangles
+     * decide. */
+    ck_assert_uint_eq(s2.witnesses, 0);
+    ck_assert_uint_gt(s2.triangle_pairs, 0);
     noctMeshDestroy(b);
 }
 END_TEST

@@ -82,6 +82,10 @@ typedef struct noctNarrowStats {
                                    decide, computed with GMP. */
     uint64_t sat_rejects;     /**< Exact level: pairs of small meshes
                                    a separating axis proved apart. */
+    uint64_t witnesses;       /**< Exact level: pairs of small meshes
+                                   proved colliding by a point shown
+                                   inside both, before any triangle
+                                   test. */
     double seconds_convex;    /**< Time in the convex level (GJK), box
                                    tests excluded. */
     double seconds_exact;     /**< Time in the exact level, box tests
