@@ -50,4 +50,11 @@ octDirection noct_direction_of(int x, int y, int z);
 static inline double noct_min(double a, double b) { return b < a ? b : a; }
 static inline double noct_max(double a, double b) { return b > a ? b : a; }
 
+/* Ask the cache for the line at p ahead of its use; nothing elsewhere. */
+#if defined(__GNUC__)
+#  define NOCT_PREFETCH(p) __builtin_prefetch(p)
+#else
+#  define NOCT_PREFETCH(p) ((void)(p))
+#endif
+
 #endif /* NOCT_LIB_INTERNAL_H */

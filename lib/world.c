@@ -38,11 +38,31 @@ typedef struct cell {
     uint64_t stamp_step; /* this node as a neighbor */
 } cell;
 
+/* An axis-aligned box, closed. */
+typedef struct aabb {
+    double lo[3], hi[3];
+} aabb;
+
+/*
+ * An object's home block: the box its leaves tile when they are equal
+ * cubes in a grid (one leaf is a grid of one), with the high side of the
+ * first column and the low side of the last on each axis. A box strictly
+ * inside the block overlaps no other leaf, and a box that also reaches
+ * the first and last columns on every axis overlaps every leaf of the
+ * block: its leaves are unchanged, and maintenance has nothing to do.
+ * lo[0] = +inf when there is no block (the leaves changed since it was
+ * taken, or they do not tile a box).
+ */
+typedef struct home_block {
+    double lo[3], hi[3];
+    double first_hi[3], last_lo[3];
+} home_block;
+
 typedef struct object {
     const noctMesh *mesh;
     double pos[3], vel[3], speed; /* vel = speed * unit direction */
-    double lo[3], hi[3];   /* placed bounding box */
-    double olo[3], ohi[3]; /* the box before the last move */
+    double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
+    aabb old;              /* the placed box before the last move */
     octNode **spans;       /* leaves it is in */
     uint32_t nspans, capspans;
     uint32_t generation;
@@ -67,6 +87,15 @@ struct noctWorld {
     leaf_box *gather;      /* pair search scratch */
     uint32_t capgather;
     object *obj;
+    /* Per slot, beside obj, so that the per-step loops read small
+     * contiguous records: the placed bounding box and the home block. */
+    aabb *box;
+    home_block *home;
+    uint32_t *movers;      /* live moving objects, by slot */
+    uint32_t nmovers, capmovers;
+    bool movers_stale;
+    uint32_t *slow;        /* maintenance: movers that left their home cube */
+    uint32_t nslow, capslow;
     uint32_t nslots, capslots;
     uint32_t *free_slots;
     uint32_t nfree;
@@ -78,6 +107,7 @@ struct noctWorld {
     uint64_t epoch;
     octNode **work;        /* enter check's worklist */
     size_t nwork, capwork;
+    pair_list tested;      /* the pair search's pairs for the narrowphase */
     pair_list colliding, previous, began, ended;
     noctMesh **owned;      /* meshes the scene builders made */
     size_t nowned, capowned;
@@ -113,27 +143,36 @@ static bool grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem)
     return true;
 }
 
-static bool overlaps(const object *o, const cell *c)
+static bool overlaps(const aabb *b, const cell *c)
 {
     for (int k = 0; k < 3; ++k)
-        if (o->hi[k] < c->lo[k] || o->lo[k] > c->lo[k] + c->size)
+        if (b->hi[k] < c->lo[k] || b->lo[k] > c->lo[k] + c->size)
             return false;
     return true;
 }
 
-static bool strictly_inside(const object *o, const cell *c)
+/* Are b's leaves still those of the home block h (the report's fast
+ * test, for a box in one leaf or several)? */
+static bool inside_home(const aabb *b, const home_block *h)
 {
     for (int k = 0; k < 3; ++k)
-        if (o->lo[k] <= c->lo[k] || o->hi[k] >= c->lo[k] + c->size)
+        if (!(b->lo[k] > h->lo[k] && b->hi[k] < h->hi[k] && b->lo[k] <= h->first_hi[k] &&
+              b->hi[k] >= h->last_lo[k]))
             return false;
     return true;
 }
 
-static void place_box(object *o)
+static void forget_home(noctWorld *w, uint32_t id)
+{
+    w->home[id].lo[0] = INFINITY;
+}
+
+/* The placed box: exactly the narrowphase's [fl(lo + t), fl(hi + t)]. */
+static void place_box(const object *o, aabb *b)
 {
     for (int k = 0; k < 3; ++k) {
-        o->lo[k] = o->mesh->lo[k] + o->pos[k];
-        o->hi[k] = o->mesh->hi[k] + o->pos[k];
+        b->lo[k] = o->mlo[k] + o->pos[k];
+        b->hi[k] = o->mhi[k] + o->pos[k];
     }
 }
 
@@ -145,8 +184,10 @@ static bool leaf_has(const cell *c, uint32_t id)
     return false;
 }
 
-static void span_remove(object *o, const octNode *leaf)
+static void span_remove(noctWorld *w, uint32_t id, const octNode *leaf)
 {
+    object *o = &w->obj[id];
+    forget_home(w, id);
     for (uint32_t i = 0; i < o->nspans; ++i)
         if (o->spans[i] == leaf) {
             o->spans[i] = o->spans[--o->nspans];
@@ -163,6 +204,7 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
         return false;
     c->objs[c->count++] = id;
     o->spans[o->nspans++] = leaf;
+    forget_home(w, id);
     return true;
 }
 
@@ -205,10 +247,10 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
     ++w->c.splits;
     bool ok = true;
     for (uint32_t j = 0; j < count; ++j)
-        span_remove(&w->obj[objs[j]], leaf);
+        span_remove(w, objs[j], leaf);
     for (uint32_t j = 0; j < count && ok; ++j)
         for (int i = 0; i < 8 && ok; ++i)
-            if (overlaps(&w->obj[objs[j]], &kids[i]))
+            if (overlaps(&w->box[objs[j]], &kids[i]))
                 ok = add_and_split(w, NOCT_NODE_CHILD(leaf, (octDirection)(OCT_LDB + i)), objs[j]);
     free(objs);
     return ok;
@@ -262,7 +304,7 @@ static bool try_merge(noctWorld *w, octNode *p)
             cell *c = cell_of(k);
             for (uint32_t j = 0; j < c->count; ++j) {
                 uint32_t id = c->objs[j];
-                span_remove(&w->obj[id], k);
+                span_remove(w, id, k);
                 if (w->mark[id] != w->epoch) {
                     w->mark[id] = w->epoch;
                     pc->objs[pc->count++] = id;
@@ -273,6 +315,7 @@ static bool try_merge(noctWorld *w, octNode *p)
         octJoin(p, NULL);
         for (uint32_t j = 0; j < pc->count; ++j) {
             object *o = &w->obj[pc->objs[j]];
+            forget_home(w, pc->objs[j]);
             if (!grow_array((void **)&o->spans, &o->capspans, o->nspans + 1,
                             sizeof *o->spans))
                 return false;
@@ -292,7 +335,7 @@ static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
             c->objs[i] = c->objs[--c->count];
             break;
         }
-    span_remove(&w->obj[id], leaf);
+    span_remove(w, id, leaf);
     ++w->c.leaves_left;
     return try_merge(w, NOCT_NODE_PARENT(leaf));
 }
@@ -301,8 +344,7 @@ static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
  * worklist is on, newly entered leaves are pushed to it. */
 static bool insert_below(noctWorld *w, octNode *n, uint32_t id, bool push)
 {
-    const object *o = &w->obj[id];
-    if (!overlaps(o, cell_of(n)))
+    if (!overlaps(&w->box[id], cell_of(n)))
         return true;
     if (NOCT_NODE_IS_SPLIT(n)) {
         for (int i = 0; i < 8; ++i)
@@ -341,8 +383,10 @@ static void destroy_tree(noctWorld *w)
     free(rc);
     octDispose(w->root);
     w->root = NULL;
-    for (uint32_t i = 0; i < w->nslots; ++i)
+    for (uint32_t i = 0; i < w->nslots; ++i) {
         w->obj[i].nspans = 0;
+        forget_home(w, i);
+    }
 }
 
 /* Build the tree afresh around every live object: a root cube whose size
@@ -381,9 +425,9 @@ static size_t straddling(const noctWorld *w, const double corner[3], double c,
 {
     size_t n = 0;
     for (uint32_t i = 0; i < w->nslots; i += stride) {
-        const object *o = &w->obj[i];
-        if (!o->alive)
+        if (!w->obj[i].alive)
             continue;
+        const aabb *o = &w->box[i];
         for (int k = 0; k < 3; ++k)
             if (floor((o->lo[k] - corner[k]) / c) != floor((o->hi[k] - corner[k]) / c)) {
                 ++n;
@@ -398,9 +442,9 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     bool any = false;
     for (uint32_t i = 0; i < w->nslots; ++i) {
-        const object *o = &w->obj[i];
-        if (!o->alive)
+        if (!w->obj[i].alive)
             continue;
+        const aabb *o = &w->box[i];
         for (int k = 0; k < 3; ++k) {
             lo[k] = any ? noct_min(lo[k], o->lo[k]) : o->lo[k];
             hi[k] = any ? noct_max(hi[k], o->hi[k]) : o->hi[k];
@@ -430,7 +474,7 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     size_t counted = 0;
     for (uint32_t i = 0; i < w->nslots; i += stride)
         if (w->obj[i].alive) {
-            const object *o = &w->obj[i];
+            const aabb *o = &w->box[i];
             mean += noct_max(noct_max(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]),
                              o->hi[2] - o->lo[2]);
             ++counted;
@@ -457,7 +501,7 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     return NOCT_OK;
 }
 
-static bool inside_root(const noctWorld *w, const object *o)
+static bool inside_root(const noctWorld *w, const aabb *o)
 {
     const cell *rc = cell_of(w->root);
     for (int k = 0; k < 3; ++k)
@@ -472,21 +516,57 @@ static bool inside_root(const noctWorld *w, const object *o)
  * Maintenance (report 2.4) runs in two phases over the moving objects, so
  * that every split sees leaf lists that match the objects' new boxes.
  *
- * Phase A, per object: the fast test (a box strictly inside its only leaf
- * needs nothing), then the leave check: remove the object from the leaves
- * its box no longer overlaps, merging siblings that together hold N or
- * fewer distinct objects. Returns whether phase B is needed.
+ * Phase A, per object: the fast test (a box strictly inside its only leaf,
+ * or more generally inside its home block, needs nothing; maintain()
+ * tries the block it has first, which reads no tree), then the leave check: remove the object from the leaves its box
+ * no longer overlaps, merging siblings that together hold N or fewer
+ * distinct objects. Returns whether phase B is needed.
  */
+/* The home block of the leaves object id is in, if they tile one. */
+static bool home_of(const noctWorld *w, uint32_t id, home_block *h)
+{
+    const object *o = &w->obj[id];
+    if (o->nspans == 0)
+        return false;
+    double size = cell_of(o->spans[0])->size;
+    for (int k = 0; k < 3; ++k) {
+        h->lo[k] = h->last_lo[k] = INFINITY;
+        h->hi[k] = h->first_hi[k] = -INFINITY;
+    }
+    for (uint32_t i = 0; i < o->nspans; ++i) {
+        const cell *c = cell_of(o->spans[i]);
+        if (c->size != size)
+            return false;
+        for (int k = 0; k < 3; ++k) {
+            double hi = c->lo[k] + c->size;
+            h->lo[k] = noct_min(h->lo[k], c->lo[k]);
+            h->hi[k] = noct_max(h->hi[k], hi);
+            h->first_hi[k] = i == 0 ? hi : noct_min(h->first_hi[k], hi);
+            h->last_lo[k] = i == 0 ? c->lo[k] : noct_max(h->last_lo[k], c->lo[k]);
+        }
+    }
+    /* Distinct leaves of one size fill the block iff there are as many as
+     * the grid has cells. */
+    double cells = 1;
+    for (int k = 0; k < 3; ++k)
+        cells *= (h->hi[k] - h->lo[k]) / size;
+    return cells == (double)o->nspans;
+}
+
 static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
 {
     object *o = &w->obj[id];
+    const aabb *b = &w->box[id];
     *enter = false;
-    if (o->nspans == 1 && strictly_inside(o, cell_of(o->spans[0]))) {
+    /* maintain() tried a block it had; one is taken when there was none */
+    if (!isfinite(w->home[id].lo[0]) && home_of(w, id, &w->home[id]) &&
+        inside_home(b, &w->home[id])) {
         ++w->c.inside_fast;
         return NOCT_OK;
     }
+    forget_home(w, id);
     for (uint32_t i = 0; i < o->nspans;) {
-        if (overlaps(o, cell_of(o->spans[i]))) {
+        if (overlaps(b, cell_of(o->spans[i]))) {
             ++i;
             continue;
         }
@@ -517,6 +597,7 @@ static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
 static noctStatus enter_phase(noctWorld *w, uint32_t id)
 {
     object *o = &w->obj[id];
+    const aabb *bx = &w->box[id];
     if (o->nspans == 0) {
         ++w->c.reinserts;
         return insert_below(w, w->root, id, false) ? NOCT_OK : NOCT_ERR_NOMEM;
@@ -537,9 +618,9 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
         for (int k = 0; k < 3; ++k) {
             nr[k] = 0;
             reach[k][nr[k]++] = 0;
-            if (o->lo[k] <= lc->lo[k])
+            if (bx->lo[k] <= lc->lo[k])
                 reach[k][nr[k]++] = -1;
-            if (o->hi[k] >= lc->lo[k] + lc->size)
+            if (bx->hi[k] >= lc->lo[k] + lc->size)
                 reach[k][nr[k]++] = 1;
         }
         if (nr[0] + nr[1] + nr[2] == 3)
@@ -551,9 +632,9 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
                     bool covered = true;
                     for (int k = 0; k < 3 && covered; ++k) {
                         double clo = lc->lo[k] + v[k] * lc->size;
-                        double ilo = noct_max(o->lo[k], clo);
-                        double ihi = noct_min(o->hi[k], clo + lc->size);
-                        covered = ilo >= o->olo[k] && ihi <= o->ohi[k];
+                        double ilo = noct_max(bx->lo[k], clo);
+                        double ihi = noct_min(bx->hi[k], clo + lc->size);
+                        covered = ilo >= o->old.lo[k] && ihi <= o->old.hi[k];
                     }
                     if (covered)
                         continue;
@@ -579,13 +660,45 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
 static noctStatus maintain(noctWorld *w)
 {
     noctStatus st = NOCT_OK;
-    for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i)
-        if (w->obj[i].alive && w->obj[i].speed != 0)
-            st = leave_phase(w, i, &w->obj[i].entering);
-    for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i)
-        if (w->obj[i].alive && w->obj[i].entering)
-            st = enter_phase(w, i);
+    if (w->capslow < w->nmovers) {
+        uint32_t *q = realloc(w->slow, w->nmovers * sizeof *q);
+        if (q == NULL)
+            return NOCT_ERR_NOMEM;
+        w->slow = q;
+        w->capslow = w->nmovers;
+    }
+    /* The fast test on the home cubes, then phase A for the rest. */
+    w->nslow = 0;
+    for (uint32_t m = 0; m < w->nmovers; ++m) {
+        uint32_t i = w->movers[m];
+        if (inside_home(&w->box[i], &w->home[i]))
+            ++w->c.inside_fast;
+        else
+            w->slow[w->nslow++] = i;
+    }
+    for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m)
+        st = leave_phase(w, w->slow[m], &w->obj[w->slow[m]].entering);
+    for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m)
+        if (w->obj[w->slow[m]].entering)
+            st = enter_phase(w, w->slow[m]);
     return st;
+}
+
+/* The live moving objects in slot order, after objects came or went. */
+static bool update_movers(noctWorld *w)
+{
+    if (!w->movers_stale)
+        return true;
+    uint32_t cap = w->capmovers;
+    if (!grow_array((void **)&w->movers, &cap, (uint32_t)w->moving, sizeof *w->movers))
+        return false;
+    w->capmovers = cap;
+    w->nmovers = 0;
+    for (uint32_t i = 0; i < w->nslots; ++i)
+        if (w->obj[i].alive && w->obj[i].speed > 0)
+            w->movers[w->nmovers++] = i;
+    w->movers_stale = false;
+    return true;
 }
 
 /* ---- pair search, events, response ------------------------------------------- */
@@ -626,54 +739,99 @@ static bool owns(const cell *c, const cell *root, const double p[3])
     return true;
 }
 
-static int cmp_lower_x(const void *x, const void *y)
-{
-    const leaf_box *a = x, *b = y;
-    return (a->lo[0] > b->lo[0]) - (a->lo[0] < b->lo[0]);
-}
-
-/* Insertion sort for the leaves of up to a few dozen objects that N makes
- * common, qsort(3) for the crowded ones at the maximum depth. */
-static void sort_by_lower_x(leaf_box *g, uint32_t n)
+/* Insertion sort by lower corner on axis k for the leaves of up to a few
+ * dozen objects that N makes common, a merge of runs for the crowded ones
+ * at the maximum depth. */
+static void sort_by_lower(leaf_box *g, uint32_t n, int k, leaf_box *tmp)
 {
     if (n > 64) {
-        qsort(g, n, sizeof *g, cmp_lower_x);
+        /* bottom-up merge sort into tmp and back */
+        leaf_box *src = g, *dst = tmp;
+        for (uint32_t width = 1; width < n; width *= 2) {
+            for (uint32_t lo = 0; lo < n; lo += 2 * width) {
+                uint32_t mid = lo + width < n ? lo + width : n;
+                uint32_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+                uint32_t i = lo, j = mid, o = lo;
+                while (i < mid && j < hi)
+                    dst[o++] = src[j].lo[k] < src[i].lo[k] ? src[j++] : src[i++];
+                while (i < mid)
+                    dst[o++] = src[i++];
+                while (j < hi)
+                    dst[o++] = src[j++];
+            }
+            leaf_box *t = src;
+            src = dst;
+            dst = t;
+        }
+        if (src != g)
+            memcpy(g, src, n * sizeof *g);
         return;
     }
     for (uint32_t i = 1; i < n; ++i) {
         leaf_box t = g[i];
         uint32_t j = i;
-        for (; j > 0 && g[j - 1].lo[0] > t.lo[0]; --j)
+        for (; j > 0 && g[j - 1].lo[k] > t.lo[k]; --j)
             g[j] = g[j - 1];
         g[j] = t;
     }
+}
+
+/* The sweep's axis: the one along which the boxes are spread farthest for
+ * their size, so that the fewest pairs overlap on it (cubes in a plane all
+ * share their x, a gas is spread on every axis). */
+static int sweep_axis(const leaf_box *g, uint32_t n)
+{
+    double lo[3], hi[3], ext[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+        lo[k] = hi[k] = g[0].lo[k];
+    for (uint32_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = noct_min(lo[k], g[i].lo[k]);
+            hi[k] = noct_max(hi[k], g[i].lo[k]);
+            ext[k] += g[i].hi[k] - g[i].lo[k];
+        }
+    int best = 0;
+    double best_ratio = -1;
+    for (int k = 0; k < 3; ++k) {
+        /* spread over total extent */
+        double r = (hi[k] - lo[k]) / (ext[k] > 0 ? ext[k] : 1);
+        if (r > best_ratio) {
+            best_ratio = r;
+            best = k;
+        }
+    }
+    return best;
 }
 
 static noctStatus search_leaf(noctWorld *w, const cell *c)
 {
     const cell *rc = cell_of(w->root);
     ++w->c.leaves_visited;
-    if (!grow_array((void **)&w->gather, &w->capgather, c->count, sizeof *w->gather))
+    if (!grow_array((void **)&w->gather, &w->capgather, 2 * c->count, sizeof *w->gather))
         return NOCT_ERR_NOMEM;
     leaf_box *g = w->gather;
     for (uint32_t i = 0; i < c->count; ++i) {
-        const object *o = &w->obj[c->objs[i]];
+        const aabb *o = &w->box[c->objs[i]];
         memcpy(g[i].lo, o->lo, sizeof o->lo);
         memcpy(g[i].hi, o->hi, sizeof o->hi);
         g[i].id = c->objs[i];
     }
     w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
-    /* Sweep along x: with the boxes sorted by lower x, the boxes that
-     * overlap a in x are the ones after it that start before a ends. The
-     * exhaustive mode keeps the report's test of every pair. */
+    /* Sweep along one axis: with the boxes sorted by their lower corner on
+     * it, the boxes that overlap a there are the ones after it that start
+     * before a ends. The exhaustive mode keeps the report's test of every
+     * pair. */
     bool sweep = w->def.N != NOCT_N_EXHAUSTIVE;
-    if (sweep)
-        sort_by_lower_x(g, c->count);
+    int axis = 0;
+    if (sweep) {
+        axis = sweep_axis(g, c->count);
+        sort_by_lower(g, c->count, axis, g + c->count);
+    }
     for (uint32_t i = 0; i < c->count; ++i) {
         const leaf_box *a = &g[i];
         for (uint32_t j = i + 1; j < c->count; ++j) {
             const leaf_box *b = &g[j];
-            if (sweep && b->lo[0] > a->hi[0])
+            if (sweep && b->lo[axis] > a->hi[axis])
                 break;
             if (a->hi[0] < b->lo[0] || b->hi[0] < a->lo[0] || a->hi[1] < b->lo[1] ||
                 b->hi[1] < a->lo[1] || a->hi[2] < b->lo[2] || b->hi[2] < a->lo[2])
@@ -682,25 +840,58 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
                                       noct_max(a->lo[2], b->lo[2])};
             if (!owns(c, rc, corner))
                 continue;
-            ++w->c.tested_pairs;
-            const object *oa = &w->obj[a->id], *ob = &w->obj[b->id];
-            bool hit;
-            noctStatus st = noctCollide(oa->mesh, oa->pos, ob->mesh, ob->pos,
-                                        w->def.accuracy, &hit, &w->c.narrow);
-            if (st != NOCT_OK)
-                return st;
-            if (!hit)
-                continue;
             uint32_t ia = a->id, ib = b->id;
             if (ia > ib) {
                 uint32_t t = ia;
                 ia = ib;
                 ib = t;
             }
-            noctPair p = {{ia, w->obj[ia].generation}, {ib, w->obj[ib].generation}};
-            if (!pairs_push(&w->colliding, p))
+            if (!pairs_push(&w->tested, (noctPair){{ia, 0}, {ib, 0}}))
                 return NOCT_ERR_NOMEM;
         }
+    }
+    return NOCT_OK;
+}
+
+/* The narrowphase on the pairs the search found. Their objects and
+ * meshes are scattered in memory, so each is requested some pairs ahead,
+ * in stages so that no request waits on a load: the objects 24 pairs
+ * ahead, the mesh headers (read through the objects) 16 ahead, the
+ * vertices (read through the headers) 8 ahead. */
+static noctStatus narrow(noctWorld *w)
+{
+    const noctPair *p = w->tested.p;
+    size_t n = w->tested.n;
+    w->c.tested_pairs += n;
+    for (size_t i = 0; i < n; ++i) {
+        if (i + 24 < n) {
+            NOCT_PREFETCH(&w->obj[p[i + 24].a.index]);
+            NOCT_PREFETCH(&w->obj[p[i + 24].b.index]);
+        }
+        if (i + 16 < n)
+            for (int s = 0; s < 2; ++s) {
+                const char *m = (const char *)w->obj[s ? p[i + 16].b.index
+                                                       : p[i + 16].a.index].mesh;
+                for (int line = 0; line < 5; ++line) /* to the box's axes */
+                    NOCT_PREFETCH(m + 64 * line);
+            }
+        if (i + 8 < n)
+            for (int s = 0; s < 2; ++s) {
+                const noctMesh *m = w->obj[s ? p[i + 8].b.index : p[i + 8].a.index].mesh;
+                NOCT_PREFETCH(m->v);
+                NOCT_PREFETCH((const char *)m->v + 64);
+                NOCT_PREFETCH((const char *)m->v + 128);
+            }
+        uint32_t ia = p[i].a.index, ib = p[i].b.index;
+        const object *oa = &w->obj[ia], *ob = &w->obj[ib];
+        bool hit;
+        noctStatus st = noctCollide(oa->mesh, oa->pos, ob->mesh, ob->pos, w->def.accuracy,
+                                    &hit, &w->c.narrow);
+        if (st != NOCT_OK)
+            return st;
+        if (hit && !pairs_push(&w->colliding,
+                               (noctPair){{ia, oa->generation}, {ib, ob->generation}}))
+            return NOCT_ERR_NOMEM;
     }
     return NOCT_OK;
 }
@@ -804,8 +995,13 @@ void noctWorldDestroy(noctWorld *w)
     free(w->obj);
     free(w->free_slots);
     free(w->mark);
+    free(w->box);
+    free(w->home);
+    free(w->movers);
+    free(w->slow);
     free(w->work);
     free(w->gather);
+    free(w->tested.p);
     free(w->colliding.p);
     free(w->previous.p);
     free(w->began.p);
@@ -854,15 +1050,22 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     } else {
         if (w->nslots >= 0x80000000u)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
-        /* obj and mark share one capacity, capslots. */
+        /* obj, box, home and mark share one capacity, capslots; each
+         * array that grew is kept even if a later one fails. */
         uint32_t cap = w->capslots;
         if (!grow_array((void **)&w->obj, &cap, w->nslots + 1, sizeof *w->obj))
             return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
         if (cap != w->capslots) {
             uint64_t *mark = realloc(w->mark, cap * sizeof *mark);
-            if (mark == NULL)
+            if (mark != NULL)
+                w->mark = mark;
+            aabb *box = mark ? realloc(w->box, cap * sizeof *box) : NULL;
+            if (box != NULL)
+                w->box = box;
+            home_block *home = box ? realloc(w->home, cap * sizeof *home) : NULL;
+            if (home == NULL)
                 return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-            w->mark = mark;
+            w->home = home;
             w->capslots = cap;
         }
         slot = w->nslots++;
@@ -871,6 +1074,9 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     }
     object *o = &w->obj[slot];
     o->mesh = mesh;
+    memcpy(o->mlo, mesh->lo, sizeof o->mlo);
+    memcpy(o->mhi, mesh->hi, sizeof o->mhi);
+    forget_home(w, slot);
     o->speed = speed;
     /* A unit direction is used as given: velocity = speed * d, exactly. */
     double scale = fabs(len - 1) <= 1e-9 ? 1 : 1 / len;
@@ -882,13 +1088,14 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     o->generation = o->generation + 1 ? o->generation + 1 : 1;
     o->alive = true;
     o->nspans = 0;
-    place_box(o);
+    place_box(o, &w->box[slot]);
     ++w->alive;
     w->moving += speed > 0;
+    w->movers_stale = w->movers_stale || speed > 0;
     id->index = slot;
     id->generation = o->generation;
     noctStatus st;
-    if (w->root == NULL || !inside_root(w, o))
+    if (w->root == NULL || !inside_root(w, &w->box[slot]))
         st = rebuild(w, w->root ? 2 * cell_of(w->root)->size : 0);
     else
         st = insert_below(w, w->root, slot, false) ? NOCT_OK : NOCT_ERR_NOMEM;
@@ -909,6 +1116,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
     o->alive = false;
     --w->alive;
     w->moving -= o->speed > 0;
+    w->movers_stale = w->movers_stale || o->speed > 0;
     uint32_t cap = w->nfree;
     if (!grow_array((void **)&w->free_slots, &cap, w->nfree + 1, sizeof *w->free_slots))
         return NOCT_ERR_NOMEM;
@@ -933,13 +1141,15 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     noctStatus st = NOCT_OK;
     double t0 = seconds();
     bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->moving > 0;
+    bool escaped = false; /* a moving box left the root */
+    if (moving && !update_movers(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
-        for (uint32_t i = 0; i < w->nslots; ++i) {
+        for (uint32_t m = 0; m < w->nmovers; ++m) {
+            uint32_t i = w->movers[m];
             object *o = &w->obj[i];
-            if (!o->alive || o->speed == 0)
-                continue;
-            memcpy(o->olo, o->lo, sizeof o->lo);
-            memcpy(o->ohi, o->hi, sizeof o->hi);
+            aabb *b = &w->box[i];
+            o->old = *b;
             for (int k = 0; k < 3; ++k)
                 o->pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
             if (w->def.effects & NOCT_EFFECT_WALLS)
@@ -952,7 +1162,8 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
                 fabs(o->pos[2]) > NOCT_MAX_COORDINATE)
                 return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
                                  "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
-            place_box(o);
+            place_box(o, b);
+            escaped = escaped || (w->root != NULL && !inside_root(w, b));
             ++w->c.moved;
         }
     }
@@ -960,9 +1171,6 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     if (moving)
         w->c.seconds_motion += t1 - t0;
     if (w->root != NULL && moving) {
-        bool escaped = false;
-        for (uint32_t i = 0; i < w->nslots && !escaped; ++i)
-            escaped = w->obj[i].alive && w->obj[i].speed > 0 && !inside_root(w, &w->obj[i]);
         if (w->def.maintenance == NOCT_MAINTAIN_REBUILD || escaped)
             st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
         else
@@ -977,8 +1185,11 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     w->previous = w->colliding;
     w->colliding = tmp;
     w->colliding.n = 0;
+    w->tested.n = 0;
     if (w->root != NULL)
         st = search(w, w->root);
+    if (st == NOCT_OK)
+        st = narrow(w);
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s", noctStatusString(st));
     if (w->colliding.n > 1)
@@ -1134,8 +1345,8 @@ noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
     const object *o = lookup(w, id);
     if (o == NULL)
         return NOCT_ERR_INVALID;
-    memcpy(lo, o->lo, sizeof o->lo);
-    memcpy(hi, o->hi, sizeof o->hi);
+    memcpy(lo, w->box[id.index].lo, sizeof o->old.lo);
+    memcpy(hi, w->box[id.index].hi, sizeof o->old.hi);
     return NOCT_OK;
 }
 
@@ -1292,7 +1503,7 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
         for (uint32_t q = 0; q < j; ++q)
             if (c->objs[q] == id)
                 return BAD("a leaf lists object %u twice", id);
-        if (!overlaps(&w->obj[id], c))
+        if (!overlaps(&w->box[id], c))
             return BAD("object %u is in a leaf its box does not overlap", id);
         bool spanned = false;
         for (uint32_t s = 0; s < w->obj[id].nspans && !spanned; ++s)
@@ -1305,7 +1516,7 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
 }
 
 /* Count the leaves under n that box o overlaps. */
-static size_t overlapped_leaves(const object *o, octNode *n)
+static size_t overlapped_leaves(const aabb *o, octNode *n)
 {
     if (!overlaps(o, cell_of(n)))
         return 0;
@@ -1332,14 +1543,21 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
         const object *o = &w->obj[i];
         if (!o->alive)
             continue;
-        if (!inside_root(w, o))
+        const aabb *b = &w->box[i];
+        const home_block *h = &w->home[i];
+        if (!inside_root(w, b))
             st = BAD("object %u is outside the root", i);
         else if (refs[i] != o->nspans)
             st = BAD("object %u: %zu leaves list it, its spans count %u", i, refs[i],
                      o->nspans);
-        else if (overlapped_leaves(o, w->root) != refs[i])
+        else if (overlapped_leaves(b, w->root) != refs[i])
             st = BAD("object %u is in %zu leaves but its box overlaps %zu", i, refs[i],
-                     overlapped_leaves(o, w->root));
+                     overlapped_leaves(b, w->root));
+        else if (isfinite(h->lo[0])) {
+            home_block now;
+            if (!home_of(w, i, &now) || memcmp(&now, h, sizeof now) != 0)
+                st = BAD("object %u's home block is not that of its leaves", i);
+        }
     }
     free(refs);
     return st;

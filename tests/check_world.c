@@ -374,6 +374,59 @@ START_TEST(effects_off_cost_nothing)
 }
 END_TEST
 
+/* An object straddling two leaves and moving along their common face
+ * keeps the same leaves until it nears the block's far side: the fast
+ * test passes it with no neighbor query for exactly the steps its box
+ * stays strictly inside the block (counted here from the root's cube);
+ * the step it reaches the block's side runs the enter check. */
+START_TEST(straddlers_take_the_fast_path)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(1, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double d0[3] = {1, 0, 0}, down[3] = {0, -1, 0};
+    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
+    double lo[3], size;
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    /* On the root's x mid-plane, in the upper y half, the lower z half:
+     * two leaves of half the root's size, which hold no static object
+     * (both statics lie below the root's middle in y, since the root
+     * reaches at least 20.5 + 41 / 2 above the lower one). */
+    const double p[3] = {lo[0] + size / 2, lo[1] + 0.75 * size, lo[2] + size / 4};
+    ck_assert(s2[1] + 0.5 < lo[1] + size / 2);
+    ck_assert_int_eq(noctWorldAdd(w, cube, p, down, 1, &id, NULL), NOCT_OK);
+    validate_ok(w);
+    double y = p[1], block_lo = lo[1] + size / 2;
+    noctWorldCounters before, after;
+    int fast_steps = 0;
+    for (int s = 0; s < 200; ++s) {
+        noctWorldGetCounters(w, &before);
+        step_ok(w);
+        validate_ok(w);
+        noctWorldGetCounters(w, &after);
+        y += -1.0;
+        bool inside = -0.5 + y > block_lo; /* and below the root's top */
+        if (!inside) {
+            ck_assert_uint_eq(after.inside_fast, before.inside_fast);
+            ck_assert_uint_gt(after.neighbor_queries, before.neighbor_queries);
+            break;
+        }
+        ck_assert_uint_eq(after.inside_fast, before.inside_fast + 1);
+        ck_assert_uint_eq(after.neighbor_queries, before.neighbor_queries);
+        ck_assert_uint_eq(after.leaves_left + after.leaves_entered,
+                          before.leaves_left + before.leaves_entered);
+        ++fast_steps;
+    }
+    /* From y = 0.75 size down to the block's side at 0.5 size + 0.5. */
+    ck_assert_int_eq(fast_steps, (int)ceil(size / 4 - 0.5) - 1);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* Thin plates closing at 2 per step skip past each other between steps;
  * with sub-steps they meet once and turn back. */
 START_TEST(substeps_stop_tunnelling)
@@ -598,6 +651,7 @@ int main(void)
     suite_add_tcase(s, tc);
     tc = tcase_create("effects and handles");
     tcase_add_test(tc, effects_off_cost_nothing);
+    tcase_add_test(tc, straddlers_take_the_fast_path);
     tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
     tcase_add_test(tc, inspect_tree);

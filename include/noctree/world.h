@@ -34,7 +34,10 @@
  *
  * **Maintenance modes.** #NOCT_MAINTAIN_INCREMENTAL is the report's
  * section 2.4: for each moving object and each leaf it spans, a fast test
- * for a box still inside the leaf; a leave check (remove, then merge); an
+ * for a box still inside the leaf (generalised to a box that spans a block
+ * of equal leaves: still strictly inside the block and reaching each of
+ * its leaves, so that objects straddling a face stay on the fast path);
+ * a leave check (remove, then merge); an
  * enter check through octGtEqNeighbor() in the quantized directions of
  * motion (octVectorToDirections()), each neighbor checked once per object
  * per step thanks to a stamp in the node. An object that moves farther in
@@ -152,8 +155,11 @@ typedef struct noctWorldCounters {
     uint64_t steps;            /**< Steps run. */
     uint64_t substeps;         /**< Sub-steps run (#NOCT_EFFECT_SUBSTEP). */
     uint64_t moved;            /**< Object moves (motion). */
-    uint64_t inside_fast;      /**< Maintenance: boxes still inside their
-                                    only leaf, found by the fast test. */
+    uint64_t inside_fast;      /**< Maintenance: boxes whose leaves the
+                                    fast test found unchanged: still
+                                    strictly inside their only leaf, or
+                                    inside the block of equal leaves they
+                                    span and reaching each of them. */
     uint64_t leaves_left;      /**< Maintenance: removals from leaves. */
     uint64_t leaves_entered;   /**< Maintenance: additions to leaves. */
     uint64_t neighbor_queries; /**< Maintenance: octGtEqNeighbor() calls. */
