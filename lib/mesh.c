@@ -63,6 +63,11 @@ void noctMeshDestroy(noctMesh *mesh)
 {
     if (mesh == NULL)
         return;
+    if (mesh->packed) {
+        free(mesh);
+        return;
+    }
+    free(mesh->sat_axis);
     free(mesh->v);
     free(mesh->tri);
     free(mesh->hull);
@@ -470,9 +475,14 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
-    memcpy(m->sat_axis, sat_face, m->nsat_faces * sizeof *sat_face);
-    memcpy(m->sat_axis + m->nsat_faces, sat_edge, m->nsat_edges * sizeof *sat_edge);
     free(e);
+    if (m->nsat_faces > 0) {
+        m->sat_axis = malloc((m->nsat_faces + m->nsat_edges) * sizeof *m->sat_axis);
+        if (m->sat_axis == NULL)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        memcpy(m->sat_axis, sat_face, m->nsat_faces * sizeof *sat_face);
+        memcpy(m->sat_axis + m->nsat_faces, sat_edge, m->nsat_edges * sizeof *sat_edge);
+    }
     m->plane = NULL;
     if (m->nsat_faces > 0) {
         m->plane = malloc(m->nt * sizeof *m->plane);
@@ -494,11 +504,19 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
     return NOCT_OK;
 }
 
+/* Meshes with more vertices than this get their hull from qhull. */
+#define HULL_MIN_VERTICES 32
+
 static noctStatus compute_hull(noctMesh *m, noctError *err)
 {
     m->hull = NULL;
     m->nhull = 0;
-    if (!m->convex && m->nv > 4) {
+    /* GJK's support function scans the hull's vertices; any superset
+     * gives the same support points. A small mesh keeps every vertex:
+     * scanning a few dozen costs less than running qhull for each mesh
+     * (a gas of oriented boxes is made of meshes that rounding left a hair
+     * off convex). */
+    if (!m->convex && m->nv > HULL_MIN_VERTICES) {
         FILE *quiet = fopen("/dev/null", "w");
         if (quiet != NULL) {
             qhT qh_storage, *qh = &qh_storage;
@@ -533,6 +551,46 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
         m->centre[k] = s / (double)m->nhull;
     }
     return NOCT_OK;
+}
+
+/* ---- packing ----------------------------------------------------------------- */
+
+/* Bytes from offset *at for n elements of size elem aligned to align. */
+static size_t take(size_t *at, size_t n, size_t elem, size_t align)
+{
+    size_t start = (*at + align - 1) / align * align;
+    *at = start + n * elem;
+    return start;
+}
+
+/* Move a finished mesh and its arrays into one allocation (see
+ * mesh_internal.h); on failure the mesh stays as it is, which works the
+ * same, only with its arrays elsewhere. */
+static noctMesh *pack(noctMesh *m)
+{
+    size_t naxes = m->nsat_faces + m->nsat_edges;
+    size_t at = sizeof *m;
+    size_t o_axis = take(&at, naxes, sizeof *m->sat_axis, _Alignof(double));
+    size_t o_v = take(&at, 3 * m->nv, sizeof *m->v, _Alignof(double));
+    size_t o_plane = take(&at, m->plane ? m->nt : 0, sizeof *m->plane, _Alignof(double));
+    size_t o_tri = take(&at, 3 * m->nt, sizeof *m->tri, _Alignof(uint32_t));
+    size_t o_nodes = take(&at, m->nnodes, sizeof *m->nodes, _Alignof(bvh_node));
+    size_t o_hull = take(&at, m->nhull, sizeof *m->hull, _Alignof(uint32_t));
+    char *block = malloc(at);
+    if (block == NULL)
+        return m;
+    noctMesh *p = (noctMesh *)block;
+    *p = *m;
+    p->packed = true;
+    p->sat_axis = naxes ? memcpy(block + o_axis, m->sat_axis, naxes * sizeof *m->sat_axis)
+                        : NULL;
+    p->v = memcpy(block + o_v, m->v, 3 * m->nv * sizeof *m->v);
+    p->plane = m->plane ? memcpy(block + o_plane, m->plane, m->nt * sizeof *m->plane) : NULL;
+    p->tri = memcpy(block + o_tri, m->tri, 3 * m->nt * sizeof *m->tri);
+    p->nodes = memcpy(block + o_nodes, m->nodes, m->nnodes * sizeof *m->nodes);
+    p->hull = memcpy(block + o_hull, m->hull, m->nhull * sizeof *m->hull);
+    noctMeshDestroy(m);
+    return p;
 }
 
 /* ---- creation ------------------------------------------------------------- */
@@ -655,7 +713,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         noctMeshDestroy(m);
         return st;
     }
-    *mesh = m;
+    *mesh = pack(m);
     return NOCT_OK;
 }
 

@@ -26,8 +26,10 @@ typedef struct bvh_node {
     uint32_t count;
 } bvh_node;
 
-/* The fields the exact level's filter reads for every pair come first,
- * so that they share the first cache lines. */
+/* The fields the exact level's filter reads for every pair come first.
+ * A finished mesh is one allocation (noct_mesh_pack): the struct, then its
+ * filter axes, vertices, planes, triangles, BVH and hull, so that the
+ * filter reads a few consecutive cache lines. */
 struct noctMesh {
     size_t nv;
     double *v;          /* 3 * nv coordinates */
@@ -43,8 +45,9 @@ struct noctMesh {
      * witness search ranks candidate points by them; the decision itself
      * is made by exact predicates. NULL without the filter. */
     double (*plane)[4];
-    double sat_axis[2 * NOCT_SAT_MAX][3];
+    double (*sat_axis)[3];
     bool convex;
+    bool packed;        /* one allocation: the arrays follow the struct */
     size_t nhull;
     uint32_t *hull;     /* vertices of the convex hull */
     double centre[3];   /* mean of the hull vertices */

@@ -810,6 +810,12 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
     if (!grow_array((void **)&w->gather, &w->capgather, 2 * c->count, sizeof *w->gather))
         return NOCT_ERR_NOMEM;
     leaf_box *g = w->gather;
+    /* The boxes are scattered: request them all, then copy. */
+    for (uint32_t i = 0; i < c->count; ++i) {
+        const char *b = (const char *)&w->box[c->objs[i]];
+        NOCT_PREFETCH(b);
+        NOCT_PREFETCH(b + sizeof(aabb) - 1);
+    }
     for (uint32_t i = 0; i < c->count; ++i) {
         const aabb *o = &w->box[c->objs[i]];
         memcpy(g[i].lo, o->lo, sizeof o->lo);
@@ -855,32 +861,26 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
 
 /* The narrowphase on the pairs the search found. Their objects and
  * meshes are scattered in memory, so each is requested some pairs ahead,
- * in stages so that no request waits on a load: the objects 24 pairs
- * ahead, the mesh headers (read through the objects) 16 ahead, the
- * vertices (read through the headers) 8 ahead. */
+ * in two stages so that no request waits on a load: the objects 16 pairs
+ * ahead, then 8 ahead the first cache lines of their meshes (read through
+ * the objects), which hold what the exact level's filter reads of a small
+ * mesh (mesh_internal.h). */
 static noctStatus narrow(noctWorld *w)
 {
     const noctPair *p = w->tested.p;
     size_t n = w->tested.n;
     w->c.tested_pairs += n;
     for (size_t i = 0; i < n; ++i) {
-        if (i + 24 < n) {
-            NOCT_PREFETCH(&w->obj[p[i + 24].a.index]);
-            NOCT_PREFETCH(&w->obj[p[i + 24].b.index]);
+        if (i + 16 < n) {
+            NOCT_PREFETCH(&w->obj[p[i + 16].a.index]);
+            NOCT_PREFETCH(&w->obj[p[i + 16].b.index]);
         }
-        if (i + 16 < n)
-            for (int s = 0; s < 2; ++s) {
-                const char *m = (const char *)w->obj[s ? p[i + 16].b.index
-                                                       : p[i + 16].a.index].mesh;
-                for (int line = 0; line < 5; ++line) /* to the box's axes */
-                    NOCT_PREFETCH(m + 64 * line);
-            }
         if (i + 8 < n)
             for (int s = 0; s < 2; ++s) {
-                const noctMesh *m = w->obj[s ? p[i + 8].b.index : p[i + 8].a.index].mesh;
-                NOCT_PREFETCH(m->v);
-                NOCT_PREFETCH((const char *)m->v + 64);
-                NOCT_PREFETCH((const char *)m->v + 128);
+                const char *m = (const char *)w->obj[s ? p[i + 8].b.index
+                                                       : p[i + 8].a.index].mesh;
+                for (int line = 0; line < 8; ++line)
+                    NOCT_PREFETCH(m + 64 * line);
             }
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
         const object *oa = &w->obj[ia], *ob = &w->obj[ib];
@@ -1145,17 +1145,33 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     if (moving && !update_movers(w))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
-        for (uint32_t m = 0; m < w->nmovers; ++m) {
-            uint32_t i = w->movers[m];
-            object *o = &w->obj[i];
-            aabb *b = &w->box[i];
+        /* Loop invariants in locals: the compiler cannot know that the
+         * stores below leave them alone. */
+        aabb root = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+        if (w->root != NULL) {
+            const cell *rc = cell_of(w->root);
+            for (int k = 0; k < 3; ++k) {
+                root.lo[k] = rc->lo[k];
+                root.hi[k] = rc->lo[k] + rc->size;
+            }
+        }
+        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
+        const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
+        object *obj = w->obj;
+        aabb *box = w->box;
+        const uint32_t *movers = w->movers;
+        for (uint32_t m = 0, nm = w->nmovers; m < nm; ++m) {
+            uint32_t i = movers[m];
+            object *o = &obj[i];
+            aabb *b = &box[i];
             o->old = *b;
             for (int k = 0; k < 3; ++k)
                 o->pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
-            if (w->def.effects & NOCT_EFFECT_WALLS)
+            if (walls)
                 for (int k = 0; k < 3; ++k)
-                    if ((o->pos[k] < w->def.walls_lo[k] && o->vel[k] < 0) ||
-                        (o->pos[k] > w->def.walls_hi[k] && o->vel[k] > 0))
+                    if ((o->pos[k] < wlo[k] && o->vel[k] < 0) ||
+                        (o->pos[k] > whi[k] && o->vel[k] > 0))
                         o->vel[k] = -o->vel[k];
             if (fabs(o->pos[0]) > NOCT_MAX_COORDINATE ||
                 fabs(o->pos[1]) > NOCT_MAX_COORDINATE ||
@@ -1163,9 +1179,11 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
                 return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
                                  "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
             place_box(o, b);
-            escaped = escaped || (w->root != NULL && !inside_root(w, b));
-            ++w->c.moved;
+            escaped |= b->lo[0] < root.lo[0] || b->lo[1] < root.lo[1] ||
+                       b->lo[2] < root.lo[2] || b->hi[0] > root.hi[0] ||
+                       b->hi[1] > root.hi[1] || b->hi[2] > root.hi[2];
         }
+        w->c.moved += w->nmovers;
     }
     double t1 = seconds();
     if (moving)
