@@ -32,9 +32,13 @@
  * - #NOCT_ACCURACY_EXACT: box test; for two small meshes (such as boxes), a
  *   separating-axis test that only ever rejects, and only when the gap
  *   exceeds a rigorous bound on its rounding error (the solids lie inside
- *   the hulls of their placed vertices, so this proves them apart); then
- *   each mesh's bounding-volume hierarchy to find the triangle pairs whose boxes overlap, then, for
- *   those, every edge of one triangle against the other and vice versa;
+ *   the hulls of their placed vertices, so this proves them apart), and a
+ *   search for a point inside both solids that only ever accepts (the
+ *   centre of the boxes' overlap, or a vertex of one deep inside the
+ *   other, proved strictly inside every triangle's plane by exact signs);
+ *   then each mesh's bounding-volume hierarchy to find the triangle pairs
+ *   whose boxes overlap, then, for those, every edge of one triangle
+ *   against the other and vice versa;
  *   if no boundaries meet, whether one solid contains a vertex of the
  *   other. Every decision is an orientation sign computed exactly (a
  *   floating-point filter with a GMP rational fallback), so the answer is
