@@ -518,9 +518,10 @@ static bool inside_root(const noctWorld *w, const aabb *o)
  *
  * Phase A, per object: the fast test (a box strictly inside its only leaf,
  * or more generally inside its home block, needs nothing; maintain()
- * tries the block it has first, which reads no tree), then the leave check: remove the object from the leaves its box
- * no longer overlaps, merging siblings that together hold N or fewer
- * distinct objects. Returns whether phase B is needed.
+ * tries the block it has first, which reads no tree), then the leave
+ * check: remove the object from the leaves its box no longer overlaps,
+ * merging siblings that together hold N or fewer distinct objects.
+ * Returns whether phase B is needed.
  */
 /* The home block of the leaves object id is in, if they tile one. */
 static bool home_of(const noctWorld *w, uint32_t id, home_block *h)
