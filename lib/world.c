@@ -501,13 +501,31 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     return NOCT_OK;
 }
 
+/* The root's cube as a box; everything when there is no tree yet. */
+static aabb root_box(const noctWorld *w)
+{
+    aabb r = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+    if (w->root != NULL) {
+        const cell *rc = cell_of(w->root);
+        for (int k = 0; k < 3; ++k) {
+            r.lo[k] = rc->lo[k];
+            r.hi[k] = rc->lo[k] + rc->size;
+        }
+    }
+    return r;
+}
+
+/* Box o lies in the closed box r. */
+static bool box_within(const aabb *o, const aabb *r)
+{
+    return o->lo[0] >= r->lo[0] && o->lo[1] >= r->lo[1] && o->lo[2] >= r->lo[2] &&
+           o->hi[0] <= r->hi[0] && o->hi[1] <= r->hi[1] && o->hi[2] <= r->hi[2];
+}
+
 static bool inside_root(const noctWorld *w, const aabb *o)
 {
-    const cell *rc = cell_of(w->root);
-    for (int k = 0; k < 3; ++k)
-        if (o->lo[k] < rc->lo[k] || o->hi[k] > rc->lo[k] + rc->size)
-            return false;
-    return true;
+    const aabb r = root_box(w);
+    return box_within(o, &r);
 }
 
 /* ---- incremental maintenance ------------------------------------------------- */
@@ -1148,14 +1166,7 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     if (moving) {
         /* Loop invariants in locals: the compiler cannot know that the
          * stores below leave them alone. */
-        aabb root = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
-        if (w->root != NULL) {
-            const cell *rc = cell_of(w->root);
-            for (int k = 0; k < 3; ++k) {
-                root.lo[k] = rc->lo[k];
-                root.hi[k] = rc->lo[k] + rc->size;
-            }
-        }
+        const aabb root = root_box(w);
         const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
         const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
         const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
@@ -1180,9 +1191,7 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
                 return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
                                  "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
             place_box(o, b);
-            escaped |= b->lo[0] < root.lo[0] || b->lo[1] < root.lo[1] ||
-                       b->lo[2] < root.lo[2] || b->hi[0] > root.hi[0] ||
-                       b->hi[1] > root.hi[1] || b->hi[2] > root.hi[2];
+            escaped |= !box_within(b, &root);
         }
         w->c.moved += w->nmovers;
     }
