@@ -437,15 +437,18 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
     m->nsat_faces = m->nsat_edges = 0;
     /* Triangles from one polygon share interior edges: still checked, and
      * coplanar (sign 0), which is allowed. A real (non-coplanar) edge is an
-     * edge direction for the separating-axis filter. */
-    for (size_t i = 0; i + 1 < ne && convex; i += 2) {
+     * edge direction for the separating-axis filter. The walk goes on past
+     * a concave edge until both answers are known: a rotated box, whose
+     * rounded corners bend its faces by an ulp, is not exactly convex, yet
+     * the filter needs all its edge directions. */
+    for (size_t i = 0; i + 1 < ne && (convex || sat); i += 2) {
         const dir_edge *p = &e[i], *q = &e[i + 1];
         const double *t0 = &m->v[3 * m->tri[3 * p->tri]];
         const double *t1 = &m->v[3 * m->tri[3 * p->tri + 1]];
         const double *t2 = &m->v[3 * m->tri[3 * p->tri + 2]];
         /* q's far vertex must be below or on p's (outward) plane: orient3d
          * >= 0 means below. */
-        if (noct_orient3d(t0, t1, t2, &m->v[3 * q->far], NULL) < 0)
+        if (convex && noct_orient3d(t0, t1, t2, &m->v[3 * q->far], NULL) < 0)
             convex = false;
         /* An edge between triangles whose planes differ is an edge of the
          * solid, not a diagonal of a (nearly) flat polygon. */
