@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
 #include <noctree/status.h>
 
 /* A node of the bounding-volume hierarchy over a mesh's triangles. A leaf
@@ -62,5 +63,12 @@ noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
+
+/* noctCollide() without its argument checks and clock reads, for callers
+ * that checked the translations (finite, within NOCT_MAX_COORDINATE) and
+ * the accuracy, and time many calls at once (world.c). */
+noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
+                               const double tb[3], noctAccuracy accuracy, bool *colliding,
+                               noctNarrowStats *stats);
 
 #endif /* NOCT_LIB_MESH_INTERNAL_H */

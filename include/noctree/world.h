@@ -175,7 +175,10 @@ typedef struct noctWorldCounters {
     uint64_t colliding_pairs;  /**< Pairs found colliding. */
     uint64_t events;           /**< Contact-begin plus contact-end events. */
     uint64_t reversals;        /**< Response: direction reversals. */
-    noctNarrowStats narrow;    /**< The narrowphase's own counters. */
+    noctNarrowStats narrow;    /**< The narrowphase's own counters; its
+                                    time is the world's whole loop over
+                                    the pairs whose boxes overlap, at the
+                                    world's accuracy. */
     double seconds_motion;     /**< Time in motion. */
     double seconds_maintenance;/**< Time keeping the octree up to date. */
     double seconds_pairs;      /**< Time in the pair search, narrowphase
