@@ -67,7 +67,7 @@ void noctMeshDestroy(noctMesh *mesh)
         free(mesh);
         return;
     }
-    free(mesh->sat_axis);
+    free(mesh->axis);
     free(mesh->v);
     free(mesh->tri);
     free(mesh->hull);
@@ -480,11 +480,22 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         m->nsat_faces = m->nsat_edges = 0;
     free(e);
     if (m->nsat_faces > 0) {
-        m->sat_axis = malloc((m->nsat_faces + m->nsat_edges) * sizeof *m->sat_axis);
-        if (m->sat_axis == NULL)
+        size_t naxes = m->nsat_faces + m->nsat_edges;
+        m->axis = malloc(naxes * sizeof *m->axis);
+        if (m->axis == NULL)
             return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        memcpy(m->sat_axis, sat_face, m->nsat_faces * sizeof *sat_face);
-        memcpy(m->sat_axis + m->nsat_faces, sat_edge, m->nsat_edges * sizeof *sat_edge);
+        for (size_t i = 0; i < naxes; ++i) {
+            sat_axis *a = &m->axis[i];
+            memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
+                   sizeof a->u);
+            a->lo = INFINITY;
+            a->hi = -INFINITY;
+            for (size_t k = 0; k < m->nv; ++k) {
+                double d = dot3(a->u, &m->v[3 * k]);
+                a->lo = d < a->lo ? d : a->lo;
+                a->hi = d > a->hi ? d : a->hi;
+            }
+        }
     }
     m->plane = NULL;
     if (m->nsat_faces > 0) {
@@ -573,7 +584,7 @@ static noctMesh *pack(noctMesh *m)
 {
     size_t naxes = m->nsat_faces + m->nsat_edges;
     size_t at = sizeof *m;
-    size_t o_axis = take(&at, naxes, sizeof *m->sat_axis, _Alignof(double));
+    size_t o_axis = take(&at, naxes, sizeof *m->axis, _Alignof(sat_axis));
     size_t o_v = take(&at, 3 * m->nv, sizeof *m->v, _Alignof(double));
     size_t o_plane = take(&at, m->plane ? m->nt : 0, sizeof *m->plane, _Alignof(double));
     size_t o_tri = take(&at, 3 * m->nt, sizeof *m->tri, _Alignof(uint32_t));
@@ -585,8 +596,7 @@ static noctMesh *pack(noctMesh *m)
     noctMesh *p = (noctMesh *)block;
     *p = *m;
     p->packed = true;
-    p->sat_axis = naxes ? memcpy(block + o_axis, m->sat_axis, naxes * sizeof *m->sat_axis)
-                        : NULL;
+    p->axis = naxes ? memcpy(block + o_axis, m->axis, naxes * sizeof *m->axis) : NULL;
     p->v = memcpy(block + o_v, m->v, 3 * m->nv * sizeof *m->v);
     p->plane = m->plane ? memcpy(block + o_plane, m->plane, m->nt * sizeof *m->plane) : NULL;
     p->tri = memcpy(block + o_tri, m->tri, 3 * m->nt * sizeof *m->tri);

@@ -21,6 +21,13 @@
  * distinct face normals and distinct edge directions. */
 #define NOCT_SAT_MAX 16
 
+/* An axis of the separating-axis filter and the interval the mesh's own
+ * vertices project to on it, in floating point, in the mesh's frame. */
+typedef struct sat_axis {
+    double u[3];
+    double lo, hi;
+} sat_axis;
+
 typedef struct bvh_node {
     double lo[3], hi[3];
     uint32_t first;
@@ -39,14 +46,14 @@ struct noctMesh {
     double lo[3], hi[3];
     /* Separating-axis filter (small meshes with few directions, else
      * nsat_* = 0): unique face normal and edge directions, up to sign,
-     * the faces' at sat_axis[0, nsat_faces), the edges' after them. */
+     * the faces' at axis[0, nsat_faces), the edges' after them. */
     size_t nsat_faces, nsat_edges;
     /* With the filter: each triangle's plane (unit outward normal n, offset
      * d, n.x = d on the plane), in floating point. The exact level's
      * witness search ranks candidate points by them; the decision itself
      * is made by exact predicates. NULL without the filter. */
     double (*plane)[4];
-    double (*sat_axis)[3];
+    sat_axis *axis;
     bool convex;
     bool packed;        /* one allocation: the arrays follow the struct */
     size_t nhull;

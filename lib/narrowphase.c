@@ -321,17 +321,17 @@ static bool box_inside(const placed *A, const placed *B)
 /* The filter serves meshes of at most this many vertices (mesh.c). */
 #define SAT_MAX_VERTICES (4 * NOCT_SAT_MAX)
 
-/* The projections of n placed vertices on axis u: [*lo, *hi]. */
-static void project(double (*v)[3], size_t n, const double u[3], double *lo,
-                    double *hi)
+/* The projections of n vertices (3 doubles each) on axis u: [*lo, *hi]. */
+static void project(const double *v, size_t n, const double u[3], double *lo, double *hi)
 {
-    *lo = INFINITY;
-    *hi = -INFINITY;
-    for (size_t i = 0; i < n; ++i) {
-        double d = u[0] * v[i][0] + u[1] * v[i][1] + u[2] * v[i][2];
-        *lo = noct_min(*lo, d);
-        *hi = noct_max(*hi, d);
+    double l = INFINITY, h = -INFINITY;
+    for (size_t i = 0; i < n; ++i, v += 3) {
+        double d = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        l = noct_min(l, d);
+        h = noct_max(h, d);
     }
+    *lo = l;
+    *hi = h;
 }
 
 /* The placed vertices of a mesh with the separating-axis filter. */
@@ -347,43 +347,60 @@ static void place_all(const placed *P, placed_vertices *pv)
 
 /*
  * Does some axis separate the placed vertex sets of A and B by more than
- * the rounding error of the projections? Each computed projection is
- * within 3u (|u_x| + |u_y| + |u_z|) M of the exact one, M bounding every
- * placed coordinate; a computed gap above 4 times that (which also covers
- * the subtraction) proves the hulls, and so the solids, disjoint. The axes
- * need not be exact: any axis that separates is a proof.
+ * the rounding error? The work is done in the meshes' own frames: on
+ * axis u, A's vertices project to [alo, ahi] (stored with the mesh for
+ * its own face axes), B's to [blo, bhi] shifted by u.(tB - tA). With M
+ * bounding every vertex coordinate in its frame and every translation
+ * coordinate, and l1 = |u_x| + |u_y| + |u_z|, the computed gap differs
+ * from the gap between the exactly projected placed (rounded) vertices
+ * by at most 25 ulp(1/2) l1 M: 4 for rounding the placed vertices, 3 for
+ * each projection, 8 for the shift (its difference and dot product) and
+ * 7 for the two sums. A computed gap above 32 of those proves the hulls,
+ * and so the solids, disjoint. The axes need not be exact: any axis that
+ * separates is a proof.
  */
-static bool sat_separated(const placed *A, const placed *B, placed_vertices *va,
-                          placed_vertices *vb)
+static bool sat_separated(const placed *A, const placed *B)
 {
     const noctMesh *a = A->m, *b = B->m;
     double M = 0;
-    for (int k = 0; k < 3; ++k)
-        M = noct_max(M, noct_max(noct_max(fabs(a->lo[k] + A->t[k]), fabs(a->hi[k] + A->t[k])),
-                         noct_max(fabs(b->lo[k] + B->t[k]), fabs(b->hi[k] + B->t[k]))));
+    for (int k = 0; k < 3; ++k) {
+        M = noct_max(M, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
+                                 noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+        M = noct_max(M, noct_max(fabs(A->t[k]), fabs(B->t[k])));
+    }
+    const double d[3] = {B->t[0] - A->t[0], B->t[1] - A->t[1], B->t[2] - A->t[2]};
+    const double unit = 32 * 0x1p-53 * M;
     size_t naxes = a->nsat_faces + b->nsat_faces + a->nsat_edges * b->nsat_edges;
     for (size_t i = 0; i < naxes; ++i) {
-        double u[3];
+        double u[3], alo, ahi, blo, bhi;
         if (i < a->nsat_faces) {
-            memcpy(u, a->sat_axis[i], sizeof u);
+            const sat_axis *x = &a->axis[i];
+            memcpy(u, x->u, sizeof u);
+            alo = x->lo;
+            ahi = x->hi;
+            project(b->v, b->nv, u, &blo, &bhi);
         } else if (i < a->nsat_faces + b->nsat_faces) {
-            memcpy(u, b->sat_axis[i - a->nsat_faces], sizeof u);
+            const sat_axis *x = &b->axis[i - a->nsat_faces];
+            memcpy(u, x->u, sizeof u);
+            blo = x->lo;
+            bhi = x->hi;
+            project(a->v, a->nv, u, &alo, &ahi);
         } else {
             size_t j = i - a->nsat_faces - b->nsat_faces;
-            const double *p = a->sat_axis[a->nsat_faces + j / b->nsat_edges];
-            const double *q = b->sat_axis[b->nsat_faces + j % b->nsat_edges];
+            const double *p = a->axis[a->nsat_faces + j / b->nsat_edges].u;
+            const double *q = b->axis[b->nsat_faces + j % b->nsat_edges].u;
             u[0] = p[1] * q[2] - p[2] * q[1];
             u[1] = p[2] * q[0] - p[0] * q[2];
             u[2] = p[0] * q[1] - p[1] * q[0];
+            project(a->v, a->nv, u, &alo, &ahi);
+            project(b->v, b->nv, u, &blo, &bhi);
         }
         double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
         if (!(l1 > 1e-6))
             continue; /* (nearly) parallel edges: no useful axis */
-        double margin = 4 * 3 * 0x1p-53 * l1 * M + 1e-300;
-        double alo, ahi, blo, bhi;
-        project(va->v, a->nv, u, &alo, &ahi);
-        project(vb->v, b->nv, u, &blo, &bhi);
-        if (blo - ahi > margin || alo - bhi > margin)
+        double margin = unit * l1 + 1e-300;
+        double shift = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
+        if ((blo + shift) - ahi > margin || alo - (bhi + shift) > margin)
             return true;
     }
     return false;
@@ -468,15 +485,15 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
     if (st)
         ++st->exact_tests;
     if (A->m->nsat_faces > 0 && B->m->nsat_faces > 0) {
-        placed_vertices va, vb;
-        place_all(A, &va);
-        place_all(B, &vb);
-        if (sat_separated(A, B, &va, &vb)) {
+        if (sat_separated(A, B)) {
             if (st)
                 ++st->sat_rejects;
             *hit = false;
             return NOCT_OK;
         }
+        placed_vertices va, vb;
+        place_all(A, &va);
+        place_all(B, &vb);
         if (witness(A, B, &va, &vb, &x)) {
             if (st)
                 ++st->witnesses;
