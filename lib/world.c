@@ -852,14 +852,24 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
         axis = sweep_axis(g, c->count);
         sort_by_lower(g, c->count, axis, g + c->count);
     }
+    /* With the boxes sorted on the sweep axis, b overlaps a there while b
+     * starts before a ends; the other two axes decide. Their four
+     * comparisons are combined without branches: most pairs fail one of
+     * them, in no predictable order. */
+    const int k1 = (axis + 1) % 3, k2 = (axis + 2) % 3;
     for (uint32_t i = 0; i < c->count; ++i) {
         const leaf_box *a = &g[i];
+        const double ahi = a->hi[axis];
         for (uint32_t j = i + 1; j < c->count; ++j) {
             const leaf_box *b = &g[j];
-            if (sweep && b->lo[axis] > a->hi[axis])
-                break;
-            if (a->hi[0] < b->lo[0] || b->hi[0] < a->lo[0] || a->hi[1] < b->lo[1] ||
-                b->hi[1] < a->lo[1] || a->hi[2] < b->lo[2] || b->hi[2] < a->lo[2])
+            if (sweep ? b->lo[axis] > ahi
+                      : (a->hi[axis] < b->lo[axis]) | (b->hi[axis] < a->lo[axis])) {
+                if (sweep)
+                    break;
+                continue;
+            }
+            if ((a->hi[k1] < b->lo[k1]) | (b->hi[k1] < a->lo[k1]) | (a->hi[k2] < b->lo[k2]) |
+                (b->hi[k2] < a->lo[k2]))
                 continue;
             const double corner[3] = {noct_max(a->lo[0], b->lo[0]), noct_max(a->lo[1], b->lo[1]),
                                       noct_max(a->lo[2], b->lo[2])};
