@@ -567,6 +567,82 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
     return NOCT_OK;
 }
 
+/* ---- box form --------------------------------------------------------------- */
+
+/*
+ * Describe a mesh of 8 vertices with 3 face and 3 edge directions as a
+ * parallelepiped (mesh_internal.h), if its vertices are the 8 corners
+ * along its edge directions within a tiny deviation. Only a description
+ * the filter can trust is kept: dev bounds the exact deviation of every
+ * vertex coordinate from its corner, the rounding of its computation
+ * included (3 additions and a difference of magnitudes at most S: well
+ * under 8 half-ulps of S).
+ */
+static void compute_box_form(noctMesh *m)
+{
+    m->has_box = false;
+    if (m->nv != 8 || m->nsat_faces != 3 || m->nsat_edges != 3)
+        return;
+    const double *d[3] = {m->axis[3].u, m->axis[4].u, m->axis[5].u};
+    double c[3] = {0, 0, 0};
+    for (size_t i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k)
+            c[k] += m->v[3 * i + k] / 8;
+    double dual[3][3]; /* dual[i].d[j] = (i == j) * det */
+    cross3(d[1], d[2], dual[0]);
+    cross3(d[2], d[0], dual[1]);
+    cross3(d[0], d[1], dual[2]);
+    double det = dot3(d[0], dual[0]);
+    if (!(fabs(det) > 1e-6))
+        return;
+    double coef[8][3], h[3] = {0, 0, 0};
+    unsigned seen = 0;
+    for (size_t i = 0; i < 8; ++i) {
+        double r[3];
+        sub3(&m->v[3 * i], c, r);
+        unsigned pattern = 0;
+        for (int j = 0; j < 3; ++j) {
+            coef[i][j] = dot3(r, dual[j]) / det;
+            if (coef[i][j] == 0)
+                return;
+            pattern |= (coef[i][j] > 0 ? 1u : 0u) << j;
+            h[j] += fabs(coef[i][j]) / 8;
+        }
+        seen |= 1u << pattern;
+    }
+    if (seen != 0xffu)
+        return; /* not one vertex at each corner */
+    box_form *b = &m->box;
+    memcpy(b->c, c, sizeof c);
+    for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+            b->e[j][k] = h[j] * d[j][k];
+    double dev = 0, S = 0, V = 0;
+    for (size_t i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k) {
+            double corner = c[k], mag = fabs(c[k]);
+            for (int j = 0; j < 3; ++j) {
+                corner += coef[i][j] > 0 ? b->e[j][k] : -b->e[j][k];
+                mag += fabs(b->e[j][k]);
+            }
+            dev = fmax(dev, fabs(m->v[3 * i + k] - corner));
+            S = fmax(S, mag);
+            V = fmax(V, fabs(m->v[3 * i + k]));
+        }
+    dev = dev * (1 + 0x1p-50) + 8 * 0x1p-53 * (S + V);
+    if (!(dev <= 1e-9 * fmax(h[0], fmax(h[1], h[2]))))
+        return; /* too far from a box to be worth the description */
+    b->dev = dev;
+    b->size = S + dev;
+    for (int i = 0; i < 3; ++i)
+        b->own[i] = fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
+                    fabs(dot3(b->e[i], b->e[2]));
+    m->has_box = true;
+}
+
+_Static_assert(offsetof(noctMesh, box) + sizeof(box_form) <= 64 * NOCT_MESH_BOX_LINES,
+               "the box form fits the lines the world prefetches");
+
 /* ---- packing ----------------------------------------------------------------- */
 
 /* Bytes from offset *at for n elements of size elem aligned to align. */
@@ -590,7 +666,8 @@ static noctMesh *pack(noctMesh *m)
     size_t o_tri = take(&at, 3 * m->nt, sizeof *m->tri, _Alignof(uint32_t));
     size_t o_nodes = take(&at, m->nnodes, sizeof *m->nodes, _Alignof(bvh_node));
     size_t o_hull = take(&at, m->nhull, sizeof *m->hull, _Alignof(uint32_t));
-    char *block = malloc(at);
+    /* Cache-line aligned, so that the box form's lines are the first. */
+    char *block = aligned_alloc(64, (at + 63) / 64 * 64);
     if (block == NULL)
         return m;
     noctMesh *p = (noctMesh *)block;
@@ -720,6 +797,8 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         st = build_bvh(m, err);
     if (st == NOCT_OK)
         st = compute_convexity(m, err);
+    if (st == NOCT_OK)
+        compute_box_form(m);
     if (st == NOCT_OK)
         st = compute_hull(m, err);
     if (st != NOCT_OK) {

@@ -38,12 +38,35 @@ typedef struct bvh_node {
  * A finished mesh is one allocation (noct_mesh_pack): the struct, then its
  * filter axes, vertices, planes, triangles, BVH and hull, so that the
  * filter reads a few consecutive cache lines. */
+/*
+ * A mesh of 8 vertices that are, within dev per coordinate, the corners
+ * c + s0 e[0] + s1 e[1] + s2 e[2] (s = +-1) of a parallelepiped: a box,
+ * rotated or not, with its corners rounded. The filter decides a pair of
+ * such meshes from this description alone (the oriented-box test), so it
+ * reads these few cache lines of each mesh and nothing else.
+ */
+typedef struct box_form {
+    double c[3];
+    double e[3][3]; /* half-edge vectors */
+    double own[3];  /* the box's radius on axis e[i]: sum_j |e[i].e[j]| */
+    double dev;     /* bounds |vertex - its corner| per coordinate, exactly */
+    double size;    /* bounds |c_k| + sum_i |e[i]_k| + dev: every vertex
+                       coordinate, and the magnitudes the filter adds */
+} box_form;
+
+/* The cache lines at the start of a mesh that hold its box form. */
+#define NOCT_MESH_BOX_LINES 3
+
 struct noctMesh {
+    bool has_box;       /* box is valid */
+    bool convex;
+    bool packed;        /* one allocation: the arrays follow the struct */
+    double lo[3], hi[3];
+    box_form box;
     size_t nv;
     double *v;          /* 3 * nv coordinates */
     size_t nt;
     uint32_t *tri;      /* 3 * nt vertex indices, outward, BVH order */
-    double lo[3], hi[3];
     /* Separating-axis filter (small meshes with few directions, else
      * nsat_* = 0): unique face normal and edge directions, up to sign,
      * the faces' at axis[0, nsat_faces), the edges' after them. */
@@ -54,8 +77,6 @@ struct noctMesh {
      * is made by exact predicates. NULL without the filter. */
     double (*plane)[4];
     sat_axis *axis;
-    bool convex;
-    bool packed;        /* one allocation: the arrays follow the struct */
     size_t nhull;
     uint32_t *hull;     /* vertices of the convex hull */
     double centre[3];   /* mean of the hull vertices */

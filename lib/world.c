@@ -890,10 +890,11 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
 
 /* The narrowphase on the pairs the search found. Their objects and
  * meshes are scattered in memory, so each is requested some pairs ahead,
- * in two stages so that no request waits on a load: the objects 16 pairs
+ * in stages so that no request waits on a load: the objects 16 pairs
  * ahead, then 8 ahead the first cache lines of their meshes (read through
- * the objects), which hold what the exact level's filter reads of a small
- * mesh (mesh_internal.h). */
+ * the objects), which hold all the exact level's filter reads of a box
+ * (mesh_internal.h), and 4 ahead the lines its filter reads of another
+ * small mesh. */
 static noctStatus narrow(noctWorld *w)
 {
     const noctPair *p = w->tested.p;
@@ -915,8 +916,15 @@ static noctStatus narrow(noctWorld *w)
             for (int s = 0; s < 2; ++s) {
                 const char *m = (const char *)w->obj[s ? p[i + 8].b.index
                                                        : p[i + 8].a.index].mesh;
-                for (int line = 0; line < 8; ++line)
+                for (int line = 0; line < NOCT_MESH_BOX_LINES; ++line)
                     NOCT_PREFETCH(m + 64 * line);
+            }
+        if (i + 4 < n)
+            for (int s = 0; s < 2; ++s) {
+                const noctMesh *m = w->obj[s ? p[i + 4].b.index : p[i + 4].a.index].mesh;
+                if (!m->has_box)
+                    for (int line = NOCT_MESH_BOX_LINES; line < 10; ++line)
+                        NOCT_PREFETCH((const char *)m + 64 * line);
             }
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
         const object *oa = &w->obj[ia], *ob = &w->obj[ib];
