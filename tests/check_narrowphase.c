@@ -1241,6 +1241,67 @@ START_TEST(sat_filter_rotated_boxes)
 }
 END_TEST
 
+/* A box with one corner pushed out by 2^-33 along x, as 12 triangles:
+ * its vertices are a box's corners only within that deviation. Another
+ * box touching exactly that corner collides (closed solids), so no
+ * filter may take the box it approximates for the mesh. A diamond off
+ * that corner, its face 1e-3 from it and its bounding box overlapping
+ * the mesh's, is separated by the filter without a triangle test. */
+START_TEST(sat_filter_nearly_a_box)
+{
+    const double delta = 0x1p-33;
+    double v[24];
+    for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
+        v[3 * i] = (i & 4) ? 1 : 0;
+        v[3 * i + 1] = (i & 2) ? 1 : 0;
+        v[3 * i + 2] = (i & 1) ? 1 : 0;
+    }
+    v[3 * 7] += delta; /* corner (1, 1, 1) */
+    static const uint32_t quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                         {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    uint32_t sizes[12], idx[36];
+    for (int f = 0; f < 6; ++f) {
+        const uint32_t t[6] = {quads[f][0], quads[f][1], quads[f][2],
+                               quads[f][0], quads[f][2], quads[f][3]};
+        memcpy(&idx[6 * f], t, sizeof t);
+        sizes[2 * f] = sizes[2 * f + 1] = 3;
+    }
+    noctMesh *a, *b;
+    noctError err;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 12, idx, &a, &err), NOCT_OK);
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &b, &err), NOCT_OK);
+    const double c = sqrt(0.5);
+    const double rz[9] = {c, -c, 0, c, c, 0, 0, 0, 1}, half[3] = {0.5, 0.5, 0.5};
+    noctMesh *d;
+    ck_assert_int_eq(noctMeshCreateOrientedBox(half, rz, &d, &err), NOCT_OK);
+    const double touch[3] = {1.5 + delta, 1.25, 1.25}; /* b's face x = 1 + delta */
+    for (int swap = 0; swap < 2; ++swap) {
+        noctNarrowStats st = {0};
+        bool hit = false;
+        ck_assert_int_eq(swap ? noctCollide(b, touch, a, ORIGIN, NOCT_ACCURACY_EXACT, &hit, &st)
+                              : noctCollide(a, ORIGIN, b, touch, NOCT_ACCURACY_EXACT, &hit, &st),
+                         NOCT_OK);
+        ck_assert(hit);
+        ck_assert_uint_eq(st.sat_rejects, 0);
+        /* the diamond's face x + y = 2 + 2s - sqrt(1/2) passes 1e-3 / sqrt(2)
+         * beyond the corner's x + y = 2 + delta */
+        const double sq = sqrt(0.5), off = 0.5 * (sq + 2e-3);
+        const double away[3] = {1 + off, 1 + off, 0.5};
+        noctNarrowStats s2 = {0};
+        ck_assert_int_eq(swap ? noctCollide(d, away, a, ORIGIN, NOCT_ACCURACY_EXACT, &hit, &s2)
+                              : noctCollide(a, ORIGIN, d, away, NOCT_ACCURACY_EXACT, &hit, &s2),
+                         NOCT_OK);
+        ck_assert(!hit);
+        ck_assert_uint_eq(s2.box_rejects, 0);
+        ck_assert_uint_eq(s2.sat_rejects, 1);
+        ck_assert_uint_eq(s2.triangle_pairs, 0);
+    }
+    noctMeshDestroy(a);
+    noctMeshDestroy(b);
+    noctMeshDestroy(d);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_arguments)
 {
@@ -1292,6 +1353,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, collide_rejects_bad_input);
     tcase_add_test(tc, sat_filter_rejects_soundly);
     tcase_add_loop_test(tc, sat_filter_rotated_boxes, 0, 2);
+    tcase_add_test(tc, sat_filter_nearly_a_box);
     tcase_add_test(tc, level_timings);
     suite_add_tcase(s, tc);
 

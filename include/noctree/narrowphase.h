@@ -32,7 +32,10 @@
  * - #NOCT_ACCURACY_EXACT: box test; for two small meshes (such as boxes), a
  *   separating-axis test that only ever rejects, and only when the gap
  *   exceeds a rigorous bound on its rounding error (the solids lie inside
- *   the hulls of their placed vertices, so this proves them apart), and a
+ *   the hulls of their placed vertices, so this proves them apart; two
+ *   meshes whose 8 vertices are a box's corners, rotated or not, within a
+ *   tiny proven deviation are tested as oriented boxes, that deviation
+ *   added to their radii), and a
  *   search for a point inside both solids that only ever accepts (the
  *   centre of the boxes' overlap, or a vertex of one deep inside the
  *   other, proved strictly inside every triangle's plane by exact signs);
