@@ -638,6 +638,41 @@ static void compute_box_form(noctMesh *m)
         b->own[i] = fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
                     fabs(dot3(b->e[i], b->e[2]));
     m->has_box = true;
+
+    /* The dual, for the witness: every triangle on a face of the ideal box
+     * (its three corners agree in one sign), and a well-conditioned box. */
+    m->has_dual = false;
+    for (size_t t = 0; t < m->nt; ++t) {
+        unsigned agree = 7;
+        for (int corner = 1; corner < 3; ++corner) {
+            const double *q = coef[m->tri[3 * t + corner]];
+            const double *q0 = coef[m->tri[3 * t]];
+            for (int j = 0; j < 3; ++j)
+                if ((q[j] > 0) != (q0[j] > 0))
+                    agree &= ~(1u << j);
+        }
+        if (agree == 0)
+            return;
+    }
+    box_dual *x = &m->dual;
+    double eta = 0, mag = 0, gmax = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k)
+            x->g[i][k] = dual[i][k] / (det * h[i]);
+        gmax = fmax(gmax, fabs(x->g[i][0]) + fabs(x->g[i][1]) + fabs(x->g[i][2]));
+    }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            eta = fmax(eta, fabs(dot3(x->g[i], b->e[j]) - (i == j)));
+            for (int k = 0; k < 3; ++k)
+                mag = fmax(mag, fabs(x->g[i][k] * b->e[j][k]));
+        }
+    eta = eta * (1 + 0x1p-50) + 16 * 0x1p-53 * 3 * mag;
+    if (!(eta <= 1e-14))
+        return;
+    x->eta = eta;
+    x->gmax = gmax * (1 + 0x1p-50);
+    m->has_dual = true;
 }
 
 _Static_assert(offsetof(noctMesh, box) + sizeof(box_form) <= 64 * NOCT_MESH_BOX_LINES,

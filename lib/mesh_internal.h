@@ -57,12 +57,27 @@ typedef struct box_form {
 /* The cache lines at the start of a mesh that hold its box form. */
 #define NOCT_MESH_BOX_LINES 3
 
+/*
+ * For proving points inside a box-form mesh's solid (has_dual): g[i] is
+ * the dual of the half-edge vectors (g[i].e[j] = (i == j) within eta), so
+ * x = c + sum a_i e[i] has a_i = g[i].(x - c) up to eta; gmax bounds
+ * |g[i]|_1. Only set when every triangle lies on a face of the ideal box
+ * (its corners share a sign), so the surface the deviation bends stays
+ * within sqrt(3) dev of that box's surface.
+ */
+typedef struct box_dual {
+    double g[3][3];
+    double gmax, eta;
+} box_dual;
+
 struct noctMesh {
     bool has_box;       /* box is valid */
+    bool has_dual;      /* dual is valid (implies has_box) */
     bool convex;
     bool packed;        /* one allocation: the arrays follow the struct */
     double lo[3], hi[3];
     box_form box;
+    box_dual dual;
     size_t nv;
     double *v;          /* 3 * nv coordinates */
     size_t nt;

@@ -471,6 +471,68 @@ static bool box_separated(const placed *A, const placed *B)
     return false;
 }
 
+/*
+ * Is x proven inside the solid of a placed mesh with a box dual
+ * (mesh_internal.h)? Its triangles lie, within sqrt(3) dev, on the
+ * surface of the ideal box c + sum s_i e[i] (|s_i| <= 1): moving the
+ * vertices there from the ideal corners never crosses a point farther
+ * than that from the ideal surface, so such a point inside the ideal box
+ * has the same positive winding number for the mesh, and is inside its
+ * solid. x is that far inside when its coefficients a_i = g[i].(x - c - t)
+ * stay below 1 by gmax 2 dev; the slack also covers eta and the rounding
+ * of x - t - c (3 half-ulps of its magnitudes) and of the dot products.
+ */
+static bool box_contains(const placed *P, const double x[3])
+{
+    const box_form *b = &P->m->box;
+    const box_dual *q = &P->m->dual;
+    double r[3], rmax = 0, mag = 0;
+    for (int k = 0; k < 3; ++k) {
+        r[k] = (x[k] - P->t[k]) - b->c[k];
+        rmax = noct_max(rmax, fabs(r[k]));
+        mag = noct_max(mag, fabs(x[k]) + fabs(P->t[k]) + fabs(b->c[k]));
+    }
+    double slack = q->gmax * (2 * b->dev + 3 * 0x1p-53 * mag + 4 * 0x1p-53 * rmax) +
+                   4 * q->eta + 1e-15;
+    double lim = 1 - slack;
+    for (int i = 0; i < 3; ++i)
+        if (!(fabs(q->g[i][0] * r[0] + q->g[i][1] * r[1] + q->g[i][2] * r[2]) < lim))
+            return false;
+    return true;
+}
+
+/* Is the vertex of Q (placed, pv) that lies deepest in box-form mesh P,
+ * by its coefficients in P's frame, proven inside P? A vertex is a point
+ * of its own solid. */
+static bool box_vertex_witness(const placed *P, const placed *Q, const placed_vertices *pv)
+{
+    const box_form *b = &P->m->box;
+    const box_dual *q = &P->m->dual;
+    size_t best = 0;
+    double best_depth = INFINITY;
+    for (size_t i = 0; i < Q->m->nv; ++i) {
+        const double r[3] = {(pv->v[i][0] - P->t[0]) - b->c[0], (pv->v[i][1] - P->t[1]) - b->c[1],
+                             (pv->v[i][2] - P->t[2]) - b->c[2]};
+        double depth = 0;
+        for (int j = 0; j < 3; ++j)
+            depth = noct_max(depth, fabs(q->g[j][0] * r[0] + q->g[j][1] * r[1] +
+                                         q->g[j][2] * r[2]));
+        if (depth < best_depth) {
+            best_depth = depth;
+            best = i;
+        }
+    }
+    return best_depth < 1 && box_contains(P, pv->v[best]);
+}
+
+/* The centre of the placed meshes' boxes' overlap. */
+static void overlap_centre(const placed *A, const placed *B, double c[3])
+{
+    for (int k = 0; k < 3; ++k)
+        c[k] = 0.5 * (noct_max(A->m->lo[k] + A->t[k], B->m->lo[k] + B->t[k]) +
+                      noct_min(A->m->hi[k] + A->t[k], B->m->hi[k] + B->t[k]));
+}
+
 /* How far point x is outside the placed mesh P by its floating-point
  * triangle planes: the largest signed distance, negative when x is
  * (about) inside every plane. Only a ranking; exact_inside decides. */
@@ -517,9 +579,7 @@ static bool witness(const placed *A, const placed *B, const placed_vertices *va,
                     const placed_vertices *vb, const exact_ctx *ctx)
 {
     double c[3];
-    for (int k = 0; k < 3; ++k)
-        c[k] = 0.5 * (noct_max(A->m->lo[k] + A->t[k], B->m->lo[k] + B->t[k]) +
-                      noct_min(A->m->hi[k] + A->t[k], B->m->hi[k] + B->t[k]));
+    overlap_centre(A, B, c);
     if (plane_depth(A, c) < 0 && plane_depth(B, c) < 0 && exact_inside(A, va, c, ctx) &&
         exact_inside(B, vb, c, ctx))
         return true;
@@ -556,10 +616,25 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
             *hit = false;
             return NOCT_OK;
         }
+        /* Two boxes: the witness's candidates, tested on their
+         * descriptions; else the general witness on the triangles. */
         placed_vertices va, vb;
-        place_all(A, &va);
-        place_all(B, &vb);
-        if (witness(A, B, &va, &vb, &x)) {
+        bool found;
+        if (A->m->has_dual && B->m->has_dual) {
+            double c[3];
+            overlap_centre(A, B, c);
+            found = box_contains(A, c) && box_contains(B, c);
+            if (!found) {
+                place_all(A, &va);
+                place_all(B, &vb);
+                found = box_vertex_witness(B, A, &va) || box_vertex_witness(A, B, &vb);
+            }
+        } else {
+            place_all(A, &va);
+            place_all(B, &vb);
+            found = witness(A, B, &va, &vb, &x);
+        }
+        if (found) {
             if (st)
                 ++st->witnesses;
             *hit = true;

@@ -91,6 +91,8 @@ struct noctWorld {
      * contiguous records: the placed bounding box and the home block. */
     aabb *box;
     home_block *home;
+    const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
+                              reads it without touching the objects */
     uint32_t *movers;      /* live moving objects, by slot */
     uint32_t nmovers, capmovers;
     bool movers_stale;
@@ -914,14 +916,14 @@ static noctStatus narrow(noctWorld *w)
         }
         if (i + 8 < n)
             for (int s = 0; s < 2; ++s) {
-                const char *m = (const char *)w->obj[s ? p[i + 8].b.index
-                                                       : p[i + 8].a.index].mesh;
+                const char *m = (const char *)w->mesh[s ? p[i + 8].b.index
+                                                        : p[i + 8].a.index];
                 for (int line = 0; line < NOCT_MESH_BOX_LINES; ++line)
                     NOCT_PREFETCH(m + 64 * line);
             }
         if (i + 4 < n)
             for (int s = 0; s < 2; ++s) {
-                const noctMesh *m = w->obj[s ? p[i + 4].b.index : p[i + 4].a.index].mesh;
+                const noctMesh *m = w->mesh[s ? p[i + 4].b.index : p[i + 4].a.index];
                 if (!m->has_box)
                     for (int line = NOCT_MESH_BOX_LINES; line < 10; ++line)
                         NOCT_PREFETCH((const char *)m + 64 * line);
@@ -1046,6 +1048,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->mark);
     free(w->box);
     free(w->home);
+    free(w->mesh);
     free(w->movers);
     free(w->slow);
     free(w->work);
@@ -1099,7 +1102,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     } else {
         if (w->nslots >= 0x80000000u)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
-        /* obj, box, home and mark share one capacity, capslots; each
+        /* obj, box, home, mesh and mark share one capacity, capslots; each
          * array that grew is kept even if a later one fails. */
         uint32_t cap = w->capslots;
         if (!grow_array((void **)&w->obj, &cap, w->nslots + 1, sizeof *w->obj))
@@ -1112,9 +1115,12 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
             if (box != NULL)
                 w->box = box;
             home_block *home = box ? realloc(w->home, cap * sizeof *home) : NULL;
-            if (home == NULL)
+            if (home != NULL)
+                w->home = home;
+            const noctMesh **meshes = home ? realloc(w->mesh, cap * sizeof *meshes) : NULL;
+            if (meshes == NULL)
                 return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-            w->home = home;
+            w->mesh = meshes;
             w->capslots = cap;
         }
         slot = w->nslots++;
@@ -1122,7 +1128,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
         w->mark[slot] = 0;
     }
     object *o = &w->obj[slot];
-    o->mesh = mesh;
+    o->mesh = w->mesh[slot] = mesh;
     memcpy(o->mlo, mesh->lo, sizeof o->mlo);
     memcpy(o->mhi, mesh->hi, sizeof o->mhi);
     forget_home(w, slot);

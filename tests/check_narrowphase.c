@@ -1302,6 +1302,56 @@ START_TEST(sat_filter_nearly_a_box)
 }
 END_TEST
 
+/* The same box with that corner pushed in instead: the ideal box its
+ * vertices approximate holds points its solid does not. A tiny cube just
+ * beyond the dented face, inside the ideal box, is apart from the mesh,
+ * and a witness that took the ideal box for the solid would say it
+ * collides; one deep inside collides. */
+START_TEST(witness_nearly_a_box)
+{
+    const double delta = 0x1p-33;
+    double v[24];
+    for (int i = 0; i < 8; ++i) {
+        v[3 * i] = (i & 4) ? 1 : 0;
+        v[3 * i + 1] = (i & 2) ? 1 : 0;
+        v[3 * i + 2] = (i & 1) ? 1 : 0;
+    }
+    v[3 * 7] -= delta; /* corner (1, 1, 1) */
+    static const uint32_t quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                         {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    uint32_t sizes[12], idx[36];
+    for (int f = 0; f < 6; ++f) {
+        const uint32_t t[6] = {quads[f][0], quads[f][1], quads[f][2],
+                               quads[f][0], quads[f][2], quads[f][3]};
+        memcpy(&idx[6 * f], t, sizeof t);
+        sizes[2 * f] = sizes[2 * f + 1] = 3;
+    }
+    noctMesh *a, *tiny;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 12, idx, &a, NULL), NOCT_OK);
+    const double h = 0x1p-40;
+    ck_assert_int_eq(noctMeshCreateBox(h, h, h, &tiny, NULL), NOCT_OK);
+    /* Near (y, z) = (1, 1) the +x face is x = 1 - delta min(y, z) to within
+     * delta^2: the cube's x >= 1 - delta/2 - h lies beyond it. */
+    const double beyond[3] = {1 - delta / 2, 1 - delta / 64, 1 - delta / 64};
+    const double deep[3] = {1 - 2 * delta, 1 - delta / 64, 1 - delta / 64};
+    for (int swap = 0; swap < 2; ++swap) {
+        noctNarrowStats st = {0};
+        bool hit = true;
+        ck_assert_int_eq(swap ? noctCollide(tiny, beyond, a, ORIGIN, NOCT_ACCURACY_EXACT, &hit, &st)
+                              : noctCollide(a, ORIGIN, tiny, beyond, NOCT_ACCURACY_EXACT, &hit, &st),
+                         NOCT_OK);
+        ck_assert(!hit);
+        ck_assert_uint_eq(st.box_rejects, 0);
+        ck_assert_int_eq(swap ? noctCollide(tiny, deep, a, ORIGIN, NOCT_ACCURACY_EXACT, &hit, &st)
+                              : noctCollide(a, ORIGIN, tiny, deep, NOCT_ACCURACY_EXACT, &hit, &st),
+                         NOCT_OK);
+        ck_assert(hit);
+    }
+    noctMeshDestroy(a);
+    noctMeshDestroy(tiny);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_arguments)
 {
@@ -1354,6 +1404,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, sat_filter_rejects_soundly);
     tcase_add_loop_test(tc, sat_filter_rotated_boxes, 0, 2);
     tcase_add_test(tc, sat_filter_nearly_a_box);
+    tcase_add_test(tc, witness_nearly_a_box);
     tcase_add_test(tc, level_timings);
     suite_add_tcase(s, tc);
 
