@@ -715,8 +715,8 @@ static bool stages_section(const char *const *specs, size_t nspecs, int N, int r
     printf("\n== Where the time goes (N = %d, ms per step, median of %d runs) ==\n", N,
            repeats);
     printf("a run at exact accuracy, and one at convex accuracy for its convex level;\n"
-           "pair search includes the box tests; the narrowphase levels are timed per\n"
-           "pair inside the library\n");
+           "pair search includes the box tests; the narrowphase levels are the\n"
+           "world's loop over the pairs whose boxes overlap\n");
     FILE *f = open_out("stages.csv");
     if (f == NULL)
         return false;
