@@ -62,6 +62,12 @@ EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tes
 	tests/lib.sh \
 	tests/inline-client.c
 
+# The peer benchmark's event counts against SCENES.md, when it is built.
+if HAVE_PEERS
+TESTS += tests/peers.sh
+endif
+EXTRA_DIST += tests/peers.sh
+
 AM_TESTS_ENVIRONMENT = \
 	CC='$(CC)'; NM='$(NM)'; srcdir='$(srcdir)/tests'; \
 	top_srcdir='$(top_srcdir)'; top_builddir='$(top_builddir)'; \

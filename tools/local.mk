@@ -36,6 +36,16 @@ tools_bench_world_SOURCES = tools/bench-world.c
 tools_bench_world_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_bench_world_LDADD = lib/libnoctree-efficient.la
 
+# libnoctree against FCL's and ODE's broadphases, when both are installed.
+if HAVE_PEERS
+noinst_PROGRAMS += tools/bench-peers
+endif
+tools_bench_peers_SOURCES = tools/bench-peers.cc
+tools_bench_peers_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT \
+	-DNOCT_ODE_VERSION='"$(ODE_VERSION)"' $(PEERS_CFLAGS)
+tools_bench_peers_CXXFLAGS = $(NOCT_CXXFLAGS)
+tools_bench_peers_LDADD = lib/libnoctree-efficient.la $(PEERS_LIBS)
+
 bench: tools/bench-octree-defensive tools/bench-octree-efficient \
 		tools/bench-narrowphase tools/bench-world
 	BENCH_BINDIR=tools $(SHELL) $(srcdir)/tools/bench-octree.sh

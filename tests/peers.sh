@@ -1,0 +1,42 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# bench-peers end to end: every library finds the scenes' known numbers of
+# contact-begin events (SCENES.md: (2R + 1)^2 on the planes, where R is the
+# last ring whose facing pair met, at step 51 + 2R; 6 212 on gas 1 000 in
+# 200 steps), one CSV row per run, and exit status 2 for bad usage.
+set -u
+. "${srcdir:-.}/lib.sh"
+peers="$top_builddir/tools/bench-peers"
+
+# begins_are FILE SCENE COUNT ROWS: the table has ROWS rows for SCENE, and
+# every one of them counts COUNT contact begins (column 9).
+begins_are() {
+    awk -v s="$2" -v n="$3" -v rows="$4" '$1 == s { r++; if ($9 != n) bad = 1 }
+        END { exit bad || r != rows }' "$1"
+}
+
+"$peers" --quick --csv "$tmp/q.csv" > "$tmp/q.txt" 2> "$tmp/q.err"
+check "bench-peers --quick exits 0" [ $? -eq 0 ]
+check "bench-peers: nothing on stderr" [ ! -s "$tmp/q.err" ]
+check "bench-peers: planes:3, 3 libraries, 49 begins each" begins_are "$tmp/q.txt" planes:3 49 3
+check "bench-peers: gas:1000, 3 libraries, 6212 begins each" \
+    begins_are "$tmp/q.txt" gas:1000 6212 3
+check "bench-peers: a header and 6 CSV rows" [ "$(wc -l < "$tmp/q.csv")" -eq 7 ]
+check "bench-peers: libnoctree is the base (x = -)" \
+    grep -q '^planes:3  *98  *libnoctree .* -$' "$tmp/q.txt"
+
+# 55 steps: the facing pairs of rings 0 to 2 have met (steps 51, 53, 55).
+"$peers" --steps 55 --repeats 2 --libs libnoctree,fcl-dtree,ode-sap,ode-hash \
+    --csv "$tmp/s.csv" planes:3 > "$tmp/s.txt" 2>&1
+check "bench-peers --steps 55 exits 0" [ $? -eq 0 ]
+check "bench-peers: 4 libraries, 25 begins each" begins_are "$tmp/s.txt" planes:3 25 4
+check "bench-peers: 2 repeats x 4 libraries in the CSV" [ "$(wc -l < "$tmp/s.csv")" -eq 9 ]
+
+expect_prog "$peers" 0 '^usage' --help
+expect_prog "$peers" 2 "'planes:x': a scene is planes:K" planes:x
+expect_prog "$peers" 2 "'gas:0': a scene is" gas:0
+expect_prog "$peers" 2 "unknown library 'bullet'" --libs fcl-dtree,bullet
+expect_prog "$peers" 2 'bad option or value: --steps' --steps 0
+expect_prog "$peers" 2 "/nonexistent/p.csv:" --csv /nonexistent/p.csv planes:1
+
+finish peers.sh

@@ -1,0 +1,656 @@
+// SPDX-License-Identifier: MIT
+/*
+ * bench-peers: libnoctree against the broadphases it means to beat, in one
+ * run, on the same scenes.
+ *
+ * The peers are FCL's dynamic AABB tree and ODE's sweep-and-prune and hash
+ * spaces, each with its library's own box-box test (FCL's boxBox2, ODE's
+ * dBoxBox), the configurations the issue tracker quotes. Every library runs
+ * the same SCENES.md scene, built here from SCENES.md for the peers and by
+ * noctSceneFamily() for libnoctree, with the same dynamics: move, bounce off
+ * the container walls, find the colliding pairs, reverse the objects of the
+ * pairs that begin. Their contact-begin counts must agree (the scenes' known
+ * answers), and the tool fails when they do not: a peer that found other
+ * pairs did other work.
+ *
+ * Each run is a child process (its peak memory is its own), the libraries
+ * take turns in every repeat, and a cell is the median over the repeats of
+ * each run's per-step median, with half the range as a percentage. The
+ * per-step time covers the whole step in every library: moving the
+ * objects, updating the broadphase, the pair search, the box-box tests and
+ * the response.
+ *
+ * A run stops early when its steps have taken more than --budget seconds
+ * (default 60); its row then says how many steps it covers, and its events
+ * are not compared.
+ *
+ * Usage: bench-peers [--quick] [--steps S] [--repeats R] [--N N]
+ *                    [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]
+ * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
+ */
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/narrowphase/collision.h>
+#include <ode/ode.h>
+
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cerrno>
+#include <cinttypes>
+#include <cstdint>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <noctree/scene.h>
+#include <noctree/version.h>
+#include <noctree/world.h>
+
+namespace {
+
+double now()
+{
+    return std::chrono::duration<double>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+// ---- the scenes, from SCENES.md -------------------------------------------
+
+struct Body {
+    double c[3];  // centre
+    double r[9];  // rotation, row-major; its columns are the box's axes
+    double h[3];  // half-extents
+    double v[3];  // velocity: direction times speed
+};
+
+struct Scene {
+    std::vector<Body> body;
+    bool walls = false;
+    double lb = 0; // the gas container [0, lb]^3
+};
+
+uint64_t splitmix64(uint64_t &s)
+{
+    uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+double draw(uint64_t &s)
+{
+    return static_cast<double>(splitmix64(s) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// planes:K or gas:N, checked; false with a message for anything else.
+bool parse_scene(const char *spec, bool *gas, long *size)
+{
+    char *end;
+    if (std::strncmp(spec, "planes:", 7) == 0) {
+        *gas = false;
+        *size = std::strtol(spec + 7, &end, 10);
+        if (end != spec + 7 && *end == '\0' && *size >= 0 && *size <= 1000)
+            return true;
+    } else if (std::strncmp(spec, "gas:", 4) == 0) {
+        *gas = true;
+        *size = std::strtol(spec + 4, &end, 10);
+        if (end != spec + 4 && *end == '\0' && *size >= 1 && *size <= 10000000)
+            return true;
+    }
+    std::fprintf(stderr,
+                 "bench-peers: '%s': a scene is planes:K (K 0 to 1000) or gas:N "
+                 "(N 1 to 10000000)\n",
+                 spec);
+    return false;
+}
+
+/* The scene's known contact-begin count in the first steps steps, if
+ * SCENES.md gives one: on the planes ring r's facing pair begins at step
+ * 51 + 2r and never again; gas has answers for 200 steps. */
+bool known_begins(bool gas, long size, int steps, size_t *known)
+{
+    if (!gas) {
+        const long rings = steps < 51 ? -1 : std::min(size, static_cast<long>((steps - 51) / 2));
+        *known = static_cast<size_t>((2 * rings + 1) * (2 * rings + 1));
+        if (rings < 0)
+            *known = 0;
+        return true;
+    }
+    *known = size == 1000 ? 6212 : size == 10000 ? 77281 : size == 100000 ? 783455 : 0;
+    return steps == 200 && *known != 0;
+}
+
+Scene make_scene(bool gas, long size)
+{
+    Scene s;
+    if (!gas) {
+        const long k = size;
+        for (int side = 0; side < 2; ++side)
+            for (long i = -k; i <= k; ++i)
+                for (long j = -k; j <= k; ++j) {
+                    const long r = std::max(std::labs(i), std::labs(j));
+                    const double sign = side == 0 ? -1.0 : 1.0;
+                    Body b = {{sign * (3.02 + 0.1 * static_cast<double>(r)),
+                               2.0 * static_cast<double>(i), 2.0 * static_cast<double>(j)},
+                              {1, 0, 0, 0, 1, 0, 0, 0, 1},
+                              {0.5, 0.5, 0.5},
+                              {-sign * 0.05, 0, 0}};
+                    s.body.push_back(b);
+                }
+        return s;
+    }
+    const long n = size;
+    const double pi = 3.141592653589793;
+    s.walls = true;
+    s.lb = std::cbrt(10.0 * static_cast<double>(n));
+    uint64_t st = 42;
+    for (long i = 0; i < n; ++i) {
+        Body b;
+        for (int a = 0; a < 3; ++a)
+            b.h[a] = 0.25 + 0.5 * draw(st);
+        const double u1 = draw(st), u2 = draw(st), u3 = draw(st);
+        const double x = std::sqrt(1 - u1) * std::sin(2 * pi * u2);
+        const double y = std::sqrt(1 - u1) * std::cos(2 * pi * u2);
+        const double z = std::sqrt(u1) * std::sin(2 * pi * u3);
+        const double w = std::sqrt(u1) * std::cos(2 * pi * u3);
+        const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+                             2 * (x * y + z * w),     1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+                             2 * (x * z - y * w),     2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
+        std::memcpy(b.r, r, sizeof r);
+        for (int a = 0; a < 3; ++a)
+            b.c[a] = s.lb * draw(st);
+        const double dz = 2 * draw(st) - 1, phi = 2 * pi * draw(st);
+        const double d[3] = {std::sqrt(1 - dz * dz) * std::cos(phi),
+                             std::sqrt(1 - dz * dz) * std::sin(phi), dz};
+        for (int a = 0; a < 3; ++a)
+            b.v[a] = 0.05 * d[a];
+        s.body.push_back(b);
+    }
+    return s;
+}
+
+// ---- the dynamics every peer shares -----------------------------------------
+
+// A colliding pair as one sortable key: lower index in the high half.
+uint64_t key(uintptr_t a, uintptr_t b)
+{
+    if (a > b)
+        std::swap(a, b);
+    return (static_cast<uint64_t>(a) << 32) | static_cast<uint64_t>(b);
+}
+
+struct Dynamics {
+    std::vector<Body> &body;
+    const Scene &scene;
+    std::vector<uint64_t> now, before, began;
+    std::vector<unsigned char> flip;
+    size_t begins = 0;
+
+    Dynamics(std::vector<Body> &b, const Scene &s) : body(b), scene(s), flip(b.size()) {}
+
+    // p += v, then the walls: a centre coordinate outside [0, lb] that
+    // still moves outward has that velocity component negated.
+    void move()
+    {
+        for (Body &b : body)
+            for (int a = 0; a < 3; ++a) {
+                b.c[a] += b.v[a];
+                if (scene.walls &&
+                    ((b.c[a] < 0 && b.v[a] < 0) || (b.c[a] > scene.lb && b.v[a] > 0)))
+                    b.v[a] = -b.v[a];
+            }
+    }
+
+    // The contact-begin reversal on the pairs in now.
+    void respond()
+    {
+        std::sort(now.begin(), now.end());
+        now.erase(std::unique(now.begin(), now.end()), now.end());
+        began.clear();
+        std::set_difference(now.begin(), now.end(), before.begin(), before.end(),
+                            std::back_inserter(began));
+        begins += began.size();
+        for (uint64_t p : began)
+            flip[p >> 32] = flip[p & 0xffffffffu] = 1;
+        for (uint64_t p : began)
+            for (uint32_t i : {static_cast<uint32_t>(p >> 32), static_cast<uint32_t>(p)})
+                if (flip[i]) {
+                    flip[i] = 0;
+                    for (int a = 0; a < 3; ++a)
+                        body[i].v[a] = -body[i].v[a];
+                }
+        before.swap(now);
+        now.clear();
+    }
+};
+
+// ---- one run of one library ---------------------------------------------------
+
+struct Result {
+    double median, p90, setup;
+    size_t objects, begins;
+    int steps; // steps done: fewer than asked when the budget ran out
+    int ok;
+};
+
+struct Options {
+    int steps = 200;
+    int repeats = 3;
+    int N = 30;
+    double budget = 60;
+};
+
+// Per-step times into a result.
+void summarize(std::vector<double> &t, Result &r)
+{
+    std::sort(t.begin(), t.end());
+    r.steps = static_cast<int>(t.size());
+    r.median = t.empty() ? 0 : t[t.size() / 2];
+    r.p90 = t.empty() ? 0 : t[std::min(t.size() - 1, t.size() * 9 / 10)];
+    r.ok = !t.empty();
+}
+
+Result run_noctree(const char *spec, const Options &o)
+{
+    Result r = {};
+    const double t0 = now();
+    noctScene *sc;
+    noctWorld *w;
+    noctError err;
+    if (noctSceneFamily(spec, &sc, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return r;
+    }
+    noctSceneDef(sc)->N = o.N;
+    if (noctSceneBuild(sc, &w, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return r;
+    }
+    r.setup = now() - t0;
+    r.objects = noctWorldObjectCount(w);
+    std::vector<double> t;
+    const double start = now();
+    for (int s = 0; s < o.steps && now() - start < o.budget; ++s) {
+        const double a = now();
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+            return r;
+        }
+        t.push_back(now() - a);
+        const noctPair *p;
+        r.begins += noctWorldBegan(w, &p);
+    }
+    summarize(t, r);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+    return r;
+}
+
+struct FclContext {
+    std::vector<uint64_t> *pairs;
+};
+
+bool fcl_pair(fcl::CollisionObjectd *a, fcl::CollisionObjectd *b, void *data)
+{
+    fcl::CollisionRequestd req;
+    fcl::CollisionResultd res;
+    fcl::collide(a, b, req, res);
+    if (res.isCollision())
+        static_cast<FclContext *>(data)->pairs->push_back(
+            key(reinterpret_cast<uintptr_t>(a->getUserData()),
+                reinterpret_cast<uintptr_t>(b->getUserData())));
+    return false; // go on
+}
+
+Result run_fcl(Scene &s, const Options &o)
+{
+    Result r = {};
+    const double t0 = now();
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
+    std::vector<fcl::CollisionObjectd *> raw;
+    for (size_t i = 0; i < s.body.size(); ++i) {
+        const Body &b = s.body[i];
+        auto box = std::make_shared<fcl::Boxd>(2 * b.h[0], 2 * b.h[1], 2 * b.h[2]);
+        fcl::Matrix3d rot;
+        rot << b.r[0], b.r[1], b.r[2], b.r[3], b.r[4], b.r[5], b.r[6], b.r[7], b.r[8];
+        obj.emplace_back(new fcl::CollisionObjectd(box, rot, fcl::Vector3d(b.c[0], b.c[1], b.c[2])));
+        obj.back()->setUserData(reinterpret_cast<void *>(static_cast<uintptr_t>(i)));
+        raw.push_back(obj.back().get());
+    }
+    fcl::DynamicAABBTreeCollisionManagerd mgr;
+    mgr.registerObjects(raw);
+    mgr.setup();
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    Dynamics dyn(s.body, s);
+    FclContext ctx = {&dyn.now};
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        dyn.move();
+        for (size_t i = 0; i < raw.size(); ++i) {
+            raw[i]->setTranslation(fcl::Vector3d(s.body[i].c[0], s.body[i].c[1], s.body[i].c[2]));
+            raw[i]->computeAABB();
+        }
+        mgr.update();
+        mgr.collide(&ctx, fcl_pair);
+        dyn.respond();
+        t.push_back(now() - a);
+    }
+    r.begins = dyn.begins;
+    summarize(t, r);
+    return r;
+}
+
+void ode_pair(void *data, dGeomID a, dGeomID b)
+{
+    dContactGeom c;
+    if (dCollide(a, b, 1, &c, sizeof c) > 0)
+        static_cast<std::vector<uint64_t> *>(data)->push_back(
+            key(reinterpret_cast<uintptr_t>(dGeomGetData(a)),
+                reinterpret_cast<uintptr_t>(dGeomGetData(b))));
+}
+
+Result run_ode(Scene &s, const Options &o, bool sap, bool gas)
+{
+    Result r = {};
+    const double t0 = now();
+    dInitODE2(0);
+    // SAP sorts on the first axis: the planes' cubes share their x.
+    dSpaceID space = sap ? dSweepAndPruneSpaceCreate(nullptr, gas ? dSAP_AXES_XYZ : dSAP_AXES_YZX)
+                         : dHashSpaceCreate(nullptr);
+    std::vector<dGeomID> geom;
+    for (size_t i = 0; i < s.body.size(); ++i) {
+        const Body &b = s.body[i];
+        dGeomID g = dCreateBox(space, 2 * b.h[0], 2 * b.h[1], 2 * b.h[2]);
+        dMatrix3 rot = {b.r[0], b.r[1], b.r[2], 0, b.r[3], b.r[4], b.r[5], 0,
+                        b.r[6], b.r[7], b.r[8], 0};
+        dGeomSetRotation(g, rot);
+        dGeomSetPosition(g, b.c[0], b.c[1], b.c[2]);
+        dGeomSetData(g, reinterpret_cast<void *>(static_cast<uintptr_t>(i)));
+        geom.push_back(g);
+    }
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    Dynamics dyn(s.body, s);
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        dyn.move();
+        for (size_t i = 0; i < geom.size(); ++i)
+            dGeomSetPosition(geom[i], s.body[i].c[0], s.body[i].c[1], s.body[i].c[2]);
+        dSpaceCollide(space, &dyn.now, ode_pair);
+        dyn.respond();
+        t.push_back(now() - a);
+    }
+    r.begins = dyn.begins;
+    summarize(t, r);
+    dSpaceDestroy(space); // destroys the geoms too
+    dCloseODE();
+    return r;
+}
+
+const char *const LIBS[] = {"libnoctree", "fcl-dtree", "ode-sap", "ode-hash"};
+const int NLIBS = 4;
+
+Result run_one(const char *spec, int lib, const Options &o)
+{
+    bool gas;
+    long size;
+    if (!parse_scene(spec, &gas, &size))
+        return Result{};
+    if (lib == 0)
+        return run_noctree(spec, o);
+    Scene s = make_scene(gas, size);
+    if (lib == 1)
+        return run_fcl(s, o);
+    return run_ode(s, o, lib == 2, gas);
+}
+
+// Runs one configuration in a child process; peak is its peak memory in KiB.
+bool run_child(const char *spec, int lib, const Options &o, Result &r, long &peak)
+{
+    int fds[2];
+    if (pipe(fds) != 0) {
+        std::perror("bench-peers: pipe");
+        return false;
+    }
+    std::fflush(stdout);
+    pid_t pid = fork();
+    if (pid < 0) {
+        std::perror("bench-peers: fork");
+        return false;
+    }
+    if (pid == 0) {
+        close(fds[0]);
+        Result res = run_one(spec, lib, o);
+        ssize_t wr = write(fds[1], &res, sizeof res);
+        _exit(wr == static_cast<ssize_t>(sizeof res) ? 0 : 1);
+    }
+    close(fds[1]);
+    ssize_t got = read(fds[0], &r, sizeof r);
+    close(fds[0]);
+    int status;
+    struct rusage ru;
+    if (wait4(pid, &status, 0, &ru) < 0)
+        return false;
+    peak = ru.ru_maxrss;
+    return got == static_cast<ssize_t>(sizeof r) && WIFEXITED(status) &&
+           WEXITSTATUS(status) == 0 && r.ok;
+}
+
+double median_of(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+bool parse_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = std::strtol(s, &end, 10);
+    if (errno != 0 || end == s || *end != '\0' || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
+void usage(FILE *f)
+{
+    std::fputs("usage: bench-peers [--quick] [--steps S] [--repeats R] [--N N]\n"
+               "                   [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
+               "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
+               "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
+               "libnoctree,fcl-dtree,ode-sap,ode-hash (default all but ode-hash,\n"
+               "which takes seconds a step on the large planes).\n"
+               "--quick: planes:3 gas:1000, 1 repeat, 200 steps.\n",
+               f);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    Options o;
+    std::vector<const char *> scenes;
+    bool use[NLIBS] = {true, true, true, false};
+    bool quick = false;
+    const char *csv_path = nullptr;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        long v;
+        const bool has = i + 1 < argc;
+        if (std::strcmp(a, "--quick") == 0) {
+            quick = true;
+        } else if (std::strcmp(a, "--help") == 0) {
+            usage(stdout);
+            return 0;
+        } else if (std::strcmp(a, "--steps") == 0 && has && parse_int(argv[i + 1], 1, 100000, &v)) {
+            o.steps = static_cast<int>(v);
+            ++i;
+        } else if (std::strcmp(a, "--repeats") == 0 && has && parse_int(argv[i + 1], 1, 100, &v)) {
+            o.repeats = static_cast<int>(v);
+            ++i;
+        } else if (std::strcmp(a, "--N") == 0 && has && parse_int(argv[i + 1], 1, 100000, &v)) {
+            o.N = static_cast<int>(v);
+            ++i;
+        } else if (std::strcmp(a, "--budget") == 0 && has && parse_int(argv[i + 1], 1, 86400, &v)) {
+            o.budget = static_cast<double>(v);
+            ++i;
+        } else if (std::strcmp(a, "--csv") == 0 && has) {
+            csv_path = argv[++i];
+        } else if (std::strcmp(a, "--libs") == 0 && has) {
+            std::string list = argv[++i];
+            for (bool &u : use)
+                u = false;
+            size_t pos = 0;
+            while (pos <= list.size()) {
+                size_t comma = list.find(',', pos);
+                std::string name = list.substr(pos, comma == std::string::npos ? comma : comma - pos);
+                int found = -1;
+                for (int l = 0; l < NLIBS; ++l)
+                    if (name == LIBS[l])
+                        found = l;
+                if (found < 0) {
+                    std::fprintf(stderr, "bench-peers: --libs: unknown library '%s'\n",
+                                 name.c_str());
+                    usage(stderr);
+                    return 2;
+                }
+                use[found] = true;
+                if (comma == std::string::npos)
+                    break;
+                pos = comma + 1;
+            }
+        } else if (a[0] != '-') {
+            bool gas;
+            long size;
+            if (!parse_scene(a, &gas, &size))
+                return 2;
+            scenes.push_back(a);
+        } else {
+            std::fprintf(stderr, "bench-peers: bad option or value: %s\n", a);
+            usage(stderr);
+            return 2;
+        }
+    }
+    if (quick) {
+        o.repeats = 1;
+        if (scenes.empty())
+            scenes = {"planes:3", "gas:1000"};
+    }
+    if (scenes.empty())
+        scenes = {"planes:10", "planes:100", "planes:300", "gas:10000", "gas:100000"};
+    FILE *csv = nullptr;
+    if (csv_path != nullptr) {
+        csv = std::fopen(csv_path, "w");
+        if (csv == nullptr) {
+            std::fprintf(stderr, "bench-peers: %s: %s\n", csv_path, std::strerror(errno));
+            return 2;
+        }
+        std::fputs("scene,objects,library,repeat,steps,median_s,p90_s,setup_s,begins,peak_kib\n",
+                   csv);
+    }
+    std::printf("bench-peers: libnoctree %s (efficient build, N = %d, exact) against FCL %s "
+                "(dynamic AABB tree)\nand ODE %s (sweep and prune; hash), each with its own "
+                "box-box test; one thread\n",
+                NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+    std::printf("per-step wall time of the whole step, %d steps: median over %d interleaved "
+                "runs of each run's\nmedian (+-: half the range, %% of the median); x: this "
+                "library's median over libnoctree's\n\n",
+                o.steps, o.repeats);
+    std::printf("%-11s %8s  %-10s %10s %6s %10s %9s %7s %8s %8s %7s\n", "scene", "objects",
+                "library", "median ms", "+-", "p90 ms", "ns/obj", "setup s", "begins",
+                "peak MiB", "x");
+    bool all_ok = true;
+    for (const char *spec : scenes) {
+        std::vector<Result> res[NLIBS];
+        std::vector<long> peak[NLIBS];
+        for (int rep = 0; rep < o.repeats; ++rep)
+            for (int l = 0; l < NLIBS; ++l) {
+                if (!use[l])
+                    continue;
+                Result r;
+                long pk;
+                if (!run_child(spec, l, o, r, pk)) {
+                    std::fprintf(stderr, "bench-peers: %s: %s failed\n", spec, LIBS[l]);
+                    all_ok = false;
+                    continue;
+                }
+                res[l].push_back(r);
+                peak[l].push_back(pk);
+                if (csv != nullptr)
+                    std::fprintf(csv, "%s,%zu,%s,%d,%d,%.6g,%.6g,%.4g,%zu,%ld\n", spec,
+                                 r.objects, LIBS[l], rep, r.steps, r.median, r.p90, r.setup,
+                                 r.begins, pk);
+            }
+        bool gas;
+        long size;
+        parse_scene(spec, &gas, &size);
+        size_t known;
+        const bool has_known = known_begins(gas, size, o.steps, &known);
+        // Every run that did all its steps must find the same events.
+        size_t first = SIZE_MAX;
+        for (int l = 0; l < NLIBS; ++l)
+            for (const Result &r : res[l])
+                if (r.steps == o.steps) {
+                    if (first == SIZE_MAX)
+                        first = r.begins;
+                    if (r.begins != first || (has_known && r.begins != known)) {
+                        std::printf("%-11s %8zu  %-10s contact begins %zu, but %s %zu\n", spec,
+                                    r.objects, LIBS[l], r.begins,
+                                    has_known ? "SCENES.md says" : "another run found",
+                                    has_known ? known : first);
+                        all_ok = false;
+                    }
+                }
+        double base = 0;
+        for (int l = 0; l < NLIBS; ++l) {
+            if (res[l].empty())
+                continue;
+            std::vector<double> med, p90, setup;
+            long pk = 0;
+            int steps = o.steps;
+            for (size_t i = 0; i < res[l].size(); ++i) {
+                med.push_back(res[l][i].median);
+                p90.push_back(res[l][i].p90);
+                setup.push_back(res[l][i].setup);
+                pk = std::max(pk, peak[l][i]);
+                steps = std::min(steps, res[l][i].steps);
+            }
+            const double m = median_of(med);
+            const double lo = *std::min_element(med.begin(), med.end());
+            const double hi = *std::max_element(med.begin(), med.end());
+            if (l == 0)
+                base = m;
+            char x[16] = "-";
+            if (l > 0 && base > 0)
+                std::snprintf(x, sizeof x, "%.2f", m / base);
+            const Result &r0 = res[l][0];
+            std::printf("%-11s %8zu  %-10s %10.4g %5.0f%% %10.4g %9.0f %7.2f %8zu %8.1f %7s", spec,
+                        r0.objects, LIBS[l], 1e3 * m, m > 0 ? 50 * (hi - lo) / m : 0.0,
+                        1e3 * median_of(p90), 1e9 * m / static_cast<double>(r0.objects),
+                        median_of(setup), r0.begins, static_cast<double>(pk) / 1024, x);
+            if (steps < o.steps)
+                std::printf("  (budget: first %d steps)", steps);
+            std::putchar('\n');
+        }
+    }
+    if (csv != nullptr)
+        std::fclose(csv);
+    return all_ok ? 0 : 1;
+}
