@@ -824,7 +824,7 @@ static int sweep_axis(const leaf_box *g, uint32_t n)
     return best;
 }
 
-static noctStatus search_leaf(noctWorld *w, const cell *c)
+static noctStatus search_leaf(noctWorld *w, cell *c)
 {
     const cell *rc = cell_of(w->root);
     ++w->c.leaves_visited;
@@ -853,6 +853,10 @@ static noctStatus search_leaf(noctWorld *w, const cell *c)
     if (sweep) {
         axis = sweep_axis(g, c->count);
         sort_by_lower(g, c->count, axis, g + c->count);
+        /* The leaf keeps this order: objects move little in a step, so
+         * the next step's insertion sort finds them nearly sorted. */
+        for (uint32_t i = 0; i < c->count; ++i)
+            c->objs[i] = g[i].id;
     }
     /* With the boxes sorted on the sweep axis, b overlaps a there while b
      * starts before a ends; the other two axes decide. Their four
@@ -957,7 +961,7 @@ static noctStatus search(noctWorld *w, octNode *n)
         }
         return NOCT_OK;
     }
-    const cell *c = cell_of(n);
+    cell *c = cell_of(n);
     return c->count > 1 ? search_leaf(w, c) : NOCT_OK;
 }
 
