@@ -501,6 +501,76 @@ static bool box_contains(const placed *P, const double x[3])
     return true;
 }
 
+/*
+ * Do two placed meshes with box duals provably share a point, by the
+ * separating-axis test on their ideal boxes shrunk about their centres?
+ * Shrunk by the factor f = 1 - (2 gmax dev + 8 eta + 2e-15), every point
+ * x = c + sum l_i e[i] of the shrunk box has g[i].(x - c) below
+ * 1 - (2 gmax dev + 4 eta + 1e-15), since g[i].e[j] is within eta of
+ * (i == j): box_contains' lemma puts x inside the solid. Two
+ * parallelepipeds meet iff no axis among their face normals (the cross
+ * products of their own edges) and the cross products of an edge of each
+ * separates them, so the shrunk boxes, and with them the solids, meet when
+ * the projections overlap on all 15 axes. The bound on rounding, 256
+ * half-ulps of M (|u|_1 + |p|_inf |q|_inf) per axis u = p x q, covers the
+ * rounding of u (about 4 ulps of |p|_inf |q|_inf per coordinate), of T
+ * (|T| <= 4 M) and of the dot products several times over. An edge of
+ * each that are exactly parallel span no separating plane and give no
+ * axis (the boxes are the stored doubles c and e, so parallel means the
+ * exact cross product is zero); nearly parallel edges give an axis that
+ * the bound swamps, and the pair goes on to the witnesses.
+ */
+/* Is a b == c d exactly? Two-products (fma) away from underflow. */
+static bool products_equal(double a, double b, double c, double d)
+{
+    double h1 = a * b, h2 = c * d;
+    if (h1 == 0 || h2 == 0)
+        return (a == 0 || b == 0) && (c == 0 || d == 0);
+    return h1 == h2 && fabs(h1) > 0x1p-900 && fma(a, b, -h1) == fma(c, d, -h2);
+}
+
+static bool box_overlap_proven(const placed *A, const placed *B)
+{
+    const box_form *a = &A->m->box, *b = &B->m->box;
+    double M = noct_max(a->size, b->size);
+    double T[3];
+    for (int k = 0; k < 3; ++k) {
+        M = noct_max(M, noct_max(fabs(A->t[k]), fabs(B->t[k])));
+        T[k] = (b->c[k] + (B->t[k] - A->t[k])) - a->c[k];
+    }
+    const box_dual *ga = &A->m->dual, *gb = &B->m->dual;
+    const double fa = 1 - (2 * ga->gmax * a->dev + 8 * ga->eta + 2e-15);
+    const double fb = 1 - (2 * gb->gmax * b->dev + 8 * gb->eta + 2e-15);
+    const double unit = 256 * 0x1p-53 * M;
+    /* The axes as pairs of edges: A's face normals, B's, then A x B. */
+    const double *p[15], *q[15];
+    for (int i = 0; i < 3; ++i) {
+        p[i] = a->e[(i + 1) % 3];
+        q[i] = a->e[(i + 2) % 3];
+        p[3 + i] = b->e[(i + 1) % 3];
+        q[3 + i] = b->e[(i + 2) % 3];
+        for (int j = 0; j < 3; ++j) {
+            p[6 + 3 * i + j] = a->e[i];
+            q[6 + 3 * i + j] = b->e[j];
+        }
+    }
+    for (int n = 0; n < 15; ++n) {
+        const double *x = p[n], *y = q[n];
+        const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                             x[0] * y[1] - x[1] * y[0]};
+        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        if (l1 == 0 && n >= 6 && products_equal(x[1], y[2], x[2], y[1]) &&
+            products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
+            continue; /* parallel edges */
+        const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
+                          noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
+        const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
+        if (!(d + unit * (l1 + pq) < fa * box_radius(a, u) + fb * box_radius(b, u)))
+            return false;
+    }
+    return true;
+}
+
 /* Is the vertex of Q (placed, pv) that lies deepest in box-form mesh P,
  * by its coefficients in P's frame, proven inside P? A vertex is a point
  * of its own solid. */
@@ -623,7 +693,7 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
         if (A->m->has_dual && B->m->has_dual) {
             double c[3];
             overlap_centre(A, B, c);
-            found = box_contains(A, c) && box_contains(B, c);
+            found = (box_contains(A, c) && box_contains(B, c)) || box_overlap_proven(A, B);
             if (!found) {
                 place_all(A, &va);
                 place_all(B, &vb);

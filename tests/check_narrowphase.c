@@ -1175,7 +1175,7 @@ static double obb_gap(const double ha[3], const double ra[9], const double ta[3]
 START_TEST(sat_filter_rotated_boxes)
 {
     uint64_t rng = 0x5a7b0c5ULL + (uint64_t)_i;
-    size_t apart = 0, edge_only = 0;
+    size_t apart = 0, edge_only = 0, overlapping = 0;
     for (int trial = 0; trial < 400; ++trial) {
         double ha[3], hb[3], ra[9], rb[9], tb[3];
         for (int k = 0; k < 3; ++k) {
@@ -1231,6 +1231,9 @@ START_TEST(sat_filter_rotated_boxes)
             }
         } else if (gap < -1e-9) {
             EXPECT(hit);
+            /* two boxes that overlap are proven so on their box forms */
+            EXPECT(st.witnesses == 1 && st.triangle_pairs == 0 && st.bvh_pairs == 0);
+            ++overlapping;
         }
         noctMeshDestroy(a);
         noctMeshDestroy(b);
@@ -1238,6 +1241,7 @@ START_TEST(sat_filter_rotated_boxes)
     /* the sample exercises what it claims to */
     ck_assert_uint_gt(apart, 20);
     ck_assert_uint_gt(edge_only, 2);
+    ck_assert_uint_gt(overlapping, 20);
 }
 END_TEST
 
@@ -1306,7 +1310,9 @@ END_TEST
  * vertices approximate holds points its solid does not. A tiny cube just
  * beyond the dented face, inside the ideal box, is apart from the mesh,
  * and a witness that took the ideal box for the solid would say it
- * collides; one deep inside collides. */
+ * collides, as would the separating-axis proof on boxes not shrunk by
+ * the deviation (their edges are parallel: no edge-pair axis); one deep
+ * inside collides. */
 START_TEST(witness_nearly_a_box)
 {
     const double delta = 0x1p-33;

@@ -90,9 +90,11 @@ typedef struct noctNarrowStats {
     uint64_t sat_rejects;     /**< Exact level: pairs of small meshes
                                    a separating axis proved apart. */
     uint64_t witnesses;       /**< Exact level: pairs of small meshes
-                                   proved colliding by a point shown
-                                   inside both, before any triangle
-                                   test. */
+                                   proved colliding before any triangle
+                                   test: by a point shown inside both,
+                                   or, for two box-shaped meshes, by the
+                                   separating-axis test on their boxes
+                                   shrunk by a proven margin. */
     double seconds_convex;    /**< Time in the convex level (GJK), box
                                    tests excluded. */
     double seconds_exact;     /**< Time in the exact level, box tests
