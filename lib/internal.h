@@ -50,6 +50,14 @@ octDirection noct_direction_of(int x, int y, int z);
 static inline double noct_min(double a, double b) { return b < a ? b : a; }
 static inline double noct_max(double a, double b) { return b > a ? b : a; }
 
+/* Small functions on the hot paths that the compiler should not leave
+ * out of line however often they are called. */
+#if defined(__GNUC__)
+#  define NOCT_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#  define NOCT_ALWAYS_INLINE inline
+#endif
+
 /* Ask the cache for the line at p ahead of its use; nothing elsewhere. */
 #if defined(__GNUC__)
 #  define NOCT_PREFETCH(p) __builtin_prefetch(p)
