@@ -286,14 +286,15 @@ static bool try_merge(noctWorld *w, octNode *p)
             if (NOCT_NODE_IS_SPLIT(k))
                 return true;
             cell *c = cell_of(k);
+            /* Stop as soon as there are too many: most calls, since
+             * every object leaving a leaf asks. */
             for (uint32_t j = 0; j < c->count; ++j)
                 if (w->mark[c->objs[j]] != w->epoch) {
                     w->mark[c->objs[j]] = w->epoch;
-                    ++distinct;
+                    if ((int)++distinct > w->def.N)
+                        return true;
                 }
         }
-        if ((int)distinct > w->def.N)
-            return true;
         cell *pc = cell_of(p);
         pc->objs = malloc((distinct ? distinct : 1) * sizeof *pc->objs);
         if (pc->objs == NULL)
