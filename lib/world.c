@@ -110,6 +110,10 @@ struct noctWorld {
     octNode **work;        /* enter check's worklist */
     size_t nwork, capwork;
     pair_list tested;      /* the pair search's pairs for the narrowphase */
+    noctPair *sorted;      /* radix sort scratch for tested */
+    size_t capsorted;
+    uint32_t *digits;      /* and its bucket counts */
+    uint32_t capdigits;
     pair_list colliding, previous, began, ended;
     noctMesh **owned;      /* meshes the scene builders made */
     size_t nowned, capowned;
@@ -895,6 +899,88 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
     return NOCT_OK;
 }
 
+/*
+ * The tested pairs in order of their first object: a stable radix sort on
+ * its index, in two passes of half its bits. The narrowphase then reads
+ * the first objects and their meshes in memory order, and the colliding
+ * pairs come out sorted but for the order of each object's partners
+ * (sort_partners).
+ */
+static bool sort_tested(noctWorld *w)
+{
+    const size_t n = w->tested.n;
+    if (n < 2)
+        return true;
+    if (w->capsorted < n) {
+        noctPair *q = realloc(w->sorted, n * sizeof *q);
+        if (q == NULL)
+            return false;
+        w->sorted = q;
+        w->capsorted = n;
+    }
+    unsigned bits = 1;
+    while (bits < 32 && (1u << bits) < w->nslots)
+        ++bits;
+    const unsigned low = (bits + 1) / 2;
+    const uint32_t buckets = 1u << low;
+    if (!grow_array((void **)&w->digits, &w->capdigits, buckets, sizeof *w->digits))
+        return false;
+    noctPair *from = w->tested.p, *to = w->sorted;
+    for (unsigned shift = 0; shift < bits; shift += low) {
+        uint32_t *count = w->digits;
+        memset(count, 0, buckets * sizeof *count);
+        for (size_t i = 0; i < n; ++i)
+            ++count[(from[i].a.index >> shift) & (buckets - 1)];
+        uint32_t sum = 0;
+        for (uint32_t d = 0; d < buckets; ++d) {
+            uint32_t c = count[d];
+            count[d] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; ++i)
+            to[count[(from[i].a.index >> shift) & (buckets - 1)]++] = from[i];
+        noctPair *t = from;
+        from = to;
+        to = t;
+    }
+    if (from != w->tested.p) { /* an odd number of passes: swap the buffers */
+        noctPair *t = w->tested.p;
+        w->tested.p = from;
+        w->sorted = t;
+        size_t c = w->tested.cap;
+        w->tested.cap = w->capsorted;
+        w->capsorted = c;
+    }
+    return true;
+}
+
+/* Sort pairs that are in order of their first object by their second
+ * within each first object: insertion sort for short runs, qsort for the
+ * long ones a big object has. */
+static void sort_partners(pair_list *l)
+{
+    size_t start = 0;
+    while (start < l->n) {
+        size_t end = start + 1;
+        while (end < l->n && l->p[end].a.index == l->p[start].a.index)
+            ++end;
+        noctPair *r = l->p + start;
+        size_t len = end - start;
+        if (len > 32) {
+            qsort(r, len, sizeof *r, cmp_pair);
+        } else {
+            for (size_t i = 1; i < len; ++i) {
+                noctPair t = r[i];
+                size_t j = i;
+                for (; j > 0 && r[j - 1].b.index > t.b.index; --j)
+                    r[j] = r[j - 1];
+                r[j] = t;
+            }
+        }
+        start = end;
+    }
+}
+
 /* The narrowphase on the pairs the search found. Their objects and
  * meshes are scattered in memory, so each is requested some pairs ahead,
  * in stages so that no request waits on a load: the objects 16 pairs
@@ -1059,6 +1145,8 @@ void noctWorldDestroy(noctWorld *w)
     free(w->work);
     free(w->gather);
     free(w->tested.p);
+    free(w->sorted);
+    free(w->digits);
     free(w->colliding.p);
     free(w->previous.p);
     free(w->began.p);
@@ -1257,12 +1345,13 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     w->tested.n = 0;
     if (w->root != NULL)
         st = search(w, w->root);
+    if (st == NOCT_OK && !sort_tested(w))
+        st = NOCT_ERR_NOMEM;
     if (st == NOCT_OK)
         st = narrow(w);
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s", noctStatusString(st));
-    if (w->colliding.n > 1)
-        qsort(w->colliding.p, w->colliding.n, sizeof *w->colliding.p, cmp_pair);
+    sort_partners(&w->colliding);
     w->c.colliding_pairs += w->colliding.n;
     double t3 = seconds();
     w->c.seconds_pairs += t3 - t2;

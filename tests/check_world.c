@@ -286,6 +286,61 @@ START_TEST(random_scenes_against_brute_force)
 }
 END_TEST
 
+/* A big static cube holding 120 small moving ones: its pairs are a long
+ * run of one first object in the colliding list (sorted by qsort, not by
+ * insertion), and the list still equals the sorted brute-force answer. */
+START_TEST(many_partners_sorted)
+{
+    noctMesh *big, *small;
+    ck_assert_int_eq(noctMeshCreateBox(4, 4, 4, &big, NULL), NOCT_OK);
+    ck_assert_int_eq(noctMeshCreateBox(0.3, 0.3, 0.3, &small, NULL), NOCT_OK);
+    noctWorld *w = make_world(6, 8, NOCT_MAINTAIN_INCREMENTAL);
+    enum { NSMALL = 120 };
+    noctObjectId ids[NSMALL + 1];
+    const double origin[3] = {0, 0, 0}, x[3] = {1, 0, 0};
+    ck_assert_int_eq(noctWorldAdd(w, big, origin, x, 0, &ids[0], NULL), NOCT_OK);
+    uint64_t rng = 77;
+    for (int i = 1; i <= NSMALL; ++i) {
+        double pos[3], dir[3];
+        for (int k = 0; k < 3; ++k) {
+            pos[k] = 7 * ((double)test_rand_below(&rng, 1000) / 1000.0) - 3.5;
+            dir[k] = (double)test_rand_below(&rng, 1000) / 500.0 - 1;
+        }
+        double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        for (int k = 0; k < 3; ++k)
+            dir[k] = len > 0 ? dir[k] / len : k == 0;
+        ck_assert_int_eq(noctWorldAdd(w, small, pos, dir, 0.05, &ids[i], NULL), NOCT_OK);
+    }
+    for (int s = 0; s < 5; ++s) {
+        step_ok(w);
+        noctPair want[(NSMALL + 1) * NSMALL / 2];
+        size_t nwant = 0;
+        double pi[3], pj[3];
+        for (int i = 0; i <= NSMALL; ++i) {
+            noctWorldObject(w, ids[i], pi, NULL);
+            for (int j = i + 1; j <= NSMALL; ++j) {
+                noctWorldObject(w, ids[j], pj, NULL);
+                bool hit;
+                ck_assert_int_eq(noctCollide(i ? small : big, pi, small, pj,
+                                             NOCT_ACCURACY_EXACT, &hit, NULL), NOCT_OK);
+                if (hit)
+                    want[nwant++] = (noctPair){ids[i], ids[j]};
+            }
+        }
+        qsort(want, nwant, sizeof *want, cmp_pair);
+        const noctPair *got;
+        size_t ngot = noctWorldColliding(w, &got);
+        ck_assert_uint_eq(ngot, nwant);
+        ck_assert_uint_gt(nwant, NSMALL); /* the big cube's run and more */
+        for (size_t i = 0; i < nwant; ++i)
+            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+    }
+    noctWorldDestroy(w);
+    noctMeshDestroy(big);
+    noctMeshDestroy(small);
+}
+END_TEST
+
 /* Objects that leave the initial root make the tree grow, and collisions
  * out there are still found. */
 START_TEST(root_grows)
@@ -643,6 +698,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
     tcase_add_test(tc, root_grows);
+    tcase_add_test(tc, many_partners_sorted);
     suite_add_tcase(s, tc);
     tc = tcase_create("more random scenes");
     tcase_set_tags(tc, "slow");
