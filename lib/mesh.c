@@ -578,6 +578,13 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
  * included (3 additions and a difference of magnitudes at most S: well
  * under 8 half-ulps of S).
  */
+/* The least float at or above x (x >= 0; +inf past the floats). */
+static float float_above(double x)
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
 static void compute_box_form(noctMesh *m)
 {
     m->has_box = false;
@@ -632,11 +639,11 @@ static void compute_box_form(noctMesh *m)
     dev = dev * (1 + 0x1p-50) + 8 * 0x1p-53 * (S + V);
     if (!(dev <= 1e-9 * fmax(h[0], fmax(h[1], h[2]))))
         return; /* too far from a box to be worth the description */
-    b->dev = dev;
     b->size = S + dev;
+    b->dev = float_above(dev);
     for (int i = 0; i < 3; ++i)
-        b->own[i] = fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
-                    fabs(dot3(b->e[i], b->e[2]));
+        b->own[i] = float_above(fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
+                                fabs(dot3(b->e[i], b->e[2])));
     m->has_box = true;
 
     /* The dual, for the witness: every triangle on a face of the ideal box

@@ -48,14 +48,19 @@ typedef struct bvh_node {
 typedef struct box_form {
     double c[3];
     double e[3][3]; /* half-edge vectors */
-    double own[3];  /* the box's radius on axis e[i]: sum_j |e[i].e[j]| */
-    double dev;     /* bounds |vertex - its corner| per coordinate, exactly */
     double size;    /* bounds |c_k| + sum_i |e[i]_k| + dev: every vertex
                        coordinate, and the magnitudes the filter adds */
+    /* Two bounds kept as floats rounded up, so that the form and the
+     * flags fit two cache lines; a larger bound only makes the filter
+     * and the witnesses more careful. */
+    float own[3];   /* the box's radius on axis e[i]: sum_j |e[i].e[j]| */
+    float dev;      /* bounds |vertex - its corner| per coordinate */
 } box_form;
 
-/* The cache lines at the start of a mesh that hold its box form. */
-#define NOCT_MESH_BOX_LINES 3
+/* The cache lines at the start of a mesh that hold its box form and the
+ * flags before it: all that the filter reads of a pair of boxes that it
+ * separates. */
+#define NOCT_MESH_BOX_LINES 2
 
 /*
  * For proving points inside a box-form mesh's solid (has_dual): g[i] is
@@ -75,9 +80,9 @@ struct noctMesh {
     bool has_dual;      /* dual is valid (implies has_box) */
     bool convex;
     bool packed;        /* one allocation: the arrays follow the struct */
-    double lo[3], hi[3];
     box_form box;
     box_dual dual;
+    double lo[3], hi[3];
     size_t nv;
     double *v;          /* 3 * nv coordinates */
     size_t nt;
@@ -113,5 +118,12 @@ noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
 noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
                                const double tb[3], noctAccuracy accuracy, bool *colliding,
                                noctNarrowStats *stats);
+
+/* noct_collide_levels() past the box test, for a caller that made it
+ * already, on the same placed boxes [fl(lo + t), fl(hi + t)] (world.c's
+ * pair search): it reads none of the mesh but the box form's lines. */
+noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                    const double tb[3], noctAccuracy accuracy,
+                                    bool *colliding, noctNarrowStats *stats);
 
 #endif /* NOCT_LIB_MESH_INTERNAL_H */

@@ -435,22 +435,19 @@ static bool box_separated(const placed *A, const placed *B)
         M = noct_max(M, noct_max(fabs(A->t[k]), fabs(B->t[k])));
         T[k] = (b->c[k] + (B->t[k] - A->t[k])) - a->c[k];
     }
-    const double unit = 256 * 0x1p-53 * M, dev = a->dev + b->dev;
-    for (int i = 0; i < 3; ++i) { /* A's faces */
-        const double *u = a->e[i];
-        double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - a->own[i] -
-                     box_radius(b, u) - l1 * dev;
-        if (gap > unit * l1)
-            return true;
-    }
-    for (int i = 0; i < 3; ++i) { /* B's faces */
-        const double *u = b->e[i];
-        double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - b->own[i] -
-                     box_radius(a, u) - l1 * dev;
-        if (gap > unit * l1)
-            return true;
+    const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
+    /* A's faces, then B's: axis e[i] of one box, on which that box's
+     * radius is its own[i]. */
+    for (int s = 0; s < 2; ++s) {
+        const box_form *self = s ? b : a, *other = s ? a : b;
+        for (int i = 0; i < 3; ++i) {
+            const double *u = self->e[i];
+            double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+            double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)self->own[i] -
+                         box_radius(other, u) - l1 * dev;
+            if (gap > unit * l1)
+                return true;
+        }
     }
     for (int i = 0; i < 3; ++i) { /* pairs of edges */
         const double *p = a->e[i];
@@ -492,7 +489,7 @@ static bool box_contains(const placed *P, const double x[3])
         rmax = noct_max(rmax, fabs(r[k]));
         mag = noct_max(mag, fabs(x[k]) + fabs(P->t[k]) + fabs(b->c[k]));
     }
-    double slack = q->gmax * (2 * b->dev + 3 * 0x1p-53 * mag + 4 * 0x1p-53 * rmax) +
+    double slack = q->gmax * (2 * (double)b->dev + 3 * 0x1p-53 * mag + 4 * 0x1p-53 * rmax) +
                    4 * q->eta + 1e-15;
     double lim = 1 - slack;
     for (int i = 0; i < 3; ++i)
@@ -539,8 +536,8 @@ static bool box_overlap_proven(const placed *A, const placed *B)
         T[k] = (b->c[k] + (B->t[k] - A->t[k])) - a->c[k];
     }
     const box_dual *ga = &A->m->dual, *gb = &B->m->dual;
-    const double fa = 1 - (2 * ga->gmax * a->dev + 8 * ga->eta + 2e-15);
-    const double fb = 1 - (2 * gb->gmax * b->dev + 8 * gb->eta + 2e-15);
+    const double fa = 1 - (2 * ga->gmax * (double)a->dev + 8 * ga->eta + 2e-15);
+    const double fb = 1 - (2 * gb->gmax * (double)b->dev + 8 * gb->eta + 2e-15);
     const double unit = 256 * 0x1p-53 * M;
     /* The axes as pairs of edges: A's face normals, B's, then A x B. */
     const double *p[15], *q[15];
@@ -849,6 +846,13 @@ noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noct
         *colliding = false;
         return NOCT_OK;
     }
+    return noct_collide_overlapping(a, ta, b, tb, accuracy, colliding, stats);
+}
+
+noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                    const double tb[3], noctAccuracy accuracy,
+                                    bool *colliding, noctNarrowStats *stats)
+{
     placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
     switch (accuracy) {
     case NOCT_ACCURACY_BOX:

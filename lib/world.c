@@ -984,15 +984,16 @@ static void sort_partners(pair_list *l)
 /* The narrowphase on the pairs the search found. Their objects and
  * meshes are scattered in memory, so each is requested some pairs ahead,
  * in stages so that no request waits on a load: the objects 16 pairs
- * ahead, then 8 ahead the first cache lines of their meshes (read through
- * the objects), which hold all the exact level's filter reads of a box
- * (mesh_internal.h), and 4 ahead the lines its filter reads of another
- * small mesh. */
+ * ahead, then 8 ahead the first cache lines of their meshes (through the
+ * per-slot mesh pointers), which hold all the exact level's filter reads
+ * of a box (mesh_internal.h), and 4 ahead the lines its filter reads of
+ * another small mesh. The search tested the pairs' boxes already. */
 static noctStatus narrow(noctWorld *w)
 {
     const noctPair *p = w->tested.p;
     size_t n = w->tested.n;
     w->c.tested_pairs += n;
+    w->c.narrow.box_tests += n; /* the search's, on the same boxes */
     if (n == 0)
         return NOCT_OK;
     /* The pairs' boxes overlap, so the whole loop is the level's time:
@@ -1022,8 +1023,8 @@ static noctStatus narrow(noctWorld *w)
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
         const object *oa = &w->obj[ia], *ob = &w->obj[ib];
         bool hit;
-        st = noct_collide_levels(oa->mesh, oa->pos, ob->mesh, ob->pos, level, &hit,
-                                 &w->c.narrow);
+        st = noct_collide_overlapping(oa->mesh, oa->pos, ob->mesh, ob->pos, level, &hit,
+                                      &w->c.narrow);
         if (st != NOCT_OK)
             break;
         if (hit && !pairs_push(&w->colliding,
