@@ -679,8 +679,24 @@ static void compute_box_form(noctMesh *m)
         return;
     x->eta = eta;
     x->gmax = gmax * (1 + 0x1p-50);
+    x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
     m->has_dual = true;
 }
+
+void noct_box_slot_fill(const noctMesh *m, const double t[3], noct_box_slot *s)
+{
+    const box_form *b = &m->box;
+    for (int k = 0; k < 3; ++k)
+        s->ct[k] = b->c[k] + t[k];
+    memcpy(s->e, b->e, sizeof s->e);
+    s->size = b->size;
+    memcpy(s->own, b->own, sizeof s->own);
+    s->dev = b->dev;
+    s->shrink = m->has_dual ? m->dual.shrink : INFINITY;
+    s->has_box = m->has_box;
+}
+
+_Static_assert(sizeof(noct_box_slot) == 128, "a box slot is two cache lines");
 
 _Static_assert(offsetof(noctMesh, box) + sizeof(box_form) <= 64 * NOCT_MESH_BOX_LINES,
                "the box form fits the lines the world prefetches");

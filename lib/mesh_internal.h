@@ -73,7 +73,24 @@ typedef struct box_form {
 typedef struct box_dual {
     double g[3][3];
     double gmax, eta;
+    float shrink; /* 2 gmax dev + 8 eta + 2e-15 rounded up: the proof's
+                     shrink of the ideal box (narrowphase.c) */
 } box_dual;
+
+/*
+ * A box form placed at a translation t, as the oriented-box test reads a
+ * pair: two cache lines, so that a world keeps one per object in an
+ * array and decides a pair of boxes reading nothing else.
+ */
+typedef struct noct_box_slot {
+    double ct[3];   /* fl(c + t) */
+    double e[3][3];
+    double size;
+    float own[3];
+    float dev;
+    float shrink;   /* the dual's, or +inf without a dual */
+    uint32_t has_box;
+} noct_box_slot;
 
 struct noctMesh {
     bool has_box;       /* box is valid */
@@ -118,6 +135,21 @@ noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
 noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
                                const double tb[3], noctAccuracy accuracy, bool *colliding,
                                noctNarrowStats *stats);
+
+/* The slot of a mesh with a box form (has_box) placed at t; only ct
+ * depends on t. */
+void noct_box_slot_fill(const noctMesh *m, const double t[3], noct_box_slot *s);
+
+/* The oriented-box test on two slots: -1 when it proves the solids
+ * apart, 1 when it proves that they share a point (both have duals),
+ * 0 when it cannot tell. */
+int noct_box_decide(const noct_box_slot *a, const noct_box_slot *b);
+
+/* The exact level on two box-form meshes that noct_box_decide() left
+ * undecided: the witnesses, then the triangles. */
+noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
+                                        const noctMesh *b, const double tb[3], bool *colliding,
+                                        noctNarrowStats *stats);
 
 /* noct_collide_levels() past the box test, for a caller that made it
  * already, on the same placed boxes [fl(lo + t), fl(hi + t)] (world.c's

@@ -406,12 +406,25 @@ static bool sat_separated(const placed *A, const placed *B)
     return false;
 }
 
-/* The radius of box b on axis u: sum_i |u.e[i]|. */
-static NOCT_ALWAYS_INLINE double box_radius(const box_form *b, const double u[3])
+/* The radius of a box with half-edges e on axis u: sum_i |u.e[i]|. */
+static NOCT_ALWAYS_INLINE double box_radius(const double e[3][3], const double u[3])
 {
-    return fabs(u[0] * b->e[0][0] + u[1] * b->e[0][1] + u[2] * b->e[0][2]) +
-           fabs(u[0] * b->e[1][0] + u[1] * b->e[1][1] + u[2] * b->e[1][2]) +
-           fabs(u[0] * b->e[2][0] + u[1] * b->e[2][1] + u[2] * b->e[2][2]);
+    return fabs(u[0] * e[0][0] + u[1] * e[0][1] + u[2] * e[0][2]) +
+           fabs(u[0] * e[1][0] + u[1] * e[1][1] + u[2] * e[1][2]) +
+           fabs(u[0] * e[2][0] + u[1] * e[2][1] + u[2] * e[2][2]);
+}
+
+/* T = ct_B - ct_A, and the M of the error bounds below: it bounds the
+ * sizes and |t| <= |ct| + |c| + rounding. */
+static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const noct_box_slot *b,
+                                            double T[3])
+{
+    double m = 0;
+    for (int k = 0; k < 3; ++k) {
+        T[k] = b->ct[k] - a->ct[k];
+        m = noct_max(m, noct_max(fabs(a->ct[k]), fabs(b->ct[k])));
+    }
+    return m + noct_max(a->size, b->size);
 }
 
 /*
@@ -422,29 +435,25 @@ static NOCT_ALWAYS_INLINE double box_radius(const box_form *b, const double u[3]
  * and rounding the placed vertex moves it by at most l1 ulp(1/2) 2M, M
  * bounding the sizes and translations. A separation shows as
  * |u.T| - R_A - R_B - l1 (dev_A + dev_B) > 0 with T = c_B + t_B - c_A - t_A.
- * Computing T, the dot products, the radii (3 each) and the sums errs by
- * under 110 ulp(1/2) l1 M in all; a computed gap above 256 of those proves
- * the solids disjoint.
+ * Computing T (as fl(c_B + t_B) - fl(c_A + t_A)), the dot products, the
+ * radii (3 each) and the sums errs by under 110 ulp(1/2) l1 M in all; a
+ * computed gap above 256 of those proves the solids disjoint. The radii
+ * own[i] and the deviations are floats rounded up: larger, so safe.
  */
-static bool box_separated(const placed *A, const placed *B)
+static bool box_separated(const noct_box_slot *a, const noct_box_slot *b)
 {
-    const box_form *a = &A->m->box, *b = &B->m->box;
-    double M = noct_max(a->size, b->size);
     double T[3];
-    for (int k = 0; k < 3; ++k) {
-        M = noct_max(M, noct_max(fabs(A->t[k]), fabs(B->t[k])));
-        T[k] = (b->c[k] + (B->t[k] - A->t[k])) - a->c[k];
-    }
+    const double M = box_offset(a, b, T);
     const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
     /* A's faces, then B's: axis e[i] of one box, on which that box's
      * radius is its own[i]. */
     for (int s = 0; s < 2; ++s) {
-        const box_form *self = s ? b : a, *other = s ? a : b;
+        const noct_box_slot *self = s ? b : a, *other = s ? a : b;
         for (int i = 0; i < 3; ++i) {
             const double *u = self->e[i];
             double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
             double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)self->own[i] -
-                         box_radius(other, u) - l1 * dev;
+                         box_radius(other->e, u) - l1 * dev;
             if (gap > unit * l1)
                 return true;
         }
@@ -459,13 +468,85 @@ static bool box_separated(const placed *A, const placed *B)
             double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
             if (!(l1 > 1e-6 * lp * (fabs(q[0]) + fabs(q[1]) + fabs(q[2]))))
                 continue; /* (nearly) parallel edges: no useful axis */
-            double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a, u) -
-                         box_radius(b, u) - l1 * dev;
+            double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
+                         box_radius(b->e, u) - l1 * dev;
             if (gap > unit * l1)
                 return true;
         }
     }
     return false;
+}
+
+/* Is a b == c d exactly? Two-products (fma) away from underflow. */
+static bool products_equal(double a, double b, double c, double d)
+{
+    double h1 = a * b, h2 = c * d;
+    if (h1 == 0 || h2 == 0)
+        return (a == 0 || b == 0) && (c == 0 || d == 0);
+    return h1 == h2 && fabs(h1) > 0x1p-900 && fma(a, b, -h1) == fma(c, d, -h2);
+}
+
+/*
+ * Do two boxes with duals provably share a point, by the separating-axis
+ * test on their ideal boxes shrunk about their centres? Shrunk by the
+ * factor f = 1 - shrink, shrink >= 2 gmax dev + 8 eta + 2e-15, every point
+ * x = c + sum l_i e[i] of the shrunk box has g[i].(x - c) below
+ * 1 - (2 gmax dev + 4 eta + 1e-15), since g[i].e[j] is within eta of
+ * (i == j): box_contains' lemma puts x inside the solid. Two
+ * parallelepipeds meet iff no axis among their face normals (the cross
+ * products of their own edges) and the cross products of an edge of each
+ * separates them, so the shrunk boxes, and with them the solids, meet when
+ * the projections overlap on all 15 axes. The bound on rounding, 256
+ * half-ulps of M (|u|_1 + |p|_inf |q|_inf) per axis u = p x q, covers the
+ * rounding of u (about 4 ulps of |p|_inf |q|_inf per coordinate), of T
+ * (|T| <= 2 M) and of the dot products several times over. An edge of
+ * each that are exactly parallel span no separating plane and give no
+ * axis (the boxes are the stored doubles c and e, so parallel means the
+ * exact cross product is zero); nearly parallel edges give an axis that
+ * the bound swamps, and the pair goes on to the witnesses.
+ */
+static bool box_overlap_proven(const noct_box_slot *a, const noct_box_slot *b)
+{
+    if (!(a->shrink < 1 && b->shrink < 1))
+        return false; /* no dual */
+    double T[3];
+    const double M = box_offset(a, b, T);
+    const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
+    const double unit = 256 * 0x1p-53 * M;
+    /* The axes as pairs of edges: A's face normals, B's, then A x B. */
+    const double *p[15], *q[15];
+    for (int i = 0; i < 3; ++i) {
+        p[i] = a->e[(i + 1) % 3];
+        q[i] = a->e[(i + 2) % 3];
+        p[3 + i] = b->e[(i + 1) % 3];
+        q[3 + i] = b->e[(i + 2) % 3];
+        for (int j = 0; j < 3; ++j) {
+            p[6 + 3 * i + j] = a->e[i];
+            q[6 + 3 * i + j] = b->e[j];
+        }
+    }
+    for (int n = 0; n < 15; ++n) {
+        const double *x = p[n], *y = q[n];
+        const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                             x[0] * y[1] - x[1] * y[0]};
+        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        if (l1 == 0 && n >= 6 && products_equal(x[1], y[2], x[2], y[1]) &&
+            products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
+            continue; /* parallel edges */
+        const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
+                          noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
+        const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
+        if (!(d + unit * (l1 + pq) < fa * box_radius(a->e, u) + fb * box_radius(b->e, u)))
+            return false;
+    }
+    return true;
+}
+
+int noct_box_decide(const noct_box_slot *a, const noct_box_slot *b)
+{
+    if (box_separated(a, b))
+        return -1;
+    return box_overlap_proven(a, b) ? 1 : 0;
 }
 
 /*
@@ -495,76 +576,6 @@ static bool box_contains(const placed *P, const double x[3])
     for (int i = 0; i < 3; ++i)
         if (!(fabs(q->g[i][0] * r[0] + q->g[i][1] * r[1] + q->g[i][2] * r[2]) < lim))
             return false;
-    return true;
-}
-
-/*
- * Do two placed meshes with box duals provably share a point, by the
- * separating-axis test on their ideal boxes shrunk about their centres?
- * Shrunk by the factor f = 1 - (2 gmax dev + 8 eta + 2e-15), every point
- * x = c + sum l_i e[i] of the shrunk box has g[i].(x - c) below
- * 1 - (2 gmax dev + 4 eta + 1e-15), since g[i].e[j] is within eta of
- * (i == j): box_contains' lemma puts x inside the solid. Two
- * parallelepipeds meet iff no axis among their face normals (the cross
- * products of their own edges) and the cross products of an edge of each
- * separates them, so the shrunk boxes, and with them the solids, meet when
- * the projections overlap on all 15 axes. The bound on rounding, 256
- * half-ulps of M (|u|_1 + |p|_inf |q|_inf) per axis u = p x q, covers the
- * rounding of u (about 4 ulps of |p|_inf |q|_inf per coordinate), of T
- * (|T| <= 4 M) and of the dot products several times over. An edge of
- * each that are exactly parallel span no separating plane and give no
- * axis (the boxes are the stored doubles c and e, so parallel means the
- * exact cross product is zero); nearly parallel edges give an axis that
- * the bound swamps, and the pair goes on to the witnesses.
- */
-/* Is a b == c d exactly? Two-products (fma) away from underflow. */
-static bool products_equal(double a, double b, double c, double d)
-{
-    double h1 = a * b, h2 = c * d;
-    if (h1 == 0 || h2 == 0)
-        return (a == 0 || b == 0) && (c == 0 || d == 0);
-    return h1 == h2 && fabs(h1) > 0x1p-900 && fma(a, b, -h1) == fma(c, d, -h2);
-}
-
-static bool box_overlap_proven(const placed *A, const placed *B)
-{
-    const box_form *a = &A->m->box, *b = &B->m->box;
-    double M = noct_max(a->size, b->size);
-    double T[3];
-    for (int k = 0; k < 3; ++k) {
-        M = noct_max(M, noct_max(fabs(A->t[k]), fabs(B->t[k])));
-        T[k] = (b->c[k] + (B->t[k] - A->t[k])) - a->c[k];
-    }
-    const box_dual *ga = &A->m->dual, *gb = &B->m->dual;
-    const double fa = 1 - (2 * ga->gmax * (double)a->dev + 8 * ga->eta + 2e-15);
-    const double fb = 1 - (2 * gb->gmax * (double)b->dev + 8 * gb->eta + 2e-15);
-    const double unit = 256 * 0x1p-53 * M;
-    /* The axes as pairs of edges: A's face normals, B's, then A x B. */
-    const double *p[15], *q[15];
-    for (int i = 0; i < 3; ++i) {
-        p[i] = a->e[(i + 1) % 3];
-        q[i] = a->e[(i + 2) % 3];
-        p[3 + i] = b->e[(i + 1) % 3];
-        q[3 + i] = b->e[(i + 2) % 3];
-        for (int j = 0; j < 3; ++j) {
-            p[6 + 3 * i + j] = a->e[i];
-            q[6 + 3 * i + j] = b->e[j];
-        }
-    }
-    for (int n = 0; n < 15; ++n) {
-        const double *x = p[n], *y = q[n];
-        const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
-                             x[0] * y[1] - x[1] * y[0]};
-        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        if (l1 == 0 && n >= 6 && products_equal(x[1], y[2], x[2], y[1]) &&
-            products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
-            continue; /* parallel edges */
-        const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
-                          noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
-        const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
-        if (!(d + unit * (l1 + pq) < fa * box_radius(a, u) + fb * box_radius(b, u)))
-            return false;
-    }
     return true;
 }
 
@@ -670,20 +681,31 @@ static bool witness(const placed *A, const placed *B, const placed_vertices *va,
     return false;
 }
 
-static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
+/* decided: two boxes that noct_box_decide() could not decide, counted
+ * already; go straight to the witnesses. */
+static noctStatus exact_collide(const placed *A, const placed *B, bool decided, bool *hit,
                                 noctNarrowStats *st)
 {
     exact_ctx x = {st ? &st->exact_fallbacks : NULL};
-    if (st)
+    if (st && !decided)
         ++st->exact_tests;
     /* has_box first: it is on the box form's cache lines, which the
      * world prefetches, and nsat_faces is not. */
     const bool boxes = A->m->has_box && B->m->has_box;
     if (boxes || (A->m->nsat_faces > 0 && B->m->nsat_faces > 0)) {
-        if (boxes ? box_separated(A, B) : sat_separated(A, B)) {
+        int d = 0;
+        if (boxes && !decided) {
+            noct_box_slot sa, sb;
+            noct_box_slot_fill(A->m, A->t, &sa);
+            noct_box_slot_fill(B->m, B->t, &sb);
+            d = noct_box_decide(&sa, &sb);
+        } else if (!boxes) {
+            d = sat_separated(A, B) ? -1 : 0;
+        }
+        if (d != 0) {
             if (st)
-                ++st->sat_rejects;
-            *hit = false;
+                ++*(d < 0 ? &st->sat_rejects : &st->witnesses);
+            *hit = d > 0;
             return NOCT_OK;
         }
         /* Two boxes: the witness's candidates, tested on their
@@ -693,7 +715,7 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool *hit,
         if (A->m->has_dual && B->m->has_dual) {
             double c[3];
             overlap_centre(A, B, c);
-            found = (box_contains(A, c) && box_contains(B, c)) || box_overlap_proven(A, B);
+            found = box_contains(A, c) && box_contains(B, c);
             if (!found) {
                 place_all(A, &va);
                 place_all(B, &vb);
@@ -863,7 +885,15 @@ noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const
     case NOCT_ACCURACY_EXACT:
         break;
     }
-    return exact_collide(&A, &B, colliding, stats);
+    return exact_collide(&A, &B, false, colliding, stats);
+}
+
+noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
+                                        const noctMesh *b, const double tb[3], bool *colliding,
+                                        noctNarrowStats *stats)
+{
+    placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
+    return exact_collide(&A, &B, true, colliding, stats);
 }
 
 noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
