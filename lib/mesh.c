@@ -683,11 +683,10 @@ static void compute_box_form(noctMesh *m)
     m->has_dual = true;
 }
 
-void noct_box_slot_fill(const noctMesh *m, const double t[3], noct_box_slot *s)
+void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s)
 {
     const box_form *b = &m->box;
-    for (int k = 0; k < 3; ++k)
-        s->ct[k] = b->c[k] + t[k];
+    memcpy(s->c, b->c, sizeof s->c);
     memcpy(s->e, b->e, sizeof s->e);
     s->size = b->size;
     memcpy(s->own, b->own, sizeof s->own);

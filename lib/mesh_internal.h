@@ -78,12 +78,12 @@ typedef struct box_dual {
 } box_dual;
 
 /*
- * A box form placed at a translation t, as the oriented-box test reads a
- * pair: two cache lines, so that a world keeps one per object in an
- * array and decides a pair of boxes reading nothing else.
+ * A box form as the oriented-box test reads it: two cache lines, so that
+ * a world keeps one per object in an array and decides a pair of boxes
+ * from them and the translations, reading nothing else.
  */
 typedef struct noct_box_slot {
-    double ct[3];   /* fl(c + t) */
+    double c[3];
     double e[3][3];
     double size;
     float own[3];
@@ -136,14 +136,14 @@ noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noct
                                const double tb[3], noctAccuracy accuracy, bool *colliding,
                                noctNarrowStats *stats);
 
-/* The slot of a mesh with a box form (has_box) placed at t; only ct
- * depends on t. */
-void noct_box_slot_fill(const noctMesh *m, const double t[3], noct_box_slot *s);
+/* The slot of a mesh with a box form (has_box). */
+void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 
-/* The oriented-box test on two slots: -1 when it proves the solids
- * apart, 1 when it proves that they share a point (both have duals),
- * 0 when it cannot tell. */
-int noct_box_decide(const noct_box_slot *a, const noct_box_slot *b);
+/* The oriented-box test on two slots placed at ta and tb: -1 when it
+ * proves the solids apart, 1 when it proves that they share a point (both
+ * have duals), 0 when it cannot tell. */
+int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                    const double tb[3]);
 
 /* The exact level on two box-form meshes that noct_box_decide() left
  * undecided: the witnesses, then the triangles. */

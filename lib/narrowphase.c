@@ -414,15 +414,17 @@ static NOCT_ALWAYS_INLINE double box_radius(const double e[3][3], const double u
            fabs(u[0] * e[2][0] + u[1] * e[2][1] + u[2] * e[2][2]);
 }
 
-/* T = ct_B - ct_A, and the M of the error bounds below: it bounds the
- * sizes and |t| <= |ct| + |c| + rounding. */
-static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const noct_box_slot *b,
+/* T = fl(c_B + t_B) - fl(c_A + t_A), and the M of the error bounds
+ * below: it bounds the sizes, and |t| <= |fl(c + t)| + |c| + rounding. */
+static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double ta[3],
+                                            const noct_box_slot *b, const double tb[3],
                                             double T[3])
 {
     double m = 0;
     for (int k = 0; k < 3; ++k) {
-        T[k] = b->ct[k] - a->ct[k];
-        m = noct_max(m, noct_max(fabs(a->ct[k]), fabs(b->ct[k])));
+        const double ca = a->c[k] + ta[k], cb = b->c[k] + tb[k];
+        T[k] = cb - ca;
+        m = noct_max(m, noct_max(fabs(ca), fabs(cb)));
     }
     return m + noct_max(a->size, b->size);
 }
@@ -440,10 +442,11 @@ static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const noct_b
  * computed gap above 256 of those proves the solids disjoint. The radii
  * own[i] and the deviations are floats rounded up: larger, so safe.
  */
-static bool box_separated(const noct_box_slot *a, const noct_box_slot *b)
+static bool box_separated(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                          const double tb[3])
 {
     double T[3];
-    const double M = box_offset(a, b, T);
+    const double M = box_offset(a, ta, b, tb, T);
     const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
     /* A's faces, then B's: axis e[i] of one box, on which that box's
      * radius is its own[i]. */
@@ -505,12 +508,13 @@ static bool products_equal(double a, double b, double c, double d)
  * exact cross product is zero); nearly parallel edges give an axis that
  * the bound swamps, and the pair goes on to the witnesses.
  */
-static bool box_overlap_proven(const noct_box_slot *a, const noct_box_slot *b)
+static bool box_overlap_proven(const noct_box_slot *a, const double ta[3],
+                               const noct_box_slot *b, const double tb[3])
 {
     if (!(a->shrink < 1 && b->shrink < 1))
         return false; /* no dual */
     double T[3];
-    const double M = box_offset(a, b, T);
+    const double M = box_offset(a, ta, b, tb, T);
     const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
     const double unit = 256 * 0x1p-53 * M;
     /* The axes as pairs of edges: A's face normals, B's, then A x B. */
@@ -542,11 +546,12 @@ static bool box_overlap_proven(const noct_box_slot *a, const noct_box_slot *b)
     return true;
 }
 
-int noct_box_decide(const noct_box_slot *a, const noct_box_slot *b)
+int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                    const double tb[3])
 {
-    if (box_separated(a, b))
+    if (box_separated(a, ta, b, tb))
         return -1;
-    return box_overlap_proven(a, b) ? 1 : 0;
+    return box_overlap_proven(a, ta, b, tb) ? 1 : 0;
 }
 
 /*
@@ -696,9 +701,9 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool decided, 
         int d = 0;
         if (boxes && !decided) {
             noct_box_slot sa, sb;
-            noct_box_slot_fill(A->m, A->t, &sa);
-            noct_box_slot_fill(B->m, B->t, &sb);
-            d = noct_box_decide(&sa, &sb);
+            noct_box_slot_fill(A->m, &sa);
+            noct_box_slot_fill(B->m, &sb);
+            d = noct_box_decide(&sa, A->t, &sb, B->t);
         } else if (!boxes) {
             d = sat_separated(A, B) ? -1 : 0;
         }

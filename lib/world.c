@@ -60,9 +60,8 @@ typedef struct home_block {
 
 typedef struct object {
     const noctMesh *mesh;
-    double pos[3], vel[3], speed; /* vel = speed * unit direction */
+    double vel[3], speed;  /* vel = speed * unit direction */
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
-    double bc[3];          /* and its box form's centre, for the slot's ct */
     aabb old;              /* the placed box before the last move */
     octNode **spans;       /* leaves it is in */
     uint32_t nspans, capspans;
@@ -94,9 +93,10 @@ struct noctWorld {
     home_block *home;
     const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
                               reads it without touching the objects */
-    noct_box_slot *slot;   /* per object with a box-form mesh, placed: all
-                              the exact level reads of most pairs of boxes
-                              (64-byte aligned, two lines each) */
+    double (*pos)[3];      /* per slot: the position (translation) */
+    noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
+                              all the exact level reads of most pairs of
+                              boxes (64-byte aligned, two lines each) */
     uint32_t *movers;      /* live moving objects, by slot */
     uint32_t nmovers, capmovers;
     bool movers_stale;
@@ -178,11 +178,11 @@ static void forget_home(noctWorld *w, uint32_t id)
 }
 
 /* The placed box: exactly the narrowphase's [fl(lo + t), fl(hi + t)]. */
-static void place_box(const object *o, aabb *b)
+static void place_box(const object *o, const double pos[3], aabb *b)
 {
     for (int k = 0; k < 3; ++k) {
-        b->lo[k] = o->mlo[k] + o->pos[k];
-        b->hi[k] = o->mhi[k] + o->pos[k];
+        b->lo[k] = o->mlo[k] + pos[k];
+        b->hi[k] = o->mhi[k] + pos[k];
     }
 }
 
@@ -989,8 +989,8 @@ static void sort_partners(pair_list *l)
  * already). At the exact level a pair of objects with box-form meshes is
  * decided on their slots, two cache lines each, in most cases without
  * reading the meshes; the rest go through the meshes. Slots are scattered
- * by pair, so they are requested 16 pairs ahead, and 8 ahead the objects
- * and the first lines of the meshes that are not boxes. */
+ * by pair, so they and the positions are requested 16 pairs ahead, and 8
+ * ahead the objects and the first lines of the meshes that are not boxes. */
 static noctStatus narrow(noctWorld *w)
 {
     const noctPair *p = w->tested.p;
@@ -1009,9 +1009,11 @@ static noctStatus narrow(noctWorld *w)
     for (size_t i = 0; i < n; ++i) {
         if (i + 16 < n)
             for (int s = 0; s < 2; ++s) {
-                const char *b = (const char *)&slot[s ? p[i + 16].b.index : p[i + 16].a.index];
+                uint32_t k = s ? p[i + 16].b.index : p[i + 16].a.index;
+                const char *b = (const char *)&slot[k];
                 NOCT_PREFETCH(b);
                 NOCT_PREFETCH(b + 64);
+                NOCT_PREFETCH(w->pos[k]);
             }
         if (i + 8 < n)
             for (int s = 0; s < 2; ++s) {
@@ -1026,8 +1028,9 @@ static noctStatus narrow(noctWorld *w)
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
         bool hit;
         int d = 0;
+        const double *ta = w->pos[ia], *tb = w->pos[ib];
         if (exact && slot[ia].has_box && slot[ib].has_box) {
-            d = noct_box_decide(&slot[ia], &slot[ib]);
+            d = noct_box_decide(&slot[ia], ta, &slot[ib], tb);
             ++w->c.narrow.exact_tests;
             if (d != 0)
                 ++*(d < 0 ? &w->c.narrow.sat_rejects : &w->c.narrow.witnesses);
@@ -1036,10 +1039,9 @@ static noctStatus narrow(noctWorld *w)
         if (d != 0)
             hit = d > 0;
         else if (exact && slot[ia].has_box && slot[ib].has_box)
-            st = noct_collide_undecided_boxes(oa->mesh, oa->pos, ob->mesh, ob->pos, &hit,
-                                              &w->c.narrow);
+            st = noct_collide_undecided_boxes(oa->mesh, ta, ob->mesh, tb, &hit, &w->c.narrow);
         else
-            st = noct_collide_overlapping(oa->mesh, oa->pos, ob->mesh, ob->pos, level, &hit,
+            st = noct_collide_overlapping(oa->mesh, ta, ob->mesh, tb, level, &hit,
                                           &w->c.narrow);
         if (st != NOCT_OK)
             break;
@@ -1158,6 +1160,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->home);
     free(w->mesh);
     free(w->slot);
+    free(w->pos);
     free(w->movers);
     free(w->slow);
     free(w->work);
@@ -1231,9 +1234,11 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
             const noctMesh **meshes = home ? realloc(w->mesh, cap * sizeof *meshes) : NULL;
             if (meshes != NULL)
                 w->mesh = meshes;
+            double(*pos)[3] = meshes ? realloc(w->pos, cap * sizeof *pos) : NULL;
+            if (pos != NULL)
+                w->pos = pos;
             /* aligned, so not realloc */
-            noct_box_slot *slots =
-                meshes ? aligned_alloc(64, cap * sizeof *slots) : NULL;
+            noct_box_slot *slots = pos ? aligned_alloc(64, cap * sizeof *slots) : NULL;
             if (slots == NULL)
                 return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
             if (w->nslots > 0)
@@ -1250,23 +1255,21 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     o->mesh = w->mesh[slot] = mesh;
     memcpy(o->mlo, mesh->lo, sizeof o->mlo);
     memcpy(o->mhi, mesh->hi, sizeof o->mhi);
-    for (int k = 0; k < 3; ++k)
-        o->bc[k] = mesh->has_box ? mesh->box.c[k] : 0;
     forget_home(w, slot);
     o->speed = speed;
     /* A unit direction is used as given: velocity = speed * d, exactly. */
     double scale = fabs(len - 1) <= 1e-9 ? 1 : 1 / len;
     for (int k = 0; k < 3; ++k) {
-        o->pos[k] = position[k];
+        w->pos[slot][k] = position[k];
         o->vel[k] = speed > 0 ? speed * (scale == 1 ? direction[k] : direction[k] * scale)
                               : 0;
     }
     o->generation = o->generation + 1 ? o->generation + 1 : 1;
     o->alive = true;
     o->nspans = 0;
-    place_box(o, &w->box[slot]);
+    place_box(o, w->pos[slot], &w->box[slot]);
     if (mesh->has_box)
-        noct_box_slot_fill(mesh, o->pos, &w->slot[slot]);
+        noct_box_slot_fill(mesh, &w->slot[slot]);
     else
         w->slot[slot].has_box = 0;
     ++w->alive;
@@ -1333,29 +1336,24 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
         object *obj = w->obj;
         aabb *box = w->box;
-        noct_box_slot *slots = w->slot;
         const uint32_t *movers = w->movers;
         for (uint32_t m = 0, nm = w->nmovers; m < nm; ++m) {
             uint32_t i = movers[m];
             object *o = &obj[i];
             aabb *b = &box[i];
+            double *pos = w->pos[i];
             o->old = *b;
             for (int k = 0; k < 3; ++k)
-                o->pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
+                pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
             if (walls)
                 for (int k = 0; k < 3; ++k)
-                    if ((o->pos[k] < wlo[k] && o->vel[k] < 0) ||
-                        (o->pos[k] > whi[k] && o->vel[k] > 0))
+                    if ((pos[k] < wlo[k] && o->vel[k] < 0) || (pos[k] > whi[k] && o->vel[k] > 0))
                         o->vel[k] = -o->vel[k];
-            if (fabs(o->pos[0]) > NOCT_MAX_COORDINATE ||
-                fabs(o->pos[1]) > NOCT_MAX_COORDINATE ||
-                fabs(o->pos[2]) > NOCT_MAX_COORDINATE)
+            if (fabs(pos[0]) > NOCT_MAX_COORDINATE || fabs(pos[1]) > NOCT_MAX_COORDINATE ||
+                fabs(pos[2]) > NOCT_MAX_COORDINATE)
                 return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
                                  "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
-            place_box(o, b);
-            noct_box_slot *bs = &slots[i];
-            for (int k = 0; k < 3; ++k) /* read only for box forms; cheaper than a test */
-                bs->ct[k] = o->bc[k] + o->pos[k];
+            place_box(o, pos, b);
             escaped |= !box_within(b, &root);
         }
         w->c.moved += w->nmovers;
@@ -1464,7 +1462,7 @@ noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[
     if (o == NULL)
         return NOCT_ERR_INVALID;
     if (position != NULL)
-        memcpy(position, o->pos, sizeof o->pos);
+        memcpy(position, w->pos[id.index], sizeof w->pos[id.index]);
     if (direction != NULL)
         for (int k = 0; k < 3; ++k)
             direction[k] = o->speed > 0 ? o->vel[k] / o->speed : 0;
