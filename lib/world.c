@@ -44,14 +44,17 @@ typedef struct aabb {
 } aabb;
 
 /*
- * An object's home block: the box its leaves tile when they are equal
- * cubes in a grid (one leaf is a grid of one), with the high side of the
- * first column and the low side of the last on each axis. A box strictly
- * inside the block overlaps no other leaf, and a box that also reaches
- * the first and last columns on every axis overlaps every leaf of the
- * block: its leaves are unchanged, and maintenance has nothing to do.
- * lo[0] = +inf when there is no block (the leaves changed since it was
- * taken, or they do not tile a box).
+ * An object's home block: the block of cells of its smallest leaf's size,
+ * on that leaf's lattice, that its box overlaps, with the high side of the
+ * first column and the low side of the last on each axis. Each such cell
+ * lies in one of its leaves (a smaller leaf in it would be overlapped too,
+ * and be one of its leaves), and each of its leaves holds such a cell, so
+ * the cells decide the leaves. A box strictly inside the block that also
+ * reaches the first and last columns on every axis overlaps the same
+ * cells: its leaves are unchanged, and maintenance has nothing to do.
+ * With leaves of one size the block is the box they tile. lo[0] = +inf
+ * when there is no block (the leaves changed since it was taken, or the
+ * lattice is not exact there).
  */
 typedef struct home_block {
     double lo[3], hi[3];
@@ -552,35 +555,56 @@ static bool inside_root(const noctWorld *w, const aabb *o)
  * merging siblings that together hold N or fewer distinct objects.
  * Returns whether phase B is needed.
  */
-/* The home block of the leaves object id is in, if they tile one. */
-static bool home_of(const noctWorld *w, uint32_t id, home_block *h)
+/* The lattice point base + q s (s a power of two, q an integer), or NaN
+ * when the sum is not exact (TwoSum's error is not zero). */
+static double lattice_point(double base, double q, double s)
+{
+    if (!(fabs(q) < 0x1p52))
+        return (double)NAN;
+    double d = q * s, x = base + d, bb = x - base;
+    return (base - (x - bb)) + (d - bb) == 0 ? x : (double)NAN;
+}
+
+/* The largest lattice point base + q s below x (up is false) or the
+ * smallest above x (up is true), strictly; NaN if not exact. */
+static double lattice_beyond(double base, double s, double x, bool up)
+{
+    double q = floor((x - base) / s) + (up ? 1 : 0);
+    for (int i = 0; i < 4; ++i) {
+        double g = lattice_point(base, q, s), n = lattice_point(base, up ? q - 1 : q + 1, s);
+        if (isnan(g) || isnan(n))
+            return (double)NAN;
+        if (up ? g <= x : g >= x)
+            q += up ? 1 : -1;
+        else if (up ? n > x : n < x)
+            q += up ? -1 : 1;
+        else
+            return g;
+    }
+    return (double)NAN;
+}
+
+/* The home block of object id while its leaves are those box b overlaps
+ * (b: its box when they were last made so). */
+static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *h)
 {
     const object *o = &w->obj[id];
     if (o->nspans == 0)
         return false;
-    double size = cell_of(o->spans[0])->size;
+    const cell *small = cell_of(o->spans[0]);
+    for (uint32_t i = 1; i < o->nspans; ++i)
+        if (cell_of(o->spans[i])->size < small->size)
+            small = cell_of(o->spans[i]);
+    const double s = small->size;
     for (int k = 0; k < 3; ++k) {
-        h->lo[k] = h->last_lo[k] = INFINITY;
-        h->hi[k] = h->first_hi[k] = -INFINITY;
-    }
-    for (uint32_t i = 0; i < o->nspans; ++i) {
-        const cell *c = cell_of(o->spans[i]);
-        if (c->size != size)
+        h->lo[k] = lattice_beyond(small->lo[k], s, b->lo[k], false);
+        h->hi[k] = lattice_beyond(small->lo[k], s, b->hi[k], true);
+        if (isnan(h->lo[k]) || isnan(h->hi[k]))
             return false;
-        for (int k = 0; k < 3; ++k) {
-            double hi = c->lo[k] + c->size;
-            h->lo[k] = noct_min(h->lo[k], c->lo[k]);
-            h->hi[k] = noct_max(h->hi[k], hi);
-            h->first_hi[k] = i == 0 ? hi : noct_min(h->first_hi[k], hi);
-            h->last_lo[k] = i == 0 ? c->lo[k] : noct_max(h->last_lo[k], c->lo[k]);
-        }
+        h->first_hi[k] = h->lo[k] + s; /* lattice points next to them: exact */
+        h->last_lo[k] = h->hi[k] - s;
     }
-    /* Distinct leaves of one size fill the block iff there are as many as
-     * the grid has cells. */
-    double cells = 1;
-    for (int k = 0; k < 3; ++k)
-        cells *= (h->hi[k] - h->lo[k]) / size;
-    return cells == (double)o->nspans;
+    return true;
 }
 
 static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
@@ -589,7 +613,7 @@ static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
     const aabb *b = &w->box[id];
     *enter = false;
     /* maintain() tried a block it had; one is taken when there was none */
-    if (!isfinite(w->home[id].lo[0]) && home_of(w, id, &w->home[id]) &&
+    if (!isfinite(w->home[id].lo[0]) && home_of(w, id, &o->old, &w->home[id]) &&
         inside_home(b, &w->home[id])) {
         ++w->c.inside_fast;
         return NOCT_OK;
@@ -1747,7 +1771,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                      overlapped_leaves(b, w->root));
         else if (isfinite(h->lo[0])) {
             home_block now;
-            if (!home_of(w, i, &now) || memcmp(&now, h, sizeof now) != 0)
+            if (!home_of(w, i, b, &now) || memcmp(&now, h, sizeof now) != 0)
                 st = BAD("object %u's home block is not that of its leaves", i);
         }
     }
