@@ -36,6 +36,9 @@ typedef struct cell {
     uint32_t count, cap;
     uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
     uint64_t stamp_step; /* this node as a neighbor */
+    double apart;        /* leaf: its boxes were at least this far apart
+                            (on some axis, pair by pair) when its pairs
+                            were last searched; 0 after any change */
 } cell;
 
 /* An axis-aligned box, closed. */
@@ -116,6 +119,8 @@ struct noctWorld {
     uint64_t epoch;
     octNode **work;        /* enter check's worklist */
     size_t nwork, capwork;
+    double reach;          /* this (sub-)step: how far any box may have
+                              moved on an axis, rounding included */
     pair_list tested;      /* the pair search's pairs for the narrowphase */
     noctPair *sorted;      /* radix sort scratch for tested */
     size_t capsorted;
@@ -216,6 +221,7 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
         !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
         return false;
     c->objs[c->count++] = id;
+    c->apart = 0;
     o->spans[o->nspans++] = leaf;
     forget_home(w, id);
     return true;
@@ -312,6 +318,7 @@ static bool try_merge(noctWorld *w, octNode *p)
             return false;
         pc->cap = distinct ? distinct : 1;
         pc->count = 0;
+        pc->apart = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
@@ -344,6 +351,7 @@ static bool try_merge(noctWorld *w, octNode *p)
 static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
 {
     cell *c = cell_of(leaf);
+    c->apart = 0;
     for (uint32_t i = 0; i < c->count; ++i)
         if (c->objs[i] == id) {
             c->objs[i] = c->objs[--c->count];
@@ -857,9 +865,19 @@ static int sweep_axis(const leaf_box *g, uint32_t n)
     return best;
 }
 
+/*
+ * A leaf whose boxes were all at least 2 reach apart (on some axis, pair
+ * by pair) at its last search has no overlapping pair now: skip it, with
+ * what remains of the distance. Any change to its objects resets it.
+ */
 static noctStatus search_leaf(noctWorld *w, cell *c)
 {
     const cell *rc = cell_of(w->root);
+    if (c->apart > 2 * w->reach) {
+        c->apart -= 2 * w->reach;
+        ++w->c.leaves_skipped;
+        return NOCT_OK;
+    }
     ++w->c.leaves_visited;
     if (!grow_array((void **)&w->gather, &w->capgather, 2 * c->count, sizeof *w->gather))
         return NOCT_ERR_NOMEM;
@@ -895,7 +913,11 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
      * starts before a ends; the other two axes decide. Their four
      * comparisons are combined without branches: most pairs fail one of
      * them, in no predictable order. */
+    /* Meanwhile the least distance apart of the pairs, while no pair
+     * overlaps: pairs the sweep passes over are apart on its axis by at
+     * least the next box's start less a's end. */
     const int k1 = (axis + 1) % 3, k2 = (axis + 2) % 3;
+    double apart = sweep ? INFINITY : 0;
     for (uint32_t i = 0; i < c->count; ++i) {
         const leaf_box *a = &g[i];
         const double ahi = a->hi[axis];
@@ -903,13 +925,22 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
             const leaf_box *b = &g[j];
             if (sweep ? b->lo[axis] > ahi
                       : (a->hi[axis] < b->lo[axis]) | (b->hi[axis] < a->lo[axis])) {
-                if (sweep)
+                if (sweep) {
+                    apart = noct_min(apart, b->lo[axis] - ahi);
                     break;
+                }
                 continue;
             }
             if ((a->hi[k1] < b->lo[k1]) | (b->hi[k1] < a->lo[k1]) | (a->hi[k2] < b->lo[k2]) |
-                (b->hi[k2] < a->lo[k2]))
+                (b->hi[k2] < a->lo[k2])) {
+                if (apart > 0)
+                    apart = noct_min(apart, noct_max(noct_max(b->lo[k1] - a->hi[k1],
+                                                              a->lo[k1] - b->hi[k1]),
+                                                     noct_max(b->lo[k2] - a->hi[k2],
+                                                              a->lo[k2] - b->hi[k2])));
                 continue;
+            }
+            apart = 0;
             const double corner[3] = {noct_max(a->lo[0], b->lo[0]), noct_max(a->lo[1], b->lo[1]),
                                       noct_max(a->lo[2], b->lo[2])};
             if (!owns(c, rc, corner))
@@ -924,6 +955,7 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
                 return NOCT_ERR_NOMEM;
         }
     }
+    c->apart = apart;
     return NOCT_OK;
 }
 
@@ -1361,9 +1393,11 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         object *obj = w->obj;
         aabb *box = w->box;
         const uint32_t *movers = w->movers;
+        double vmax = 0;
         for (uint32_t m = 0, nm = w->nmovers; m < nm; ++m) {
             uint32_t i = movers[m];
             object *o = &obj[i];
+            vmax = noct_max(vmax, o->speed);
             aabb *b = &box[i];
             double *pos = w->pos[i];
             o->old = *b;
@@ -1381,6 +1415,14 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             escaped |= !box_within(b, &root);
         }
         w->c.moved += w->nmovers;
+        /* |velocity| is the speed within 1e-9; a placed box moves by it
+         * and a few roundings of the root's coordinates. */
+        double r = 0;
+        for (int k = 0; k < 3; ++k)
+            r = noct_max(r, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
+        w->reach = vmax * fraction * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
+    } else {
+        w->reach = 0;
     }
     double t1 = seconds();
     if (moving)

@@ -286,6 +286,71 @@ START_TEST(random_scenes_against_brute_force)
 }
 END_TEST
 
+/* Slow cubes in a walled box: most leaves' pairs are too far apart to
+ * meet for some steps, and the pair search skips them; after every step
+ * the colliding pairs still equal the brute-force answer. */
+START_TEST(skipped_leaves_against_brute_force)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.25, 0.25, 0.25, &cube, NULL), NOCT_OK);
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = 4;
+    def.max_depth = 8;
+    def.effects |= NOCT_EFFECT_WALLS;
+    for (int k = 0; k < 3; ++k) {
+        def.walls_lo[k] = 0;
+        def.walls_hi[k] = 10;
+    }
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+    enum { NOBJ = 90, STEPS = 150 };
+    noctObjectId ids[NOBJ];
+    uint64_t rng = 4242;
+    for (int i = 0; i < NOBJ; ++i) {
+        double pos[3], dir[3];
+        for (int k = 0; k < 3; ++k) {
+            pos[k] = (double)test_rand_below(&rng, 1000) / 100.0;
+            dir[k] = (double)test_rand_below(&rng, 1000) / 500.0 - 1;
+        }
+        double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        for (int k = 0; k < 3; ++k)
+            dir[k] = len > 0 ? dir[k] / len : k == 0;
+        double speed = i % 9 == 0 ? 0 : 0.01 + (double)test_rand_below(&rng, 90) / 1000.0;
+        ck_assert_int_eq(noctWorldAdd(w, cube, pos, dir, speed, &ids[i], NULL), NOCT_OK);
+    }
+    noctPair want[NOBJ * (NOBJ - 1) / 2];
+    for (int s = 0; s < STEPS; ++s) {
+        step_ok(w);
+        size_t nwant = 0;
+        double pi[3], pj[3];
+        for (int i = 0; i < NOBJ; ++i) {
+            noctWorldObject(w, ids[i], pi, NULL);
+            for (int j = i + 1; j < NOBJ; ++j) {
+                noctWorldObject(w, ids[j], pj, NULL);
+                bool hit;
+                ck_assert_int_eq(noctCollide(cube, pi, cube, pj, NOCT_ACCURACY_EXACT, &hit,
+                                             NULL), NOCT_OK);
+                if (hit)
+                    want[nwant++] = (noctPair){ids[i], ids[j]};
+            }
+        }
+        const noctPair *got;
+        size_t ngot = noctWorldColliding(w, &got);
+        ck_assert_msg(ngot == nwant, "step %d: %zu colliding pairs, brute force %zu", s, ngot,
+                      nwant);
+        for (size_t i = 0; i < nwant; ++i)
+            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+    }
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    /* the scene does what it is for: contacts, and leaves skipped */
+    ck_assert_uint_gt(c.colliding_pairs, 20);
+    ck_assert_uint_gt(c.leaves_skipped, c.leaves_visited / 4);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* A big static cube holding 120 small moving ones: its pairs are a long
  * run of one first object in the colliding list (sorted by qsort, not by
  * insertion), and the list still equals the sorted brute-force answer. */
@@ -699,6 +764,7 @@ int main(void)
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
     tcase_add_test(tc, root_grows);
     tcase_add_test(tc, many_partners_sorted);
+    tcase_add_test(tc, skipped_leaves_against_brute_force);
     suite_add_tcase(s, tc);
     tc = tcase_create("more random scenes");
     tcase_set_tags(tc, "slow");

@@ -156,10 +156,10 @@ typedef struct noctWorldCounters {
     uint64_t substeps;         /**< Sub-steps run (#NOCT_EFFECT_SUBSTEP). */
     uint64_t moved;            /**< Object moves (motion). */
     uint64_t inside_fast;      /**< Maintenance: boxes whose leaves the
-                                    fast test found unchanged: still
-                                    strictly inside their only leaf, or
-                                    inside the block of equal leaves they
-                                    span and reaching each of them. */
+                                    fast test found unchanged: they
+                                    overlap the same cells, of their
+                                    smallest leaf's size, as when their
+                                    leaves were last made. */
     uint64_t leaves_left;      /**< Maintenance: removals from leaves. */
     uint64_t leaves_entered;   /**< Maintenance: additions to leaves. */
     uint64_t neighbor_queries; /**< Maintenance: octGtEqNeighbor() calls. */
@@ -169,8 +169,15 @@ typedef struct noctWorldCounters {
     uint64_t merges;           /**< Sibling groups merged. */
     uint64_t rebuilds;         /**< Whole-tree rebuilds (rebuild mode, and
                                     root growth). */
-    uint64_t leaves_visited;   /**< Pair search: leaves with 2+ objects. */
-    uint64_t candidate_pairs;  /**< Pair search: pairs in a shared leaf. */
+    uint64_t leaves_visited;   /**< Pair search: leaves with 2+ objects
+                                    whose pairs were searched. */
+    uint64_t leaves_skipped;   /**< Pair search: leaves with 2+ objects
+                                    left out because at their last search
+                                    their boxes were farther apart, pair
+                                    by pair, than the objects have moved
+                                    since (and none came or went). */
+    uint64_t candidate_pairs;  /**< Pair search: pairs in a searched
+                                    leaf. */
     uint64_t tested_pairs;     /**< Pairs handed to the narrowphase. */
     uint64_t colliding_pairs;  /**< Pairs found colliding. */
     uint64_t events;           /**< Contact-begin plus contact-end events. */
