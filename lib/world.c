@@ -1117,6 +1117,11 @@ static noctStatus search(noctWorld *w, octNode *n)
 {
     if (NOCT_NODE_IS_SPLIT(n)) {
         for (int i = 0; i < 8; ++i) {
+            if (i < 7) { /* the next leaf's object list, while this one runs */
+                const octNode *next = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i + 1));
+                if (!NOCT_NODE_IS_SPLIT(next))
+                    NOCT_PREFETCH(cell_of(next)->objs);
+            }
             noctStatus st = search(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
             if (st != NOCT_OK)
                 return st;
