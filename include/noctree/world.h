@@ -16,8 +16,11 @@
  *    #NOCT_EFFECT_WALLS, the container's walls turn it back;
  * 2. **maintenance**: the octree is brought up to date (see below);
  * 3. **pair search**: a depth-first walk over the leaves that hold more
- *    than one object hands each candidate pair to the narrowphase exactly
- *    once per step, at the world's accuracy (narrowphase.h);
+ *    than one object hands each pair whose boxes overlap to the
+ *    narrowphase exactly once per step, at the world's accuracy
+ *    (narrowphase.h). A leaf whose boxes were, pair by pair, farther apart
+ *    at its last search than its objects can have moved since, and that
+ *    no object entered or left, is skipped;
  * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every object in at least one
@@ -34,9 +37,9 @@
  *
  * **Maintenance modes.** #NOCT_MAINTAIN_INCREMENTAL is the report's
  * section 2.4: for each moving object and each leaf it spans, a fast test
- * for a box still inside the leaf (generalised to a box that spans a block
- * of equal leaves: still strictly inside the block and reaching each of
- * its leaves, so that objects straddling a face stay on the fast path);
+ * for a box still inside the leaf (generalised to a box that spans
+ * several leaves: it still overlaps the same cells of its smallest leaf's
+ * size, so that objects straddling a face stay on the fast path);
  * a leave check (remove, then merge); an
  * enter check through octGtEqNeighbor() in the quantized directions of
  * motion (octVectorToDirections()), each neighbor checked once per object
