@@ -698,7 +698,7 @@ void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s)
 _Static_assert(sizeof(noct_box_slot) == 128, "a box slot is two cache lines");
 
 _Static_assert(offsetof(noctMesh, box) + sizeof(box_form) <= 64 * NOCT_MESH_BOX_LINES,
-               "the box form fits the lines the world prefetches");
+               "the box form and the flags fit NOCT_MESH_BOX_LINES lines");
 
 /* ---- packing ----------------------------------------------------------------- */
 

@@ -58,8 +58,8 @@ typedef struct box_form {
 } box_form;
 
 /* The cache lines at the start of a mesh that hold its box form and the
- * flags before it: all that the filter reads of a pair of boxes that it
- * separates. */
+ * flags before it: all that noctCollide()'s filter reads of a mesh in a
+ * pair of boxes (a world reads its own copy, noct_box_slot). */
 #define NOCT_MESH_BOX_LINES 2
 
 /*
@@ -129,13 +129,6 @@ noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
 #endif
     ;
 
-/* noctCollide() without its argument checks and clock reads, for callers
- * that checked the translations (finite, within NOCT_MAX_COORDINATE) and
- * the accuracy, and time many calls at once (world.c). */
-noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
-                               const double tb[3], noctAccuracy accuracy, bool *colliding,
-                               noctNarrowStats *stats);
-
 /* The slot of a mesh with a box form (has_box). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 
@@ -151,9 +144,9 @@ noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
                                         const noctMesh *b, const double tb[3], bool *colliding,
                                         noctNarrowStats *stats);
 
-/* noct_collide_levels() past the box test, for a caller that made it
- * already, on the same placed boxes [fl(lo + t), fl(hi + t)] (world.c's
- * pair search): it reads none of the mesh but the box form's lines. */
+/* noctCollide() past its argument checks and the box test, for a caller
+ * that made them already, the box test on the same placed boxes
+ * [fl(lo + t), fl(hi + t)] (world.c's pair search). */
 noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const noctMesh *b,
                                     const double tb[3], noctAccuracy accuracy,
                                     bool *colliding, noctNarrowStats *stats);

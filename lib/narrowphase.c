@@ -861,9 +861,10 @@ const char *noctAccuracyName(noctAccuracy accuracy)
 }
 
 /* The levels past the box test, untimed; the box test first. */
-noctStatus noct_collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
-                               const double tb[3], noctAccuracy accuracy, bool *colliding,
-                               noctNarrowStats *stats)
+/* noctCollide() without its argument checks and clock reads. */
+static noctStatus collide_levels(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                 const double tb[3], noctAccuracy accuracy, bool *colliding,
+                                 noctNarrowStats *stats)
 {
     if (stats)
         ++stats->box_tests;
@@ -922,7 +923,7 @@ noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
     bool timed = stats != NULL && accuracy != NOCT_ACCURACY_BOX &&
                  boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb);
     double t0 = timed ? now() : 0;
-    noctStatus st = noct_collide_levels(a, ta, b, tb, accuracy, colliding, stats);
+    noctStatus st = collide_levels(a, ta, b, tb, accuracy, colliding, stats);
     if (timed)
         *(accuracy == NOCT_ACCURACY_CONVEX ? &stats->seconds_convex
                                            : &stats->seconds_exact) += now() - t0;
