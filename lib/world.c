@@ -36,9 +36,14 @@ typedef struct cell {
     uint32_t count, cap;
     uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
     uint64_t stamp_step; /* this node as a neighbor */
-    double apart;        /* leaf: its boxes were at least this far apart
-                            (on some axis, pair by pair) when its pairs
-                            were last searched; 0 after any change */
+    /* Leaf, from its last sweep: every pair of its boxes not in near was
+     * at least budget apart (on some axis) then, less twice the reach of
+     * each step since; 0 after any change to its objects. near holds the
+     * pairs that were closer, as positions in objs (low and high 16 bits),
+     * which stay valid while its objects do not change. */
+    double budget;
+    uint32_t *near;
+    uint32_t nnear, capnear;
 } cell;
 
 /* An axis-aligned box, closed. */
@@ -221,7 +226,7 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
         !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
         return false;
     c->objs[c->count++] = id;
-    c->apart = 0;
+    c->budget = 0;
     o->spans[o->nspans++] = leaf;
     forget_home(w, id);
     return true;
@@ -263,6 +268,9 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
     uint32_t *objs = pc->objs, count = pc->count;
     pc->objs = NULL;
     pc->count = pc->cap = 0;
+    free(pc->near);
+    pc->near = NULL;
+    pc->nnear = pc->capnear = 0;
     ++w->c.splits;
     bool ok = true;
     for (uint32_t j = 0; j < count; ++j)
@@ -287,6 +295,7 @@ static void free_cells_below(octNode *n)
         free_cells_below(k);
         cell *c = octSwapData(k, NULL);
         free(c->objs);
+        free(c->near);
     }
     free(block);
 }
@@ -318,7 +327,7 @@ static bool try_merge(noctWorld *w, octNode *p)
             return false;
         pc->cap = distinct ? distinct : 1;
         pc->count = 0;
-        pc->apart = 0;
+        pc->budget = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
@@ -351,7 +360,7 @@ static bool try_merge(noctWorld *w, octNode *p)
 static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
 {
     cell *c = cell_of(leaf);
-    c->apart = 0;
+    c->budget = 0;
     for (uint32_t i = 0; i < c->count; ++i)
         if (c->objs[i] == id) {
             c->objs[i] = c->objs[--c->count];
@@ -402,6 +411,7 @@ static void destroy_tree(noctWorld *w)
         octJoin(w->root, NULL);
     cell *rc = octSwapData(w->root, NULL);
     free(rc->objs);
+    free(rc->near);
     free(rc);
     octDispose(w->root);
     w->root = NULL;
@@ -865,17 +875,61 @@ static int sweep_axis(const leaf_box *g, uint32_t n)
     return best;
 }
 
+/* The pair (a, b) of leaf c, whose boxes overlap, for the narrowphase if
+ * c owns the lower corner of their overlap. */
+static NOCT_ALWAYS_INLINE bool offer_pair(noctWorld *w, const cell *c, const cell *rc,
+                                          const double alo[3], uint32_t ia,
+                                          const double blo[3], uint32_t ib)
+{
+    const double corner[3] = {noct_max(alo[0], blo[0]), noct_max(alo[1], blo[1]),
+                              noct_max(alo[2], blo[2])};
+    if (!owns(c, rc, corner))
+        return true;
+    if (ia > ib) {
+        uint32_t t = ia;
+        ia = ib;
+        ib = t;
+    }
+    return pairs_push(&w->tested, (noctPair){{ia, 0}, {ib, 0}});
+}
+
+/* How many steps of reach a sweep's near pairs are kept for: a leaf is
+ * swept about once in that many steps, and its near pairs tested in the
+ * others. */
+#define NEAR_STEPS 4
+
 /*
- * A leaf whose boxes were all at least 2 reach apart (on some axis, pair
- * by pair) at its last search has no overlapping pair now: skip it, with
- * what remains of the distance. Any change to its objects resets it.
+ * The pairs of a leaf. While its budget lasts (below), the pairs that its
+ * last sweep found near are tested and no other can meet, or, if there
+ * were none, the leaf is skipped. Else it is swept: its boxes sorted on
+ * one axis, each box against those after it that start before it ends
+ * plus the margin 2 NEAR_STEPS reach; those pairs are the near ones, and
+ * the others were farther apart than the margin, which is the new budget
+ * (or, without near pairs, the least distance apart of any pair).
  */
 static noctStatus search_leaf(noctWorld *w, cell *c)
 {
     const cell *rc = cell_of(w->root);
-    if (c->apart > 2 * w->reach) {
-        c->apart -= 2 * w->reach;
-        ++w->c.leaves_skipped;
+    const bool sweep = w->def.N != NOCT_N_EXHAUSTIVE;
+    if (sweep && c->budget > 2 * w->reach) {
+        c->budget -= 2 * w->reach;
+        if (c->nnear == 0) {
+            ++w->c.leaves_skipped;
+            return NOCT_OK;
+        }
+        ++w->c.leaves_visited;
+        w->c.candidate_pairs += c->nnear;
+        for (uint32_t i = 0; i < c->count; ++i)
+            NOCT_PREFETCH(&w->box[c->objs[i]]);
+        for (uint32_t k = 0; k < c->nnear; ++k) {
+            const uint32_t ia = c->objs[c->near[k] & 0xffff], ib = c->objs[c->near[k] >> 16];
+            const aabb *a = &w->box[ia], *b = &w->box[ib];
+            if ((a->hi[0] < b->lo[0]) | (b->hi[0] < a->lo[0]) | (a->hi[1] < b->lo[1]) |
+                (b->hi[1] < a->lo[1]) | (a->hi[2] < b->lo[2]) | (b->hi[2] < a->lo[2]))
+                continue;
+            if (!offer_pair(w, c, rc, a->lo, ia, b->lo, ib))
+                return NOCT_ERR_NOMEM;
+        }
         return NOCT_OK;
     }
     ++w->c.leaves_visited;
@@ -895,35 +949,33 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
         g[i].id = c->objs[i];
     }
     w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
-    /* Sweep along one axis: with the boxes sorted by their lower corner on
-     * it, the boxes that overlap a there are the ones after it that start
-     * before a ends. The exhaustive mode keeps the report's test of every
-     * pair. */
-    bool sweep = w->def.N != NOCT_N_EXHAUSTIVE;
+    /* The exhaustive mode keeps the report's test of every pair. */
     int axis = 0;
     if (sweep) {
         axis = sweep_axis(g, c->count);
         sort_by_lower(g, c->count, axis, g + c->count);
         /* The leaf keeps this order: objects move little in a step, so
-         * the next step's insertion sort finds them nearly sorted. */
+         * the next sweep's insertion sort finds them nearly sorted, and
+         * near pairs are positions in it. */
         for (uint32_t i = 0; i < c->count; ++i)
             c->objs[i] = g[i].id;
     }
-    /* With the boxes sorted on the sweep axis, b overlaps a there while b
-     * starts before a ends; the other two axes decide. Their four
-     * comparisons are combined without branches: most pairs fail one of
-     * them, in no predictable order. */
-    /* Meanwhile the least distance apart of the pairs, while no pair
-     * overlaps: pairs the sweep passes over are apart on its axis by at
-     * least the next box's start less a's end. */
+    const bool listing = sweep && c->count <= 0x10000;
+    const double m2 = listing ? 2 * NEAR_STEPS * w->reach : 0;
+    c->nnear = 0;
+    /* Meanwhile the least distance apart of the pairs beyond the margin:
+     * those the sweep passes over are apart on its axis by at least the
+     * next box's start less a's end. The four comparisons on the other
+     * axes are combined without branches: most pairs fail one of them, in
+     * no predictable order. */
     const int k1 = (axis + 1) % 3, k2 = (axis + 2) % 3;
     double apart = sweep ? INFINITY : 0;
     for (uint32_t i = 0; i < c->count; ++i) {
         const leaf_box *a = &g[i];
-        const double ahi = a->hi[axis];
+        const double ahi = a->hi[axis], reach_hi = ahi + m2;
         for (uint32_t j = i + 1; j < c->count; ++j) {
             const leaf_box *b = &g[j];
-            if (sweep ? b->lo[axis] > ahi
+            if (sweep ? b->lo[axis] > reach_hi
                       : (a->hi[axis] < b->lo[axis]) | (b->hi[axis] < a->lo[axis])) {
                 if (sweep) {
                     apart = noct_min(apart, b->lo[axis] - ahi);
@@ -931,31 +983,24 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
                 }
                 continue;
             }
-            if ((a->hi[k1] < b->lo[k1]) | (b->hi[k1] < a->lo[k1]) | (a->hi[k2] < b->lo[k2]) |
-                (b->hi[k2] < a->lo[k2])) {
-                if (apart > 0)
-                    apart = noct_min(apart, noct_max(noct_max(b->lo[k1] - a->hi[k1],
-                                                              a->lo[k1] - b->hi[k1]),
-                                                     noct_max(b->lo[k2] - a->hi[k2],
-                                                              a->lo[k2] - b->hi[k2])));
+            const double gap = noct_max(noct_max(b->lo[k1] - a->hi[k1], a->lo[k1] - b->hi[k1]),
+                                        noct_max(b->lo[k2] - a->hi[k2], a->lo[k2] - b->hi[k2]));
+            if (gap > m2) {
+                apart = noct_min(apart, gap);
                 continue;
             }
-            apart = 0;
-            const double corner[3] = {noct_max(a->lo[0], b->lo[0]), noct_max(a->lo[1], b->lo[1]),
-                                      noct_max(a->lo[2], b->lo[2])};
-            if (!owns(c, rc, corner))
-                continue;
-            uint32_t ia = a->id, ib = b->id;
-            if (ia > ib) {
-                uint32_t t = ia;
-                ia = ib;
-                ib = t;
+            if (listing) {
+                if (!grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
+                    return NOCT_ERR_NOMEM;
+                c->near[c->nnear++] = i | j << 16;
             }
-            if (!pairs_push(&w->tested, (noctPair){{ia, 0}, {ib, 0}}))
+            if (gap > 0 || b->lo[axis] > ahi)
+                continue; /* near, apart (touching boxes overlap) */
+            if (!offer_pair(w, c, rc, a->lo, a->id, b->lo, b->id))
                 return NOCT_ERR_NOMEM;
         }
     }
-    c->apart = apart;
+    c->budget = !listing ? 0 : c->nnear > 0 ? m2 : apart;
     return NOCT_OK;
 }
 

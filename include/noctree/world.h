@@ -18,9 +18,11 @@
  * 3. **pair search**: a depth-first walk over the leaves that hold more
  *    than one object hands each pair whose boxes overlap to the
  *    narrowphase exactly once per step, at the world's accuracy
- *    (narrowphase.h). A leaf whose boxes were, pair by pair, farther apart
- *    at its last search than its objects can have moved since, and that
- *    no object entered or left, is skipped;
+ *    (narrowphase.h). A leaf is swept (its boxes sorted on one axis)
+ *    about one step in four: the sweep keeps the pairs within a margin of
+ *    four steps' reach, and while no object enters or leaves the leaf and
+ *    the margin lasts, only those pairs are tested; a leaf without such
+ *    pairs is skipped while its boxes' least distance apart lasts;
  * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every object in at least one
@@ -173,14 +175,16 @@ typedef struct noctWorldCounters {
     uint64_t rebuilds;         /**< Whole-tree rebuilds (rebuild mode, and
                                     root growth). */
     uint64_t leaves_visited;   /**< Pair search: leaves with 2+ objects
-                                    whose pairs were searched. */
+                                    whose pairs were searched: swept, or
+                                    the near pairs their last sweep kept
+                                    tested. */
     uint64_t leaves_skipped;   /**< Pair search: leaves with 2+ objects
-                                    left out because at their last search
+                                    left out because at their last sweep
                                     their boxes were farther apart, pair
                                     by pair, than the objects have moved
                                     since (and none came or went). */
-    uint64_t candidate_pairs;  /**< Pair search: pairs in a searched
-                                    leaf. */
+    uint64_t candidate_pairs;  /**< Pair search: pairs in a swept leaf,
+                                    and near pairs tested. */
     uint64_t tested_pairs;     /**< Pairs handed to the narrowphase. */
     uint64_t colliding_pairs;  /**< Pairs found colliding. */
     uint64_t events;           /**< Contact-begin plus contact-end events. */
