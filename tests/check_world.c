@@ -215,6 +215,38 @@ static int cmp_pair(const void *x, const void *y)
     return (a->b.index > b->b.index) - (a->b.index < b->b.index);
 }
 
+/* After a step: the world's colliding pairs are the sorted brute-force
+ * answer, noctCollide() on every pair of the n objects. Returns how many
+ * pairs collide. */
+static size_t expect_brute_force(noctWorld *w, const noctObjectId *ids,
+                                 const noctMesh *const *mesh_of, int n, int step)
+{
+    noctPair *want = malloc(((size_t)n * (size_t)n / 2 + 1) * sizeof *want);
+    ck_assert(want != NULL);
+    size_t nwant = 0;
+    double pi[3], pj[3];
+    for (int i = 0; i < n; ++i) {
+        ck_assert_int_eq(noctWorldObject(w, ids[i], pi, NULL), NOCT_OK);
+        for (int j = i + 1; j < n; ++j) {
+            noctWorldObject(w, ids[j], pj, NULL);
+            bool hit;
+            ck_assert_int_eq(noctCollide(mesh_of[i], pi, mesh_of[j], pj, NOCT_ACCURACY_EXACT,
+                                         &hit, NULL), NOCT_OK);
+            if (hit)
+                want[nwant++] = (noctPair){ids[i], ids[j]};
+        }
+    }
+    qsort(want, nwant, sizeof *want, cmp_pair);
+    const noctPair *got;
+    size_t ngot = noctWorldColliding(w, &got);
+    ck_assert_msg(ngot == nwant, "step %d: %zu colliding pairs, brute force %zu", step, ngot,
+                  nwant);
+    for (size_t i = 0; i < nwant; ++i)
+        EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+    free(want);
+    return nwant;
+}
+
 START_TEST(random_scenes_against_brute_force)
 {
     uint64_t rng = 99 + (uint64_t)_i;
@@ -247,30 +279,10 @@ START_TEST(random_scenes_against_brute_force)
                          NOCT_OK);
     }
     validate_ok(w);
-    noctPair *want = malloc(NOBJ * NOBJ * sizeof *want);
     for (int s = 0; s < 40; ++s) {
         step_ok(w);
         validate_ok(w);
-        size_t nwant = 0;
-        double pi[3], pj[3];
-        for (int i = 0; i < NOBJ; ++i) {
-            ck_assert_int_eq(noctWorldObject(w, ids[i], pi, NULL), NOCT_OK);
-            for (int j = i + 1; j < NOBJ; ++j) {
-                noctWorldObject(w, ids[j], pj, NULL);
-                bool hit;
-                ck_assert_int_eq(noctCollide(mesh_of[i], pi, mesh_of[j], pj,
-                                             NOCT_ACCURACY_EXACT, &hit, NULL), NOCT_OK);
-                if (hit)
-                    want[nwant++] = (noctPair){ids[i], ids[j]};
-            }
-        }
-        qsort(want, nwant, sizeof *want, cmp_pair);
-        const noctPair *got;
-        size_t ngot = noctWorldColliding(w, &got);
-        ck_assert_msg(ngot == nwant, "step %d: %zu colliding pairs, brute force %zu", s,
-                      ngot, nwant);
-        for (size_t i = 0; i < nwant; ++i)
-            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+        expect_brute_force(w, ids, mesh_of, NOBJ, s);
     }
     noctWorldCounters c;
     noctWorldGetCounters(w, &c);
@@ -279,7 +291,6 @@ START_TEST(random_scenes_against_brute_force)
         ck_assert_uint_gt(c.neighbor_queries, 0);
         ck_assert_uint_gt(c.leaves_left, 0);
     }
-    free(want);
     noctWorldDestroy(w);
     for (int m = 0; m < NMESH; ++m)
         noctMeshDestroy(meshes[m]);
@@ -318,28 +329,12 @@ START_TEST(skipped_leaves_against_brute_force)
         double speed = i % 9 == 0 ? 0 : 0.01 + (double)test_rand_below(&rng, 90) / 1000.0;
         ck_assert_int_eq(noctWorldAdd(w, cube, pos, dir, speed, &ids[i], NULL), NOCT_OK);
     }
-    noctPair want[NOBJ * (NOBJ - 1) / 2];
+    const noctMesh *mesh_of[NOBJ];
+    for (int i = 0; i < NOBJ; ++i)
+        mesh_of[i] = cube;
     for (int s = 0; s < STEPS; ++s) {
         step_ok(w);
-        size_t nwant = 0;
-        double pi[3], pj[3];
-        for (int i = 0; i < NOBJ; ++i) {
-            noctWorldObject(w, ids[i], pi, NULL);
-            for (int j = i + 1; j < NOBJ; ++j) {
-                noctWorldObject(w, ids[j], pj, NULL);
-                bool hit;
-                ck_assert_int_eq(noctCollide(cube, pi, cube, pj, NOCT_ACCURACY_EXACT, &hit,
-                                             NULL), NOCT_OK);
-                if (hit)
-                    want[nwant++] = (noctPair){ids[i], ids[j]};
-            }
-        }
-        const noctPair *got;
-        size_t ngot = noctWorldColliding(w, &got);
-        ck_assert_msg(ngot == nwant, "step %d: %zu colliding pairs, brute force %zu", s, ngot,
-                      nwant);
-        for (size_t i = 0; i < nwant; ++i)
-            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+        expect_brute_force(w, ids, mesh_of, NOBJ, s);
     }
     noctWorldCounters c;
     noctWorldGetCounters(w, &c);
@@ -376,29 +371,13 @@ START_TEST(many_partners_sorted)
             dir[k] = len > 0 ? dir[k] / len : k == 0;
         ck_assert_int_eq(noctWorldAdd(w, small, pos, dir, 0.05, &ids[i], NULL), NOCT_OK);
     }
+    const noctMesh *mesh_of[NSMALL + 1];
+    for (int i = 0; i <= NSMALL; ++i)
+        mesh_of[i] = i ? small : big;
     for (int s = 0; s < 5; ++s) {
         step_ok(w);
-        noctPair want[(NSMALL + 1) * NSMALL / 2];
-        size_t nwant = 0;
-        double pi[3], pj[3];
-        for (int i = 0; i <= NSMALL; ++i) {
-            noctWorldObject(w, ids[i], pi, NULL);
-            for (int j = i + 1; j <= NSMALL; ++j) {
-                noctWorldObject(w, ids[j], pj, NULL);
-                bool hit;
-                ck_assert_int_eq(noctCollide(i ? small : big, pi, small, pj,
-                                             NOCT_ACCURACY_EXACT, &hit, NULL), NOCT_OK);
-                if (hit)
-                    want[nwant++] = (noctPair){ids[i], ids[j]};
-            }
-        }
-        qsort(want, nwant, sizeof *want, cmp_pair);
-        const noctPair *got;
-        size_t ngot = noctWorldColliding(w, &got);
-        ck_assert_uint_eq(ngot, nwant);
-        ck_assert_uint_gt(nwant, NSMALL); /* the big cube's run and more */
-        for (size_t i = 0; i < nwant; ++i)
-            EXPECT(got[i].a.index == want[i].a.index && got[i].b.index == want[i].b.index);
+        /* the big cube's run and more */
+        ck_assert_uint_gt(expect_brute_force(w, ids, mesh_of, NSMALL + 1, s), NSMALL);
     }
     noctWorldDestroy(w);
     noctMeshDestroy(big);
