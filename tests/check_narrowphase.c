@@ -1226,22 +1226,17 @@ START_TEST(sat_filter_rotated_boxes)
 }
 END_TEST
 
-/* A box with one corner pushed out by 2^-33 along x, as 12 triangles:
- * its vertices are a box's corners only within that deviation. Another
- * box touching exactly that corner collides (closed solids), so no
- * filter may take the box it approximates for the mesh. A diamond off
- * that corner, its face 1e-3 from it and its bounding box overlapping
- * the mesh's, is separated by the filter without a triangle test. */
-START_TEST(sat_filter_nearly_a_box)
+/* The unit cube [0, 1]^3 as 12 triangles, its corner (1, 1, 1) moved by
+ * dx along x. */
+static noctMesh *unit_box_moved_corner(double dx)
 {
-    const double delta = 0x1p-33;
     double v[24];
     for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
         v[3 * i] = (i & 4) ? 1 : 0;
         v[3 * i + 1] = (i & 2) ? 1 : 0;
         v[3 * i + 2] = (i & 1) ? 1 : 0;
     }
-    v[3 * 7] += delta; /* corner (1, 1, 1) */
+    v[3 * 7] += dx;
     static const uint32_t quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
                                          {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
     uint32_t sizes[12], idx[36];
@@ -1251,9 +1246,22 @@ START_TEST(sat_filter_nearly_a_box)
         memcpy(&idx[6 * f], t, sizeof t);
         sizes[2 * f] = sizes[2 * f + 1] = 3;
     }
-    noctMesh *a, *b;
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 12, idx, &m, NULL), NOCT_OK);
+    return m;
+}
+
+/* A box with one corner pushed out by 2^-33 along x, as 12 triangles:
+ * its vertices are a box's corners only within that deviation. Another
+ * box touching exactly that corner collides (closed solids), so no
+ * filter may take the box it approximates for the mesh. A diamond off
+ * that corner, its face 1e-3 from it and its bounding box overlapping
+ * the mesh's, is separated by the filter without a triangle test. */
+START_TEST(sat_filter_nearly_a_box)
+{
+    const double delta = 0x1p-33;
+    noctMesh *a = unit_box_moved_corner(delta), *b;
     noctError err;
-    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 12, idx, &a, &err), NOCT_OK);
     ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &b, &err), NOCT_OK);
     const double c = sqrt(0.5);
     const double rz[9] = {c, -c, 0, c, c, 0, 0, 0, 1}, half[3] = {0.5, 0.5, 0.5};
@@ -1297,24 +1305,7 @@ END_TEST
 START_TEST(witness_nearly_a_box)
 {
     const double delta = 0x1p-33;
-    double v[24];
-    for (int i = 0; i < 8; ++i) {
-        v[3 * i] = (i & 4) ? 1 : 0;
-        v[3 * i + 1] = (i & 2) ? 1 : 0;
-        v[3 * i + 2] = (i & 1) ? 1 : 0;
-    }
-    v[3 * 7] -= delta; /* corner (1, 1, 1) */
-    static const uint32_t quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
-                                         {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
-    uint32_t sizes[12], idx[36];
-    for (int f = 0; f < 6; ++f) {
-        const uint32_t t[6] = {quads[f][0], quads[f][1], quads[f][2],
-                               quads[f][0], quads[f][2], quads[f][3]};
-        memcpy(&idx[6 * f], t, sizeof t);
-        sizes[2 * f] = sizes[2 * f + 1] = 3;
-    }
-    noctMesh *a, *tiny;
-    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 12, idx, &a, NULL), NOCT_OK);
+    noctMesh *a = unit_box_moved_corner(-delta), *tiny;
     const double h = 0x1p-40;
     ck_assert_int_eq(noctMeshCreateBox(h, h, h, &tiny, NULL), NOCT_OK);
     /* Near (y, z) = (1, 1) the +x face is x = 1 - delta min(y, z) to within
