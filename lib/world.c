@@ -76,7 +76,6 @@ typedef struct object {
     aabb old;              /* the placed box before the last move */
     octNode **spans;       /* leaves it is in */
     uint32_t nspans, capspans;
-    uint32_t generation;
     bool alive;
     bool entering;         /* maintenance: needs the enter phase */
 } object;
@@ -105,11 +104,14 @@ struct noctWorld {
     const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
                               reads it without touching the objects */
     double (*pos)[3];      /* per slot: the position (translation) */
+    uint32_t *gen;         /* per slot: its handles' generation, read for
+                              each colliding pair (4 bytes, not a line) */
     noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
                               all the exact level reads of most pairs of
                               boxes (64-byte aligned, two lines each) */
     uint32_t *movers;      /* live moving objects, by slot */
     uint32_t nmovers, capmovers;
+    double vmax;           /* the movers' greatest speed */
     bool movers_stale;
     uint32_t *slow;        /* maintenance: movers that left their home cube */
     uint32_t nslow, capslow;
@@ -175,8 +177,9 @@ static bool overlaps(const aabb *b, const cell *c)
 }
 
 /* Are b's leaves still those of the home block h (the report's fast
- * test, for a box in one leaf or several)? */
-static bool inside_home(const aabb *b, const home_block *h)
+ * test, for a box in one leaf or several)? Twelve comparisons and one
+ * branch: nearly every box passes, and this runs for every mover. */
+static NOCT_ALWAYS_INLINE bool inside_home(const aabb *b, const home_block *h)
 {
     for (int k = 0; k < 3; ++k)
         if (!(b->lo[k] > h->lo[k] && b->hi[k] < h->hi[k] && b->lo[k] <= h->first_hi[k] &&
@@ -756,7 +759,8 @@ static noctStatus maintain(noctWorld *w)
     return st;
 }
 
-/* The live moving objects in slot order, after objects came or went. */
+/* The live moving objects in slot order, and their greatest speed, after
+ * objects came or went. */
 static bool update_movers(noctWorld *w)
 {
     if (!w->movers_stale)
@@ -766,9 +770,12 @@ static bool update_movers(noctWorld *w)
         return false;
     w->capmovers = cap;
     w->nmovers = 0;
+    w->vmax = 0;
     for (uint32_t i = 0; i < w->nslots; ++i)
-        if (w->obj[i].alive && w->obj[i].speed > 0)
+        if (w->obj[i].alive && w->obj[i].speed > 0) {
             w->movers[w->nmovers++] = i;
+            w->vmax = noct_max(w->vmax, w->obj[i].speed);
+        }
     w->movers_stale = false;
     return true;
 }
@@ -1091,7 +1098,7 @@ static void sort_partners(pair_list *l)
  * decided on their slots, two cache lines each, in most cases without
  * reading the meshes; the rest go through the meshes. Slots are scattered
  * by pair, so they and the positions are requested 16 pairs ahead, and 8
- * ahead the objects and the first lines of the meshes that are not boxes. */
+ * ahead the first lines of the meshes that are not boxes. */
 static noctStatus narrow(noctWorld *w)
 {
     const noctPair *p = w->tested.p;
@@ -1120,7 +1127,6 @@ static noctStatus narrow(noctWorld *w)
             for (int s = 0; s < 2; ++s) {
                 uint32_t k = s ? p[i + 8].b.index : p[i + 8].a.index;
                 if (!exact || !slot[k].has_box) {
-                    NOCT_PREFETCH(&w->obj[k]);
                     const char *m = (const char *)w->mesh[k];
                     for (int line = 0; line < 10; ++line)
                         NOCT_PREFETCH(m + 64 * line);
@@ -1130,24 +1136,24 @@ static noctStatus narrow(noctWorld *w)
         bool hit;
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];
-        if (exact && slot[ia].has_box && slot[ib].has_box) {
+        const bool boxes = exact && slot[ia].has_box && slot[ib].has_box;
+        if (boxes) {
             d = noct_box_decide(&slot[ia], ta, &slot[ib], tb);
             ++w->c.narrow.exact_tests;
             if (d != 0)
                 ++*(d < 0 ? &w->c.narrow.sat_rejects : &w->c.narrow.witnesses);
         }
-        const object *oa = &w->obj[ia], *ob = &w->obj[ib];
+        const noctMesh *ma = w->mesh[ia], *mb = w->mesh[ib];
         if (d != 0)
             hit = d > 0;
-        else if (exact && slot[ia].has_box && slot[ib].has_box)
-            st = noct_collide_undecided_boxes(oa->mesh, ta, ob->mesh, tb, &hit, &w->c.narrow);
+        else if (boxes)
+            st = noct_collide_undecided_boxes(ma, ta, mb, tb, &hit, &w->c.narrow);
         else
-            st = noct_collide_overlapping(oa->mesh, ta, ob->mesh, tb, level, &hit,
-                                          &w->c.narrow);
+            st = noct_collide_overlapping(ma, ta, mb, tb, level, &hit, &w->c.narrow);
         if (st != NOCT_OK)
             break;
         if (hit && !pairs_push(&w->colliding,
-                               (noctPair){{ia, oa->generation}, {ib, ob->generation}})) {
+                               (noctPair){{ia, w->gen[ia]}, {ib, w->gen[ib]}})) {
             st = NOCT_ERR_NOMEM;
             break;
         }
@@ -1267,6 +1273,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->mesh);
     free(w->slot);
     free(w->pos);
+    free(w->gen);
     free(w->movers);
     free(w->slow);
     free(w->work);
@@ -1287,7 +1294,7 @@ void noctWorldDestroy(noctWorld *w)
 static object *lookup(const noctWorld *w, noctObjectId id)
 {
     if (id.index >= w->nslots || !w->obj[id.index].alive ||
-        w->obj[id.index].generation != id.generation)
+        w->gen[id.index] != id.generation)
         return NULL;
     return &w->obj[id.index];
 }
@@ -1322,7 +1329,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     } else {
         if (w->nslots >= 0x80000000u)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
-        /* obj, box, home, mesh and mark share one capacity, capslots; each
+        /* obj, box, home, mesh, pos, gen, slot and mark share one capacity, capslots; each
          * array that grew is kept even if a later one fails. */
         uint32_t cap = w->capslots;
         if (!grow_array((void **)&w->obj, &cap, w->nslots + 1, sizeof *w->obj))
@@ -1343,8 +1350,11 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
             double(*pos)[3] = meshes ? realloc(w->pos, cap * sizeof *pos) : NULL;
             if (pos != NULL)
                 w->pos = pos;
+            uint32_t *gen = pos ? realloc(w->gen, cap * sizeof *gen) : NULL;
+            if (gen != NULL)
+                w->gen = gen;
             /* aligned, so not realloc */
-            noct_box_slot *slots = pos ? aligned_alloc(64, cap * sizeof *slots) : NULL;
+            noct_box_slot *slots = gen ? aligned_alloc(64, cap * sizeof *slots) : NULL;
             if (slots == NULL)
                 return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
             if (w->nslots > 0)
@@ -1356,6 +1366,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
         slot = w->nslots++;
         memset(&w->obj[slot], 0, sizeof w->obj[slot]);
         w->mark[slot] = 0;
+        w->gen[slot] = 0;
     }
     object *o = &w->obj[slot];
     o->mesh = w->mesh[slot] = mesh;
@@ -1370,7 +1381,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
         o->vel[k] = speed > 0 ? speed * (scale == 1 ? direction[k] : direction[k] * scale)
                               : 0;
     }
-    o->generation = o->generation + 1 ? o->generation + 1 : 1;
+    w->gen[slot] = w->gen[slot] + 1 ? w->gen[slot] + 1 : 1;
     o->alive = true;
     o->nspans = 0;
     place_box(o, w->pos[slot], &w->box[slot]);
@@ -1382,7 +1393,7 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     w->moving += speed > 0;
     w->movers_stale = w->movers_stale || speed > 0;
     id->index = slot;
-    id->generation = o->generation;
+    id->generation = w->gen[slot];
     noctStatus st;
     if (w->root == NULL || !inside_root(w, &w->box[slot]))
         st = rebuild(w, w->root ? 2 * cell_of(w->root)->size : 0);
@@ -1423,6 +1434,66 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
     return NOCT_OK;
 }
 
+/*
+ * Motion: each mover's position advances by fraction of its velocity
+ * (times 1 is exact, so a whole step adds the velocity itself), walls
+ * turn it back, and its box is placed; its old box is kept for
+ * maintenance. Returns whether a box left the root; far receives the
+ * first mover beyond NOCT_MAX_COORDINATE, or UINT32_MAX. The checks are
+ * gathered over the loop, which has no other branch but the walls', and
+ * that one is decided outside it (walls is a constant where it is
+ * inlined).
+ */
+static NOCT_ALWAYS_INLINE bool move(noctWorld *w, double fraction, bool walls,
+                                    const aabb *root, uint32_t *far)
+{
+    const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
+    const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
+    const aabb r = *root;
+    object *obj = w->obj;
+    aabb *box = w->box;
+    double(*pos)[3] = w->pos;
+    const uint32_t *movers = w->movers;
+    const uint32_t nm = w->nmovers;
+    bool out = false, beyond = false;
+    for (uint32_t m = 0; m < nm; ++m) {
+        const uint32_t i = movers[m];
+        object *o = &obj[i];
+        aabb *b = &box[i];
+        double *p = pos[i];
+        o->old = *b;
+        const double x = p[0] + o->vel[0] * fraction, y = p[1] + o->vel[1] * fraction,
+                     z = p[2] + o->vel[2] * fraction;
+        p[0] = x;
+        p[1] = y;
+        p[2] = z;
+        if (walls)
+            for (int k = 0; k < 3; ++k)
+                if ((p[k] < wlo[k] && o->vel[k] < 0) || (p[k] > whi[k] && o->vel[k] > 0))
+                    o->vel[k] = -o->vel[k];
+        beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
+                  (fabs(z) > NOCT_MAX_COORDINATE);
+        b->lo[0] = o->mlo[0] + x;
+        b->lo[1] = o->mlo[1] + y;
+        b->lo[2] = o->mlo[2] + z;
+        b->hi[0] = o->mhi[0] + x;
+        b->hi[1] = o->mhi[1] + y;
+        b->hi[2] = o->mhi[2] + z;
+        out |= (b->lo[0] < r.lo[0]) | (b->lo[1] < r.lo[1]) | (b->lo[2] < r.lo[2]) |
+               (b->hi[0] > r.hi[0]) | (b->hi[1] > r.hi[1]) | (b->hi[2] > r.hi[2]);
+    }
+    *far = UINT32_MAX;
+    for (uint32_t m = 0; beyond && m < nm; ++m) {
+        const double *p = pos[movers[m]];
+        if (fabs(p[0]) > NOCT_MAX_COORDINATE || fabs(p[1]) > NOCT_MAX_COORDINATE ||
+            fabs(p[2]) > NOCT_MAX_COORDINATE) {
+            *far = movers[m];
+            break;
+        }
+    }
+    return out;
+}
+
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
 static noctStatus substep(noctWorld *w, double fraction, noctError *err)
 {
@@ -1434,36 +1505,14 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     if (moving && !update_movers(w))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
-        /* Loop invariants in locals: the compiler cannot know that the
-         * stores below leave them alone. */
         const aabb root = root_box(w);
-        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
-        const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
-        const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
-        object *obj = w->obj;
-        aabb *box = w->box;
-        const uint32_t *movers = w->movers;
-        double vmax = 0;
-        for (uint32_t m = 0, nm = w->nmovers; m < nm; ++m) {
-            uint32_t i = movers[m];
-            object *o = &obj[i];
-            vmax = noct_max(vmax, o->speed);
-            aabb *b = &box[i];
-            double *pos = w->pos[i];
-            o->old = *b;
-            for (int k = 0; k < 3; ++k)
-                pos[k] += fraction == 1 ? o->vel[k] : o->vel[k] * fraction;
-            if (walls)
-                for (int k = 0; k < 3; ++k)
-                    if ((pos[k] < wlo[k] && o->vel[k] < 0) || (pos[k] > whi[k] && o->vel[k] > 0))
-                        o->vel[k] = -o->vel[k];
-            if (fabs(pos[0]) > NOCT_MAX_COORDINATE || fabs(pos[1]) > NOCT_MAX_COORDINATE ||
-                fabs(pos[2]) > NOCT_MAX_COORDINATE)
-                return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)i, 0,
-                                 "object %u moved beyond %g", i, NOCT_MAX_COORDINATE);
-            place_box(o, pos, b);
-            escaped |= !box_within(b, &root);
-        }
+        uint32_t far;
+        escaped = (w->def.effects & NOCT_EFFECT_WALLS) != 0 ? move(w, fraction, true, &root, &far)
+                                                            : move(w, fraction, false, &root, &far);
+        if (far != UINT32_MAX)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
+                             "object %u moved beyond %g", far, NOCT_MAX_COORDINATE);
+        const double vmax = w->vmax;
         w->c.moved += w->nmovers;
         /* |velocity| is the speed within 1e-9; a placed box moves by it
          * and a few roundings of the root's coordinates. */
@@ -1642,7 +1691,7 @@ size_t noctWorldCell(const noctWorld *w, const octNode *node, double lo[3], doub
     if (size != NULL)
         *size = c->size;
     for (uint32_t i = 0; i < c->count && i < max; ++i)
-        objects[i] = (noctObjectId){c->objs[i], w->obj[c->objs[i]].generation};
+        objects[i] = (noctObjectId){c->objs[i], w->gen[c->objs[i]]};
     return c->count;
 }
 
