@@ -429,57 +429,6 @@ static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double
     return m + noct_max(a->size, b->size);
 }
 
-/*
- * The filter for two meshes with a box form (mesh_internal.h): the
- * oriented-box test on the 15 axes of the two boxes, which reads only the
- * descriptions. On axis u (l1 = |u_x| + |u_y| + |u_z|) every placed vertex
- * of A projects within R_A + l1 dev_A of u.(c_A + t_A), R_A = sum |u.e_i|,
- * and rounding the placed vertex moves it by at most l1 ulp(1/2) 2M, M
- * bounding the sizes and translations. A separation shows as
- * |u.T| - R_A - R_B - l1 (dev_A + dev_B) > 0 with T = c_B + t_B - c_A - t_A.
- * Computing T (as fl(c_B + t_B) - fl(c_A + t_A)), the dot products, the
- * radii (3 each) and the sums errs by under 110 ulp(1/2) l1 M in all; a
- * computed gap above 256 of those proves the solids disjoint. The radii
- * own[i] and the deviations are floats rounded up: larger, so safe.
- */
-static bool box_separated(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                          const double tb[3])
-{
-    double T[3];
-    const double M = box_offset(a, ta, b, tb, T);
-    const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
-    /* A's faces, then B's: axis e[i] of one box, on which that box's
-     * radius is its own[i]. */
-    for (int s = 0; s < 2; ++s) {
-        const noct_box_slot *self = s ? b : a, *other = s ? a : b;
-        for (int i = 0; i < 3; ++i) {
-            const double *u = self->e[i];
-            double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-            double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)self->own[i] -
-                         box_radius(other->e, u) - l1 * dev;
-            if (gap > unit * l1)
-                return true;
-        }
-    }
-    for (int i = 0; i < 3; ++i) { /* pairs of edges */
-        const double *p = a->e[i];
-        double lp = fabs(p[0]) + fabs(p[1]) + fabs(p[2]);
-        for (int j = 0; j < 3; ++j) {
-            const double *q = b->e[j];
-            const double u[3] = {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
-                                 p[0] * q[1] - p[1] * q[0]};
-            double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-            if (!(l1 > 1e-6 * lp * (fabs(q[0]) + fabs(q[1]) + fabs(q[2]))))
-                continue; /* (nearly) parallel edges: no useful axis */
-            double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
-                         box_radius(b->e, u) - l1 * dev;
-            if (gap > unit * l1)
-                return true;
-        }
-    }
-    return false;
-}
-
 /* Is a b == c d exactly? Two-products (fma) away from underflow. */
 static bool products_equal(double a, double b, double c, double d)
 {
@@ -490,8 +439,21 @@ static bool products_equal(double a, double b, double c, double d)
 }
 
 /*
- * Do two boxes with duals provably share a point, by the separating-axis
- * test on their ideal boxes shrunk about their centres? Shrunk by the
+ * The filter for two meshes with a box form (mesh_internal.h), first the
+ * separation test: the oriented-box test on the 15 axes of the two boxes, which reads only the
+ * descriptions. On axis u (l1 = |u_x| + |u_y| + |u_z|) every placed vertex
+ * of A projects within R_A + l1 dev_A of u.(c_A + t_A), R_A = sum |u.e_i|,
+ * and rounding the placed vertex moves it by at most l1 ulp(1/2) 2M, M
+ * bounding the sizes and translations. A separation shows as
+ * |u.T| - R_A - R_B - l1 (dev_A + dev_B) > 0 with T = c_B + t_B - c_A - t_A.
+ * Computing T (as fl(c_B + t_B) - fl(c_A + t_A)), the dot products, the
+ * radii (3 each) and the sums errs by under 110 ulp(1/2) l1 M in all; a
+ * computed gap above 256 of those proves the solids disjoint. The radii
+ * own[i] and the deviations are floats rounded up: larger, so safe.
+ */
+/*
+ * Then the proof: do two boxes with duals provably share a point, by the
+ * separating-axis test on their ideal boxes shrunk about their centres? Shrunk by the
  * factor f = 1 - shrink, shrink >= 2 gmax dev + 8 eta + 2e-15, every point
  * x = c + sum l_i e[i] of the shrunk box has g[i].(x - c) below
  * 1 - (2 gmax dev + 4 eta + 1e-15), since g[i].e[j] is within eta of
@@ -508,50 +470,87 @@ static bool products_equal(double a, double b, double c, double d)
  * exact cross product is zero); nearly parallel edges give an axis that
  * the bound swamps, and the pair goes on to the witnesses.
  */
-static bool box_overlap_proven(const noct_box_slot *a, const double ta[3],
-                               const noct_box_slot *b, const double tb[3])
+/*
+ * The two tests share their work. The separation test runs first on the
+ * face axes e[i], where it is cheapest and most pairs end: A's give the
+ * products a_i.b_j that B's radii on A's axes need, and B's radii on A's
+ * axes, read by column, are A's radii on B's (the same products in the
+ * same order). On the nine axes a_i x b_j both tests need the same axis,
+ * projection and radii, so they are computed once for both; the proof's
+ * own face axes, the cross products of a box's edges, come last and only
+ * for pairs not yet separated or refuted. The result is that of the
+ * separation test on its 15 axes, then of the proof on its 15.
+ */
+int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                    const double tb[3])
 {
-    if (!(a->shrink < 1 && b->shrink < 1))
-        return false; /* no dual */
     double T[3];
     const double M = box_offset(a, ta, b, tb, T);
-    const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
-    const double unit = 256 * 0x1p-53 * M;
-    /* The axes as pairs of edges: A's face normals, B's, then A x B. */
-    const double *p[15], *q[15];
+    const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
+    double C[3][3]; /* a_i . b_j */
+    double la[3], lb[3];
     for (int i = 0; i < 3; ++i) {
-        p[i] = a->e[(i + 1) % 3];
-        q[i] = a->e[(i + 2) % 3];
-        p[3 + i] = b->e[(i + 1) % 3];
-        q[3 + i] = b->e[(i + 2) % 3];
+        const double *u = a->e[i];
+        la[i] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        for (int j = 0; j < 3; ++j)
+            C[i][j] = u[0] * b->e[j][0] + u[1] * b->e[j][1] + u[2] * b->e[j][2];
+        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)a->own[i] -
+                           (fabs(C[i][0]) + fabs(C[i][1]) + fabs(C[i][2])) - la[i] * dev;
+        if (gap > unit * la[i])
+            return -1;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const double *u = b->e[j];
+        lb[j] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] -
+                           (fabs(C[0][j]) + fabs(C[1][j]) + fabs(C[2][j])) - lb[j] * dev;
+        if (gap > unit * lb[j])
+            return -1;
+    }
+    /* The proof needs both duals: shrink is +inf without one. */
+    bool proven = a->shrink < 1 && b->shrink < 1;
+    const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
+    for (int i = 0; i < 3; ++i) { /* pairs of edges */
+        const double *x = a->e[i];
         for (int j = 0; j < 3; ++j) {
-            p[6 + 3 * i + j] = a->e[i];
-            q[6 + 3 * i + j] = b->e[j];
+            const double *y = b->e[j];
+            const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                                 x[0] * y[1] - x[1] * y[0]};
+            const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+            /* (nearly) parallel edges: no useful axis to separate */
+            const bool separating = l1 > 1e-6 * la[i] * lb[j];
+            if (!separating && !proven)
+                continue;
+            const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
+            const double ra = box_radius(a->e, u), rb = box_radius(b->e, u);
+            if (separating && d - ra - rb - l1 * dev > unit * l1)
+                return -1;
+            if (!proven)
+                continue;
+            if (l1 == 0 && products_equal(x[1], y[2], x[2], y[1]) &&
+                products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
+                continue; /* parallel edges */
+            const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
+                              noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
+            proven = d + unit * (l1 + pq) < fa * ra + fb * rb;
         }
     }
-    for (int n = 0; n < 15; ++n) {
-        const double *x = p[n], *y = q[n];
+    if (!proven)
+        return 0;
+    /* The proof's face axes: the cross products of each box's edges. */
+    for (int n = 0; n < 6; ++n) {
+        const noct_box_slot *s = n < 3 ? a : b;
+        const double *x = s->e[(n + 1) % 3], *y = s->e[(n + 2) % 3];
         const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
                              x[0] * y[1] - x[1] * y[0]};
         const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        if (l1 == 0 && n >= 6 && products_equal(x[1], y[2], x[2], y[1]) &&
-            products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
-            continue; /* parallel edges */
         const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
                           noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
         const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
         if (!(d + unit * (l1 + pq) < fa * box_radius(a->e, u) + fb * box_radius(b->e, u)))
-            return false;
+            return 0;
     }
-    return true;
-}
-
-int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                    const double tb[3])
-{
-    if (box_separated(a, ta, b, tb))
-        return -1;
-    return box_overlap_proven(a, ta, b, tb) ? 1 : 0;
+    return 1;
 }
 
 /*
