@@ -926,8 +926,6 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
         }
         ++w->c.leaves_visited;
         w->c.candidate_pairs += c->nnear;
-        for (uint32_t i = 0; i < c->count; ++i)
-            NOCT_PREFETCH(&w->box[c->objs[i]]);
         for (uint32_t k = 0; k < c->nnear; ++k) {
             const uint32_t ia = c->objs[c->near[k] & 0xffff], ib = c->objs[c->near[k] >> 16];
             const aabb *a = &w->box[ia], *b = &w->box[ib];
@@ -943,12 +941,7 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
     if (!grow_array((void **)&w->gather, &w->capgather, 2 * c->count, sizeof *w->gather))
         return NOCT_ERR_NOMEM;
     leaf_box *g = w->gather;
-    /* The boxes are scattered: request them all, then copy. */
-    for (uint32_t i = 0; i < c->count; ++i) {
-        const char *b = (const char *)&w->box[c->objs[i]];
-        NOCT_PREFETCH(b);
-        NOCT_PREFETCH(b + sizeof(aabb) - 1);
-    }
+    /* The boxes are scattered; search() requested them a leaf ahead. */
     for (uint32_t i = 0; i < c->count; ++i) {
         const aabb *o = &w->box[c->objs[i]];
         memcpy(g[i].lo, o->lo, sizeof o->lo);
@@ -1164,15 +1157,51 @@ static noctStatus narrow(noctWorld *w)
     return st;
 }
 
+/* Request a leaf's object and near-pair lists. */
+static NOCT_ALWAYS_INLINE void prefetch_lists(const cell *c)
+{
+    if (c->count > 1) {
+        NOCT_PREFETCH(c->objs);
+        if (c->nnear > 0)
+            NOCT_PREFETCH(c->near);
+    }
+}
+
+/* Request the boxes of a leaf whose lists are in cache, if the search
+ * will read them this step (search_leaf skips the leaf otherwise). */
+static NOCT_ALWAYS_INLINE void prefetch_boxes(const noctWorld *w, const cell *c)
+{
+    if (c->count < 2 ||
+        (w->def.N != NOCT_N_EXHAUSTIVE && c->budget > 2 * w->reach && c->nnear == 0))
+        return;
+    for (uint32_t i = 0; i < c->count; ++i) {
+        const char *b = (const char *)&w->box[c->objs[i]];
+        NOCT_PREFETCH(b);
+        NOCT_PREFETCH(b + sizeof(aabb) - 1);
+    }
+}
+
+/*
+ * The depth-first walk. A node's children's cells are one block
+ * (split_leaf), requested whole on the way down; then, while child i is
+ * searched, the boxes of child i + 1, whose lists were requested while
+ * child i - 1 was, and the lists of child i + 2: each leaf's scattered
+ * reads are under way a leaf or two before it needs them.
+ */
 static noctStatus search(noctWorld *w, octNode *n)
 {
     if (NOCT_NODE_IS_SPLIT(n)) {
+        const cell *kids = cell_of(NOCT_NODE_CHILD(n, OCT_LDB));
+        for (size_t b = 0; b < 8 * sizeof *kids; b += 64)
+            NOCT_PREFETCH((const char *)kids + b);
+        prefetch_lists(&kids[0]);
+        prefetch_lists(&kids[1]);
+        prefetch_boxes(w, &kids[0]);
         for (int i = 0; i < 8; ++i) {
-            if (i < 7) { /* the next leaf's object list, while this one runs */
-                const octNode *next = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i + 1));
-                if (!NOCT_NODE_IS_SPLIT(next))
-                    NOCT_PREFETCH(cell_of(next)->objs);
-            }
+            if (i + 1 < 8)
+                prefetch_boxes(w, &kids[i + 1]);
+            if (i + 2 < 8)
+                prefetch_lists(&kids[i + 2]);
             noctStatus st = search(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
             if (st != NOCT_OK)
                 return st;
@@ -1180,7 +1209,11 @@ static noctStatus search(noctWorld *w, octNode *n)
         return NOCT_OK;
     }
     cell *c = cell_of(n);
-    return c->count > 1 ? search_leaf(w, c) : NOCT_OK;
+    if (c->count < 2)
+        return NOCT_OK;
+    if (n == w->root)
+        prefetch_boxes(w, c); /* no parent requested them */
+    return search_leaf(w, c);
 }
 
 /* began = colliding - previous, ended = previous - colliding (sorted). */
