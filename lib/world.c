@@ -1145,11 +1145,17 @@ static noctStatus narrow(noctWorld *w)
             st = noct_collide_overlapping(ma, ta, mb, tb, level, &hit, &w->c.narrow);
         if (st != NOCT_OK)
             break;
-        if (hit && !pairs_push(&w->colliding,
-                               (noctPair){{ia, w->gen[ia]}, {ib, w->gen[ib]}})) {
+        if (hit && !pairs_push(&w->colliding, (noctPair){{ia, 0}, {ib, 0}})) {
             st = NOCT_ERR_NOMEM;
             break;
         }
+    }
+    /* The generations, in a loop of its own: its scattered reads overlap,
+     * where in the loop above each would wait behind the box tests. */
+    for (size_t i = 0; i < w->colliding.n; ++i) {
+        noctPair *q = &w->colliding.p[i];
+        q->a.generation = w->gen[q->a.index];
+        q->b.generation = w->gen[q->b.index];
     }
     if (level != NOCT_ACCURACY_BOX)
         *(level == NOCT_ACCURACY_CONVEX ? &w->c.narrow.seconds_convex
