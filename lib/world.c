@@ -60,9 +60,10 @@ typedef struct aabb {
  * the cells decide the leaves. A box strictly inside the block that also
  * reaches the first and last columns on every axis overlaps the same
  * cells: its leaves are unchanged, and maintenance has nothing to do.
- * With leaves of one size the block is the box they tile. lo[0] = +inf
- * when there is no block (the leaves changed since it was taken, or the
- * lattice is not exact there).
+ * With leaves of one size the block is the box they tile. It lies in the
+ * root, so a box that passes the test is in the root too. lo[0] = +inf
+ * when there is no block (the leaves changed since it was taken, the
+ * lattice is not exact there, or the box touched the root's face).
  */
 typedef struct home_block {
     double lo[3], hi[3];
@@ -617,10 +618,14 @@ static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *
         if (cell_of(o->spans[i])->size < small->size)
             small = cell_of(o->spans[i]);
     const double s = small->size;
+    const aabb root = root_box(w);
     for (int k = 0; k < 3; ++k) {
         h->lo[k] = lattice_beyond(small->lo[k], s, b->lo[k], false);
         h->hi[k] = lattice_beyond(small->lo[k], s, b->hi[k], true);
-        if (isnan(h->lo[k]) || isnan(h->hi[k]))
+        /* No block that reaches out of the root, as one does when the box
+         * touches the root's face: then a box inside it could be outside
+         * the root (maintain() relies on it). NaN fails too. */
+        if (!(h->lo[k] >= root.lo[k] && h->hi[k] <= root.hi[k]))
             return false;
         h->first_hi[k] = h->lo[k] + s; /* lattice points next to them: exact */
         h->last_lo[k] = h->hi[k] - s;
@@ -732,9 +737,16 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
     return NOCT_OK;
 }
 
-static noctStatus maintain(noctWorld *w)
+/*
+ * Incremental maintenance. A box that passes the fast test lies in its
+ * home block, and so in its leaves and the root; of the others, if one
+ * left the root, *escaped is set and nothing else is done (the caller
+ * grows the tree by a rebuild).
+ */
+static noctStatus maintain(noctWorld *w, bool *escaped)
 {
     noctStatus st = NOCT_OK;
+    *escaped = false;
     if (w->capslow < w->nmovers) {
         uint32_t *q = realloc(w->slow, w->nmovers * sizeof *q);
         if (q == NULL)
@@ -742,15 +754,20 @@ static noctStatus maintain(noctWorld *w)
         w->slow = q;
         w->capslow = w->nmovers;
     }
-    /* The fast test on the home cubes, then phase A for the rest. */
+    /* The fast test on the home blocks, then phase A for the rest. */
     w->nslow = 0;
     for (uint32_t m = 0; m < w->nmovers; ++m) {
         uint32_t i = w->movers[m];
-        if (inside_home(&w->box[i], &w->home[i]))
-            ++w->c.inside_fast;
-        else
+        if (!inside_home(&w->box[i], &w->home[i]))
             w->slow[w->nslow++] = i;
     }
+    const aabb root = root_box(w);
+    for (uint32_t m = 0; m < w->nslow; ++m)
+        if (!box_within(&w->box[w->slow[m]], &root)) {
+            *escaped = true;
+            return NOCT_OK;
+        }
+    w->c.inside_fast += w->nmovers - w->nslow;
     for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m)
         st = leave_phase(w, w->slow[m], &w->obj[w->slow[m]].entering);
     for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m)
@@ -1477,24 +1494,22 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
  * Motion: each mover's position advances by fraction of its velocity
  * (times 1 is exact, so a whole step adds the velocity itself), walls
  * turn it back, and its box is placed; its old box is kept for
- * maintenance. Returns whether a box left the root; far receives the
- * first mover beyond NOCT_MAX_COORDINATE, or UINT32_MAX. The checks are
+ * maintenance, which also finds the boxes that left the root. Returns the
+ * first mover beyond NOCT_MAX_COORDINATE, or UINT32_MAX. That check is
  * gathered over the loop, which has no other branch but the walls', and
  * that one is decided outside it (walls is a constant where it is
  * inlined).
  */
-static NOCT_ALWAYS_INLINE bool move(noctWorld *w, double fraction, bool walls,
-                                    const aabb *root, uint32_t *far)
+static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls)
 {
     const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
     const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
-    const aabb r = *root;
     object *obj = w->obj;
     aabb *box = w->box;
     double(*pos)[3] = w->pos;
     const uint32_t *movers = w->movers;
     const uint32_t nm = w->nmovers;
-    bool out = false, beyond = false;
+    bool beyond = false;
     for (uint32_t m = 0; m < nm; ++m) {
         const uint32_t i = movers[m];
         object *o = &obj[i];
@@ -1518,19 +1533,24 @@ static NOCT_ALWAYS_INLINE bool move(noctWorld *w, double fraction, bool walls,
         b->hi[0] = o->mhi[0] + x;
         b->hi[1] = o->mhi[1] + y;
         b->hi[2] = o->mhi[2] + z;
-        out |= (b->lo[0] < r.lo[0]) | (b->lo[1] < r.lo[1]) | (b->lo[2] < r.lo[2]) |
-               (b->hi[0] > r.hi[0]) | (b->hi[1] > r.hi[1]) | (b->hi[2] > r.hi[2]);
     }
-    *far = UINT32_MAX;
     for (uint32_t m = 0; beyond && m < nm; ++m) {
         const double *p = pos[movers[m]];
         if (fabs(p[0]) > NOCT_MAX_COORDINATE || fabs(p[1]) > NOCT_MAX_COORDINATE ||
-            fabs(p[2]) > NOCT_MAX_COORDINATE) {
-            *far = movers[m];
-            break;
-        }
+            fabs(p[2]) > NOCT_MAX_COORDINATE)
+            return movers[m];
     }
-    return out;
+    return UINT32_MAX;
+}
+
+/* Has a mover's box left the root? */
+static bool movers_escaped(const noctWorld *w)
+{
+    const aabb root = root_box(w);
+    for (uint32_t m = 0; m < w->nmovers; ++m)
+        if (!box_within(&w->box[w->movers[m]], &root))
+            return true;
+    return false;
 }
 
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
@@ -1540,14 +1560,12 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     noctStatus st = NOCT_OK;
     double t0 = seconds();
     bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->moving > 0;
-    bool escaped = false; /* a moving box left the root */
     if (moving && !update_movers(w))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
         const aabb root = root_box(w);
-        uint32_t far;
-        escaped = (w->def.effects & NOCT_EFFECT_WALLS) != 0 ? move(w, fraction, true, &root, &far)
-                                                            : move(w, fraction, false, &root, &far);
+        const uint32_t far = (w->def.effects & NOCT_EFFECT_WALLS) != 0 ? move(w, fraction, true)
+                                                                       : move(w, fraction, false);
         if (far != UINT32_MAX)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
                              "object %u moved beyond %g", far, NOCT_MAX_COORDINATE);
@@ -1566,10 +1584,15 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     if (moving)
         w->c.seconds_motion += t1 - t0;
     if (w->root != NULL && moving) {
-        if (w->def.maintenance == NOCT_MAINTAIN_REBUILD || escaped)
-            st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
+        /* A box that left the root makes the tree grow: a rebuild with a
+         * root of at least twice the size. */
+        bool escaped = false;
+        if (w->def.maintenance == NOCT_MAINTAIN_REBUILD)
+            escaped = movers_escaped(w);
         else
-            st = maintain(w);
+            st = maintain(w, &escaped);
+        if (st == NOCT_OK && (escaped || w->def.maintenance == NOCT_MAINTAIN_REBUILD))
+            st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
         w->c.seconds_maintenance += seconds() - t1;
         if (st != NOCT_OK)
             return noct_fail(err, st, -1, 0, "octree maintenance: %s",

@@ -413,6 +413,53 @@ START_TEST(root_grows)
 }
 END_TEST
 
+/* A box whose face lies on the root's face, creeping outward by less than
+ * a double a step: at the first step its side still rounds onto the face,
+ * at the second it is one double beyond, and the tree must grow then. (A
+ * home block taken while the box touched the face would reach out of the
+ * root, and the fast test would pass the box outside it.) */
+START_TEST(root_face_creeper_grows)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(2, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20}, d0[3] = {1, 0, 0};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
+    double lo[3], size;
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    const double x = lo[0] + size; /* the root's +x face */
+    /* A unit box [x - 1, x] in x, placed at the origin in x, in the free
+     * quarter of the root that straddlers_take_the_fast_path uses. */
+    const double y = lo[1] + 0.75 * size, z = lo[2] + 0.25 * size;
+    const double v[24] = {x - 1, -0.5, -0.5, x, -0.5, -0.5, x, 0.5, -0.5, x - 1, 0.5, -0.5,
+                          x - 1, -0.5, 0.5,  x, -0.5, 0.5,  x, 0.5, 0.5,  x - 1, 0.5, 0.5};
+    const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
+    const uint32_t idx[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
+                              2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
+    noctMesh *slab;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 6, idx, &slab, NULL), NOCT_OK);
+    /* 0.3 of a double at x a step: x + 0.3 u rounds to x, x + 0.6 u to
+     * the next double. */
+    const double u = nextafter(x, INFINITY) - x, p[3] = {0, y, z};
+    ck_assert_int_eq(noctWorldAdd(w, slab, p, d0, 0.3 * u, &id, NULL), NOCT_OK);
+    double blo[3], bhi[3];
+    for (int s = 1; s <= 3; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        ck_assert_int_eq(noctWorldObjectBox(w, id, blo, bhi), NOCT_OK);
+        ck_assert(s == 1 ? bhi[0] == x : bhi[0] > x);
+    }
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_ge(c.rebuilds, 2); /* the first tree, then the growth */
+    noctWorldDestroy(w);
+    noctMeshDestroy(slab);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* ---- effects cost nothing when off --------------------------------------- */
 
 START_TEST(effects_off_cost_nothing)
@@ -742,6 +789,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
     tcase_add_test(tc, root_grows);
+    tcase_add_test(tc, root_face_creeper_grows);
     tcase_add_test(tc, many_partners_sorted);
     tcase_add_test(tc, skipped_leaves_against_brute_force);
     suite_add_tcase(s, tc);
