@@ -761,6 +761,127 @@ START_TEST(inspect_tree)
 }
 END_TEST
 
+/* The first leaf below n, depth first. */
+static octNode *first_leaf(octNode *n)
+{
+    while (octIsSplit(n))
+        n = octChild(n, OCT_LDB);
+    return n;
+}
+
+/*
+ * Handles through churn. Objects of four sizes, in random order, move
+ * along the axes; every few steps a sixth are removed and others added
+ * (reusing indices). After every step: the tree validates, the colliding
+ * pairs are the brute-force answer, the leaves list exactly the handles
+ * whose boxes overlap them (and the printer names the same), each handle's
+ * box has its own mesh's size, removed handles are refused, and every
+ * position equals the test's own run of the dynamics (p += v, v reversed
+ * once per step by each begin event): a reversal given to the wrong
+ * object would show.
+ */
+START_TEST(handles_through_churn)
+{
+    enum { NOBJ = 60, NMESH = 4 };
+    static const double half[NMESH] = {0.25, 0.375, 0.5, 0.75};
+    noctMesh *meshes[NMESH];
+    for (int m = 0; m < NMESH; ++m)
+        ck_assert_int_eq(noctMeshCreateBox(half[m], half[m], half[m], &meshes[m], NULL),
+                         NOCT_OK);
+    noctWorld *w = make_world(3, 7, NOCT_MAINTAIN_INCREMENTAL);
+    noctObjectId ids[NOBJ], gone[NOBJ * 2];
+    const noctMesh *mesh_of[NOBJ];
+    int size_of[NOBJ];
+    double pos[NOBJ][3], vel[NOBJ][3];
+    size_t ngone = 0;
+    uint64_t rng = 2026;
+    for (int i = 0; i < NOBJ; ++i) {
+        int m = (int)test_rand_below(&rng, NMESH), axis = (int)test_rand_below(&rng, 3);
+        double dir[3] = {0, 0, 0};
+        dir[axis] = test_rand_below(&rng, 2) ? 1 : -1;
+        const double speed = i % 6 == 0 ? 0 : 0.125;
+        for (int k = 0; k < 3; ++k) {
+            pos[i][k] = (double)test_rand_below(&rng, 64) * 0.25 - 8;
+            vel[i][k] = speed * dir[k];
+        }
+        size_of[i] = m;
+        mesh_of[i] = meshes[m];
+        ck_assert_int_eq(noctWorldAdd(w, meshes[m], pos[i], dir, speed, &ids[i], NULL),
+                         NOCT_OK);
+    }
+    for (int s = 1; s <= 60; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        for (int i = 0; i < NOBJ; ++i)
+            for (int k = 0; k < 3; ++k)
+                pos[i][k] += vel[i][k];
+        const noctPair *p;
+        size_t n = noctWorldBegan(w, &p);
+        bool turned[NOBJ] = {false};
+        for (size_t e = 0; e < n; ++e)
+            for (int i = 0; i < NOBJ; ++i)
+                if ((ids[i].index == p[e].a.index || ids[i].index == p[e].b.index) &&
+                    !turned[i]) {
+                    turned[i] = true;
+                    for (int k = 0; k < 3; ++k)
+                        vel[i][k] = -vel[i][k];
+                }
+        expect_brute_force(w, ids, mesh_of, NOBJ, s);
+        check_leaves(w, noctWorldRoot(w), ids, NOBJ);
+        for (int i = 0; i < NOBJ; ++i) {
+            double q[3], lo[3], hi[3];
+            ck_assert_int_eq(noctWorldObject(w, ids[i], q, NULL), NOCT_OK);
+            ck_assert_int_eq(noctWorldObjectBox(w, ids[i], lo, hi), NOCT_OK);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT(q[k] == pos[i][k]);
+                EXPECT(hi[k] - lo[k] == 2 * half[size_of[i]]);
+            }
+        }
+        for (size_t g = 0; g < ngone; ++g) {
+            double q[3];
+            ck_assert_int_eq(noctWorldObject(w, gone[g], q, NULL), NOCT_ERR_INVALID);
+        }
+        /* The printer names a leaf's objects as noctWorldCell() does. */
+        octNode *leaf = first_leaf(noctWorldRoot(w));
+        noctObjectId in[NOBJ];
+        size_t count = noctWorldCell(w, leaf, NULL, NULL, in, NOBJ);
+        char *text = NULL;
+        size_t len = 0;
+        FILE *f = open_memstream(&text, &len);
+        ck_assert_ptr_nonnull(f);
+        noctWorldPrintCell(f, octData(leaf));
+        fclose(f);
+        const char *list = strstr(text, "; objects");
+        ck_assert(count == 0 ? list == NULL : list != NULL);
+        for (size_t j = 0; j < count; ++j) {
+            unsigned got;
+            int used;
+            ck_assert_int_eq(sscanf(list + (j == 0 ? 9 : 0), " %u%n", &got, &used), 1);
+            ck_assert_uint_eq(got, in[j].index);
+            list += (j == 0 ? 9 : 0) + used;
+        }
+        free(text);
+        if (s % 6 == 0)
+            for (int r = 0; r < NOBJ / 6; ++r) {
+                int i = (int)test_rand_below(&rng, NOBJ);
+                ck_assert_int_eq(noctWorldRemove(w, ids[i]), NOCT_OK);
+                gone[ngone++] = ids[i];
+                ck_assert_int_eq(noctWorldAdd(w, mesh_of[i], pos[i], (double[3]){1, 0, 0},
+                                              0.125, &ids[i], NULL),
+                                 NOCT_OK);
+                vel[i][0] = 0.125;
+                vel[i][1] = vel[i][2] = 0;
+            }
+    }
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_gt(c.reversals, 0);
+    noctWorldDestroy(w);
+    for (int m = 0; m < NMESH; ++m)
+        noctMeshDestroy(meshes[m]);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_world)
 {
@@ -804,6 +925,7 @@ int main(void)
     tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
     tcase_add_test(tc, inspect_tree);
+    tcase_add_test(tc, handles_through_churn);
     suite_add_tcase(s, tc);
 #ifndef NOCT_EFFICIENT
     TCase *d = tcase_create("requires clauses");
