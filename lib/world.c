@@ -178,8 +178,8 @@ static bool overlaps(const aabb *b, const cell *c)
 }
 
 /* Are b's leaves still those of the home block h (the report's fast
- * test, for a box in one leaf or several)? Twelve comparisons and one
- * branch: nearly every box passes, and this runs for every mover. */
+ * test, for a box in one leaf or several)? Inlined: it runs for every
+ * mover. */
 static NOCT_ALWAYS_INLINE bool inside_home(const aabb *b, const home_block *h)
 {
     for (int k = 0; k < 3; ++k)
@@ -195,12 +195,14 @@ static void forget_home(noctWorld *w, uint32_t id)
 }
 
 /* The placed box: exactly the narrowphase's [fl(lo + t), fl(hi + t)]. */
-static void place_box(const object *o, const double pos[3], aabb *b)
+static NOCT_ALWAYS_INLINE void place_box(const object *o, const double pos[3], aabb *b)
 {
-    for (int k = 0; k < 3; ++k) {
-        b->lo[k] = o->mlo[k] + pos[k];
-        b->hi[k] = o->mhi[k] + pos[k];
-    }
+    b->lo[0] = o->mlo[0] + pos[0];
+    b->lo[1] = o->mlo[1] + pos[1];
+    b->lo[2] = o->mlo[2] + pos[2];
+    b->hi[0] = o->mhi[0] + pos[0];
+    b->hi[1] = o->mhi[1] + pos[1];
+    b->hi[2] = o->mhi[2] + pos[2];
 }
 
 static bool leaf_has(const cell *c, uint32_t id)
@@ -1421,8 +1423,9 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     } else {
         if (w->nslots >= 0x80000000u)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects");
-        /* obj, box, home, mesh, pos, gen, slot and mark share one capacity, capslots; each
-         * array that grew is kept even if a later one fails. */
+        /* obj, box, home, mesh, pos, gen, slot and mark share one
+         * capacity, capslots; each array that grew is kept even if a later
+         * one fails. */
         uint32_t cap = w->capslots;
         if (!grow_array((void **)&w->obj, &cap, w->nslots + 1, sizeof *w->obj))
             return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
@@ -1563,12 +1566,7 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
                     o->vel[k] = -o->vel[k];
         beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
                   (fabs(z) > NOCT_MAX_COORDINATE);
-        b->lo[0] = o->mlo[0] + x;
-        b->lo[1] = o->mlo[1] + y;
-        b->lo[2] = o->mlo[2] + z;
-        b->hi[0] = o->mhi[0] + x;
-        b->hi[1] = o->mhi[1] + y;
-        b->hi[2] = o->mhi[2] + z;
+        place_box(o, p, b);
     }
     for (uint32_t m = 0; beyond && m < nm; ++m) {
         const double *p = pos[movers[m]];
@@ -1605,14 +1603,13 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         if (far != UINT32_MAX)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
                              "object %u moved beyond %g", far, NOCT_MAX_COORDINATE);
-        const double vmax = w->vmax;
         w->c.moved += w->nmovers;
         /* |velocity| is the speed within 1e-9; a placed box moves by it
          * and a few roundings of the root's coordinates. */
         double r = 0;
         for (int k = 0; k < 3; ++k)
             r = noct_max(r, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
-        w->reach = vmax * fraction * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
+        w->reach = w->vmax * fraction * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
     } else {
         w->reach = 0;
     }
