@@ -440,8 +440,8 @@ static bool products_equal(double a, double b, double c, double d)
 
 /*
  * The filter for two meshes with a box form (mesh_internal.h), first the
- * separation test: the oriented-box test on the 15 axes of the two boxes, which reads only the
- * descriptions. On axis u (l1 = |u_x| + |u_y| + |u_z|) every placed vertex
+ * separation test: the oriented-box test on the 15 axes of the two boxes,
+ * which reads only the descriptions. On axis u (l1 = |u_x| + |u_y| + |u_z|) every placed vertex
  * of A projects within R_A + l1 dev_A of u.(c_A + t_A), R_A = sum |u.e_i|,
  * and rounding the placed vertex moves it by at most l1 ulp(1/2) 2M, M
  * bounding the sizes and translations. A separation shows as
@@ -453,8 +453,8 @@ static bool products_equal(double a, double b, double c, double d)
  */
 /*
  * Then the proof: do two boxes with duals provably share a point, by the
- * separating-axis test on their ideal boxes shrunk about their centres? Shrunk by the
- * factor f = 1 - shrink, shrink >= 2 gmax dev + 8 eta + 2e-15, every point
+ * separating-axis test on their ideal boxes shrunk about their centres?
+ * Shrunk by the factor f = 1 - shrink, shrink >= 2 gmax dev + 8 eta + 2e-15, every point
  * x = c + sum l_i e[i] of the shrunk box has g[i].(x - c) below
  * 1 - (2 gmax dev + 4 eta + 1e-15), since g[i].e[j] is within eta of
  * (i == j): box_contains' lemma puts x inside the solid. Two
