@@ -61,13 +61,16 @@ typedef struct aabb {
  * reaches the first and last columns on every axis overlaps the same
  * cells: its leaves are unchanged, and maintenance has nothing to do.
  * With leaves of one size the block is the box they tile. It lies in the
- * root, so a box that passes the test is in the root too. lo[0] = +inf
- * when there is no block (the leaves changed since it was taken, the
- * lattice is not exact there, or the box touched the root's face).
+ * root, so a box that passes the test is in the root too.
+ *
+ * The fast test does not read the block but the positions whose placed
+ * boxes pass it (home_of() works them out): a closed box [lo, hi] in
+ * position space, half the size and half the comparisons. lo[0] = +inf
+ * when there is none (the leaves changed since it was taken, the lattice
+ * is not exact there, or the box touched the root's face).
  */
 typedef struct home_block {
     double lo[3], hi[3];
-    double first_hi[3], last_lo[3];
 } home_block;
 
 typedef struct object {
@@ -114,7 +117,7 @@ struct noctWorld {
     uint32_t nmovers, capmovers;
     double vmax;           /* the movers' greatest speed */
     bool movers_stale;
-    uint32_t *slow;        /* maintenance: movers that left their home cube */
+    uint32_t *slow;        /* maintenance: movers that failed the fast test */
     uint32_t nslow, capslow;
     uint32_t nslots, capslots;
     uint32_t *free_slots;
@@ -177,16 +180,14 @@ static bool overlaps(const aabb *b, const cell *c)
     return true;
 }
 
-/* Are b's leaves still those of the home block h (the report's fast
- * test, for a box in one leaf or several)? Inlined: it runs for every
- * mover. */
-static NOCT_ALWAYS_INLINE bool inside_home(const aabb *b, const home_block *h)
+/* Are the leaves of an object at position p still those of its home
+ * block, whose positions h holds (the report's fast test, for a box in
+ * one leaf or several)? Inlined and without branches: it runs for every
+ * mover, and almost every one passes. */
+static NOCT_ALWAYS_INLINE bool inside_home(const double p[3], const home_block *h)
 {
-    for (int k = 0; k < 3; ++k)
-        if (!(b->lo[k] > h->lo[k] && b->hi[k] < h->hi[k] && b->lo[k] <= h->first_hi[k] &&
-              b->hi[k] >= h->last_lo[k]))
-            return false;
-    return true;
+    return (p[0] >= h->lo[0]) & (p[0] <= h->hi[0]) & (p[1] >= h->lo[1]) &
+           (p[1] <= h->hi[1]) & (p[2] >= h->lo[2]) & (p[2] <= h->hi[2]);
 }
 
 static void forget_home(noctWorld *w, uint32_t id)
@@ -608,8 +609,31 @@ static double lattice_beyond(double base, double s, double x, bool up)
     return (double)NAN;
 }
 
+/*
+ * A bound on the positions p whose coordinate fl(m + p) of a placed box
+ * compares with t as asked: since fl(m + p) does not decrease as p grows,
+ * every p >= q has fl(m + p) > t (up, strict) or >= t (up), and every
+ * p <= q has fl(m + p) < t (strict) or <= t. q starts at fl(t - m), a few
+ * units in the last place of the largest of them from the boundary, and
+ * steps away from it, doubling; NaN if a few steps do not do.
+ */
+static double position_bound(double m, double t, bool up, bool strict)
+{
+    double q = t - m;
+    double d = noct_max(0x1p-51 * noct_max(noct_max(fabs(t), fabs(m)), fabs(q)), 0x1p-1074);
+    for (int i = 0; i < 8; ++i) {
+        const double f = m + q;
+        if (up ? (strict ? f > t : f >= t) : (strict ? f < t : f <= t))
+            return q;
+        q = up ? q + d : q - d;
+        d *= 2;
+    }
+    return (double)NAN;
+}
+
 /* The home block of object id while its leaves are those box b overlaps
- * (b: its box when they were last made so). */
+ * (b: its box when they were last made so), as the positions that keep
+ * its box in it. */
 static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *h)
 {
     const object *o = &w->obj[id];
@@ -622,15 +646,23 @@ static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *
     const double s = small->size;
     const aabb root = root_box(w);
     for (int k = 0; k < 3; ++k) {
-        h->lo[k] = lattice_beyond(small->lo[k], s, b->lo[k], false);
-        h->hi[k] = lattice_beyond(small->lo[k], s, b->hi[k], true);
+        const double lo = lattice_beyond(small->lo[k], s, b->lo[k], false);
+        const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
         /* No block that reaches out of the root, as one does when the box
          * touches the root's face: then a box inside it could be outside
          * the root (maintain() relies on it). NaN fails too. */
-        if (!(h->lo[k] >= root.lo[k] && h->hi[k] <= root.hi[k]))
+        if (!(lo >= root.lo[k] && hi <= root.hi[k]))
             return false;
-        h->first_hi[k] = h->lo[k] + s; /* lattice points next to them: exact */
-        h->last_lo[k] = h->hi[k] - s;
+        /* The box's low side in (lo, lo + s], its high side in
+         * [hi - s, hi); the lattice points next to lo and hi are exact. */
+        const double p[4] = {position_bound(o->mlo[k], lo, true, true),
+                             position_bound(o->mlo[k], lo + s, false, false),
+                             position_bound(o->mhi[k], hi, false, true),
+                             position_bound(o->mhi[k], hi - s, true, false)};
+        if (isnan(p[0]) || isnan(p[1]) || isnan(p[2]) || isnan(p[3]))
+            return false;
+        h->lo[k] = noct_max(p[0], p[3]);
+        h->hi[k] = noct_min(p[1], p[2]);
     }
     return true;
 }
@@ -642,7 +674,7 @@ static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
     *enter = false;
     /* maintain() tried a block it had; one is taken when there was none */
     if (!isfinite(w->home[id].lo[0]) && home_of(w, id, &o->old, &w->home[id]) &&
-        inside_home(b, &w->home[id])) {
+        inside_home(w->pos[id], &w->home[id])) {
         ++w->c.inside_fast;
         return NOCT_OK;
     }
@@ -768,29 +800,16 @@ static NOCT_ALWAYS_INLINE void prefetch_spans(const noctWorld *w, uint32_t m)
 }
 
 /*
- * Incremental maintenance. A box that passes the fast test lies in its
- * home block, and so in its leaves and the root; of the others, if one
- * left the root, *escaped is set and nothing else is done (the caller
- * grows the tree by a rebuild).
+ * Incremental maintenance. The motion loop ran the fast test and listed
+ * the boxes that failed it in w->slow. A box that passed lies in its home
+ * block, and so in its leaves and the root; of the others, if one left
+ * the root, *escaped is set and nothing else is done (the caller grows
+ * the tree by a rebuild).
  */
 static noctStatus maintain(noctWorld *w, bool *escaped)
 {
     noctStatus st = NOCT_OK;
     *escaped = false;
-    if (w->capslow < w->nmovers) {
-        uint32_t *q = realloc(w->slow, w->nmovers * sizeof *q);
-        if (q == NULL)
-            return NOCT_ERR_NOMEM;
-        w->slow = q;
-        w->capslow = w->nmovers;
-    }
-    /* The fast test on the home blocks, then phase A for the rest. */
-    w->nslow = 0;
-    for (uint32_t m = 0; m < w->nmovers; ++m) {
-        uint32_t i = w->movers[m];
-        if (!inside_home(&w->box[i], &w->home[i]))
-            w->slow[w->nslow++] = i;
-    }
     const aabb root = root_box(w);
     for (uint32_t m = 0; m < w->nslow; ++m)
         if (!box_within(&w->box[w->slow[m]], &root)) {
@@ -815,7 +834,7 @@ static noctStatus maintain(noctWorld *w, bool *escaped)
 }
 
 /* The live moving objects in slot order, and their greatest speed, after
- * objects came or went. */
+ * objects came or went; room for as many slow ones. */
 static bool update_movers(noctWorld *w)
 {
     if (!w->movers_stale)
@@ -824,6 +843,8 @@ static bool update_movers(noctWorld *w)
     if (!grow_array((void **)&w->movers, &cap, (uint32_t)w->moving, sizeof *w->movers))
         return false;
     w->capmovers = cap;
+    if (!grow_array((void **)&w->slow, &w->capslow, (uint32_t)w->moving, sizeof *w->slow))
+        return false;
     w->nmovers = 0;
     w->vmax = 0;
     for (uint32_t i = 0; i < w->nslots; ++i)
@@ -1532,29 +1553,32 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
 /*
  * Motion: each mover's position advances by fraction of its velocity
  * (times 1 is exact, so a whole step adds the velocity itself), walls
- * turn it back, and its box is placed; its old box is kept for
- * maintenance, which also finds the boxes that left the root. Returns the
- * first mover beyond NOCT_MAX_COORDINATE, or UINT32_MAX. That check is
- * gathered over the loop, which has no other branch but the walls', and
- * that one is decided outside it (walls is a constant where it is
- * inlined).
+ * turn it back, and its box is placed. With incremental maintenance
+ * (fast true) the loop also runs maintenance's fast test on the new
+ * position while it is in registers: an object that fails it keeps its
+ * old box, for maintenance, and joins w->slow. Returns the first mover
+ * beyond NOCT_MAX_COORDINATE, or UINT32_MAX. That check is gathered over
+ * the loop, whose only other branches are the fast test's, which almost
+ * every object passes, and the walls', decided outside it (walls and fast
+ * are constants where it is inlined).
  */
-static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls)
+static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls, bool fast)
 {
     const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
     const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
     object *obj = w->obj;
     aabb *box = w->box;
+    const home_block *home = w->home;
     double(*pos)[3] = w->pos;
     const uint32_t *movers = w->movers;
+    uint32_t *slow = w->slow;
     const uint32_t nm = w->nmovers;
+    uint32_t nslow = 0;
     bool beyond = false;
     for (uint32_t m = 0; m < nm; ++m) {
         const uint32_t i = movers[m];
         object *o = &obj[i];
-        aabb *b = &box[i];
         double *p = pos[i];
-        o->old = *b;
         const double x = p[0] + o->vel[0] * fraction, y = p[1] + o->vel[1] * fraction,
                      z = p[2] + o->vel[2] * fraction;
         p[0] = x;
@@ -1566,8 +1590,13 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
                     o->vel[k] = -o->vel[k];
         beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
                   (fabs(z) > NOCT_MAX_COORDINATE);
-        place_box(o, p, b);
+        if (fast && !inside_home(p, &home[i])) {
+            o->old = box[i];
+            slow[nslow++] = i;
+        }
+        place_box(o, p, &box[i]);
     }
+    w->nslow = nslow;
     for (uint32_t m = 0; beyond && m < nm; ++m) {
         const double *p = pos[movers[m]];
         if (fabs(p[0]) > NOCT_MAX_COORDINATE || fabs(p[1]) > NOCT_MAX_COORDINATE ||
@@ -1598,8 +1627,11 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
         const aabb root = root_box(w);
-        const uint32_t far = (w->def.effects & NOCT_EFFECT_WALLS) != 0 ? move(w, fraction, true)
-                                                                       : move(w, fraction, false);
+        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        const uint32_t far =
+            w->def.maintenance == NOCT_MAINTAIN_REBUILD
+                ? (walls ? move(w, fraction, true, false) : move(w, fraction, false, false))
+                : (walls ? move(w, fraction, true, true) : move(w, fraction, false, true));
         if (far != UINT32_MAX)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
                              "object %u moved beyond %g", far, NOCT_MAX_COORDINATE);

@@ -573,6 +573,63 @@ START_TEST(straddlers_take_the_fast_path)
 }
 END_TEST
 
+/* The fast test decides on positions (lib/world.c: home_block), so it
+ * must agree with the placed box to the last bit. A box whose mesh lies
+ * far from its origin (its low side is fl(m + p), m about 1000) creeps
+ * down onto a leaf's face in exact steps, reaching it at step K exactly:
+ * a box that touches the face overlaps the leaf beyond, so that step
+ * fails the fast test, where every step before it passes. */
+START_TEST(fast_test_at_the_rounding_edge)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(1, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double d0[3] = {1, 0, 0}, down[3] = {0, -1, 0};
+    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
+    double lo[3], size;
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    ck_assert(s2[1] + 0.5 < lo[1] + size / 2); /* the upper y half is free */
+    const double face = lo[1] + size / 2, m = 1000.3;
+    const double v[24] = {-0.5, m, -0.5, 0.5, m, -0.5, 0.5, m + 1, -0.5, -0.5, m + 1, -0.5,
+                          -0.5, m, 0.5,  0.5, m, 0.5,  0.5, m + 1, 0.5,  -0.5, m + 1, 0.5};
+    const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
+    const uint32_t idx[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
+                              2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
+    noctMesh *far;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 6, idx, &far, NULL), NOCT_OK);
+    /* q: the position whose box's low side is the face. Both differences
+     * are exact (Sterbenz), and so are the steps of 2^-20 from it. */
+    const double q = face - m, speed = 0x1p-20;
+    ck_assert(m + q == face);
+    enum { K = 6 };
+    const double p[3] = {lo[0] + size / 4, q + K * speed, lo[2] + size / 4};
+    ck_assert_int_eq(noctWorldAdd(w, far, p, down, speed, &id, NULL), NOCT_OK);
+    step_ok(w); /* the first step takes the home block */
+    validate_ok(w);
+    noctWorldCounters before, after;
+    for (int s = 2; s <= K; ++s) {
+        noctWorldGetCounters(w, &before);
+        step_ok(w);
+        validate_ok(w);
+        noctWorldGetCounters(w, &after);
+        double blo[3], bhi[3];
+        ck_assert_int_eq(noctWorldObjectBox(w, id, blo, bhi), NOCT_OK);
+        ck_assert(blo[1] == face + (K - s) * speed);
+        ck_assert_uint_eq(after.inside_fast, before.inside_fast + (s < K));
+        if (s < K)
+            ck_assert_uint_eq(after.leaves_entered, before.leaves_entered);
+        else /* the leaves below the face */
+            ck_assert_uint_gt(after.leaves_entered, before.leaves_entered);
+    }
+    noctWorldDestroy(w);
+    noctMeshDestroy(far);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* Thin plates closing at 2 per step skip past each other between steps;
  * with sub-steps they meet once and turn back. */
 START_TEST(substeps_stop_tunnelling)
@@ -922,6 +979,7 @@ int main(void)
     tc = tcase_create("effects and handles");
     tcase_add_test(tc, effects_off_cost_nothing);
     tcase_add_test(tc, straddlers_take_the_fast_path);
+    tcase_add_test(tc, fast_test_at_the_rounding_edge);
     tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
     tcase_add_test(tc, inspect_tree);
