@@ -193,8 +193,12 @@ typedef struct noctWorldCounters {
                                     time is the world's whole loop over
                                     the pairs whose boxes overlap, at the
                                     world's accuracy. */
-    double seconds_motion;     /**< Time in motion. */
-    double seconds_maintenance;/**< Time keeping the octree up to date. */
+    double seconds_motion;     /**< Time in motion. With incremental
+                                    maintenance this includes its fast
+                                    test, which runs in the motion loop
+                                    on each new position. */
+    double seconds_maintenance;/**< Time keeping the octree up to date
+                                    (but for the fast test, above). */
     double seconds_pairs;      /**< Time in the pair search, narrowphase
                                     included. */
     double seconds_response;   /**< Time in events and response. */
