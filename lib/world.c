@@ -830,6 +830,14 @@ static noctStatus maintain(noctWorld *w, bool *escaped)
         if (w->obj[w->slow[m]].entering)
             st = enter_phase(w, w->slow[m]);
     }
+    /* Their leaves are final for this step, and in cache: take their home
+     * blocks now, so that the next step's fast test can pass them. A
+     * later change to their leaves forgets the block again. */
+    for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m) {
+        const uint32_t id = w->slow[m];
+        if (!isfinite(w->home[id].lo[0]) && !home_of(w, id, &w->box[id], &w->home[id]))
+            forget_home(w, id);
+    }
     return st;
 }
 
