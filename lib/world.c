@@ -182,12 +182,12 @@ static bool overlaps(const aabb *b, const cell *c)
 
 /* Are the leaves of an object at position p still those of its home
  * block, whose positions h holds (the report's fast test, for a box in
- * one leaf or several)? Inlined and without branches: it runs for every
- * mover, and almost every one passes. */
+ * one leaf or several)? Inlined: it runs for every mover, and almost
+ * every one passes. */
 static NOCT_ALWAYS_INLINE bool inside_home(const double p[3], const home_block *h)
 {
-    return (p[0] >= h->lo[0]) & (p[0] <= h->hi[0]) & (p[1] >= h->lo[1]) &
-           (p[1] <= h->hi[1]) & (p[2] >= h->lo[2]) & (p[2] <= h->hi[2]);
+    return p[0] >= h->lo[0] && p[0] <= h->hi[0] && p[1] >= h->lo[1] && p[1] <= h->hi[1] &&
+           p[2] >= h->lo[2] && p[2] <= h->hi[2];
 }
 
 static void forget_home(noctWorld *w, uint32_t id)
@@ -661,8 +661,10 @@ static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *
                              position_bound(o->mhi[k], hi - s, true, false)};
         if (isnan(p[0]) || isnan(p[1]) || isnan(p[2]) || isnan(p[3]))
             return false;
-        h->lo[k] = noct_max(p[0], p[3]);
-        h->hi[k] = noct_min(p[1], p[2]);
+        /* and within the positions allowed, so that the motion loop need
+         * not check those that pass */
+        h->lo[k] = noct_max(noct_max(p[0], p[3]), -NOCT_MAX_COORDINATE);
+        h->hi[k] = noct_min(noct_min(p[1], p[2]), NOCT_MAX_COORDINATE);
     }
     return true;
 }
@@ -1565,10 +1567,12 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
  * (fast true) the loop also runs maintenance's fast test on the new
  * position while it is in registers: an object that fails it keeps its
  * old box, for maintenance, and joins w->slow. Returns the first mover
- * beyond NOCT_MAX_COORDINATE, or UINT32_MAX. That check is gathered over
- * the loop, whose only other branches are the fast test's, which almost
- * every object passes, and the walls', decided outside it (walls and fast
- * are constants where it is inlined).
+ * beyond NOCT_MAX_COORDINATE, or UINT32_MAX. One that passed the fast
+ * test is not (home_of() keeps its positions within the limit), so with
+ * it only the slow ones are checked, after the loop; without it the check
+ * is gathered over the loop. The loop's other branches are the fast
+ * test's, which almost every object passes, and the walls', decided
+ * outside it (walls and fast are constants where it is inlined).
  */
 static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls, bool fast)
 {
@@ -1596,20 +1600,23 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
             for (int k = 0; k < 3; ++k)
                 if ((p[k] < wlo[k] && o->vel[k] < 0) || (p[k] > whi[k] && o->vel[k] > 0))
                     o->vel[k] = -o->vel[k];
-        beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
-                  (fabs(z) > NOCT_MAX_COORDINATE);
-        if (fast && !inside_home(p, &home[i])) {
+        if (!fast)
+            beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
+                      (fabs(z) > NOCT_MAX_COORDINATE);
+        else if (!inside_home(p, &home[i])) {
             o->old = box[i];
             slow[nslow++] = i;
         }
         place_box(o, p, &box[i]);
     }
     w->nslow = nslow;
-    for (uint32_t m = 0; beyond && m < nm; ++m) {
-        const double *p = pos[movers[m]];
+    const uint32_t *check = fast ? slow : movers;
+    const uint32_t ncheck = fast ? nslow : beyond ? nm : 0;
+    for (uint32_t m = 0; m < ncheck; ++m) {
+        const double *p = pos[check[m]];
         if (fabs(p[0]) > NOCT_MAX_COORDINATE || fabs(p[1]) > NOCT_MAX_COORDINATE ||
             fabs(p[2]) > NOCT_MAX_COORDINATE)
-            return movers[m];
+            return check[m];
     }
     return UINT32_MAX;
 }

@@ -630,6 +630,45 @@ START_TEST(fast_test_at_the_rounding_edge)
 }
 END_TEST
 
+/* An object that moves beyond NOCT_MAX_COORDINATE stops the step with an
+ * error, in both maintenance modes. Its leaf reaches far beyond the
+ * limit, so its fast test would pass there (home_of() keeps the
+ * positions it passes within the limit). */
+START_TEST(runaway_object_is_an_error)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    for (int mode = 0; mode < 2; ++mode) {
+        noctWorld *w = make_world(1, 6, mode ? NOCT_MAINTAIN_REBUILD : NOCT_MAINTAIN_INCREMENTAL);
+        const double d0[3] = {1, 0, 0}, s1[3] = {-0.9e100, 0, 0}, s2[3] = {0, 0.9e100, 0};
+        const double speed = 1e86;
+        double x = NOCT_MAX_COORDINATE - 3 * speed;
+        const double p[3] = {x, 0, 0};
+        noctObjectId id;
+        ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldAdd(w, cube, p, d0, speed, &id, NULL), NOCT_OK);
+        int s = 0;
+        for (;; ++s) {
+            x += speed;
+            noctError err;
+            noctStatus st = noctWorldStep(w, &err);
+            if (x > NOCT_MAX_COORDINATE) {
+                ck_assert_int_eq(st, NOCT_ERR_TOO_LARGE);
+                ck_assert_msg(strstr(err.message, "object 2 moved beyond") != NULL, "%s",
+                              err.message);
+                break;
+            }
+            ck_assert_msg(st == NOCT_OK, "step: %s", err.message);
+            validate_ok(w);
+        }
+        ck_assert_int_ge(s, 2); /* it took the fast path before */
+        noctWorldDestroy(w);
+    }
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* Thin plates closing at 2 per step skip past each other between steps;
  * with sub-steps they meet once and turn back. */
 START_TEST(substeps_stop_tunnelling)
@@ -980,6 +1019,7 @@ int main(void)
     tcase_add_test(tc, effects_off_cost_nothing);
     tcase_add_test(tc, straddlers_take_the_fast_path);
     tcase_add_test(tc, fast_test_at_the_rounding_edge);
+    tcase_add_test(tc, runaway_object_is_an_error);
     tcase_add_test(tc, substeps_stop_tunnelling);
     tcase_add_test(tc, handles_and_bad_input);
     tcase_add_test(tc, inspect_tree);
