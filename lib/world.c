@@ -38,9 +38,9 @@ typedef struct cell {
     uint64_t stamp_step; /* this node as a neighbor */
     /* Leaf, from its last sweep: every pair of its boxes not in near was
      * at least budget apart (on some axis) then, less twice the reach of
-     * each step since; 0 after any change to its objects. near holds the
-     * pairs that were closer, as positions in objs (low and high 16 bits),
-     * which stay valid while its objects do not change. */
+     * each step since. near holds the pairs that were closer, as
+     * positions in objs (low and high 16 bits). An object that comes or
+     * goes updates both (near_enter, near_leave). */
     double budget;
     uint32_t *near;
     uint32_t nnear, capnear;
@@ -225,6 +225,62 @@ static void span_remove(noctWorld *w, uint32_t id, const octNode *leaf)
         }
 }
 
+/* How many steps of reach a sweep's near pairs are kept for: a leaf is
+ * swept about once in that many steps, and its near pairs tested in the
+ * others. */
+#define NEAR_STEPS 4
+
+/*
+ * The object at position r of leaf c came: keep the leaf's budget rather
+ * than sweep it again. Its pairs closer than the budget become near
+ * pairs, so every other pair is still at least the budget apart (it is
+ * measured now, and the next search takes this step's reach off it); the
+ * budget is held to the margin of a sweep, so the leaf is swept again as
+ * soon as one made now would be. Returns false when out of memory.
+ */
+static bool near_enter(const noctWorld *w, cell *c, uint32_t r)
+{
+    const double budget = noct_min(c->budget, 2 * NEAR_STEPS * w->reach);
+    if (!(budget > 0) || c->count > 0x10000) {
+        c->budget = 0;
+        return true;
+    }
+    c->budget = 0; /* until every pair is in */
+    const aabb *a = &w->box[c->objs[r]];
+    for (uint32_t i = 0; i < c->count; ++i) {
+        if (i == r)
+            continue;
+        const aabb *b = &w->box[c->objs[i]];
+        double gap = -INFINITY;
+        for (int k = 0; k < 3; ++k)
+            gap = noct_max(gap, noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]));
+        if (gap > budget)
+            continue;
+        if (!grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
+            return false;
+        c->near[c->nnear++] = i | r << 16;
+    }
+    c->budget = budget;
+    return true;
+}
+
+/* The object at position r of leaf c went and the last, at position
+ * last, took its place: its near pairs go, the last one's follow it. The
+ * other pairs are as far apart as before. */
+static void near_leave(cell *c, uint32_t r, uint32_t last)
+{
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < c->nnear; ++i) {
+        uint32_t a = c->near[i] & 0xffff, b = c->near[i] >> 16;
+        if (a == r || b == r)
+            continue;
+        a = a == last ? r : a;
+        b = b == last ? r : b;
+        c->near[k++] = a | b << 16;
+    }
+    c->nnear = k;
+}
+
 static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
 {
     cell *c = cell_of(leaf);
@@ -233,10 +289,9 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
         !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
         return false;
     c->objs[c->count++] = id;
-    c->budget = 0;
     o->spans[o->nspans++] = leaf;
     forget_home(w, id);
-    return true;
+    return near_enter(w, c, c->count - 1);
 }
 
 /* ---- split and merge ------------------------------------------------------ */
@@ -367,10 +422,10 @@ static bool try_merge(noctWorld *w, octNode *p)
 static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
 {
     cell *c = cell_of(leaf);
-    c->budget = 0;
     for (uint32_t i = 0; i < c->count; ++i)
         if (c->objs[i] == id) {
             c->objs[i] = c->objs[--c->count];
+            near_leave(c, i, c->count);
             break;
         }
     span_remove(w, id, leaf);
@@ -985,11 +1040,6 @@ static NOCT_ALWAYS_INLINE bool offer_pair(noctWorld *w, const cell *c, const cel
     }
     return pairs_push(&w->tested, (noctPair){{ia, 0}, {ib, 0}});
 }
-
-/* How many steps of reach a sweep's near pairs are kept for: a leaf is
- * swept about once in that many steps, and its near pairs tested in the
- * others. */
-#define NEAR_STEPS 4
 
 /*
  * The pairs of a leaf. While its budget lasts (below), the pairs that its
