@@ -637,7 +637,7 @@ static bool inside_root(const noctWorld *w, const aabb *o)
  */
 /* The lattice point base + q s (s a power of two, q an integer), or NaN
  * when the sum is not exact (TwoSum's error is not zero). */
-static double lattice_point(double base, double q, double s)
+static NOCT_ALWAYS_INLINE double lattice_point(double base, double q, double s)
 {
     if (!(fabs(q) < 0x1p52))
         return (double)NAN;
@@ -647,9 +647,15 @@ static double lattice_point(double base, double q, double s)
 
 /* The largest lattice point base + q s below x (up is false) or the
  * smallest above x (up is true), strictly; NaN if not exact. */
-static double lattice_beyond(double base, double s, double x, bool up)
+static NOCT_ALWAYS_INLINE double lattice_beyond(double base, double s, double x, bool up)
 {
-    double q = floor((x - base) / s) + (up ? 1 : 0);
+    /* floor((x - base) / s), without a call or a division: s is a power
+     * of two, so its inverse is exact; a q of 2^52 or more is refused. */
+    const double t = (x - base) * (1 / s);
+    if (!(fabs(t) < 0x1p52))
+        return (double)NAN;
+    double q = (double)(int64_t)t;
+    q = (q > t ? q - 1 : q) + (up ? 1 : 0);
     for (int i = 0; i < 4; ++i) {
         double g = lattice_point(base, q, s), n = lattice_point(base, up ? q - 1 : q + 1, s);
         if (isnan(g) || isnan(n))
@@ -672,7 +678,7 @@ static double lattice_beyond(double base, double s, double x, bool up)
  * units in the last place of the largest of them from the boundary, and
  * steps away from it, doubling; NaN if a few steps do not do.
  */
-static double position_bound(double m, double t, bool up, bool strict)
+static NOCT_ALWAYS_INLINE double position_bound(double m, double t, bool up, bool strict)
 {
     double q = t - m;
     double d = noct_max(0x1p-51 * noct_max(noct_max(fabs(t), fabs(m)), fabs(q)), 0x1p-1074);
