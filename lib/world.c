@@ -35,12 +35,13 @@ typedef struct cell {
     uint32_t *objs;      /* leaf: objects overlapping the cell */
     uint32_t count, cap;
     uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
+    uint32_t fresh;      /* objs[fresh, count) came since the near pairs */
     uint64_t stamp_step; /* this node as a neighbor */
     /* Leaf, from its last sweep: every pair of its boxes not in near was
      * at least budget apart (on some axis) then, less twice the reach of
-     * each step since. near holds the pairs that were closer, as
-     * positions in objs (low and high 16 bits). An object that comes or
-     * goes updates both (near_enter, near_leave). */
+     * each step since, but for the pairs of the fresh objects, which the
+     * next search adds (near_fresh). near holds the pairs that were
+     * closer, as positions in objs (low and high 16 bits). */
     double budget;
     uint32_t *near;
     uint32_t nnear, capnear;
@@ -230,43 +231,9 @@ static void span_remove(noctWorld *w, uint32_t id, const octNode *leaf)
  * others. */
 #define NEAR_STEPS 4
 
-/*
- * The object at position r of leaf c came: keep the leaf's budget rather
- * than sweep it again. Its pairs closer than the budget become near
- * pairs, so every other pair is still at least the budget apart (it is
- * measured now, and the next search takes this step's reach off it); the
- * budget is held to the margin of a sweep, so the leaf is swept again as
- * soon as one made now would be. Returns false when out of memory.
- */
-static bool near_enter(const noctWorld *w, cell *c, uint32_t r)
-{
-    const double budget = noct_min(c->budget, 2 * NEAR_STEPS * w->reach);
-    if (!(budget > 0) || c->count > 0x10000) {
-        c->budget = 0;
-        return true;
-    }
-    c->budget = 0; /* until every pair is in */
-    const aabb *a = &w->box[c->objs[r]];
-    for (uint32_t i = 0; i < c->count; ++i) {
-        if (i == r)
-            continue;
-        const aabb *b = &w->box[c->objs[i]];
-        double gap = -INFINITY;
-        for (int k = 0; k < 3; ++k)
-            gap = noct_max(gap, noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]));
-        if (gap > budget)
-            continue;
-        if (!grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
-            return false;
-        c->near[c->nnear++] = i | r << 16;
-    }
-    c->budget = budget;
-    return true;
-}
-
-/* The object at position r of leaf c went and the last, at position
- * last, took its place: its near pairs go, the last one's follow it. The
- * other pairs are as far apart as before. */
+/* The object at position r of leaf c went and the one at position last
+ * took its place: r's near pairs go, last's follow it. The other pairs
+ * are as far apart as before. */
 static void near_leave(cell *c, uint32_t r, uint32_t last)
 {
     uint32_t k = 0;
@@ -288,10 +255,10 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
     if (!grow_array((void **)&c->objs, &c->cap, c->count + 1, sizeof *c->objs) ||
         !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
         return false;
-    c->objs[c->count++] = id;
+    c->objs[c->count++] = id; /* fresh: after c->fresh */
     o->spans[o->nspans++] = leaf;
     forget_home(w, id);
-    return near_enter(w, c, c->count - 1);
+    return true;
 }
 
 /* ---- split and merge ------------------------------------------------------ */
@@ -389,6 +356,7 @@ static bool try_merge(noctWorld *w, octNode *p)
             return false;
         pc->cap = distinct ? distinct : 1;
         pc->count = 0;
+        pc->fresh = 0;
         pc->budget = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
@@ -424,8 +392,17 @@ static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
     cell *c = cell_of(leaf);
     for (uint32_t i = 0; i < c->count; ++i)
         if (c->objs[i] == id) {
-            c->objs[i] = c->objs[--c->count];
-            near_leave(c, i, c->count);
+            /* The fresh objects stay last: an old one's place goes to the
+             * last old one, whose place goes to the last object. */
+            const uint32_t last = --c->count;
+            if (i < c->fresh) {
+                const uint32_t last_old = --c->fresh;
+                near_leave(c, i, last_old);
+                c->objs[i] = c->objs[last_old];
+                c->objs[last_old] = c->objs[last];
+            } else {
+                c->objs[i] = c->objs[last];
+            }
             break;
         }
     span_remove(w, id, leaf);
@@ -1048,6 +1025,39 @@ static NOCT_ALWAYS_INLINE bool offer_pair(noctWorld *w, const cell *c, const cel
 }
 
 /*
+ * The fresh objects of leaf c, which came since its near pairs were made:
+ * rather than sweep the leaf again, add their pairs closer than the
+ * budget (this step's, held to a sweep's margin, so that the leaf is
+ * swept again as soon as one made now would be) to the near pairs. Every
+ * other pair is then at least the budget apart. Their boxes were
+ * requested with the leaf's.
+ */
+static bool near_fresh(noctWorld *w, cell *c)
+{
+    const double budget = noct_min(c->budget, 2 * NEAR_STEPS * w->reach);
+    c->budget = 0; /* until every pair is in */
+    for (uint32_t r = c->fresh; r < c->count; ++r) {
+        const aabb *a = &w->box[c->objs[r]];
+        for (uint32_t i = 0; i < r; ++i) {
+            const aabb *b = &w->box[c->objs[i]];
+            const double gap = noct_max(
+                noct_max(noct_max(b->lo[0] - a->hi[0], a->lo[0] - b->hi[0]),
+                         noct_max(b->lo[1] - a->hi[1], a->lo[1] - b->hi[1])),
+                noct_max(b->lo[2] - a->hi[2], a->lo[2] - b->hi[2]));
+            if (gap > budget)
+                continue;
+            if (!grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
+                return false;
+            c->near[c->nnear++] = i | r << 16;
+        }
+    }
+    w->c.candidate_pairs += (uint64_t)(c->count - c->fresh) * (c->count + c->fresh - 1) / 2;
+    c->fresh = c->count;
+    c->budget = budget;
+    return true;
+}
+
+/*
  * The pairs of a leaf. While its budget lasts (below), the pairs that its
  * last sweep found near are tested and no other can meet, or, if there
  * were none, the leaf is skipped. Else it is swept: its boxes sorted on
@@ -1060,8 +1070,10 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
 {
     const cell *rc = cell_of(w->root);
     const bool sweep = w->def.N != NOCT_N_EXHAUSTIVE;
-    if (sweep && c->budget > 2 * w->reach) {
+    if (sweep && c->budget > 2 * w->reach && c->count <= 0x10000) {
         c->budget -= 2 * w->reach;
+        if (c->fresh < c->count && !near_fresh(w, c))
+            return NOCT_ERR_NOMEM;
         if (c->nnear == 0) {
             ++w->c.leaves_skipped;
             return NOCT_OK;
@@ -1143,6 +1155,7 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
         }
     }
     c->budget = !listing ? 0 : c->nnear > 0 ? m2 : apart;
+    c->fresh = c->count;
     return NOCT_OK;
 }
 
@@ -1319,8 +1332,8 @@ static NOCT_ALWAYS_INLINE void prefetch_lists(const cell *c)
  * will read them this step (search_leaf skips the leaf otherwise). */
 static NOCT_ALWAYS_INLINE void prefetch_boxes(const noctWorld *w, const cell *c)
 {
-    if (c->count < 2 ||
-        (w->def.N != NOCT_N_EXHAUSTIVE && c->budget > 2 * w->reach && c->nnear == 0))
+    if (c->count < 2 || (w->def.N != NOCT_N_EXHAUSTIVE && c->budget > 2 * w->reach &&
+                         c->nnear == 0 && c->fresh == c->count))
         return;
     for (uint32_t i = 0; i < c->count; ++i) {
         const char *b = (const char *)&w->box[c->objs[i]];
