@@ -875,6 +875,8 @@ static noctStatus maintain(noctWorld *w, bool *escaped)
      * later change to their leaves forgets the block again. */
     for (uint32_t m = 0; m < w->nslow && st == NOCT_OK; ++m) {
         const uint32_t id = w->slow[m];
+        if (ahead)
+            prefetch_spans(w, m);
         if (!isfinite(w->home[id].lo[0]) && !home_of(w, id, &w->box[id], &w->home[id]))
             forget_home(w, id);
     }
