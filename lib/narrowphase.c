@@ -510,6 +510,13 @@ int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_s
     /* The proof needs both duals: shrink is +inf without one. */
     bool proven = a->shrink < 1 && b->shrink < 1;
     const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
+    /* |e[i]|_inf of each edge, for the proof's products |p|_inf |q|_inf */
+    double amax[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};
+    if (proven)
+        for (int i = 0; i < 3; ++i) {
+            amax[i] = noct_max(fabs(a->e[i][0]), noct_max(fabs(a->e[i][1]), fabs(a->e[i][2])));
+            bmax[i] = noct_max(fabs(b->e[i][0]), noct_max(fabs(b->e[i][1]), fabs(b->e[i][2])));
+        }
     for (int i = 0; i < 3; ++i) { /* pairs of edges */
         const double *x = a->e[i];
         for (int j = 0; j < 3; ++j) {
@@ -530,9 +537,7 @@ int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_s
             if (l1 == 0 && products_equal(x[1], y[2], x[2], y[1]) &&
                 products_equal(x[2], y[0], x[0], y[2]) && products_equal(x[0], y[1], x[1], y[0]))
                 continue; /* parallel edges */
-            const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
-                              noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
-            proven = d + unit * (l1 + pq) < fa * ra + fb * rb;
+            proven = d + unit * (l1 + amax[i] * bmax[j]) < fa * ra + fb * rb;
         }
     }
     if (!proven)
@@ -540,12 +545,12 @@ int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_s
     /* The proof's face axes: the cross products of each box's edges. */
     for (int n = 0; n < 6; ++n) {
         const noct_box_slot *s = n < 3 ? a : b;
+        const double *smax = n < 3 ? amax : bmax;
         const double *x = s->e[(n + 1) % 3], *y = s->e[(n + 2) % 3];
         const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
                              x[0] * y[1] - x[1] * y[0]};
         const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        const double pq = noct_max(fabs(x[0]), noct_max(fabs(x[1]), fabs(x[2]))) *
-                          noct_max(fabs(y[0]), noct_max(fabs(y[1]), fabs(y[2])));
+        const double pq = smax[(n + 1) % 3] * smax[(n + 2) % 3];
         const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
         if (!(d + unit * (l1 + pq) < fa * box_radius(a->e, u) + fb * box_radius(b->e, u)))
             return 0;
