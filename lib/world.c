@@ -42,7 +42,13 @@ typedef struct cell {
      * each step since, but for the pairs of the fresh objects, which the
      * next search adds (near_fresh). near holds the pairs that were
      * closer, as positions in objs (low and high 16 bits). */
-    double budget;
+    union {
+        double budget;
+        /* Node whose children are leaves: they hold at least this many
+         * distinct objects (0: unknown). Objects leaving them count it
+         * down, one each; more coming cannot make it wrong. */
+        uint32_t distinct;
+    };
     uint32_t *near;
     uint32_t nnear, capnear;
 } cell;
@@ -300,6 +306,10 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
     free(pc->near);
     pc->near = NULL;
     pc->nnear = pc->capnear = 0;
+    pc->distinct = 0;
+    /* Removals below the new children do not count the parent's down. */
+    if (NOCT_NODE_PARENT(leaf) != NULL)
+        cell_of(NOCT_NODE_PARENT(leaf))->distinct = 0;
     ++w->c.splits;
     bool ok = true;
     for (uint32_t j = 0; j < count; ++j)
@@ -329,28 +339,36 @@ static void free_cells_below(octNode *n)
     free(block);
 }
 
-/* If all of p's children are leaves holding N or fewer distinct objects,
- * merge them into p; then try p's parent. */
+/*
+ * If all of p's children are leaves holding N or fewer distinct objects,
+ * merge them into p; then try p's parent. Every object leaving a leaf
+ * asks, so the count of a node whose children hold too many is kept
+ * (cell.distinct): it is taken again only when as many objects have left
+ * as it was over N.
+ */
 static bool try_merge(noctWorld *w, octNode *p)
 {
     while (p != NULL && w->def.N != NOCT_N_EXHAUSTIVE) {
+        cell *pc = cell_of(p);
+        if (pc->distinct > (uint32_t)w->def.N)
+            return true;
         uint32_t distinct = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
             if (NOCT_NODE_IS_SPLIT(k))
                 return true;
-            cell *c = cell_of(k);
-            /* Stop as soon as there are too many: most calls, since
-             * every object leaving a leaf asks. */
+            const cell *c = cell_of(k);
             for (uint32_t j = 0; j < c->count; ++j)
                 if (w->mark[c->objs[j]] != w->epoch) {
                     w->mark[c->objs[j]] = w->epoch;
-                    if ((int)++distinct > w->def.N)
-                        return true;
+                    ++distinct;
                 }
         }
-        cell *pc = cell_of(p);
+        if (distinct > (uint32_t)w->def.N) {
+            pc->distinct = distinct;
+            return true;
+        }
         pc->objs = malloc((distinct ? distinct : 1) * sizeof *pc->objs);
         if (pc->objs == NULL)
             return false;
@@ -407,7 +425,10 @@ static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
         }
     span_remove(w, id, leaf);
     ++w->c.leaves_left;
-    return try_merge(w, NOCT_NODE_PARENT(leaf));
+    octNode *p = NOCT_NODE_PARENT(leaf);
+    if (p != NULL && cell_of(p)->distinct > 0)
+        --cell_of(p)->distinct;
+    return try_merge(w, p);
 }
 
 /* Add id to every leaf under n that its box overlaps and lacks it. If the

@@ -297,6 +297,57 @@ START_TEST(random_scenes_against_brute_force)
 }
 END_TEST
 
+/* Small walled worlds with N of 1 to 3: objects keep crossing leaves, so
+ * leaves split and merge back all the time, under nodes whose count of
+ * distinct objects the world keeps between removals (try_merge). After
+ * every step the tree is valid (no mergeable siblings left) and the
+ * colliding pairs are brute force's. */
+START_TEST(walled_small_worlds_split_and_merge)
+{
+    uint64_t rng = 7919 * (uint64_t)_i + 1;
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = 1 + _i % 3;
+    def.max_depth = 3 + _i % 4;
+    def.effects |= NOCT_EFFECT_WALLS;
+    for (int k = 0; k < 3; ++k) {
+        def.walls_lo[k] = 0;
+        def.walls_hi[k] = 4 + _i % 5;
+    }
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+    enum { NMESH = 3, MAXOBJ = 37 };
+    static const double half[NMESH] = {0.1, 0.3, 0.7};
+    noctMesh *meshes[NMESH];
+    for (int m = 0; m < NMESH; ++m)
+        ck_assert_int_eq(noctMeshCreateBox(half[m], half[m], half[m], &meshes[m], NULL),
+                         NOCT_OK);
+    const int n = 8 + _i % 30;
+    noctObjectId ids[MAXOBJ];
+    const noctMesh *mesh_of[MAXOBJ];
+    for (int i = 0; i < n; ++i) {
+        double pos[3], dir[3];
+        for (int k = 0; k < 3; ++k) {
+            pos[k] = (double)test_rand_below(&rng, 1024) / 1024 * def.walls_hi[k];
+            dir[k] = (double)test_rand_below(&rng, 1024) / 1024 - 0.5;
+        }
+        const double speed = 0.02 + 0.2 * (double)test_rand_below(&rng, 1024) / 1024;
+        mesh_of[i] = meshes[test_rand_below(&rng, NMESH)];
+        ck_assert_int_eq(noctWorldAdd(w, mesh_of[i], pos, dir, speed, &ids[i], NULL), NOCT_OK);
+    }
+    for (int s = 0; s < 150; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        expect_brute_force(w, ids, mesh_of, n, s);
+    }
+    noctWorldCounters c;
+    noctWorldGetCounters(w, &c);
+    ck_assert_uint_gt(c.merges, 0);
+    noctWorldDestroy(w);
+    for (int m = 0; m < NMESH; ++m)
+        noctMeshDestroy(meshes[m]);
+}
+END_TEST
+
 /* Slow cubes in a walled box: most leaves' pairs are too far apart to
  * meet for some steps, and the pair search skips them; after every step
  * the colliding pairs still equal the brute-force answer. */
@@ -1009,6 +1060,7 @@ int main(void)
     tcase_add_test(tc, root_face_creeper_grows);
     tcase_add_test(tc, many_partners_sorted);
     tcase_add_test(tc, skipped_leaves_against_brute_force);
+    tcase_add_loop_test(tc, walled_small_worlds_split_and_merge, 0, 12);
     suite_add_tcase(s, tc);
     tc = tcase_create("more random scenes");
     tcase_set_tags(tc, "slow");
