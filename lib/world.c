@@ -1370,34 +1370,34 @@ static NOCT_ALWAYS_INLINE void prefetch_boxes(const noctWorld *w, const cell *c)
  * (split_leaf), requested whole on the way down; then, while child i is
  * searched, the boxes of child i + 1, whose lists were requested while
  * child i - 1 was, and the lists of child i + 2: each leaf's scattered
- * reads are under way a leaf or two before it needs them.
+ * reads are under way a leaf or two before it needs them. In worlds of
+ * fewer than PREFETCH_OBJECTS objects (ahead false) they are in cache,
+ * and nothing is requested. Leaves with fewer than two objects are not
+ * visited.
  */
-static noctStatus search(noctWorld *w, octNode *n)
+static noctStatus search(noctWorld *w, octNode *n, bool ahead)
 {
-    if (NOCT_NODE_IS_SPLIT(n)) {
-        const cell *kids = cell_of(NOCT_NODE_CHILD(n, OCT_LDB));
+    const cell *kids = cell_of(NOCT_NODE_CHILD(n, OCT_LDB));
+    if (ahead) {
         for (size_t b = 0; b < 8 * sizeof *kids; b += 64)
             NOCT_PREFETCH((const char *)kids + b);
         prefetch_lists(&kids[0]);
         prefetch_lists(&kids[1]);
         prefetch_boxes(w, &kids[0]);
-        for (int i = 0; i < 8; ++i) {
-            if (i + 1 < 8)
-                prefetch_boxes(w, &kids[i + 1]);
-            if (i + 2 < 8)
-                prefetch_lists(&kids[i + 2]);
-            noctStatus st = search(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
-            if (st != NOCT_OK)
-                return st;
-        }
-        return NOCT_OK;
     }
-    cell *c = cell_of(n);
-    if (c->count < 2)
-        return NOCT_OK;
-    if (n == w->root)
-        prefetch_boxes(w, c); /* no parent requested them */
-    return search_leaf(w, c);
+    for (int i = 0; i < 8; ++i) {
+        if (ahead && i + 1 < 8)
+            prefetch_boxes(w, &kids[i + 1]);
+        if (ahead && i + 2 < 8)
+            prefetch_lists(&kids[i + 2]);
+        octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
+        noctStatus st = NOCT_NODE_IS_SPLIT(k) ? search(w, k, ahead)
+                        : kids[i].count < 2   ? NOCT_OK
+                                              : search_leaf(w, cell_of(k));
+        if (st != NOCT_OK)
+            return st;
+    }
+    return NOCT_OK;
 }
 
 /* began = colliding - previous, ended = previous - colliding (sorted). */
@@ -1776,8 +1776,12 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     w->colliding = tmp;
     w->colliding.n = 0;
     w->tested.n = 0;
-    if (w->root != NULL)
-        st = search(w, w->root);
+    if (w->root != NULL && NOCT_NODE_IS_SPLIT(w->root)) {
+        st = search(w, w->root, w->nslots >= PREFETCH_OBJECTS);
+    } else if (w->root != NULL && cell_of(w->root)->count >= 2) {
+        prefetch_boxes(w, cell_of(w->root));
+        st = search_leaf(w, cell_of(w->root));
+    }
     if (st == NOCT_OK && !sort_tested(w))
         st = NOCT_ERR_NOMEM;
     if (st == NOCT_OK)
