@@ -464,6 +464,37 @@ START_TEST(root_grows)
 }
 END_TEST
 
+/* A world of N with static cubes at (-20, -20, -20) and (20, 20, 20),
+ * and its root's cube: both statics lie below the root's middle in y
+ * (the root reaches at least 20.5 + 41 / 2 above the lower one), so the
+ * upper y half holds none. */
+static noctWorld *world_with_statics(int N, const noctMesh *cube, double lo[3], double *size)
+{
+    noctWorld *w = make_world(N, 6, NOCT_MAINTAIN_INCREMENTAL);
+    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20}, d0[3] = {1, 0, 0};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
+    noctWorldCell(w, noctWorldRoot(w), lo, size, NULL, 0);
+    ck_assert(s2[1] + 0.5 < lo[1] + *size / 2);
+    return w;
+}
+
+/* The box [lo, hi] as a mesh of six quads, its vertices where they are
+ * (not about the origin, as noctMeshCreateBox() makes them). */
+static noctMesh *make_cuboid(const double lo[3], const double hi[3])
+{
+    const double v[24] = {lo[0], lo[1], lo[2], hi[0], lo[1], lo[2], hi[0], hi[1], lo[2],
+                          lo[0], hi[1], lo[2], lo[0], lo[1], hi[2], hi[0], lo[1], hi[2],
+                          hi[0], hi[1], hi[2], lo[0], hi[1], hi[2]};
+    const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
+    const uint32_t idx[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
+                              2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 6, idx, &m, NULL), NOCT_OK);
+    return m;
+}
+
 /* A box whose face lies on the root's face, creeping outward by less than
  * a double a step: at the first step its side still rounds onto the face,
  * at the second it is one double beyond, and the tree must grow then. (A
@@ -473,24 +504,16 @@ START_TEST(root_face_creeper_grows)
 {
     noctMesh *cube;
     ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
-    noctWorld *w = make_world(2, 6, NOCT_MAINTAIN_INCREMENTAL);
-    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20}, d0[3] = {1, 0, 0};
-    noctObjectId id;
-    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
-    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
     double lo[3], size;
-    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    noctWorld *w = world_with_statics(2, cube, lo, &size);
+    const double d0[3] = {1, 0, 0};
+    noctObjectId id;
     const double x = lo[0] + size; /* the root's +x face */
     /* A unit box [x - 1, x] in x, placed at the origin in x, in the free
      * quarter of the root that straddlers_take_the_fast_path uses. */
     const double y = lo[1] + 0.75 * size, z = lo[2] + 0.25 * size;
-    const double v[24] = {x - 1, -0.5, -0.5, x, -0.5, -0.5, x, 0.5, -0.5, x - 1, 0.5, -0.5,
-                          x - 1, -0.5, 0.5,  x, -0.5, 0.5,  x, 0.5, 0.5,  x - 1, 0.5, 0.5};
-    const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
-    const uint32_t idx[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
-                              2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
-    noctMesh *slab;
-    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 6, idx, &slab, NULL), NOCT_OK);
+    const double slab_lo[3] = {x - 1, -0.5, -0.5}, slab_hi[3] = {x, 0.5, 0.5};
+    noctMesh *slab = make_cuboid(slab_lo, slab_hi);
     /* 0.3 of a double at x a step: x + 0.3 u rounds to x, x + 0.6 u to
      * the next double. */
     const double u = nextafter(x, INFINITY) - x, p[3] = {0, y, z};
@@ -580,20 +603,13 @@ START_TEST(straddlers_take_the_fast_path)
 {
     noctMesh *cube;
     ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
-    noctWorld *w = make_world(1, 6, NOCT_MAINTAIN_INCREMENTAL);
-    const double d0[3] = {1, 0, 0}, down[3] = {0, -1, 0};
-    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20};
-    noctObjectId id;
-    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
-    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
     double lo[3], size;
-    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    noctWorld *w = world_with_statics(1, cube, lo, &size);
+    const double down[3] = {0, -1, 0};
+    noctObjectId id;
     /* On the root's x mid-plane, in the upper y half, the lower z half:
-     * two leaves of half the root's size, which hold no static object
-     * (both statics lie below the root's middle in y, since the root
-     * reaches at least 20.5 + 41 / 2 above the lower one). */
+     * two leaves of half the root's size, which hold no static object. */
     const double p[3] = {lo[0] + size / 2, lo[1] + 0.75 * size, lo[2] + size / 4};
-    ck_assert(s2[1] + 0.5 < lo[1] + size / 2);
     ck_assert_int_eq(noctWorldAdd(w, cube, p, down, 1, &id, NULL), NOCT_OK);
     validate_ok(w);
     double y = p[1], block_lo = lo[1] + size / 2;
@@ -634,23 +650,13 @@ START_TEST(fast_test_at_the_rounding_edge)
 {
     noctMesh *cube;
     ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
-    noctWorld *w = make_world(1, 6, NOCT_MAINTAIN_INCREMENTAL);
-    const double d0[3] = {1, 0, 0}, down[3] = {0, -1, 0};
-    const double s1[3] = {-20, -20, -20}, s2[3] = {20, 20, 20};
-    noctObjectId id;
-    ck_assert_int_eq(noctWorldAdd(w, cube, s1, d0, 0, &id, NULL), NOCT_OK);
-    ck_assert_int_eq(noctWorldAdd(w, cube, s2, d0, 0, &id, NULL), NOCT_OK);
     double lo[3], size;
-    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
-    ck_assert(s2[1] + 0.5 < lo[1] + size / 2); /* the upper y half is free */
+    noctWorld *w = world_with_statics(1, cube, lo, &size); /* upper y half free */
+    const double down[3] = {0, -1, 0};
+    noctObjectId id;
     const double face = lo[1] + size / 2, m = 1000.3;
-    const double v[24] = {-0.5, m, -0.5, 0.5, m, -0.5, 0.5, m + 1, -0.5, -0.5, m + 1, -0.5,
-                          -0.5, m, 0.5,  0.5, m, 0.5,  0.5, m + 1, 0.5,  -0.5, m + 1, 0.5};
-    const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
-    const uint32_t idx[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
-                              2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
-    noctMesh *far;
-    ck_assert_int_eq(noctMeshCreate(v, 8, sizes, 6, idx, &far, NULL), NOCT_OK);
+    const double far_lo[3] = {-0.5, m, -0.5}, far_hi[3] = {0.5, m + 1, 0.5};
+    noctMesh *far = make_cuboid(far_lo, far_hi);
     /* q: the position whose box's low side is the face. Both differences
      * are exact (Sterbenz), and so are the steps of 2^-20 from it. */
     const double q = face - m, speed = 0x1p-20;
