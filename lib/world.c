@@ -232,11 +232,6 @@ static void span_remove(noctWorld *w, uint32_t id, const octNode *leaf)
         }
 }
 
-/* How many steps of reach a sweep's near pairs are kept for: a leaf is
- * swept about once in that many steps, and its near pairs tested in the
- * others. */
-#define NEAR_STEPS 4
-
 /* The object at position r of leaf c went and the one at position last
  * took its place: r's near pairs go, last's follow it. The other pairs
  * are as far apart as before. */
@@ -1046,6 +1041,11 @@ static NOCT_ALWAYS_INLINE bool offer_pair(noctWorld *w, const cell *c, const cel
     }
     return pairs_push(&w->tested, (noctPair){{ia, 0}, {ib, 0}});
 }
+
+/* How many steps of reach a sweep's near pairs are kept for: a leaf is
+ * swept about once in that many steps, and its near pairs tested in the
+ * others. */
+#define NEAR_STEPS 4
 
 /*
  * The fresh objects of leaf c, which came since its near pairs were made:
