@@ -22,6 +22,12 @@
  * compiled out (NDEBUG) in the efficient one. */
 #define NOCT_REQUIRE(cond) assert(cond)
 
+/* An invariant the code relies on (a count that cannot go negative, an
+ * object found where it is removed from): checked in the defensive build
+ * like a requires clause, compiled out in the efficient one. A failure is
+ * a bug in the library, never bad input. */
+#define NOCT_INVARIANT(cond) assert(cond)
+
 /*
  * The accessors as the library's own clients (world.c) call them: through
  * the checked, exported functions in the defensive build, and straight to

@@ -53,6 +53,7 @@ const char *noctStatusString(noctStatus status)
         [NOCT_ERR_PARSE] = "syntax error",
         [NOCT_ERR_IO] = "input/output error",
         [NOCT_ERR_NUMERIC] = "numerical failure",
+        [NOCT_ERR_INVARIANT] = "internal invariant broken",
     };
     if ((unsigned)status >= NOCT_STATUS_COUNT)
         return "unknown status";

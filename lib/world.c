@@ -33,7 +33,10 @@ typedef struct cell {
     double lo[3];
     double size;
     uint32_t *objs;      /* leaf: objects overlapping the cell */
+    uint32_t *back;      /* leaf: objs[i]'s entry in its spans is
+                            back[i], so removals need no search */
     uint32_t count, cap;
+    uint32_t small;      /* leaf: objects small enough to split for */
     uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
     uint32_t fresh;      /* objs[fresh, count) came since the near pairs */
     uint64_t stamp_step; /* this node as a neighbor */
@@ -80,13 +83,20 @@ typedef struct home_block {
     double lo[3], hi[3];
 } home_block;
 
+/* A leaf an object is in, and where the leaf lists it: objs[at]. */
+typedef struct span {
+    octNode *leaf;
+    uint32_t at;
+} span;
+
 typedef struct object {
     const noctMesh *mesh;
     double vel[3], speed;  /* vel = speed * unit direction */
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
     aabb old;              /* the placed box before the last move */
-    octNode **spans;       /* leaves it is in */
+    span *spans;           /* leaves it is in */
     uint32_t nspans, capspans;
+    double ext;            /* its box's largest extent (split rule) */
     bool alive;
     bool entering;         /* maintenance: needs the enter phase */
 } object;
@@ -100,7 +110,7 @@ typedef struct pair_list {
  * so that it reads one contiguous array instead of scattered objects. */
 typedef struct leaf_box {
     double lo[3], hi[3];
-    uint32_t id;
+    uint32_t id, back; /* the leaf's objs[i] and back[i] */
 } leaf_box;
 
 struct noctWorld {
@@ -127,8 +137,13 @@ struct noctWorld {
     uint32_t *slow;        /* maintenance: movers that failed the fast test */
     uint32_t nslow, capslow;
     uint32_t nslots, capslots;
-    uint32_t *free_slots;
-    uint32_t nfree;
+    uint32_t *free_slots;  /* room for capslots, so a removal cannot fail */
+    uint32_t nfree, capfree;
+    bool merge_owed;       /* a merge lacked memory: merge_all() owed */
+    bool tree_owed;        /* a failure tore the tree down: rebuild owed */
+    double (*prev)[3];     /* per mover: its position before the motion */
+    double (*prevvel)[3];  /* and its velocity, with the walls */
+    uint32_t capprev;
     size_t alive;
     size_t moving;         /* live objects with a non-zero speed */
     octNode *root;
@@ -213,23 +228,54 @@ static NOCT_ALWAYS_INLINE void place_box(const object *o, const double pos[3], a
     b->hi[2] = o->mhi[2] + pos[2];
 }
 
-static bool leaf_has(const cell *c, uint32_t id)
+/* Is object id in leaf c? Whichever of its spans and the leaf's list is
+ * shorter is searched, so that neither a crowded leaf nor an object in
+ * many leaves makes the question costly. */
+static bool leaf_has(const noctWorld *w, const octNode *leaf, uint32_t id)
 {
+    const cell *c = cell_of(leaf);
+    const object *o = &w->obj[id];
+    if (o->nspans <= c->count) {
+        for (uint32_t i = 0; i < o->nspans; ++i)
+            if (o->spans[i].leaf == leaf)
+                return true;
+        return false;
+    }
     for (uint32_t i = 0; i < c->count; ++i)
         if (c->objs[i] == id)
             return true;
     return false;
 }
 
-static void span_remove(noctWorld *w, uint32_t id, const octNode *leaf)
+/* Is an object of box extent ext one that a split of a cell of this
+ * size can separate from others (it fits in a child)? See add_and_split. */
+static bool splits_for(double ext, double size)
+{
+    return ext <= size / 2;
+}
+
+/* Put object id, whose spans entry for this leaf is s, at position i of
+ * the leaf's list, and tell the entry. */
+static NOCT_ALWAYS_INLINE void leaf_put(noctWorld *w, cell *c, uint32_t i, uint32_t id,
+                                        uint32_t s)
+{
+    c->objs[i] = id;
+    c->back[i] = s;
+    w->obj[id].spans[s].at = i;
+}
+
+/* Drop entry s of object id's spans (the leaf's list is the caller's):
+ * the last entry takes its place, and its leaf is told. */
+static void span_drop(noctWorld *w, uint32_t id, uint32_t s)
 {
     object *o = &w->obj[id];
     forget_home(w, id);
-    for (uint32_t i = 0; i < o->nspans; ++i)
-        if (o->spans[i] == leaf) {
-            o->spans[i] = o->spans[--o->nspans];
-            return;
-        }
+    NOCT_INVARIANT(s < o->nspans);
+    const span last = o->spans[--o->nspans];
+    if (s == o->nspans)
+        return;
+    o->spans[s] = last;
+    cell_of(last.leaf)->back[last.at] = s;
 }
 
 /* The object at position r of leaf c went and the one at position last
@@ -249,15 +295,29 @@ static void near_leave(cell *c, uint32_t r, uint32_t last)
     c->nnear = k;
 }
 
+/* Room for one more object in leaf c. */
+static bool leaf_reserve(cell *c)
+{
+    if (c->count < c->cap)
+        return true;
+    uint32_t cap = c->cap, cap2 = c->cap;
+    if (!grow_array((void **)&c->objs, &cap, c->count + 1, sizeof *c->objs) ||
+        !grow_array((void **)&c->back, &cap2, c->count + 1, sizeof *c->back))
+        return false; /* a list that grew is kept; cap stays the smaller */
+    c->cap = cap;
+    return true;
+}
+
 static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
 {
     cell *c = cell_of(leaf);
     object *o = &w->obj[id];
-    if (!grow_array((void **)&c->objs, &c->cap, c->count + 1, sizeof *c->objs) ||
+    if (!leaf_reserve(c) ||
         !grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
         return false;
-    c->objs[c->count++] = id; /* fresh: after c->fresh */
-    o->spans[o->nspans++] = leaf;
+    o->spans[o->nspans].leaf = leaf;
+    leaf_put(w, c, c->count++, id, o->nspans++); /* fresh: after c->fresh */
+    c->small += splits_for(o->ext, c->size);
     forget_home(w, id);
     return true;
 }
@@ -266,13 +326,24 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
 
 static bool split_leaf(noctWorld *w, octNode *leaf);
 
-/* Add object id to the leaf, splitting it if it now holds N + 1. */
+/*
+ * Add object id to the leaf, and split it if it now holds more than N
+ * objects that a split can separate: objects whose boxes are at most
+ * half the leaf's size on every axis (they fit in a child). Objects
+ * larger than that are listed but do not count: no split of the leaf
+ * can part two of them that overlap it (coincident objects, a pile,
+ * faces shared), so splitting for them would only multiply the leaves
+ * they are in, down to the maximum depth. So a leaf below the maximum
+ * depth holds at most N objects smaller than half its size, and an
+ * object is in at most 27 leaves of at least its own extent plus those
+ * that splits for smaller objects made.
+ */
 static bool add_and_split(noctWorld *w, octNode *leaf, uint32_t id)
 {
     if (!leaf_add(w, leaf, id))
         return false;
     cell *c = cell_of(leaf);
-    if ((int)c->count > w->def.N && octGeneration(leaf) < w->def.max_depth)
+    if ((int)c->small > w->def.N && octGeneration(leaf) < w->def.max_depth)
         return split_leaf(w, leaf);
     return true;
 }
@@ -295,9 +366,13 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
         kids[i].size = half;
         octSwapData(NOCT_NODE_CHILD(leaf, (octDirection)(OCT_LDB + i)), &kids[i]);
     }
+    /* The objects leave the leaf, each by its own entry: no search. */
+    for (uint32_t j = 0; j < pc->count; ++j)
+        span_drop(w, pc->objs[j], pc->back[j]);
     uint32_t *objs = pc->objs, count = pc->count;
-    pc->objs = NULL;
-    pc->count = pc->cap = 0;
+    free(pc->back);
+    pc->objs = pc->back = NULL;
+    pc->count = pc->cap = pc->small = 0;
     free(pc->near);
     pc->near = NULL;
     pc->nnear = pc->capnear = 0;
@@ -307,8 +382,6 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
         cell_of(NOCT_NODE_PARENT(leaf))->distinct = 0;
     ++w->c.splits;
     bool ok = true;
-    for (uint32_t j = 0; j < count; ++j)
-        span_remove(w, objs[j], leaf);
     for (uint32_t j = 0; j < count && ok; ++j)
         for (int i = 0; i < 8 && ok; ++i)
             if (overlaps(&w->box[objs[j]], &kids[i]))
@@ -329,6 +402,7 @@ static void free_cells_below(octNode *n)
         free_cells_below(k);
         cell *c = octSwapData(k, NULL);
         free(c->objs);
+        free(c->back);
         free(c->near);
     }
     free(block);
@@ -340,19 +414,25 @@ static void free_cells_below(octNode *n)
  * asks, so the count of a node whose children hold too many is kept
  * (cell.distinct): it is taken again only when as many objects have left
  * as it was over N.
+ *
+ * A merge needs memory for p's list; without it the siblings stay split,
+ * which costs pairs but not correctness, and w->merge_owed makes the next
+ * step merge what it can (merge_all). Nothing else here allocates: an
+ * object's spans lose the children before they gain p. So a removal
+ * cannot fail.
  */
-static bool try_merge(noctWorld *w, octNode *p)
+static void try_merge(noctWorld *w, octNode *p)
 {
     while (p != NULL && w->def.N != NOCT_N_EXHAUSTIVE) {
         cell *pc = cell_of(p);
         if (pc->distinct > (uint32_t)w->def.N)
-            return true;
+            return;
         uint32_t distinct = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
             if (NOCT_NODE_IS_SPLIT(k))
-                return true;
+                return;
             const cell *c = cell_of(k);
             for (uint32_t j = 0; j < c->count; ++j)
                 if (w->mark[c->objs[j]] != w->epoch) {
@@ -362,22 +442,28 @@ static bool try_merge(noctWorld *w, octNode *p)
         }
         if (distinct > (uint32_t)w->def.N) {
             pc->distinct = distinct;
-            return true;
+            return;
         }
-        pc->objs = malloc((distinct ? distinct : 1) * sizeof *pc->objs);
-        if (pc->objs == NULL)
-            return false;
-        pc->cap = distinct ? distinct : 1;
-        pc->count = 0;
+        const uint32_t cap = distinct ? distinct : 1;
+        uint32_t *objs = malloc(cap * sizeof *objs), *back = malloc(cap * sizeof *back);
+        if (objs == NULL || back == NULL) {
+            free(objs);
+            free(back);
+            w->merge_owed = true;
+            return;
+        }
+        pc->objs = objs;
+        pc->back = back;
+        pc->cap = cap;
+        pc->count = pc->small = 0;
         pc->fresh = 0;
         pc->budget = 0;
         ++w->epoch;
         for (int i = 0; i < 8; ++i) {
-            octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
-            cell *c = cell_of(k);
+            cell *c = cell_of(NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i)));
             for (uint32_t j = 0; j < c->count; ++j) {
-                uint32_t id = c->objs[j];
-                span_remove(w, id, k);
+                const uint32_t id = c->objs[j];
+                span_drop(w, id, c->back[j]);
                 if (w->mark[id] != w->epoch) {
                     w->mark[id] = w->epoch;
                     pc->objs[pc->count++] = id;
@@ -388,57 +474,73 @@ static bool try_merge(noctWorld *w, octNode *p)
         octJoin(p, NULL);
         for (uint32_t j = 0; j < pc->count; ++j) {
             object *o = &w->obj[pc->objs[j]];
-            forget_home(w, pc->objs[j]);
-            if (!grow_array((void **)&o->spans, &o->capspans, o->nspans + 1,
-                            sizeof *o->spans))
-                return false;
-            o->spans[o->nspans++] = p;
+            NOCT_INVARIANT(o->nspans < o->capspans);
+            o->spans[o->nspans].leaf = p;
+            leaf_put(w, pc, j, pc->objs[j], o->nspans++);
+            pc->small += splits_for(o->ext, pc->size);
         }
         ++w->c.merges;
         p = NOCT_NODE_PARENT(p);
     }
-    return true;
 }
 
-static bool leaf_remove(noctWorld *w, octNode *leaf, uint32_t id)
+/* Merge every group of leaf siblings that a merge without memory left
+ * split (try_merge), deepest first. */
+static void merge_all(noctWorld *w, octNode *n)
+{
+    if (!NOCT_NODE_IS_SPLIT(n))
+        return;
+    for (int i = 0; i < 8; ++i)
+        merge_all(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
+    if (NOCT_NODE_IS_SPLIT(n))
+        try_merge(w, n);
+}
+
+/* Remove the object at position i of the leaf (whose spans entry says
+ * so), then merge the siblings if they are few enough. Cannot fail. */
+static void leaf_remove_at(noctWorld *w, octNode *leaf, uint32_t i)
 {
     cell *c = cell_of(leaf);
-    for (uint32_t i = 0; i < c->count; ++i)
-        if (c->objs[i] == id) {
-            /* The fresh objects stay last: an old one's place goes to the
-             * last old one, whose place goes to the last object. */
-            const uint32_t last = --c->count;
-            if (i < c->fresh) {
-                const uint32_t last_old = --c->fresh;
-                near_leave(c, i, last_old);
-                c->objs[i] = c->objs[last_old];
-                c->objs[last_old] = c->objs[last];
-            } else {
-                c->objs[i] = c->objs[last];
-            }
-            break;
-        }
-    span_remove(w, id, leaf);
+    NOCT_INVARIANT(i < c->count);
+    const uint32_t id = c->objs[i];
+    span_drop(w, id, c->back[i]);
+    NOCT_INVARIANT(c->small >= (uint32_t)splits_for(w->obj[id].ext, c->size));
+    c->small -= splits_for(w->obj[id].ext, c->size);
+    /* The fresh objects stay last: an old one's place goes to the last
+     * old one, whose place goes to the last object. */
+    const uint32_t last = --c->count;
+    if (i < c->fresh) {
+        const uint32_t last_old = --c->fresh;
+        near_leave(c, i, last_old);
+        if (i != last_old)
+            leaf_put(w, c, i, c->objs[last_old], c->back[last_old]);
+        if (last_old != last)
+            leaf_put(w, c, last_old, c->objs[last], c->back[last]);
+    } else if (i != last) {
+        leaf_put(w, c, i, c->objs[last], c->back[last]);
+    }
     ++w->c.leaves_left;
     octNode *p = NOCT_NODE_PARENT(leaf);
     if (p != NULL && cell_of(p)->distinct > 0)
         --cell_of(p)->distinct;
-    return try_merge(w, p);
+    try_merge(w, p);
 }
 
-/* Add id to every leaf under n that its box overlaps and lacks it. If the
- * worklist is on, newly entered leaves are pushed to it. */
-static bool insert_below(noctWorld *w, octNode *n, uint32_t id, bool push)
+/* Add id to every leaf under n that its box overlaps and lacks it (a new
+ * object, fresh true, lacks them all). If the worklist is on, newly
+ * entered leaves are pushed to it. */
+static bool insert_below(noctWorld *w, octNode *n, uint32_t id, bool push, bool fresh)
 {
     if (!overlaps(&w->box[id], cell_of(n)))
         return true;
     if (NOCT_NODE_IS_SPLIT(n)) {
         for (int i = 0; i < 8; ++i)
-            if (!insert_below(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)), id, push))
+            if (!insert_below(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)), id, push,
+                              fresh))
                 return false;
         return true;
     }
-    if (leaf_has(cell_of(n), id))
+    if (!fresh && leaf_has(w, n, id))
         return true;
     ++w->c.leaves_entered;
     if (push) {
@@ -466,6 +568,7 @@ static void destroy_tree(noctWorld *w)
         octJoin(w->root, NULL);
     cell *rc = octSwapData(w->root, NULL);
     free(rc->objs);
+    free(rc->back);
     free(rc->near);
     free(rc);
     octDispose(w->root);
@@ -474,6 +577,15 @@ static void destroy_tree(noctWorld *w)
         w->obj[i].nspans = 0;
         forget_home(w, i);
     }
+}
+
+/* Tear the tree down after a failure left it inconsistent; the next step
+ * or addition builds it again (rebuild). */
+static void drop_tree(noctWorld *w)
+{
+    destroy_tree(w);
+    w->tree_owed = w->alive > 0;
+    w->merge_owed = false;
 }
 
 /* Build the tree afresh around every live object: a root cube whose size
@@ -523,7 +635,7 @@ static size_t straddling(const noctWorld *w, const double corner[3], double c,
     }
     return n;
 }
-static noctStatus rebuild(noctWorld *w, double min_size)
+static noctStatus build_tree(noctWorld *w, double min_size)
 {
     destroy_tree(w);
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -583,9 +695,25 @@ static noctStatus rebuild(noctWorld *w, double min_size)
     octSwapData(w->root, rc);
     ++w->c.rebuilds;
     for (uint32_t i = 0; i < w->nslots; ++i)
-        if (w->obj[i].alive && !insert_below(w, w->root, i, false))
+        if (w->obj[i].alive && !insert_below(w, w->root, i, false, true))
             return NOCT_ERR_NOMEM;
     return NOCT_OK;
+}
+
+/*
+ * Build the tree afresh (build_tree). A tree that a failure left half
+ * built, or half changed by a failed insertion, split or step, is torn
+ * down instead: the world then has no tree, w->tree_owed says so, and the
+ * next noctWorldAdd() or noctWorldStep() builds it before anything else.
+ */
+static noctStatus rebuild(noctWorld *w, double min_size)
+{
+    noctStatus st = build_tree(w, min_size);
+    if (st != NOCT_OK)
+        drop_tree(w);
+    else
+        w->tree_owed = w->merge_owed = false;
+    return st;
 }
 
 /* The root's cube as a box; everything when there is no tree yet. */
@@ -693,10 +821,10 @@ static bool home_of(const noctWorld *w, uint32_t id, const aabb *b, home_block *
     const object *o = &w->obj[id];
     if (o->nspans == 0)
         return false;
-    const cell *small = cell_of(o->spans[0]);
+    const cell *small = cell_of(o->spans[0].leaf);
     for (uint32_t i = 1; i < o->nspans; ++i)
-        if (cell_of(o->spans[i])->size < small->size)
-            small = cell_of(o->spans[i]);
+        if (cell_of(o->spans[i].leaf)->size < small->size)
+            small = cell_of(o->spans[i].leaf);
     const double s = small->size;
     const aabb root = root_box(w);
     for (int k = 0; k < 3; ++k) {
@@ -736,12 +864,11 @@ static noctStatus leave_phase(noctWorld *w, uint32_t id, bool *enter)
     }
     forget_home(w, id);
     for (uint32_t i = 0; i < o->nspans;) {
-        if (overlaps(b, cell_of(o->spans[i]))) {
+        if (overlaps(b, cell_of(o->spans[i].leaf))) {
             ++i;
             continue;
         }
-        if (!leaf_remove(w, o->spans[i], id))
-            return NOCT_ERR_NOMEM;
+        leaf_remove_at(w, o->spans[i].leaf, o->spans[i].at);
         i = 0; /* merges may have rewritten the list */
     }
     *enter = true;
@@ -770,7 +897,7 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
     const aabb *bx = &w->box[id];
     if (o->nspans == 0) {
         ++w->c.reinserts;
-        return insert_below(w, w->root, id, false) ? NOCT_OK : NOCT_ERR_NOMEM;
+        return insert_below(w, w->root, id, false, true) ? NOCT_OK : NOCT_ERR_NOMEM;
     }
     if (w->capwork < o->nspans) {
         octNode **q = realloc(w->work, o->nspans * sizeof *q);
@@ -779,7 +906,8 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
         w->work = q;
         w->capwork = o->nspans;
     }
-    memcpy(w->work, o->spans, o->nspans * sizeof *o->spans);
+    for (uint32_t i = 0; i < o->nspans; ++i)
+        w->work[i] = o->spans[i].leaf;
     w->nwork = o->nspans;
     for (size_t wi = 0; wi < w->nwork; ++wi) {
         const cell *lc = cell_of(w->work[wi]);
@@ -820,7 +948,7 @@ static noctStatus enter_phase(noctWorld *w, uint32_t id)
                         continue;
                     nc->stamp_step = w->step;
                     nc->stamp_obj = id;
-                    if (!insert_below(w, nb, id, true))
+                    if (!insert_below(w, nb, id, true, false))
                         return NOCT_ERR_NOMEM;
                 }
     }
@@ -846,12 +974,12 @@ static NOCT_ALWAYS_INLINE void prefetch_spans(const noctWorld *w, uint32_t m)
     if (m + 4 < n) {
         const object *o = &w->obj[slow[m + 4]];
         for (uint32_t k = 0; k < o->nspans; ++k)
-            NOCT_PREFETCH(o->spans[k]);
+            NOCT_PREFETCH(o->spans[k].leaf);
     }
     if (m + 2 < n) {
         const object *o = &w->obj[slow[m + 2]];
         for (uint32_t k = 0; k < o->nspans; ++k)
-            NOCT_PREFETCH(cell_of(o->spans[k]));
+            NOCT_PREFETCH(cell_of(o->spans[k].leaf));
     }
 }
 
@@ -911,6 +1039,18 @@ static bool update_movers(noctWorld *w)
     w->capmovers = cap;
     if (!grow_array((void **)&w->slow, &w->capslow, (uint32_t)w->moving, sizeof *w->slow))
         return false;
+    if (w->capprev < w->moving) {
+        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        double(*p)[3] = realloc(w->prev, w->moving * sizeof *p);
+        if (p != NULL)
+            w->prev = p;
+        double(*v)[3] = p && walls ? realloc(w->prevvel, w->moving * sizeof *v) : NULL;
+        if (v != NULL)
+            w->prevvel = v;
+        if (p == NULL || (walls && v == NULL))
+            return false;
+        w->capprev = (uint32_t)w->moving;
+    }
     w->nmovers = 0;
     w->vmax = 0;
     for (uint32_t i = 0; i < w->nslots; ++i)
@@ -1124,6 +1264,7 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
         memcpy(g[i].lo, o->lo, sizeof o->lo);
         memcpy(g[i].hi, o->hi, sizeof o->hi);
         g[i].id = c->objs[i];
+        g[i].back = c->back[i];
     }
     w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
     /* The exhaustive mode keeps the report's test of every pair. */
@@ -1135,7 +1276,8 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
          * the next sweep's insertion sort finds them nearly sorted, and
          * near pairs are positions in it. */
         for (uint32_t i = 0; i < c->count; ++i)
-            c->objs[i] = g[i].id;
+            if (c->objs[i] != g[i].id) /* few move: tell only those */
+                leaf_put(w, c, i, g[i].id, g[i].back);
     }
     const bool listing = sweep && c->count <= 0x10000;
     const double m2 = listing ? 2 * NEAR_STEPS * w->reach : 0;
@@ -1484,6 +1626,8 @@ void noctWorldDestroy(noctWorld *w)
         free(w->obj[i].spans);
     free(w->obj);
     free(w->free_slots);
+    free(w->prev);
+    free(w->prevvel);
     free(w->mark);
     free(w->box);
     free(w->home);
@@ -1571,8 +1715,13 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
             uint32_t *gen = pos ? realloc(w->gen, cap * sizeof *gen) : NULL;
             if (gen != NULL)
                 w->gen = gen;
+            uint32_t *fs = gen ? realloc(w->free_slots, cap * sizeof *fs) : NULL;
+            if (fs != NULL) {
+                w->free_slots = fs;
+                w->capfree = cap;
+            }
             /* aligned, so not realloc */
-            noct_box_slot *slots = gen ? aligned_alloc(64, cap * sizeof *slots) : NULL;
+            noct_box_slot *slots = fs ? aligned_alloc(64, cap * sizeof *slots) : NULL;
             if (slots == NULL)
                 return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
             if (w->nslots > 0)
@@ -1590,6 +1739,8 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     o->mesh = w->mesh[slot] = mesh;
     memcpy(o->mlo, mesh->lo, sizeof o->mlo);
     memcpy(o->mhi, mesh->hi, sizeof o->mhi);
+    o->ext = noct_max(noct_max(mesh->hi[0] - mesh->lo[0], mesh->hi[1] - mesh->lo[1]),
+                      mesh->hi[2] - mesh->lo[2]);
     forget_home(w, slot);
     o->speed = speed;
     /* A unit direction is used as given: velocity = speed * d, exactly. */
@@ -1615,10 +1766,24 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     noctStatus st;
     if (w->root == NULL || !inside_root(w, &w->box[slot]))
         st = rebuild(w, w->root ? 2 * cell_of(w->root)->size : 0);
-    else
-        st = insert_below(w, w->root, slot, false) ? NOCT_OK : NOCT_ERR_NOMEM;
-    if (st != NOCT_OK)
+    else if (!insert_below(w, w->root, slot, false, true)) {
+        st = NOCT_ERR_NOMEM;
+        drop_tree(w); /* a split may have failed halfway */
+    } else
+        st = NOCT_OK;
+    if (st != NOCT_OK) {
+        /* Not added: the tree, torn down with its spans, is owed to the
+         * next step, and the slot is free again. */
+        o->alive = false;
+        --w->alive;
+        w->moving -= speed > 0;
+        NOCT_INVARIANT(w->nfree < w->capfree);
+        w->free_slots[w->nfree++] = slot;
+        w->tree_owed = w->alive > 0;
+        id->index = 0;
+        id->generation = 0;
         return noct_fail(err, st, -1, 0, "out of memory");
+    }
     return NOCT_OK;
 }
 
@@ -1628,16 +1793,15 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
     object *o = lookup(w, id);
     if (o == NULL)
         return NOCT_ERR_INVALID;
+    /* Nothing below allocates (try_merge, free_slots' room was made
+     * with the slot's), so a removal is whole. */
     while (o->nspans > 0)
-        if (!leaf_remove(w, o->spans[0], id.index))
-            return NOCT_ERR_NOMEM;
+        leaf_remove_at(w, o->spans[0].leaf, o->spans[0].at);
     o->alive = false;
     --w->alive;
     w->moving -= o->speed > 0;
     w->movers_stale = w->movers_stale || o->speed > 0;
-    uint32_t cap = w->nfree;
-    if (!grow_array((void **)&w->free_slots, &cap, w->nfree + 1, sizeof *w->free_slots))
-        return NOCT_ERR_NOMEM;
+    NOCT_INVARIANT(w->nfree < w->capfree);
     w->free_slots[w->nfree++] = id.index;
     /* Drop its pairs from the lists a caller may read. */
     pair_list *lists[2] = {&w->colliding, &w->previous};
@@ -1674,6 +1838,7 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
     aabb *box = w->box;
     const home_block *home = w->home;
     double(*pos)[3] = w->pos;
+    double(*prev)[3] = w->prev, (*prevvel)[3] = w->prevvel;
     const uint32_t *movers = w->movers;
     uint32_t *slow = w->slow;
     const uint32_t nm = w->nmovers;
@@ -1685,6 +1850,10 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
         double *p = pos[i];
         const double x = p[0] + o->vel[0] * fraction, y = p[1] + o->vel[1] * fraction,
                      z = p[2] + o->vel[2] * fraction;
+        /* kept until the step is through (roll_back) */
+        memcpy(prev[m], p, sizeof prev[m]);
+        if (walls)
+            memcpy(prevvel[m], o->vel, sizeof prevvel[m]);
         p[0] = x;
         p[1] = y;
         p[2] = z;
@@ -1723,6 +1892,62 @@ static bool movers_escaped(const noctWorld *w)
     return false;
 }
 
+/*
+ * After a stage of a (sub-)step failed: the movers go back to where they
+ * were before its motion (positions, velocities the walls turned, boxes),
+ * the colliding list to the last one completed, and a tree that
+ * maintenance may have changed halfway is torn down, to be built again
+ * by the next step. So a failed step leaves no object moved and no
+ * structure half-changed.
+ */
+static void roll_back(noctWorld *w, bool moved, bool tree_touched)
+{
+    if (moved) {
+        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        for (uint32_t m = 0; m < w->nmovers; ++m) {
+            const uint32_t i = w->movers[m];
+            memcpy(w->pos[i], w->prev[m], sizeof w->pos[i]);
+            if (walls)
+                memcpy(w->obj[i].vel, w->prevvel[m], sizeof w->obj[i].vel);
+            place_box(&w->obj[i], w->pos[i], &w->box[i]);
+            forget_home(w, i);
+        }
+    }
+    if (tree_touched && w->root != NULL)
+        drop_tree(w);
+}
+
+/*
+ * Is the root far larger than its objects need? When all of them lie in
+ * one grandchild of the root (every other child and grandchild is an
+ * empty leaf: a split node always holds objects, try_merge sees to it),
+ * a rebuild fits a root at most half as large. A rebuilt root is less
+ * than four times the objects' extent, so it does not fit them in one of
+ * its grandchildren again until they draw together: the hysteresis that
+ * keeps an object going to and fro from rebuilding the tree every step.
+ */
+static bool root_too_large(const noctWorld *w)
+{
+    const octNode *n = w->root;
+    for (int level = 0; level < 2; ++level) {
+        if (!NOCT_NODE_IS_SPLIT(n))
+            return false;
+        const octNode *only = NULL;
+        for (int i = 0; i < 8; ++i) {
+            const octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
+            if (!NOCT_NODE_IS_SPLIT(k) && cell_of(k)->count == 0)
+                continue;
+            if (only != NULL)
+                return false;
+            only = k;
+        }
+        if (only == NULL)
+            return false;
+        n = only;
+    }
+    return true;
+}
+
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
 static noctStatus substep(noctWorld *w, double fraction, noctError *err)
 {
@@ -1739,9 +1964,12 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             w->def.maintenance == NOCT_MAINTAIN_REBUILD
                 ? (walls ? move(w, fraction, true, false) : move(w, fraction, false, false))
                 : (walls ? move(w, fraction, true, true) : move(w, fraction, false, true));
-        if (far != UINT32_MAX)
+        if (far != UINT32_MAX) {
+            roll_back(w, true, false);
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
-                             "object %u moved beyond %g", far, NOCT_MAX_COORDINATE);
+                             "object %u would move beyond %g; no object moved", far,
+                             NOCT_MAX_COORDINATE);
+        }
         w->c.moved += w->nmovers;
         /* |velocity| is the speed within 1e-9; a placed box moves by it
          * and a few roundings of the root's coordinates. */
@@ -1765,10 +1993,18 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             st = maintain(w, &escaped);
         if (st == NOCT_OK && (escaped || w->def.maintenance == NOCT_MAINTAIN_REBUILD))
             st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
+        else if (st == NOCT_OK && root_too_large(w))
+            st = rebuild(w, 0);
+        if (st == NOCT_OK && w->merge_owed) {
+            w->merge_owed = false;
+            merge_all(w, w->root);
+        }
         w->c.seconds_maintenance += seconds() - t1;
-        if (st != NOCT_OK)
-            return noct_fail(err, st, -1, 0, "octree maintenance: %s",
+        if (st != NOCT_OK) {
+            roll_back(w, true, true);
+            return noct_fail(err, st, -1, 0, "octree maintenance: %s; no object moved",
                              noctStatusString(st));
+        }
     }
     double t2 = seconds();
     pair_list tmp = w->previous;
@@ -1786,17 +2022,27 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         st = NOCT_ERR_NOMEM;
     if (st == NOCT_OK)
         st = narrow(w);
-    if (st != NOCT_OK)
-        return noct_fail(err, st, -1, 0, "pair search: %s", noctStatusString(st));
-    sort_partners(&w->colliding);
+    size_t from_began = w->began.n, from_ended = w->ended.n;
+    if (st == NOCT_OK)
+        sort_partners(&w->colliding);
+    if (st == NOCT_OK && (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)))
+        st = diff_events(w);
+    if (st != NOCT_OK) {
+        /* The search's near pairs and budgets may be half made: the tree
+         * goes too. */
+        tmp = w->colliding;
+        w->colliding = w->previous;
+        w->previous = tmp;
+        w->began.n = from_began;
+        w->ended.n = from_ended;
+        roll_back(w, moving, true);
+        return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
+                         noctStatusString(st));
+    }
     w->c.colliding_pairs += w->colliding.n;
     double t3 = seconds();
     w->c.seconds_pairs += t3 - t2;
     if (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)) {
-        size_t from_began = w->began.n;
-        st = diff_events(w);
-        if (st != NOCT_OK)
-            return noct_fail(err, st, -1, 0, "events: out of memory");
         if (w->def.effects & NOCT_EFFECT_RESPONSE) {
             ++w->epoch;
             for (size_t i = from_began; i < w->began.n; ++i) {
@@ -1816,20 +2062,56 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     return NOCT_OK;
 }
 
+/* The moving object that moves farthest for its size, and how far:
+ * speed over the smallest extent of its mesh's box. */
+static double step_ratio(const noctWorld *w, uint32_t *which)
+{
+    double worst = 0;
+    *which = UINT32_MAX;
+    for (uint32_t i = 0; i < w->nslots; ++i) {
+        const object *o = &w->obj[i];
+        if (!o->alive || o->speed == 0)
+            continue;
+        const noctMesh *m = o->mesh;
+        double extent = noct_min(noct_min(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]),
+                                 m->hi[2] - m->lo[2]);
+        double r = o->speed / extent;
+        if (r > worst) {
+            worst = r;
+            *which = i;
+        }
+    }
+    return worst;
+}
+
 noctStatus noctWorldStep(noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
-    ++w->c.steps;
     w->began.n = w->ended.n = 0;
-    int k = 1;
-    if ((w->def.effects & NOCT_EFFECT_SUBSTEP) && (w->def.effects & NOCT_EFFECT_MOTION)) {
-        double ratio = noctWorldMaxStepRatio(w);
-        /* Each sub-step moves every object at most half its smallest size. */
-        k = ratio > 0.5 ? (int)noct_min(ceil(2 * ratio), 1 << 20) : 1;
-        w->c.substeps += (uint64_t)k;
+    if (w->tree_owed) {
+        noctStatus st = rebuild(w, 0);
+        if (st != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "rebuilding the octree: %s",
+                             noctStatusString(st));
     }
-    for (int i = 0; i < k; ++i) {
-        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / k, err);
+    uint64_t k = 1;
+    if ((w->def.effects & NOCT_EFFECT_SUBSTEP) && (w->def.effects & NOCT_EFFECT_MOTION)) {
+        uint32_t which;
+        const double ratio = step_ratio(w, &which);
+        /* Each sub-step moves every object at most half its smallest size. */
+        if (ratio > 0.5) {
+            if (!(2 * ratio <= (double)NOCT_MAX_SUBSTEPS))
+                return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)which, 0,
+                                 "object %u moves %g times its smallest size a step; "
+                                 "sub-steps of half its size would be more than %u",
+                                 which, ratio, (unsigned)NOCT_MAX_SUBSTEPS);
+            k = (uint64_t)ceil(2 * ratio);
+        }
+        w->c.substeps += k;
+    }
+    ++w->c.steps;
+    for (uint64_t i = 0; i < k; ++i) {
+        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, err);
         if (st != NOCT_OK)
             return st;
     }
@@ -1887,17 +2169,8 @@ void noctWorldGetCounters(const noctWorld *w, noctWorldCounters *counters)
 double noctWorldMaxStepRatio(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);
-    double worst = 0;
-    for (uint32_t i = 0; i < w->nslots; ++i) {
-        const object *o = &w->obj[i];
-        if (!o->alive || o->speed == 0)
-            continue;
-        const noctMesh *m = o->mesh;
-        double extent = noct_min(noct_min(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]),
-                                 m->hi[2] - m->lo[2]);
-        worst = noct_max(worst, o->speed / extent);
-    }
-    return worst;
+    uint32_t which;
+    return step_ratio(w, &which);
 }
 
 octNode *noctWorldRoot(const noctWorld *w)
@@ -2036,10 +2309,17 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
 
 /* ---- validation walk ----------------------------------------------------------- */
 
-#define BAD(...) noct_fail(err, NOCT_ERR_NUMERIC, -1, 0, __VA_ARGS__)
+#define BAD(...) noct_fail(err, NOCT_ERR_INVARIANT, -1, 0, __VA_ARGS__)
 
-static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
-                                noctError *err)
+/* The walk's scratch: per object, the leaves that list it, and the last
+ * leaf (numbered as met) that did, to find an object listed twice. */
+typedef struct walk {
+    size_t *refs;
+    size_t *seen;
+    size_t leaves;
+} walk;
+
+static noctStatus validate_node(const noctWorld *w, octNode *n, walk *v, noctError *err)
 {
     const cell *c = cell_of(n);
     if (c == NULL)
@@ -2051,6 +2331,8 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
             const cell *kc = cell_of(k);
+            if (kc == NULL)
+                return BAD("a node has no cell");
             if (kc->size != c->size / 2 ||
                 kc->lo[0] != c->lo[0] + ((i & 4) ? c->size / 2 : 0) ||
                 kc->lo[1] != c->lo[1] + ((i & 2) ? c->size / 2 : 0) ||
@@ -2058,55 +2340,55 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, size_t *refs,
                 return BAD("child %d's cell does not match its parent's", i);
             if (NOCT_NODE_PARENT(k) != n || octGeneration(k) != octGeneration(n) + 1)
                 return BAD("child %d's links are wrong", i);
-            noctStatus st = validate_node(w, k, refs, err);
+            noctStatus st = validate_node(w, k, v, err);
             if (st != NOCT_OK)
                 return st;
             all_leaves = all_leaves && !NOCT_NODE_IS_SPLIT(k);
         }
-        if (all_leaves && w->def.maintenance == NOCT_MAINTAIN_INCREMENTAL) {
-            /* distinct objects among the 8 leaves */
-            uint32_t ids[8 * 64], n_ids = 0;
-            bool many = false;
-            for (int i = 0; i < 8 && !many; ++i) {
+        if (all_leaves && w->def.maintenance == NOCT_MAINTAIN_INCREMENTAL && !w->merge_owed &&
+            w->def.N != NOCT_N_EXHAUSTIVE) {
+            /* distinct objects among the 8 leaves, counted up to N + 1 */
+            ++v->leaves;
+            size_t distinct = 0;
+            for (int i = 0; i < 8 && distinct <= (size_t)w->def.N; ++i) {
                 const cell *kc = cell_of(NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
-                for (uint32_t j = 0; j < kc->count && !many; ++j) {
-                    bool seen = false;
-                    for (uint32_t q = 0; q < n_ids && !seen; ++q)
-                        seen = ids[q] == kc->objs[j];
-                    if (!seen) {
-                        if (n_ids == sizeof ids / sizeof *ids)
-                            many = true;
-                        else
-                            ids[n_ids++] = kc->objs[j];
+                for (uint32_t j = 0; j < kc->count; ++j)
+                    if (v->seen[kc->objs[j]] != v->leaves) {
+                        v->seen[kc->objs[j]] = v->leaves;
+                        ++distinct;
                     }
-                }
             }
-            if (!many && (int)n_ids <= w->def.N)
-                return BAD("siblings at generation %d hold %u distinct objects "
-                           "(N = %d) but were not merged", octGeneration(n) + 1, n_ids,
+            if (distinct <= (size_t)w->def.N)
+                return BAD("siblings at generation %d hold %zu distinct objects "
+                           "(N = %d) but were not merged", octGeneration(n) + 1, distinct,
                            w->def.N);
         }
         return NOCT_OK;
     }
-    if ((int)c->count > w->def.N && octGeneration(n) < w->def.max_depth)
-        return BAD("a leaf at generation %d holds %u objects (N = %d)", octGeneration(n),
-                   c->count, w->def.N);
+    ++v->leaves;
+    uint32_t small = 0;
     for (uint32_t j = 0; j < c->count; ++j) {
         uint32_t id = c->objs[j];
         if (id >= w->nslots || !w->obj[id].alive)
             return BAD("a leaf lists a dead object %u", id);
-        for (uint32_t q = 0; q < j; ++q)
-            if (c->objs[q] == id)
-                return BAD("a leaf lists object %u twice", id);
+        if (v->seen[id] == v->leaves)
+            return BAD("a leaf lists object %u twice", id);
+        v->seen[id] = v->leaves;
         if (!overlaps(&w->box[id], c))
             return BAD("object %u is in a leaf its box does not overlap", id);
-        bool spanned = false;
-        for (uint32_t s = 0; s < w->obj[id].nspans && !spanned; ++s)
-            spanned = w->obj[id].spans[s] == n;
-        if (!spanned)
-            return BAD("object %u is in a leaf missing from its spans", id);
-        ++refs[id];
+        const object *o = &w->obj[id];
+        if (c->back[j] >= o->nspans || o->spans[c->back[j]].leaf != n ||
+            o->spans[c->back[j]].at != j)
+            return BAD("object %u's entry for a leaf does not point back to it", id);
+        small += splits_for(o->ext, c->size);
+        ++v->refs[id];
     }
+    if (small != c->small)
+        return BAD("a leaf counts %u objects small enough to split for; they are %u",
+                   c->small, small);
+    if ((int)small > w->def.N && octGeneration(n) < w->def.max_depth)
+        return BAD("a leaf at generation %d holds %u objects it could split for (N = %d)",
+                   octGeneration(n), small, w->def.N);
     return NOCT_OK;
 }
 
@@ -2127,13 +2409,16 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
     if (w->root == NULL)
-        return w->alive == 0 ? NOCT_OK : BAD("objects but no tree");
+        return w->alive == 0 || w->tree_owed ? NOCT_OK : BAD("objects but no tree");
     if (NOCT_NODE_PARENT(w->root) != NULL || octGeneration(w->root) != 0)
         return BAD("the root is not a root");
-    size_t *refs = calloc(w->nslots ? w->nslots : 1, sizeof *refs);
-    if (refs == NULL)
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    noctStatus st = validate_node(w, w->root, refs, err);
+    const size_t n = w->nslots ? w->nslots : 1;
+    walk v = {calloc(n, sizeof *v.refs), calloc(n, sizeof *v.seen), 0};
+    noctStatus st = NOCT_OK;
+    if (v.refs == NULL || v.seen == NULL)
+        st = noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    if (st == NOCT_OK)
+        st = validate_node(w, w->root, &v, err);
     for (uint32_t i = 0; i < w->nslots && st == NOCT_OK; ++i) {
         const object *o = &w->obj[i];
         if (!o->alive)
@@ -2142,11 +2427,11 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
         const home_block *h = &w->home[i];
         if (!inside_root(w, b))
             st = BAD("object %u is outside the root", i);
-        else if (refs[i] != o->nspans)
-            st = BAD("object %u: %zu leaves list it, its spans count %u", i, refs[i],
+        else if (v.refs[i] != o->nspans)
+            st = BAD("object %u: %zu leaves list it, its spans count %u", i, v.refs[i],
                      o->nspans);
-        else if (overlapped_leaves(b, w->root) != refs[i])
-            st = BAD("object %u is in %zu leaves but its box overlaps %zu", i, refs[i],
+        else if (overlapped_leaves(b, w->root) != v.refs[i])
+            st = BAD("object %u is in %zu leaves but its box overlaps %zu", i, v.refs[i],
                      overlapped_leaves(b, w->root));
         else if (isfinite(h->lo[0])) {
             home_block now;
@@ -2154,6 +2439,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                 st = BAD("object %u's home block is not that of its leaves", i);
         }
     }
-    free(refs);
+    free(v.refs);
+    free(v.seen);
     return st;
 }

@@ -712,8 +712,17 @@ START_TEST(runaway_object_is_an_error)
             noctStatus st = noctWorldStep(w, &err);
             if (x > NOCT_MAX_COORDINATE) {
                 ck_assert_int_eq(st, NOCT_ERR_TOO_LARGE);
-                ck_assert_msg(strstr(err.message, "object 2 moved beyond") != NULL, "%s",
+                ck_assert_msg(strstr(err.message, "object 2 would move beyond") != NULL, "%s",
                               err.message);
+                /* Rolled back: the object is where the last step left it,
+                 * the world is whole, and a retry fails the same way. */
+                double at[3];
+                ck_assert_int_eq(noctWorldObject(w, id, at, NULL), NOCT_OK);
+                ck_assert(at[0] == x - speed && at[1] == 0 && at[2] == 0);
+                validate_ok(w);
+                ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_ERR_TOO_LARGE);
+                ck_assert_int_eq(noctWorldObject(w, id, at, NULL), NOCT_OK);
+                ck_assert(at[0] == x - speed);
                 break;
             }
             ck_assert_msg(st == NOCT_OK, "step: %s", err.message);

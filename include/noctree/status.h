@@ -38,6 +38,10 @@ typedef enum noctStatus {
     NOCT_ERR_PARSE,       /**< A file does not follow its format. */
     NOCT_ERR_IO,          /**< A file could not be opened or read. */
     NOCT_ERR_NUMERIC,     /**< A numerical method failed (see the message). */
+    NOCT_ERR_INVARIANT,   /**< A validation walk found a structure broken: a
+                               bug in the library, or memory the program
+                               overwrote. Only the validation functions
+                               return it. */
     NOCT_STATUS_COUNT     /**< Number of status codes; not a status. */
 } noctStatus;
 

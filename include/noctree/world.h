@@ -102,6 +102,10 @@ typedef struct noctPair {
     noctObjectId b; /**< The object with the larger index. */
 } noctPair;
 
+/** Most sub-steps one step may take with #NOCT_EFFECT_SUBSTEP: a step
+ *  that would need more fails with #NOCT_ERR_TOO_LARGE, naming the object. */
+#define NOCT_MAX_SUBSTEPS (1u << 20)
+
 /** N that never splits the root: the exhaustive algorithm ("N = big"). */
 #define NOCT_N_EXHAUSTIVE 0x7fffffff
 
