@@ -141,6 +141,7 @@ struct noctWorld {
     uint32_t nfree, capfree;
     bool merge_owed;       /* a merge lacked memory: merge_all() owed */
     bool tree_owed;        /* a failure tore the tree down: rebuild owed */
+    uint64_t shrink_from;  /* the first sub-step the root may shrink at */
     double (*prev)[3];     /* per mover: its position before the motion */
     double (*prevvel)[3];  /* and its velocity, with the walls */
     uint32_t capprev;
@@ -1667,9 +1668,8 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     NOCT_REQUIRE(w != NULL && mesh != NULL && position != NULL && direction != NULL);
     NOCT_REQUIRE(id != NULL);
     for (int k = 0; k < 3; ++k)
-        if (!isfinite(position[k]) || !isfinite(direction[k]))
-            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
-                             "object position or direction is not finite");
+        if (!isfinite(position[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "object position is not finite");
     if (!isfinite(speed))
         return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "object speed is not finite");
     if (speed < 0)
@@ -1679,11 +1679,17 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
         if (fabs(position[k]) > NOCT_MAX_COORDINATE)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
                              "object position beyond %g", NOCT_MAX_COORDINATE);
-    double len = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-                      direction[2] * direction[2]);
-    if (speed > 0 && !(len > 0 && isfinite(len)))
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "a moving object needs a non-zero direction");
+    /* A static object's direction is ignored, whatever it holds. */
+    double unit[3] = {0, 0, 0};
+    if (speed > 0) {
+        for (int k = 0; k < 3; ++k)
+            if (!isfinite(direction[k]))
+                return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                                 "object direction is not finite");
+        if (!noct_unit_direction(direction, unit))
+            return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                             "a moving object needs a non-zero direction");
+    }
     uint32_t slot;
     if (w->nfree > 0) {
         slot = w->free_slots[--w->nfree];
@@ -1743,12 +1749,9 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
                       mesh->hi[2] - mesh->lo[2]);
     forget_home(w, slot);
     o->speed = speed;
-    /* A unit direction is used as given: velocity = speed * d, exactly. */
-    double scale = fabs(len - 1) <= 1e-9 ? 1 : 1 / len;
     for (int k = 0; k < 3; ++k) {
         w->pos[slot][k] = position[k];
-        o->vel[k] = speed > 0 ? speed * (scale == 1 ? direction[k] : direction[k] * scale)
-                              : 0;
+        o->vel[k] = speed * unit[k];
     }
     w->gen[slot] = w->gen[slot] + 1 ? w->gen[slot] + 1 : 1;
     o->alive = true;
@@ -1948,6 +1951,12 @@ static bool root_too_large(const noctWorld *w)
     return true;
 }
 
+/* Sub-steps after the root last grew before it may shrink: a group of
+ * objects drifting away grows the root (twice as large, the objects near
+ * its corner) and would otherwise shrink it again at once, to grow it a
+ * few steps later; so it rebuilds at most about once in this many. */
+#define SHRINK_AFTER 64
+
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
 static noctStatus substep(noctWorld *w, double fraction, noctError *err)
 {
@@ -1993,18 +2002,23 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             st = maintain(w, &escaped);
         if (st == NOCT_OK && (escaped || w->def.maintenance == NOCT_MAINTAIN_REBUILD))
             st = rebuild(w, escaped ? 2 * cell_of(w->root)->size : 0);
-        else if (st == NOCT_OK && root_too_large(w))
-            st = rebuild(w, 0);
-        if (st == NOCT_OK && w->merge_owed) {
-            w->merge_owed = false;
-            merge_all(w, w->root);
-        }
+        if (escaped)
+            w->shrink_from = w->step + SHRINK_AFTER;
         w->c.seconds_maintenance += seconds() - t1;
-        if (st != NOCT_OK) {
-            roll_back(w, true, true);
-            return noct_fail(err, st, -1, 0, "octree maintenance: %s; no object moved",
-                             noctStatusString(st));
-        }
+    }
+    /* Objects that went far and came back, or the far ones removed: the
+     * root shrinks; merges that lacked memory are made. */
+    if (st == NOCT_OK && w->root != NULL && w->step >= w->shrink_from &&
+        root_too_large(w))
+        st = rebuild(w, 0);
+    if (st == NOCT_OK && w->root != NULL && w->merge_owed) {
+        w->merge_owed = false;
+        merge_all(w, w->root);
+    }
+    if (st != NOCT_OK) {
+        roll_back(w, moving, true);
+        return noct_fail(err, st, -1, 0, "octree maintenance: %s; no object moved",
+                         noctStatusString(st));
     }
     double t2 = seconds();
     pair_list tmp = w->previous;

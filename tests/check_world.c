@@ -779,6 +779,282 @@ START_TEST(substeps_stop_tunnelling)
 }
 END_TEST
 
+/* ---- bounded work whatever the overlap --------------------------------------- */
+
+/* Walk the tree: the number of nodes, and per object (by index, below
+ * max_index) the number of leaves that list it. */
+static size_t count_tree(noctWorld *w, octNode *n, size_t *spans, size_t max_index)
+{
+    if (octIsSplit(n)) {
+        size_t nodes = 1;
+        for (int i = 0; i < 8; ++i)
+            nodes += count_tree(w, octChild(n, (octDirection)(OCT_LDB + i)), spans, max_index);
+        return nodes;
+    }
+    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
+    noctObjectId *got = malloc((count + 1) * sizeof *got);
+    ck_assert(got != NULL);
+    noctWorldCell(w, n, NULL, NULL, got, count);
+    for (size_t j = 0; j < count; ++j) {
+        ck_assert_uint_lt(got[j].index, max_index);
+        ++spans[got[j].index];
+    }
+    free(got);
+    return 1;
+}
+
+/* The largest number of leaves any object is in; the tree's nodes in
+ * *nodes. */
+static size_t most_spans(noctWorld *w, size_t max_index, size_t *nodes)
+{
+    size_t *spans = calloc(max_index, sizeof *spans), most = 0;
+    ck_assert(spans != NULL);
+    *nodes = count_tree(w, noctWorldRoot(w), spans, max_index);
+    for (size_t i = 0; i < max_index; ++i)
+        most = spans[i] > most ? spans[i] : most;
+    free(spans);
+    return most;
+}
+
+/* Objects stacked at one point, two cubes sharing a face and three boxes
+ * moving through the stack, at the defaults, at N = 1 and at max-depth
+ * 40: leaves are never split for objects larger than their children, so
+ * the tree stays small and every unit box is in at most 27 leaves (it
+ * overlaps at most 3 of the leaves of at least its size on each axis).
+ * Before the rule, the defaults hung at the 11th coincident box and N = 1
+ * split the shared face down to the maximum depth. Colliding pairs
+ * against brute force at every step. */
+START_TEST(stacks_stop_splitting)
+{
+    static const int config[][2] = {{10, 10}, {1, 12}, {1, 40}, {3, 40}};
+    const int N = config[_i][0], depth = config[_i][1];
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(N, depth, NOCT_MAINTAIN_INCREMENTAL);
+    enum { STACK = 60, n = STACK + 5 };
+    noctObjectId ids[n];
+    const noctMesh *mesh_of[n];
+    const double zero[3] = {0, 0, 0};
+    for (int i = 0; i < n; ++i) {
+        const double stack[3] = {0.3, 0.3, 0.3}, face_a[3] = {10, 0, 0},
+                     face_b[3] = {11, 0, 0};
+        const double mover[3] = {-6.0 - i % 3, 0.1 * (i % 3), 0.2};
+        const double right[3] = {1, 0, 0};
+        const double *at = i < STACK ? stack : i == STACK ? face_a : i == STACK + 1 ? face_b
+                                                                                    : mover;
+        const double speed = i < STACK + 2 ? 0 : 0.25;
+        ck_assert_int_eq(noctWorldAdd(w, cube, at, speed ? right : zero, speed, &ids[i], NULL),
+                         NOCT_OK);
+        mesh_of[i] = cube;
+    }
+    for (int s = 0; s < 60; ++s) {
+        step_ok(w);
+        validate_ok(w);
+        expect_brute_force(w, ids, mesh_of, n, s);
+        size_t nodes, most = most_spans(w, n, &nodes);
+        ck_assert_uint_le(most, 27);
+        ck_assert_uint_le(nodes, 2000);
+    }
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* Many coincident objects at N = 1 and max-depth 40: each is added into
+ * the few leaves of its size (no split can part them), and removed again,
+ * leaving an empty, valid world; fewer, stepped, all collide. */
+START_TEST(coincident_objects_add_and_remove)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(1, 40, NOCT_MAINTAIN_INCREMENTAL);
+    enum { n = 20000 };
+    noctObjectId *ids = malloc(n * sizeof *ids);
+    ck_assert(ids != NULL);
+    const double at[3] = {0.25, 0.25, 0.25}, zero[3] = {0, 0, 0};
+    for (int i = 0; i < n; ++i)
+        ck_assert_int_eq(noctWorldAdd(w, cube, at, zero, 0, &ids[i], NULL), NOCT_OK);
+    validate_ok(w);
+    size_t nodes, most = most_spans(w, n, &nodes);
+    ck_assert_uint_le(most, 27);
+    ck_assert_uint_le(nodes, 1 + 8 * 8);
+    for (int i = 0; i < n; ++i)
+        ck_assert_int_eq(noctWorldRemove(w, ids[i]), NOCT_OK);
+    validate_ok(w);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 0);
+    /* fewer, stepped: every pair collides */
+    enum { m = 1200 };
+    for (int i = 0; i < m; ++i)
+        ck_assert_int_eq(noctWorldAdd(w, cube, at, zero, 0, &ids[i], NULL), NOCT_OK);
+    step_ok(w);
+    validate_ok(w);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldColliding(w, &p), (size_t)m * (m - 1) / 2);
+    free(ids);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* A k x k x k pile of unit cubes, each touching its neighbours (closed
+ * solids: a shared face, edge or corner counts), at N = 1 and max-depth
+ * 40: ((3k - 2)^3 - k^3) / 2 colliding pairs, every cube in at most 27
+ * leaves. */
+START_TEST(touching_pile)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(1, 40, NOCT_MAINTAIN_INCREMENTAL);
+    enum { k = 7, n = k * k * k };
+    const double zero[3] = {0, 0, 0};
+    noctObjectId id;
+    for (int i = 0; i < n; ++i) {
+        const double at[3] = {i % k + 0.5, i / k % k + 0.5, i / (k * k) + 0.5};
+        ck_assert_int_eq(noctWorldAdd(w, cube, at, zero, 0, &id, NULL), NOCT_OK);
+    }
+    step_ok(w);
+    validate_ok(w);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldColliding(w, &p),
+                      ((3 * k - 2) * (3 * k - 2) * (3 * k - 2) - n) / 2);
+    size_t nodes, most = most_spans(w, n, &nodes);
+    ck_assert_uint_le(most, 27);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* An object far away grows the root; once it is gone the root shrinks
+ * back around the others at the next step, so they are in leaves of
+ * their own size again rather than in one leaf of the maximum depth. */
+START_TEST(root_shrinks_back)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(10, 10, NOCT_MAINTAIN_INCREMENTAL);
+    const double zero[3] = {0, 0, 0};
+    noctObjectId id;
+    for (int i = 0; i < 200; ++i) {
+        const double at[3] = {3.0 * (i % 10), 3.0 * (i / 10), 0};
+        ck_assert_int_eq(noctWorldAdd(w, cube, at, zero, 0, &id, NULL), NOCT_OK);
+    }
+    double lo[3], size_before, size;
+    noctWorldCell(w, noctWorldRoot(w), lo, &size_before, NULL, 0);
+    ck_assert(size_before < 1000);
+    const double far[3] = {1e50, 0, 0};
+    ck_assert_int_eq(noctWorldAdd(w, cube, far, zero, 0, &id, NULL), NOCT_OK);
+    step_ok(w);
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    ck_assert(size > 1e50);
+    ck_assert_int_eq(noctWorldRemove(w, id), NOCT_OK);
+    step_ok(w);
+    validate_ok(w);
+    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    ck_assert_msg(size == size_before, "root %g, was %g", size, size_before);
+    /* and it takes part again: the leaves are small */
+    size_t nodes, most = most_spans(w, 200, &nodes);
+    ck_assert_uint_le(most, 8);
+    ck_assert_uint_gt(nodes, 8);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* Sub-stepping has a documented cap: a step that would need more than
+ * NOCT_MAX_SUBSTEPS fails, naming the object, and moves nothing (before,
+ * the cap was silent and the cubes passed through each other). Just
+ * under the cap the cubes meet. */
+START_TEST(substep_cap_is_a_status)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    for (int fast = 0; fast < 2; ++fast) {
+        noctWorldDef def = noctDefaultWorldDef();
+        def.effects |= NOCT_EFFECT_SUBSTEP;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        const double speed = fast ? 1e7 : 2e5;
+        const double pa[3] = {-speed, 0, 0}, pb[3] = {speed + 0.5, 0, 0};
+        const double right[3] = {1, 0, 0}, left[3] = {-1, 0, 0};
+        noctObjectId a, b;
+        ck_assert_int_eq(noctWorldAdd(w, cube, pa, right, speed, &a, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldAdd(w, cube, pb, left, speed, &b, NULL), NOCT_OK);
+        noctError err;
+        noctStatus st = noctWorldStep(w, &err);
+        double pos[3];
+        ck_assert_int_eq(noctWorldObject(w, a, pos, NULL), NOCT_OK);
+        if (fast) {
+            ck_assert_int_eq(st, NOCT_ERR_TOO_LARGE);
+            ck_assert_msg(strstr(err.message, "object 0 moves") != NULL, "%s", err.message);
+            ck_assert(pos[0] == -speed);
+        } else {
+            ck_assert_msg(st == NOCT_OK, "%s", err.message);
+            const noctPair *p;
+            size_t began = noctWorldBegan(w, &p);
+            ck_assert_uint_eq(began, 1);
+        }
+        noctWorldDestroy(w);
+    }
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* Directions: a static object's is ignored (NaN included); a moving
+ * one's is any finite non-zero vector, however large or small. */
+START_TEST(directions_whole_range)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(10, 10, NOCT_MAINTAIN_INCREMENTAL);
+    const double at[3] = {0, 0, 0}, nan3[3] = {NAN, 0, 0};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, at, nan3, 0, &id, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAdd(w, cube, at, nan3, 1, &id, NULL), NOCT_ERR_NONFINITE);
+    static const double dirs[][3] = {{1e200, 0, 0},  {1e-200, 0, 0}, {4.9e-324, 0, 0},
+                                     {3e300, 4e300, 0}, {3e-310, 4e-310, 0}, {0, 0, -1e308}};
+    static const double unit[][3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0},
+                                     {0.6, 0.8, 0}, {0.6, 0.8, 0}, {0, 0, -1}};
+    for (size_t i = 0; i < sizeof dirs / sizeof *dirs; ++i) {
+        const double p[3] = {10.0 * (double)(i + 1), 0, 0};
+        noctError err;
+        ck_assert_msg(noctWorldAdd(w, cube, p, dirs[i], 1, &id, &err) == NOCT_OK, "%zu: %s", i,
+                      err.message);
+        double d[3];
+        ck_assert_int_eq(noctWorldObject(w, id, NULL, d), NOCT_OK);
+        for (int k = 0; k < 3; ++k)
+            ck_assert_msg(fabs(d[k] - unit[i][k]) < 1e-15, "%zu: %g", i, d[k]);
+    }
+    const double zero[3] = {0, 0, 0};
+    ck_assert_int_eq(noctWorldAdd(w, cube, at, zero, 1, &id, NULL), NOCT_ERR_INVALID);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* A broken structure is reported as such (NOCT_ERR_INVARIANT), not as a
+ * numerical failure. The test breaks one on purpose: the root's cell. */
+START_TEST(validate_reports_invariant)
+{
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
+    noctWorld *w = make_world(10, 10, NOCT_MAINTAIN_INCREMENTAL);
+    const double at[3] = {0, 0, 0};
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldAdd(w, cube, at, at, 0, &id, NULL), NOCT_OK);
+    validate_ok(w);
+    octNode *root = noctWorldRoot(w);
+    void *cell = octSwapData(root, NULL);
+    noctError err;
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_ERR_INVARIANT);
+    ck_assert_int_eq(err.status, NOCT_ERR_INVARIANT);
+    ck_assert_str_eq(noctStatusString(NOCT_ERR_INVARIANT), "internal invariant broken");
+    octSwapData(root, cell);
+    validate_ok(w);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* ---- handles and bad input -------------------------------------------------- */
 
 START_TEST(handles_and_bad_input)
@@ -1082,6 +1358,17 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 2, 8);
     suite_add_tcase(s, tc);
+    tc = tcase_create("bounded work");
+    tcase_set_timeout(tc, 120);
+    tcase_add_loop_test(tc, stacks_stop_splitting, 0, 4);
+    tcase_add_test(tc, coincident_objects_add_and_remove);
+    tcase_add_test(tc, touching_pile);
+    tcase_add_test(tc, root_shrinks_back);
+    tcase_add_test(tc, substep_cap_is_a_status);
+    tcase_add_test(tc, directions_whole_range);
+    tcase_add_test(tc, validate_reports_invariant);
+    suite_add_tcase(s, tc);
+
     tc = tcase_create("effects and handles");
     tcase_add_test(tc, effects_off_cost_nothing);
     tcase_add_test(tc, straddlers_take_the_fast_path);
