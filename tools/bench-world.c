@@ -10,10 +10,17 @@
  * out above --max-exhaustive objects (default 2000): they cost n^2 per
  * step, and no figure is extrapolated here. Writes bench-world.csv.
  *
- * Usage: bench-world [--quick] [--steps S] [--max-exhaustive N] [SCENE...]
+ * Usage: bench-world [--quick] [--overlap] [--steps S] [--max-exhaustive N]
+ *                    [SCENE...]
  *   SCENE is planes:K or gas:N (default planes:10 planes:30 planes:100
  *   planes:300 gas:10000 gas:100000, which takes several minutes; rows
  *   are printed as they finish; --quick: planes:3 gas:200, 20 steps).
+ *   --overlap: instead, the overlap workloads of world.h's overlap rule
+ *   (coincident objects added, 10^5 and 10^6; coincident objects added
+ *   and stepped, 10^3 and 10^4, whose every pair collides; a pile of
+ *   touching cubes, 10^4 and 10^5) at the defaults, at N = 1 and at
+ *   max-depth 40, with time and peak memory; with --quick, small sizes
+ *   that only check it runs.
  */
 #define _DEFAULT_SOURCE /* wait4(2): the peak memory of one child */
 #include <math.h>
@@ -103,14 +110,128 @@ static result run(const char *scene, int N, int steps)
     return r;
 }
 
+/* ---- overlap: bounded work whatever the objects share ------------------- */
+
+typedef struct overlap_result {
+    double add_s, step_s;
+    size_t objects, pairs;
+    int ok;
+} overlap_result;
+
+/* One overlap workload in a child process: n coincident unit boxes
+ * (kind 0, added only; kind 1, added and stepped) or a k x k x k pile of
+ * touching unit cubes (kind 2, n = k^3, added and stepped). */
+static overlap_result overlap_run(int kind, size_t n, int N, int depth)
+{
+    overlap_result r = {0};
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = N;
+    def.max_depth = depth;
+    noctMesh *cube = NULL;
+    noctWorld *w = NULL;
+    noctError err;
+    if (noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err) != NOCT_OK ||
+        noctWorldCreate(&def, &w, &err) != NOCT_OK) {
+        fprintf(stderr, "bench-world: %s\n", err.message);
+        return r;
+    }
+    size_t k = 1;
+    while (kind == 2 && (k + 1) * (k + 1) * (k + 1) <= n)
+        ++k;
+    if (kind == 2)
+        n = k * k * k;
+    const double zero[3] = {0, 0, 0};
+    double t0 = now();
+    for (size_t i = 0; i < n; ++i) {
+        const double at[3] = {kind == 2 ? (double)(i % k) : 0.25,
+                              kind == 2 ? (double)(i / k % k) : 0.25,
+                              kind == 2 ? (double)(i / (k * k)) : 0.25};
+        noctObjectId id;
+        if (noctWorldAdd(w, cube, at, zero, 0, &id, &err) != NOCT_OK) {
+            fprintf(stderr, "bench-world: add %zu: %s\n", i, err.message);
+            return r;
+        }
+    }
+    r.add_s = now() - t0;
+    r.objects = n;
+    if (kind > 0) {
+        t0 = now();
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            fprintf(stderr, "bench-world: step: %s\n", err.message);
+            return r;
+        }
+        r.step_s = now() - t0;
+        const noctPair *p;
+        r.pairs = noctWorldColliding(w, &p);
+    }
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+    r.ok = 1;
+    return r;
+}
+
+/* Print the overlap workloads at the defaults, at N = 1 and at
+ * max-depth 40, each at two sizes ten times apart: time and memory per
+ * object (plus pair) that stay flat from the smaller to the larger size
+ * are linear. */
+static int overlap_bench(bool quick)
+{
+    static const int configs[][2] = {{10, 10}, {1, 10}, {10, 40}};
+    static const char *names[] = {"coincident, added", "coincident, added+stepped",
+                                  "touching pile"};
+    const size_t sizes[3][2] = {{quick ? 1000 : 100000, quick ? 10000 : 1000000},
+                                {quick ? 100 : 1000, quick ? 300 : 10000},
+                                {quick ? 125 : 10000, quick ? 1000 : 100000}};
+    printf("\noverlap: work per object (and per colliding pair) at two sizes\n");
+    printf("%-26s %3s %5s %9s %11s %9s %9s %10s %12s\n", "workload", "N", "depth", "objects",
+           "pairs", "add s", "step s", "peak MiB", "ns/(obj+pr)");
+    for (int kind = 0; kind < 3; ++kind)
+        for (size_t c = 0; c < sizeof configs / sizeof *configs; ++c)
+            for (int z = 0; z < 2; ++z) {
+                int fds[2];
+                if (pipe(fds) != 0) {
+                    perror("bench-world: pipe");
+                    return EXIT_FAILURE;
+                }
+                fflush(stdout);
+                pid_t pid = fork();
+                if (pid == 0) {
+                    close(fds[0]);
+                    overlap_result r =
+                        overlap_run(kind, sizes[kind][z], configs[c][0], configs[c][1]);
+                    ssize_t wr = write(fds[1], &r, sizeof r);
+                    _exit(wr == (ssize_t)sizeof r ? 0 : 1);
+                }
+                close(fds[1]);
+                overlap_result r;
+                ssize_t got = read(fds[0], &r, sizeof r);
+                close(fds[0]);
+                int status;
+                struct rusage ru;
+                wait4(pid, &status, 0, &ru);
+                if (got != (ssize_t)sizeof r || !WIFEXITED(status) || !r.ok) {
+                    printf("%-26s %3d %5d   failed\n", names[kind], configs[c][0],
+                           configs[c][1]);
+                    return EXIT_FAILURE;
+                }
+                printf("%-26s %3d %5d %9zu %11zu %9.3f %9.3f %10.1f %12.1f\n", names[kind],
+                       configs[c][0], configs[c][1], r.objects, r.pairs, r.add_s, r.step_s,
+                       (double)ru.ru_maxrss / 1024,
+                       1e9 * (r.add_s + r.step_s) / (double)(r.objects + r.pairs));
+            }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int steps = 200, max_exhaustive = 2000, nscenes = 0;
     const char *scenes[32];
-    bool quick = false;
+    bool quick = false, overlap = false;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--quick") == 0)
             quick = true;
+        else if (strcmp(argv[i], "--overlap") == 0)
+            overlap = true;
         else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc)
             steps = atoi(argv[++i]);
         else if (strcmp(argv[i], "--max-exhaustive") == 0 && i + 1 < argc)
@@ -119,11 +240,13 @@ int main(int argc, char **argv)
                  nscenes < 32)
             scenes[nscenes++] = argv[i];
         else {
-            fprintf(stderr, "usage: bench-world [--quick] [--steps S] "
+            fprintf(stderr, "usage: bench-world [--quick] [--overlap] [--steps S] "
                             "[--max-exhaustive N] [planes:K | gas:N]...\n");
             return 2;
         }
     }
+    if (overlap)
+        return overlap_bench(quick);
     if (steps < 1 || steps > 100000) {
         fputs("bench-world: --steps must be 1 to 100000\n", stderr);
         return 2;

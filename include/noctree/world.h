@@ -31,11 +31,35 @@
  *
  * **The octree.** Objects are inserted into every leaf their bounding box
  * overlaps (closed boxes, cells closed on every side); a leaf splits when
- * its N+1st object arrives, unless it is at the maximum depth, and hands its
- * objects to the children they overlap. When an object leaves a leaf and
+ * its N+1st object small enough to be separated arrives (the overlap rule
+ * below), unless it is at the maximum depth, and hands its objects to the
+ * children they overlap. When an object leaves a leaf and
  * the leaf's siblings together hold N or fewer distinct objects, they merge
  * back into their parent. The root never loses an object: when a box would
- * leave it, the tree is rebuilt around a root twice as large.
+ * leave it, the tree is rebuilt around a root twice as large. When every
+ * object lies in one grandchild of the root (the far ones came back or
+ * were removed), the next step rebuilds the tree around a root at most
+ * half as large; after a growth, not for 64 sub-steps, so that objects
+ * going to and fro do not rebuild the tree at every step.
+ *
+ * **The overlap rule: bounded work whatever the objects share.** A leaf
+ * splits only for objects that a split can separate: it splits when more
+ * than N of its objects have boxes no longer, on any axis, than half the
+ * leaf's size (they fit in a child), and only below the maximum depth.
+ * Larger objects are listed in the leaf but do not count: objects that
+ * overlap (a stack at one point, a pile of touching boxes, faces shared)
+ * can never be parted by a split, and splitting for them would only
+ * multiply the leaves over their overlap down to the maximum depth. So:
+ * - every leaf below the maximum depth holds at most N objects smaller
+ *   than half its size, and so at most N^2/2 candidate pairs of them;
+ * - an object is in at most 27 leaves of its own size or larger, plus the
+ *   leaves that splits for smaller objects around it made;
+ * - adding an object costs the depth of the tree plus the leaves it
+ *   enters (no leaf is searched for it), and removing it from a leaf
+ *   costs O(1) plus any merge; a leaf's pairs are found by a sweep, so a
+ *   crowded leaf costs its objects times log of them plus its near pairs.
+ * Adding n coincident objects takes time and memory linear in n, and
+ * stepping them, linear in n plus their n(n-1)/2 colliding pairs.
  *
  * **Maintenance modes.** #NOCT_MAINTAIN_INCREMENTAL is the report's
  * section 2.4: for each moving object and each leaf it spans, a fast test
@@ -138,16 +162,14 @@ typedef enum noctMaintenance {
 
 /** @brief Parameters of a world; fill with noctDefaultWorldDef(). */
 typedef struct noctWorldDef {
-    int N;                  /**< Most objects per leaf (1 or more), or
-                                 #NOCT_N_EXHAUSTIVE. Default 10. */
+    int N;                  /**< Most objects per leaf that a split could
+                                 separate (1 or more; see "The octree"
+                                 above), or #NOCT_N_EXHAUSTIVE. Default 10. */
     int max_depth;          /**< Deepest leaf generation (1 to 40); leaves
-                                 there may hold more than N. Default 10.
-                                 N + 1 objects that overlap each other can
-                                 never be separated, so the leaves over
-                                 their overlap split down to this depth:
-                                 with a small N, keep it small. */
+                                 there may hold more than N. Default 10. */
     noctAccuracy accuracy;  /**< Narrowphase level. Default exact. */
-    unsigned effects;       /**< #noctEffect bits. Default: all. */
+    unsigned effects;       /**< #noctEffect bits. Default: motion, events
+                                 and response. */
     noctMaintenance maintenance; /**< Default incremental. */
     double walls_lo[3];     /**< The container's low corner, for
                                  #NOCT_EFFECT_WALLS. Default 0. */
@@ -210,8 +232,9 @@ typedef struct noctWorldCounters {
 
 /**
  * @brief Return the default world parameters.
- * @return N = 10, max_depth = 10, exact accuracy, every effect,
- *         incremental maintenance.
+ * @return N = 10, max_depth = 10, exact accuracy, the effects motion,
+ *         events and response (not walls or sub-steps), incremental
+ *         maintenance.
  */
 NOCT_API noctWorldDef noctDefaultWorldDef(void);
 
@@ -239,20 +262,25 @@ NOCT_API void noctWorldDestroy(noctWorld *world);
  * @param[in]  mesh      Its shape; must outlive the world.
  * @param[in]  position  Its translation.
  * @param[in]  direction Its direction of motion (ignored when @p speed is
- *                       0, and may then be zero). A direction within 1e-9
- *                       of unit length is used as given, so the velocity
- *                       is `speed * direction` bit for bit, as the
- *                       benchmark scenes specify; others are normalized.
+ *                       0, and may then be anything, NaN included). A
+ *                       direction within 1e-9 of unit length is used as
+ *                       given, so the velocity is `speed * direction` bit
+ *                       for bit, as the benchmark scenes specify; any
+ *                       other finite non-zero vector, however large or
+ *                       small its components, is normalized.
  * @param[in]  speed     Distance per step, 0 for a static object.
  * @param[out] id        Receives the new object's handle.
  * @param[out] err       Receives the details of a failure, or NULL.
  * @pre @p world, @p mesh, @p position, @p direction and @p id are not NULL.
  * @post On #NOCT_OK the object is in the octree; it takes part in the
- *       next step.
- * @return #NOCT_OK; #NOCT_ERR_NONFINITE for a NaN or infinite value;
- *         #NOCT_ERR_INVALID for a negative speed or a zero direction with a
- *         non-zero speed; #NOCT_ERR_TOO_LARGE for a position beyond
- *         #NOCT_MAX_COORDINATE or more than 2^31 objects; #NOCT_ERR_NOMEM.
+ *       next step. On failure no object was added and *id is {0, 0}.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE for a NaN or infinite position or
+ *         speed, or direction of a moving object; #NOCT_ERR_INVALID for a
+ *         negative speed or a zero direction with a non-zero speed;
+ *         #NOCT_ERR_TOO_LARGE for a position beyond #NOCT_MAX_COORDINATE or
+ *         more than 2^31 objects; #NOCT_ERR_NOMEM (the octree may then have
+ *         been torn down: the next noctWorldAdd() or noctWorldStep()
+ *         builds it again, and noctWorldRoot() is NULL until then).
  */
 NOCT_API noctStatus noctWorldAdd(noctWorld *world, const noctMesh *mesh,
                                  const double position[3],
@@ -264,9 +292,14 @@ NOCT_API noctStatus noctWorldAdd(noctWorld *world, const noctMesh *mesh,
  * @param[in] world The world.
  * @param[in] id    The object.
  * @pre @p world is not NULL.
+ * Removal never needs memory, so it cannot fail once the handle is good:
+ * it removes the object whole, or (for a bad handle) changes nothing.
  * @post On #NOCT_OK the object is gone from the tree and the pair lists;
- *       its handle is stale.
- * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle.
+ *       its handle is stale; the began and ended lists are empty. Leaf
+ *       siblings left with N or fewer objects merge (if a merge finds no
+ *       memory, they stay split until the next step merges them).
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle
+ *         (then nothing changed).
  */
 NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id);
 
@@ -275,10 +308,18 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id);
  * @param[in]  world The world.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
- * @return #NOCT_OK; #NOCT_ERR_TOO_LARGE if an object moved beyond
- *         #NOCT_MAX_COORDINATE; #NOCT_ERR_NOMEM; a narrowphase status. After
- *         a failure the world is left as it was before the failing stage's
- *         step and should be destroyed.
+ * A failed step changes nothing that a program can see but the error:
+ * every object is where it was, with the velocity it had, before the
+ * step (with #NOCT_EFFECT_SUBSTEP, before the failing sub-step: earlier
+ * sub-steps stand and their events are in the began and ended lists), and
+ * the colliding list is the last one completed. If the octree might have
+ * been changed halfway, it is torn down and the next step builds it again
+ * (noctWorldRoot() is NULL until then). The world can be stepped again,
+ * changed or destroyed.
+ * @return #NOCT_OK; #NOCT_ERR_TOO_LARGE if an object would move beyond
+ *         #NOCT_MAX_COORDINATE, or would need more than #NOCT_MAX_SUBSTEPS
+ *         sub-steps (the message and noctError::index name the object);
+ *         #NOCT_ERR_NOMEM; a narrowphase status (#NOCT_ERR_NUMERIC).
  */
 NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
 
@@ -366,13 +407,19 @@ NOCT_API void noctWorldGetCounters(const noctWorld *world,
  * The heavier of the two tiers of checking: walks the whole tree. Checks
  * that the octree is well formed, that every object is in exactly the
  * leaves its box overlaps and that those leaves list it once, that no leaf
- * holds more than N objects unless at the maximum depth, and that no group
- * of leaf siblings holds N or fewer distinct objects (it should have
- * merged; rebuild mode and the exhaustive N aside).
+ * holds more than N objects small enough to split for unless at the
+ * maximum depth (the overlap rule above), that each object's record of
+ * its leaves and each leaf's record of its objects point at each other,
+ * and that no group of leaf siblings holds N or fewer distinct objects
+ * (it should have merged; rebuild mode, the exhaustive N and merges owed
+ * for want of memory aside). A world whose octree a failure tore down
+ * (see noctWorldStep()) is valid: its tree is owed.
  * @param[in]  world The world.
  * @param[out] err   Receives the first problem found, or NULL.
  * @pre @p world is not NULL.
- * @return #NOCT_OK, or #NOCT_ERR_NUMERIC with a description.
+ * @return #NOCT_OK; #NOCT_ERR_INVARIANT with a description of the first
+ *         broken invariant (a library bug, or memory the program
+ *         overwrote); #NOCT_ERR_NOMEM for the walk's own scratch.
  */
 NOCT_API noctStatus noctWorldValidate(const noctWorld *world, noctError *err);
 
@@ -384,6 +431,8 @@ NOCT_API noctStatus noctWorldValidate(const noctWorld *world, noctError *err);
  * @param[in] world The world.
  * @pre @p world is not NULL.
  * @return The root; valid until the next call that changes the world.
+ *         NULL for a world without objects, or whose tree a failure tore
+ *         down (the next step builds it).
  */
 NOCT_API octNode *noctWorldRoot(const noctWorld *world);
 
