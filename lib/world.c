@@ -2232,6 +2232,19 @@ noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
     return NOCT_OK;
 }
 
+/* Undo a scene builder's additions after a failure: remove the n objects
+ * it added (removal cannot fail) and destroy the meshes it made. */
+static noctStatus unbuild(noctWorld *w, noctObjectId *ids, size_t n, size_t owned_before,
+                          noctStatus st)
+{
+    for (size_t i = 0; i < n; ++i)
+        noctWorldRemove(w, ids[i]);
+    while (w->nowned > owned_before)
+        noctMeshDestroy(w->owned[--w->nowned]);
+    free(ids);
+    return st;
+}
+
 noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                               noctError *err)
 {
@@ -2239,6 +2252,11 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
     if (k < 0 || k > 1000)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "planes: %d rings; it must be 0 to 1000", k);
+    const size_t total = 2 * (size_t)(2 * k + 1) * (size_t)(2 * k + 1);
+    noctObjectId *ids = malloc(total * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    size_t n = 0;
     for (int side = 0; side < 2; ++side) {
         const double dir[3] = {side == 0 ? 1 : -1, 0, 0};
         for (int i = -k; i <= k; ++i)
@@ -2246,12 +2264,13 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                 int r = abs(i) > abs(j) ? abs(i) : abs(j);
                 double x = 3.02 + 0.1 * r;
                 double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
-                noctObjectId id;
-                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &id, err);
+                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
                 if (st != NOCT_OK)
-                    return st;
+                    return unbuild(w, ids, n, w->nowned, st);
+                ++n;
             }
     }
+    free(ids);
     return NOCT_OK;
 }
 
@@ -2288,6 +2307,10 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
         w->owned = q;
         w->capowned = cap;
     }
+    noctObjectId *ids = malloc(n * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const size_t owned_before = w->nowned;
     const double pi = 3.141592653589793;
     const double lb = noctGasContainerSize(n);
     uint64_t state = 42;
@@ -2311,13 +2334,13 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
         noctMesh *m;
         noctStatus st = noctMeshCreateOrientedBox(half, r, &m, err);
         if (st != NOCT_OK)
-            return st;
+            return unbuild(w, ids, i, owned_before, st);
         w->owned[w->nowned++] = m;
-        noctObjectId id;
-        st = noctWorldAdd(w, m, centre, dir, 0.05, &id, err);
+        st = noctWorldAdd(w, m, centre, dir, 0.05, &ids[i], err);
         if (st != NOCT_OK)
-            return st;
+            return unbuild(w, ids, i, owned_before, st);
     }
+    free(ids);
     return NOCT_OK;
 }
 

@@ -493,7 +493,8 @@ NOCT_API noctStatus noctWorldObjectBox(const noctWorld *world, noctObjectId id,
  * @param[out] err       Receives the details of a failure, or NULL.
  * @pre @p world and @p unit_cube are not NULL.
  * @post On #NOCT_OK the world holds 2 (2k + 1)^2 more objects, added left
- *       plane first, row by row.
+ *       plane first, row by row; on failure, none of them (those added
+ *       are removed again).
  * @return #NOCT_OK; #NOCT_ERR_INVALID for k out of range; any status of
  *         noctWorldAdd().
  */
@@ -518,9 +519,10 @@ NOCT_API double noctGasContainerSize(size_t n);
  * @param[in]  n     Number of boxes, 1 to 10 000 000.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
- * @post On #NOCT_OK the world holds n more objects, in the scene's order.
- * @return #NOCT_OK; #NOCT_ERR_INVALID for n out of range; any status of
- *         noctMeshCreateOrientedBox() or noctWorldAdd().
+ * @post On #NOCT_OK the world holds n more objects, in the scene's order;
+ *       on failure, none of them and none of their meshes.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for n out of range; #NOCT_ERR_NOMEM;
+ *         any status of noctMeshCreateOrientedBox() or noctWorldAdd().
  */
 NOCT_API noctStatus noctWorldAddGas(noctWorld *world, size_t n, noctError *err);
 
