@@ -422,7 +422,7 @@ static void free_cells_below(octNode *n)
  * object's spans lose the children before they gain p. So a removal
  * cannot fail.
  */
-static void try_merge(noctWorld *w, octNode *p)
+static void try_merge(noctWorld *w, octNode *p, bool up)
 {
     while (p != NULL && w->def.N != NOCT_N_EXHAUSTIVE) {
         cell *pc = cell_of(p);
@@ -481,20 +481,20 @@ static void try_merge(noctWorld *w, octNode *p)
             pc->small += splits_for(o->ext, pc->size);
         }
         ++w->c.merges;
-        p = NOCT_NODE_PARENT(p);
+        p = up ? NOCT_NODE_PARENT(p) : NULL;
     }
 }
 
 /* Merge every group of leaf siblings that a merge without memory left
- * split (try_merge), deepest first. */
+ * split (try_merge), deepest first: each node after its children, and
+ * none upward from there (that would free nodes the walk still holds). */
 static void merge_all(noctWorld *w, octNode *n)
 {
     if (!NOCT_NODE_IS_SPLIT(n))
         return;
     for (int i = 0; i < 8; ++i)
         merge_all(w, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
-    if (NOCT_NODE_IS_SPLIT(n))
-        try_merge(w, n);
+    try_merge(w, n, false);
 }
 
 /* Remove the object at position i of the leaf (whose spans entry says
@@ -524,7 +524,7 @@ static void leaf_remove_at(noctWorld *w, octNode *leaf, uint32_t i)
     octNode *p = NOCT_NODE_PARENT(leaf);
     if (p != NULL && cell_of(p)->distinct > 0)
         --cell_of(p)->distinct;
-    try_merge(w, p);
+    try_merge(w, p, true);
 }
 
 /* Add id to every leaf under n that its box overlaps and lacks it (a new
