@@ -16,8 +16,12 @@
 #include "mesh_internal.h"
 #include "predicates.h"
 
-/* Polygons must be planar and convex within this fraction of their size. */
+/* Polygons must be planar and convex within this fraction of their size
+ * (mesh.h gives the exact tests). */
 #define POLY_TOLERANCE 1e-9
+/* The enclosed volume must exceed this fraction of the bounding box's
+ * (times 6: the sum of the fan's determinants is 6 times the volume). */
+#define VOLUME_TOLERANCE 1e-12
 /* Triangles per BVH leaf, at most. */
 #define BVH_LEAF 4
 
@@ -126,12 +130,68 @@ static double norm3(const double a[3])
     return sqrt(dot3(a, a));
 }
 
+/* ---- scaling -------------------------------------------------------------- */
+
+/*
+ * The checks compute on differences of coordinates, which a translation
+ * that keeps every coordinate exact leaves unchanged, multiplied by the
+ * power of two 2^-e that brings the largest to [1/2, 1). Their products
+ * of two or three then neither overflow nor underflow where it matters,
+ * whatever the mesh's size and place, and so the checks' rounding is
+ * relative to the polygon's or the mesh's own size. The scaling is exact
+ * except for parts under 2^-1022 of the largest, far below any tolerance.
+ */
+typedef struct scaler {
+    double s0, s1; /* s0 s1 = 2^-e, each a normal power of two */
+    int e;
+} scaler;
+
+/* 2^k, for k in [-1022, 1023]. */
+static double pow2(int k)
+{
+    uint64_t bits = (uint64_t)(k + 1023) << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* The scaler for magnitudes up to m, finite and positive. A subnormal m
+ * needs a factor past the doubles (up to 2^1073), hence two. */
+static scaler scaler_for(double m)
+{
+    scaler s;
+    frexp(m, &s.e); /* m = f 2^e, f in [1/2, 1), e in [-1073, 1024] */
+    int k = -s.e, k0 = k / 2;
+    s.s0 = pow2(k0);
+    s.s1 = pow2(k - k0);
+    return s;
+}
+
+static inline double scaled(const scaler *s, double x)
+{
+    return x * s->s0 * s->s1;
+}
+
 /* ---- polygon checks ---------------------------------------------------- */
+
+/* Corner i of a polygon relative to its corner 0, scaled. */
+static void corner_at(const double *v, const uint32_t *idx, uint32_t i, const scaler *s,
+                      double out[3])
+{
+    const double *p = &v[3 * idx[i]], *o = &v[3 * idx[0]];
+    for (int k = 0; k < 3; ++k)
+        out[k] = scaled(s, p[k] - o[k]);
+}
 
 /*
  * Check one polygon: distinct corners, non-zero area, planar and convex
- * within POLY_TOLERANCE of its diameter. Newell's normal gives the plane;
- * convexity is every corner turning the same way about that normal.
+ * within POLY_TOLERANCE of its diameter D (mesh.h). Newell's normal N
+ * gives the plane and, as its length, twice the area; convexity is every
+ * corner turning the same way about N. All of it is computed on the
+ * corners relative to the first, scaled to the polygon's size: the same
+ * verdict wherever the polygon is and whatever its size, with rounding
+ * errors some 1e-16 of D (times the number of corners), far below the
+ * tolerance. A triangle is planar and, with an area, convex.
  */
 static noctStatus check_polygon(const double *v, const uint32_t *idx,
                                 uint32_t n, size_t poly, noctError *err)
@@ -142,45 +202,70 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
                 return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
                                  "polygon %zu: vertex %u appears twice", poly,
                                  idx[i]);
-    double normal[3] = {0, 0, 0}, diam = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-        const double *p = &v[3 * idx[i]], *q = &v[3 * idx[(i + 1) % n]];
-        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        for (uint32_t j = 0; j < n; ++j) {
-            double d[3];
-            sub3(p, &v[3 * idx[j]], d);
-            double len = norm3(d);
-            if (len > diam)
-                diam = len;
+    const double *o = &v[3 * idx[0]];
+    double m = 0;
+    for (uint32_t i = 1; i < n; ++i)
+        for (int k = 0; k < 3; ++k)
+            m = noct_max(m, fabs(v[3 * idx[i] + k] - o[k]));
+    if (!(m > 0))
+        return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
+                         "polygon %zu has no area (its corners coincide)", poly);
+    const scaler s = scaler_for(m);
+    double normal[3] = {0, 0, 0}, diam2 = 0;
+    if (n == 3) {
+        double a[3], b[3], d[3];
+        corner_at(v, idx, 1, &s, a);
+        corner_at(v, idx, 2, &s, b);
+        cross3(a, b, normal);
+        sub3(b, a, d);
+        diam2 = noct_max(dot3(d, d), noct_max(dot3(a, a), dot3(b, b)));
+    } else {
+        for (uint32_t i = 0; i < n; ++i) {
+            double p[3], q[3], d[3];
+            corner_at(v, idx, i, &s, p);
+            corner_at(v, idx, (i + 1) % n, &s, q);
+            normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+            normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+            normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+            for (uint32_t j = i + 1; j < n; ++j) {
+                corner_at(v, idx, j, &s, q);
+                sub3(p, q, d);
+                diam2 = noct_max(diam2, dot3(d, d));
+            }
         }
     }
+    /* D >= m, scaled to at least 1/2: the tests below are far from
+     * underflow, and N at most 2 n D^2 far from overflow. */
     double nlen = norm3(normal);
-    /* Newell's normal has twice the polygon's area as its length. */
-    if (!(nlen > POLY_TOLERANCE * diam * diam))
+    if (!(nlen > POLY_TOLERANCE * diam2))
         return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
-                         "polygon %zu has no area (its corners are collinear)",
-                         poly);
+                         "polygon %zu has no area (its corners are collinear "
+                         "within %g of its size)", poly, POLY_TOLERANCE);
+    if (n == 3)
+        return NOCT_OK;
     for (int k = 0; k < 3; ++k)
         normal[k] /= nlen;
-    const double *o = &v[3 * idx[0]];
+    double diam = sqrt(diam2);
     for (uint32_t i = 1; i < n; ++i) {
         double d[3];
-        sub3(&v[3 * idx[i]], o, d);
-        if (fabs(dot3(d, normal)) > POLY_TOLERANCE * diam)
+        corner_at(v, idx, i, &s, d);
+        double off = fabs(dot3(d, normal));
+        if (off > POLY_TOLERANCE * diam)
             return noct_fail(err, NOCT_ERR_NONPLANAR, (long)poly, 0,
                              "polygon %zu: vertex %u is %g off the polygon's "
-                             "plane", poly, idx[i], fabs(dot3(d, normal)));
+                             "plane, more than %g of its diameter %g", poly,
+                             idx[i], ldexp(off, s.e), POLY_TOLERANCE,
+                             ldexp(diam, s.e));
     }
     for (uint32_t i = 0; i < n; ++i) {
-        const double *a = &v[3 * idx[i]], *b = &v[3 * idx[(i + 1) % n]],
-                     *c = &v[3 * idx[(i + 2) % n]];
-        double ab[3], bc[3], turn[3];
+        double a[3], b[3], c[3], ab[3], bc[3], turn[3];
+        corner_at(v, idx, i, &s, a);
+        corner_at(v, idx, (i + 1) % n, &s, b);
+        corner_at(v, idx, (i + 2) % n, &s, c);
         sub3(b, a, ab);
         sub3(c, b, bc);
         cross3(ab, bc, turn);
-        if (dot3(turn, normal) <= POLY_TOLERANCE * diam * diam)
+        if (dot3(turn, normal) <= POLY_TOLERANCE * diam2)
             return noct_fail(err, NOCT_ERR_NONCONVEX, (long)poly, 0,
                              "polygon %zu is not convex at vertex %u", poly,
                              idx[(i + 1) % n]);
@@ -820,8 +905,21 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
             m->lo[k] = noct_min(m->lo[k], m->v[3 * i + k]);
             m->hi[k] = noct_max(m->hi[k], m->v[3 * i + k]);
         }
-    /* Fan triangulation, and the signed volume to fix the orientation. */
-    double volume = 0;
+    /* Fan triangulation, and the signed volume to fix the orientation:
+     * 6 V = sum over the triangles of det(p0 - lo, p1 - p0, p2 - p0), on
+     * differences scaled to the mesh's size (see scaler). Its rounding is
+     * bounded by (ntri + 16) half-ulps of the sum of the terms'
+     * magnitudes (the differences, the cross product, the dot product and
+     * the sum), and underflow adds under 64 2^-1075 a triangle; a volume
+     * that does not clear both the tolerance and that bound has no sign to
+     * trust. */
+    double ext[3], emax = 0;
+    for (int k = 0; k < 3; ++k) {
+        ext[k] = m->hi[k] - m->lo[k];
+        emax = noct_max(emax, ext[k]);
+    }
+    const scaler sc = scaler_for(emax > 0 ? emax : 1);
+    double volume = 0, mag = 0;
     size_t t = 0;
     for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
         for (uint32_t c = 1; c + 1 < sizes[p]; ++c, ++t) {
@@ -829,21 +927,28 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
             tri[0] = indices[base];
             tri[1] = indices[base + c];
             tri[2] = indices[base + c + 1];
-            double a[3], b[3], cr[3];
-            sub3(&m->v[3 * tri[1]], &m->v[3 * tri[0]], a);
-            sub3(&m->v[3 * tri[2]], &m->v[3 * tri[0]], b);
+            const double *p0 = &m->v[3 * tri[0]], *p1 = &m->v[3 * tri[1]],
+                         *p2 = &m->v[3 * tri[2]];
+            double r[3], a[3], b[3], cr[3];
+            for (int k = 0; k < 3; ++k) {
+                r[k] = scaled(&sc, p0[k] - m->lo[k]);
+                a[k] = scaled(&sc, p1[k] - p0[k]);
+                b[k] = scaled(&sc, p2[k] - p0[k]);
+            }
             cross3(a, b, cr);
-            double rel[3];
-            sub3(&m->v[3 * tri[0]], m->lo, rel);
-            volume += dot3(rel, cr);
+            volume += dot3(r, cr);
+            mag += fabs(r[0]) * (fabs(a[1] * b[2]) + fabs(a[2] * b[1])) +
+                   fabs(r[1]) * (fabs(a[2] * b[0]) + fabs(a[0] * b[2])) +
+                   fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));
         }
     }
-    double ext[3];
-    sub3(m->hi, m->lo, ext);
-    double scale = ext[0] * ext[1] * ext[2];
-    if (!(fabs(volume) > 1e-12 * scale))
+    double box = scaled(&sc, ext[0]) * scaled(&sc, ext[1]) * scaled(&sc, ext[2]);
+    double rounding = (double)(ntri + 16) * 0x1p-53 * mag + (double)ntri * 0x1p-1068;
+    if (!(fabs(volume) > VOLUME_TOLERANCE * box) || !(fabs(volume) > rounding))
         st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
-                       "the mesh encloses no volume");
+                       "the mesh encloses no volume (none over %.2g of its "
+                       "bounding box's, or within its rounding)",
+                       VOLUME_TOLERANCE / 6);
     if (st == NOCT_OK && volume < 0) /* inside out: flip every triangle */
         for (size_t i = 0; i < ntri; ++i) {
             uint32_t tmp = m->tri[3 * i + 1];
