@@ -172,6 +172,48 @@ static inline double scaled(const scaler *s, double x)
     return x * s->s0 * s->s1;
 }
 
+static double max_abs3(const double a[3])
+{
+    return noct_max(fabs(a[0]), noct_max(fabs(a[1]), fabs(a[2])));
+}
+
+/* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
+static void unit3(const double d[3], double u[3])
+{
+    double m = max_abs3(d);
+    if (!(m > 0)) {
+        u[0] = u[1] = u[2] = 0;
+        return;
+    }
+    scaler s = scaler_for(m);
+    double x[3] = {scaled(&s, d[0]), scaled(&s, d[1]), scaled(&s, d[2])};
+    double len = norm3(x); /* in [1/2, 2] */
+    for (int k = 0; k < 3; ++k)
+        u[k] = x[k] / len;
+}
+
+/* The unit normal (p1 - p0) x (p2 - p0) / |...|, or 0 if the triangle has
+ * none, from the scaled edge vectors: independent of its size and place. */
+static void unit_normal(const double p0[3], const double p1[3], const double p2[3],
+                        double n[3])
+{
+    double a[3], b[3], c[3];
+    sub3(p1, p0, a);
+    sub3(p2, p0, b);
+    double m = noct_max(max_abs3(a), max_abs3(b));
+    if (!(m > 0)) {
+        n[0] = n[1] = n[2] = 0;
+        return;
+    }
+    scaler s = scaler_for(m);
+    for (int k = 0; k < 3; ++k) {
+        a[k] = scaled(&s, a[k]);
+        b[k] = scaled(&s, b[k]);
+    }
+    cross3(a, b, c);
+    unit3(c, n);
+}
+
 /* ---- polygon checks ---------------------------------------------------- */
 
 /* Corner i of a polygon relative to its corner 0, scaled. */
@@ -485,15 +527,13 @@ static int cmp_dir_edge(const void *x, const void *y)
     return (p->a > q->a) - (p->a < q->a);
 }
 
-/* Add direction d to a list of unique directions up to sign (within a
- * relative 1e-12, which only affects how many axes are tried). Returns false
- * when the list is full. */
-static bool add_direction(double list[][3], size_t *n, const double d[3])
+/* Add unit vector u to a list of unique directions up to sign (within a
+ * relative 1e-12, which only affects how many axes are tried); u = 0 adds
+ * nothing. Returns false when the list is full. */
+static bool add_direction(double list[][3], size_t *n, const double u[3])
 {
-    double len = norm3(d);
-    if (!(len > 0))
+    if (u[0] == 0 && u[1] == 0 && u[2] == 0)
         return true;
-    double u[3] = {d[0] / len, d[1] / len, d[2] / len};
     for (size_t i = 0; i < *n; ++i) {
         double dp = dot3(list[i], u);
         if (fabs(fabs(dp) - 1) < 1e-12)
@@ -501,16 +541,29 @@ static bool add_direction(double list[][3], size_t *n, const double d[3])
     }
     if (*n == NOCT_SAT_MAX)
         return false;
-    memcpy(list[(*n)++], u, sizeof u);
+    memcpy(list[(*n)++], u, 3 * sizeof *u);
     return true;
 }
 
 static noctStatus compute_convexity(noctMesh *m, noctError *err)
 {
+    /* Each triangle's plane: its unit normal (unit_normal(): the same
+     * wherever the mesh is and whatever its size) and offset. The planes
+     * are kept for the filter; the normals tell real edges and give the
+     * face directions. */
+    m->plane = malloc(m->nt * sizeof *m->plane);
     size_t ne = 3 * m->nt;
     dir_edge *e = malloc(ne * sizeof *e);
-    if (e == NULL)
+    if (e == NULL || m->plane == NULL) {
+        free(e);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (size_t t = 0; t < m->nt; ++t) {
+        const double *p0 = &m->v[3 * m->tri[3 * t]];
+        unit_normal(p0, &m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t + 2]],
+                    m->plane[t]);
+        m->plane[t][3] = dot3(m->plane[t], p0);
+    }
     for (size_t t = 0; t < m->nt; ++t)
         for (int c = 0; c < 3; ++c)
             e[3 * t + c] = (dir_edge){m->tri[3 * t + c],
@@ -537,69 +590,43 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
             convex = false;
         /* An edge between triangles whose planes differ is an edge of the
          * solid, not a diagonal of a (nearly) flat polygon. */
-        double np[3], nq[3], a[3], b[3];
-        sub3(t1, t0, a);
-        sub3(t2, t0, b);
-        cross3(a, b, np);
-        sub3(&m->v[3 * m->tri[3 * q->tri + 1]], &m->v[3 * m->tri[3 * q->tri]], a);
-        sub3(&m->v[3 * m->tri[3 * q->tri + 2]], &m->v[3 * m->tri[3 * q->tri]], b);
-        cross3(a, b, nq);
-        double c = dot3(np, nq) / (norm3(np) * norm3(nq));
-        if (sat && c < 1 - 1e-9) {
-            double d[3];
+        if (sat && dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
+            double d[3], u[3];
             sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
-            sat = add_direction(sat_edge, &m->nsat_edges, d);
+            unit3(d, u);
+            sat = add_direction(sat_edge, &m->nsat_edges, u);
         }
     }
-    for (size_t t = 0; t < m->nt && sat; ++t) {
-        double a[3], b[3], n[3];
-        sub3(&m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t]], a);
-        sub3(&m->v[3 * m->tri[3 * t + 2]], &m->v[3 * m->tri[3 * t]], b);
-        cross3(a, b, n);
-        sat = add_direction(sat_face, &m->nsat_faces, n);
-    }
+    for (size_t t = 0; t < m->nt && sat; ++t)
+        sat = add_direction(sat_face, &m->nsat_faces, m->plane[t]);
     /* The filter needs no convexity to be sound (a solid lies inside the
      * hull of its vertices), only to be useful: small meshes with few
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
     free(e);
-    if (m->nsat_faces > 0) {
-        size_t naxes = m->nsat_faces + m->nsat_edges;
-        m->axis = malloc(naxes * sizeof *m->axis);
-        if (m->axis == NULL)
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        for (size_t i = 0; i < naxes; ++i) {
-            sat_axis *a = &m->axis[i];
-            memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
-                   sizeof a->u);
-            a->lo = INFINITY;
-            a->hi = -INFINITY;
-            for (size_t k = 0; k < m->nv; ++k) {
-                double d = dot3(a->u, &m->v[3 * k]);
-                a->lo = d < a->lo ? d : a->lo;
-                a->hi = d > a->hi ? d : a->hi;
-            }
-        }
-    }
-    m->plane = NULL;
-    if (m->nsat_faces > 0) {
-        m->plane = malloc(m->nt * sizeof *m->plane);
-        if (m->plane == NULL)
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        for (size_t t = 0; t < m->nt; ++t) {
-            const double *p0 = &m->v[3 * m->tri[3 * t]];
-            double a[3], b[3], n[3];
-            sub3(&m->v[3 * m->tri[3 * t + 1]], p0, a);
-            sub3(&m->v[3 * m->tri[3 * t + 2]], p0, b);
-            cross3(a, b, n);
-            double len = norm3(n);
-            for (int k = 0; k < 3; ++k)
-                m->plane[t][k] = len > 0 ? n[k] / len : 0;
-            m->plane[t][3] = dot3(m->plane[t], p0);
-        }
-    }
     m->convex = convex;
+    if (m->nsat_faces == 0) { /* no filter, no planes */
+        free(m->plane);
+        m->plane = NULL;
+        return NOCT_OK;
+    }
+    size_t naxes = m->nsat_faces + m->nsat_edges;
+    m->axis = malloc(naxes * sizeof *m->axis);
+    if (m->axis == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    for (size_t i = 0; i < naxes; ++i) {
+        sat_axis *a = &m->axis[i];
+        memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
+               sizeof a->u);
+        a->lo = INFINITY;
+        a->hi = -INFINITY;
+        for (size_t k = 0; k < m->nv; ++k) {
+            double d = dot3(a->u, &m->v[3 * k]);
+            a->lo = d < a->lo ? d : a->lo;
+            a->hi = d > a->hi ? d : a->hi;
+        }
+    }
     return NOCT_OK;
 }
 
@@ -616,12 +643,24 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
      * (a gas of oriented boxes is made of meshes that rounding left a hair
      * off convex). */
     if (!m->convex && m->nv > HULL_MIN_VERTICES) {
-        FILE *quiet = fopen("/dev/null", "w");
+        /* qhull's tolerances follow the magnitude of the coordinates it
+         * is given: it gets the vertices relative to the mesh's least
+         * corner and scaled to its size (see scaler), so that the hull
+         * depends on neither the mesh's place nor its size. */
+        double *rel = malloc(3 * m->nv * sizeof *rel);
+        FILE *quiet = rel != NULL ? fopen("/dev/null", "w") : NULL;
         if (quiet != NULL) {
+            double emax = 0;
+            for (int k = 0; k < 3; ++k)
+                emax = noct_max(emax, m->hi[k] - m->lo[k]);
+            const scaler sc = scaler_for(emax);
+            for (size_t i = 0; i < m->nv; ++i)
+                for (int k = 0; k < 3; ++k)
+                    rel[3 * i + k] = scaled(&sc, m->v[3 * i + k] - m->lo[k]);
             qhT qh_storage, *qh = &qh_storage;
             char cmd[] = "qhull";
             qh_zero(qh, quiet);
-            if (qh_new_qhull(qh, 3, (int)m->nv, m->v, False, cmd, NULL, quiet) == 0) {
+            if (qh_new_qhull(qh, 3, (int)m->nv, rel, False, cmd, NULL, quiet) == 0) {
                 m->hull = malloc((size_t)qh->num_vertices * sizeof *m->hull);
                 if (m->hull != NULL) {
                     vertexT *vertex;
@@ -634,6 +673,7 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
             qh_memfreeshort(qh, &curlong, &totlong);
             fclose(quiet);
         }
+        free(rel);
     }
     if (m->hull == NULL) { /* convex, or qhull unavailable: every vertex */
         m->hull = malloc(m->nv * sizeof *m->hull);

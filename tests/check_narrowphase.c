@@ -1514,6 +1514,34 @@ START_TEST(collide_at_every_scale)
 }
 END_TEST
 
+/* The separating-axis filter has its axes, face normals and edge
+ * directions, at every scale: two tetrahedra whose bounding boxes overlap
+ * but which a face plane of one separates are told apart by the filter,
+ * without a triangle test. (Not at 1e-300: the filter's margin is at
+ * least 1e-300, to cover underflow, so there it never separates.) */
+START_TEST(filter_axes_at_every_scale)
+{
+    const double reg[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const poly_list tet = pl_tetra(reg);
+    static const double scales[] = {1e-150, 1, 1e75, 1e99};
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; ++i) {
+        double s = scales[i];
+        poly_list p = pl_scaled(&tet, s);
+        noctMesh *m = pl_mesh(&p);
+        const double t[3] = {0.6 * s, 0.6 * s, 0.6 * s};
+        noctNarrowStats st = {0};
+        bool hit = true;
+        ck_assert_int_eq(noctCollide(m, ORIGIN, m, t, NOCT_ACCURACY_EXACT, &hit, &st), NOCT_OK);
+        ck_assert(!hit);
+        ck_assert_msg(st.sat_rejects == 1 && st.triangle_pairs == 0,
+                      "scale %g: %llu filter rejects, %llu triangle pairs", s,
+                      (unsigned long long)st.sat_rejects,
+                      (unsigned long long)st.triangle_pairs);
+        noctMeshDestroy(m);
+    }
+}
+END_TEST
+
 /* A rotation with rational entries (denominator 325), Rz Rx Rz for the
  * Pythagorean angles (3, 4, 5) and (5, 12, 13), times 325: a box whose
  * half-extents are 325 times integers has integer corners and exactly
@@ -1710,6 +1738,7 @@ static Suite *narrowphase_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, meshes_at_every_scale);
     tcase_add_test(tc, collide_at_every_scale);
+    tcase_add_test(tc, filter_axes_at_every_scale);
     tcase_add_test(tc, meshes_at_every_position);
     suite_add_tcase(s, tc);
 
