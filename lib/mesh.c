@@ -5,6 +5,7 @@
  */
 #include "config.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,6 +23,10 @@
 /* The enclosed volume must exceed this fraction of the bounding box's
  * (times 6: the sum of the fan's determinants is 6 times the volume). */
 #define VOLUME_TOLERANCE 1e-12
+/* A built-in box's smallest half-extent is at least this fraction of its
+ * largest: a rectangle a by b >= 2^-29 a has corners that turn by
+ * ab >= 1.8e-9 (a^2 + b^2), well over the polygon tolerance. */
+#define BOX_MIN_RATIO 0x1p-29
 /* Triangles per BVH leaf, at most. */
 #define BVH_LEAF 4
 
@@ -1027,6 +1032,15 @@ noctStatus noctMeshCreateBox(double hx, double hy, double hz, noctMesh **mesh,
     if (!positive_finite(hx) || !positive_finite(hy) || !positive_finite(hz))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "box half-extents (%g, %g, %g) must be positive", hx, hy, hz);
+    double hmax = fmax(hx, fmax(hy, hz)), hmin = fmin(hx, fmin(hy, hz));
+    if (hmax > NOCT_MAX_COORDINATE)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "box half-extents (%g, %g, %g): beyond the coordinate "
+                         "limit of %g", hx, hy, hz, NOCT_MAX_COORDINATE);
+    if (hmin / BOX_MIN_RATIO < hmax) /* hmin 2^29 is exact */
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "box half-extents (%g, %g, %g): too thin, the least is "
+                         "under 2^-29 of the largest", hx, hy, hz);
     double v[24];
     for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
         v[3 * i] = (i & 4) ? hx : -hx;
@@ -1053,11 +1067,27 @@ noctStatus noctMeshCreateOrientedBox(const double half[3],
             return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
                              "oriented box: a half-extent or rotation entry "
                              "is not finite");
-    if (!positive_finite(half[0]) || !positive_finite(half[1]) ||
-        !positive_finite(half[2]))
+    double hmax = fmax(half[0], fmax(half[1], half[2]));
+    double hmin = fmin(half[0], fmin(half[1], half[2]));
+    /* Below the normal doubles, the rotated corners would lose their
+     * precision: a corner is rounded to within 2^-1074 at best. */
+    if (!(hmin >= DBL_MIN))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "oriented box: half-extents (%g, %g, %g) must be "
-                         "positive", half[0], half[1], half[2]);
+                         "positive and at least %g", half[0], half[1], half[2],
+                         DBL_MIN);
+    /* A corner has a coordinate of at least hmax / sqrt(3): past this,
+     * beyond the limit. */
+    if (hmax > 2 * NOCT_MAX_COORDINATE)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "oriented box: half-extents (%g, %g, %g) put its "
+                         "corners beyond the coordinate limit of %g", half[0],
+                         half[1], half[2], NOCT_MAX_COORDINATE);
+    if (hmin / BOX_MIN_RATIO < hmax)
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "oriented box: half-extents (%g, %g, %g): too thin, the "
+                         "least is under 2^-29 of the largest", half[0], half[1],
+                         half[2]);
     /* R^T R = I and det R = +1, within 1e-9. */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {

@@ -1478,6 +1478,52 @@ START_TEST(meshes_at_every_scale)
 }
 END_TEST
 
+/* The box constructors over the documented range: what they accept, and
+ * what they refuse for the reasons their documentation gives. */
+START_TEST(box_constructors_at_every_scale)
+{
+    static const double sizes[] = {0x1p-1022, 1e-300, 1e-150, 1e75, 1e99, 1e100};
+    /* a rotation about no axis of the frame (entries rounded) */
+    const double rot[9] = {0.36, -0.48, 0.8, 0.8, 0.6, 0, -0.48, 0.64, 0.6};
+    noctMesh *m = NULL;
+    noctError err;
+    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; ++i) {
+        double s = sizes[i];
+        noctStatus st = noctMeshCreateBox(s, s / 2, s * 0x1p-28, &m, &err);
+        ck_assert_msg(st == NOCT_OK, "box %g: %s", s, st == NOCT_OK ? "" : err.message);
+        ck_assert(noctMeshIsConvex(m));
+        double lo[3], hi[3];
+        noctMeshBounds(m, lo, hi);
+        ck_assert(lo[0] == -s && hi[1] == s / 2 && hi[2] == s * 0x1p-28);
+        noctMeshDestroy(m);
+        ck_assert_int_eq(noctMeshCreateBox(s * 0x1p-30, s, s, &m, &err), NOCT_ERR_DEGENERATE);
+        ck_assert_ptr_null(m);
+        ck_assert_msg(strstr(err.message, "thin") != NULL, "%s", err.message);
+        if (s > 1e99)
+            continue; /* its rotated corners go past the limit */
+        const double half[3] = {s < 1 ? 4 * s : s, s < 1 ? 2 * s : s / 2, s < 1 ? s : s / 4};
+        st = noctMeshCreateOrientedBox(half, rot, &m, &err);
+        ck_assert_msg(st == NOCT_OK, "oriented box %g: %s", s, st == NOCT_OK ? "" : err.message);
+        noctMeshDestroy(m);
+        const double sliver[3] = {s < 1 ? s * 0x1p30 : s, s < 1 ? s * 0x1p30 : s,
+                                  s < 1 ? s : s * 0x1p-30};
+        ck_assert_int_eq(noctMeshCreateOrientedBox(sliver, rot, &m, &err), NOCT_ERR_DEGENERATE);
+        ck_assert_msg(strstr(err.message, "thin") != NULL, "%s", err.message);
+    }
+    /* subnormal half-extents are fine: the corners are exact */
+    ck_assert_int_eq(noctMeshCreateBox(0x1p-1074, 0x1p-1074, 0x1p-1073, &m, &err), NOCT_OK);
+    ck_assert(noctMeshIsConvex(m));
+    noctMeshDestroy(m);
+    ck_assert_int_eq(noctMeshCreateBox(2e100, 1e100, 1e100, &m, &err), NOCT_ERR_TOO_LARGE);
+    ck_assert_ptr_null(m);
+    const double huge[3] = {1e100, 1e100, 1e100};
+    ck_assert_int_eq(noctMeshCreateOrientedBox(huge, rot, &m, &err), NOCT_ERR_TOO_LARGE);
+    const double below[3] = {1, 1, 0x1p-1030};
+    ck_assert_int_eq(noctMeshCreateOrientedBox(below, rot, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_null(m);
+}
+END_TEST
+
 /* The exact level's answer, both ways round, must be want, and the box
  * level must not miss it. (Not the convex level: libccd's GJK has
  * absolute tolerances.) */
@@ -1737,6 +1783,7 @@ static Suite *narrowphase_suite(void)
     tc = tcase_create("scale and position");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, meshes_at_every_scale);
+    tcase_add_test(tc, box_constructors_at_every_scale);
     tcase_add_test(tc, collide_at_every_scale);
     tcase_add_test(tc, filter_axes_at_every_scale);
     tcase_add_test(tc, meshes_at_every_position);

@@ -119,8 +119,16 @@ NOCT_API noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
  * @pre @p mesh is not NULL.
  * @post On #NOCT_OK, @p *mesh is the box [-hx, hx] x [-hy, hy] x [-hz, hz]
  *       with 8 vertices and 6 quadrilaterals.
- * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID if a
- *         half-extent is not a finite positive number; #NOCT_ERR_NOMEM.
+ * @return #NOCT_OK for every box with half-extents in (0,
+ *         #NOCT_MAX_COORDINATE] (subnormal ones included) whose least is
+ *         at least 2^-29 of its largest; #NOCT_ERR_NONFINITE if a
+ *         half-extent is not finite; #NOCT_ERR_INVALID if one is not
+ *         positive; #NOCT_ERR_TOO_LARGE if one exceeds
+ *         #NOCT_MAX_COORDINATE; #NOCT_ERR_DEGENERATE if the least is under
+ *         2^-29 (about 1.9e-9) of the largest: the faces across the thin
+ *         side would be too thin for the polygons' tolerance (see the
+ *         module text), which such a ratio clears by far;
+ *         #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctMeshCreateBox(double hx, double hy, double hz,
                                       noctMesh **mesh, noctError *err);
@@ -139,9 +147,18 @@ NOCT_API noctStatus noctMeshCreateBox(double hx, double hy, double hz,
  * @post On #NOCT_OK, @p *mesh is that box, with 8 vertices and 12
  *       triangles (rounding makes its faces only nearly planar, so they
  *       are triangulated).
- * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID if a
- *         half-extent is not finite and positive or @p rotation is not
- *         orthonormal with determinant +1 within 1e-9; #NOCT_ERR_NOMEM.
+ * @return #NOCT_OK for every box whose half-extents are at least DBL_MIN
+ *         and whose least is at least 2^-29 of its largest, with corners
+ *         within #NOCT_MAX_COORDINATE; #NOCT_ERR_NONFINITE if a
+ *         half-extent or a rotation entry is not finite;
+ *         #NOCT_ERR_INVALID if a half-extent is under DBL_MIN (the least
+ *         normal double: below it the rotated corners lose their
+ *         precision; zero and negative ones included) or @p rotation is
+ *         not orthonormal with determinant +1 within 1e-9;
+ *         #NOCT_ERR_TOO_LARGE if a corner has a coordinate beyond
+ *         #NOCT_MAX_COORDINATE; #NOCT_ERR_DEGENERATE if the least
+ *         half-extent is under 2^-29 (about 1.9e-9) of the largest, as
+ *         for noctMeshCreateBox(); #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
                                               const double rotation[9],
