@@ -5,6 +5,7 @@
  */
 #include "config.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,8 +17,16 @@
 #include "mesh_internal.h"
 #include "predicates.h"
 
-/* Polygons must be planar and convex within this fraction of their size. */
+/* Polygons must be planar and convex within this fraction of their size
+ * (mesh.h gives the exact tests). */
 #define POLY_TOLERANCE 1e-9
+/* The enclosed volume must exceed this fraction of the bounding box's
+ * (times 6: the sum of the fan's determinants is 6 times the volume). */
+#define VOLUME_TOLERANCE 1e-12
+/* A built-in box's smallest half-extent is at least this fraction of its
+ * largest: a rectangle a by b >= 2^-29 a has corners that turn by
+ * ab >= 1.8e-9 (a^2 + b^2), well over the polygon tolerance. */
+#define BOX_MIN_RATIO 0x1p-29
 /* Triangles per BVH leaf, at most. */
 #define BVH_LEAF 4
 
@@ -127,12 +136,110 @@ static double norm3(const double a[3])
     return sqrt(dot3(a, a));
 }
 
+/* ---- scaling -------------------------------------------------------------- */
+
+/*
+ * The checks compute on differences of coordinates, which a translation
+ * that keeps every coordinate exact leaves unchanged, multiplied by the
+ * power of two 2^-e that brings the largest to [1/2, 1). Their products
+ * of two or three then neither overflow nor underflow where it matters,
+ * whatever the mesh's size and place, and so the checks' rounding is
+ * relative to the polygon's or the mesh's own size. The scaling is exact
+ * except for parts under 2^-1022 of the largest, far below any tolerance.
+ */
+typedef struct scaler {
+    double s0, s1; /* s0 s1 = 2^-e, each a normal power of two */
+    int e;
+} scaler;
+
+/* 2^k, for k in [-1022, 1023]. */
+static double pow2(int k)
+{
+    uint64_t bits = (uint64_t)(k + 1023) << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* The scaler for magnitudes up to m, finite and positive. A subnormal m
+ * needs a factor past the doubles (up to 2^1073), hence two. */
+static scaler scaler_for(double m)
+{
+    scaler s;
+    frexp(m, &s.e); /* m = f 2^e, f in [1/2, 1), e in [-1073, 1024] */
+    int k = -s.e, k0 = k / 2;
+    s.s0 = pow2(k0);
+    s.s1 = pow2(k - k0);
+    return s;
+}
+
+static inline double scaled(const scaler *s, double x)
+{
+    return x * s->s0 * s->s1;
+}
+
+static double max_abs3(const double a[3])
+{
+    return noct_max(fabs(a[0]), noct_max(fabs(a[1]), fabs(a[2])));
+}
+
+/* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
+static void unit3(const double d[3], double u[3])
+{
+    double m = max_abs3(d);
+    if (!(m > 0)) {
+        u[0] = u[1] = u[2] = 0;
+        return;
+    }
+    scaler s = scaler_for(m);
+    double x[3] = {scaled(&s, d[0]), scaled(&s, d[1]), scaled(&s, d[2])};
+    double len = norm3(x); /* in [1/2, 2] */
+    for (int k = 0; k < 3; ++k)
+        u[k] = x[k] / len;
+}
+
+/* The unit normal (p1 - p0) x (p2 - p0) / |...|, or 0 if the triangle has
+ * none, from the scaled edge vectors: independent of its size and place. */
+static void unit_normal(const double p0[3], const double p1[3], const double p2[3],
+                        double n[3])
+{
+    double a[3], b[3], c[3];
+    sub3(p1, p0, a);
+    sub3(p2, p0, b);
+    double m = noct_max(max_abs3(a), max_abs3(b));
+    if (!(m > 0)) {
+        n[0] = n[1] = n[2] = 0;
+        return;
+    }
+    scaler s = scaler_for(m);
+    for (int k = 0; k < 3; ++k) {
+        a[k] = scaled(&s, a[k]);
+        b[k] = scaled(&s, b[k]);
+    }
+    cross3(a, b, c);
+    unit3(c, n);
+}
+
 /* ---- polygon checks ---------------------------------------------------- */
+
+/* Corner i of a polygon relative to its corner 0, scaled. */
+static void corner_at(const double *v, const uint32_t *idx, uint32_t i, const scaler *s,
+                      double out[3])
+{
+    const double *p = &v[3 * idx[i]], *o = &v[3 * idx[0]];
+    for (int k = 0; k < 3; ++k)
+        out[k] = scaled(s, p[k] - o[k]);
+}
 
 /*
  * Check one polygon: distinct corners, non-zero area, planar and convex
- * within POLY_TOLERANCE of its diameter. Newell's normal gives the plane;
- * convexity is every corner turning the same way about that normal.
+ * within POLY_TOLERANCE of its diameter D (mesh.h). Newell's normal N
+ * gives the plane and, as its length, twice the area; convexity is every
+ * corner turning the same way about N. All of it is computed on the
+ * corners relative to the first, scaled to the polygon's size: the same
+ * verdict wherever the polygon is and whatever its size, with rounding
+ * errors some 1e-16 of D (times the number of corners), far below the
+ * tolerance. A triangle is planar and, with an area, convex.
  */
 static noctStatus check_polygon(const double *v, const uint32_t *idx,
                                 uint32_t n, size_t poly, noctError *err)
@@ -143,45 +250,70 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
                 return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
                                  "polygon %zu: vertex %u appears twice", poly,
                                  idx[i]);
-    double normal[3] = {0, 0, 0}, diam = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-        const double *p = &v[3 * idx[i]], *q = &v[3 * idx[(i + 1) % n]];
-        normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        for (uint32_t j = 0; j < n; ++j) {
-            double d[3];
-            sub3(p, &v[3 * idx[j]], d);
-            double len = norm3(d);
-            if (len > diam)
-                diam = len;
+    const double *o = &v[3 * idx[0]];
+    double m = 0;
+    for (uint32_t i = 1; i < n; ++i)
+        for (int k = 0; k < 3; ++k)
+            m = noct_max(m, fabs(v[3 * idx[i] + k] - o[k]));
+    if (!(m > 0))
+        return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
+                         "polygon %zu has no area (its corners coincide)", poly);
+    const scaler s = scaler_for(m);
+    double normal[3] = {0, 0, 0}, diam2 = 0;
+    if (n == 3) {
+        double a[3], b[3], d[3];
+        corner_at(v, idx, 1, &s, a);
+        corner_at(v, idx, 2, &s, b);
+        cross3(a, b, normal);
+        sub3(b, a, d);
+        diam2 = noct_max(dot3(d, d), noct_max(dot3(a, a), dot3(b, b)));
+    } else {
+        for (uint32_t i = 0; i < n; ++i) {
+            double p[3], q[3], d[3];
+            corner_at(v, idx, i, &s, p);
+            corner_at(v, idx, (i + 1) % n, &s, q);
+            normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+            normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+            normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+            for (uint32_t j = i + 1; j < n; ++j) {
+                corner_at(v, idx, j, &s, q);
+                sub3(p, q, d);
+                diam2 = noct_max(diam2, dot3(d, d));
+            }
         }
     }
+    /* D >= m, scaled to at least 1/2: the tests below are far from
+     * underflow, and N at most 2 n D^2 far from overflow. */
     double nlen = norm3(normal);
-    /* Newell's normal has twice the polygon's area as its length. */
-    if (!(nlen > POLY_TOLERANCE * diam * diam))
+    if (!(nlen > POLY_TOLERANCE * diam2))
         return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
-                         "polygon %zu has no area (its corners are collinear)",
-                         poly);
+                         "polygon %zu has no area (its corners are collinear "
+                         "within %g of its size)", poly, POLY_TOLERANCE);
+    if (n == 3)
+        return NOCT_OK;
     for (int k = 0; k < 3; ++k)
         normal[k] /= nlen;
-    const double *o = &v[3 * idx[0]];
+    double diam = sqrt(diam2);
     for (uint32_t i = 1; i < n; ++i) {
         double d[3];
-        sub3(&v[3 * idx[i]], o, d);
-        if (fabs(dot3(d, normal)) > POLY_TOLERANCE * diam)
+        corner_at(v, idx, i, &s, d);
+        double off = fabs(dot3(d, normal));
+        if (off > POLY_TOLERANCE * diam)
             return noct_fail(err, NOCT_ERR_NONPLANAR, (long)poly, 0,
                              "polygon %zu: vertex %u is %g off the polygon's "
-                             "plane", poly, idx[i], fabs(dot3(d, normal)));
+                             "plane, more than %g of its diameter %g", poly,
+                             idx[i], ldexp(off, s.e), POLY_TOLERANCE,
+                             ldexp(diam, s.e));
     }
     for (uint32_t i = 0; i < n; ++i) {
-        const double *a = &v[3 * idx[i]], *b = &v[3 * idx[(i + 1) % n]],
-                     *c = &v[3 * idx[(i + 2) % n]];
-        double ab[3], bc[3], turn[3];
+        double a[3], b[3], c[3], ab[3], bc[3], turn[3];
+        corner_at(v, idx, i, &s, a);
+        corner_at(v, idx, (i + 1) % n, &s, b);
+        corner_at(v, idx, (i + 2) % n, &s, c);
         sub3(b, a, ab);
         sub3(c, b, bc);
         cross3(ab, bc, turn);
-        if (dot3(turn, normal) <= POLY_TOLERANCE * diam * diam)
+        if (dot3(turn, normal) <= POLY_TOLERANCE * diam2)
             return noct_fail(err, NOCT_ERR_NONCONVEX, (long)poly, 0,
                              "polygon %zu is not convex at vertex %u", poly,
                              idx[(i + 1) % n]);
@@ -401,15 +533,13 @@ static int cmp_dir_edge(const void *x, const void *y)
     return (p->a > q->a) - (p->a < q->a);
 }
 
-/* Add direction d to a list of unique directions up to sign (within a
- * relative 1e-12, which only affects how many axes are tried). Returns false
- * when the list is full. */
-static bool add_direction(double list[][3], size_t *n, const double d[3])
+/* Add unit vector u to a list of unique directions up to sign (within a
+ * relative 1e-12, which only affects how many axes are tried); u = 0 adds
+ * nothing. Returns false when the list is full. */
+static bool add_direction(double list[][3], size_t *n, const double u[3])
 {
-    double len = norm3(d);
-    if (!(len > 0))
+    if (u[0] == 0 && u[1] == 0 && u[2] == 0)
         return true;
-    double u[3] = {d[0] / len, d[1] / len, d[2] / len};
     for (size_t i = 0; i < *n; ++i) {
         double dp = dot3(list[i], u);
         if (fabs(fabs(dp) - 1) < 1e-12)
@@ -417,16 +547,29 @@ static bool add_direction(double list[][3], size_t *n, const double d[3])
     }
     if (*n == NOCT_SAT_MAX)
         return false;
-    memcpy(list[(*n)++], u, sizeof u);
+    memcpy(list[(*n)++], u, 3 * sizeof *u);
     return true;
 }
 
 static noctStatus compute_convexity(noctMesh *m, noctError *err)
 {
+    /* Each triangle's plane: its unit normal (unit_normal(): the same
+     * wherever the mesh is and whatever its size) and offset. The planes
+     * are kept for the filter; the normals tell real edges and give the
+     * face directions. */
+    m->plane = malloc(m->nt * sizeof *m->plane);
     size_t ne = 3 * m->nt;
     dir_edge *e = malloc(ne * sizeof *e);
-    if (e == NULL)
+    if (e == NULL || m->plane == NULL) {
+        free(e);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (size_t t = 0; t < m->nt; ++t) {
+        const double *p0 = &m->v[3 * m->tri[3 * t]];
+        unit_normal(p0, &m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t + 2]],
+                    m->plane[t]);
+        m->plane[t][3] = dot3(m->plane[t], p0);
+    }
     for (size_t t = 0; t < m->nt; ++t)
         for (int c = 0; c < 3; ++c)
             e[3 * t + c] = (dir_edge){m->tri[3 * t + c],
@@ -453,69 +596,43 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
             convex = false;
         /* An edge between triangles whose planes differ is an edge of the
          * solid, not a diagonal of a (nearly) flat polygon. */
-        double np[3], nq[3], a[3], b[3];
-        sub3(t1, t0, a);
-        sub3(t2, t0, b);
-        cross3(a, b, np);
-        sub3(&m->v[3 * m->tri[3 * q->tri + 1]], &m->v[3 * m->tri[3 * q->tri]], a);
-        sub3(&m->v[3 * m->tri[3 * q->tri + 2]], &m->v[3 * m->tri[3 * q->tri]], b);
-        cross3(a, b, nq);
-        double c = dot3(np, nq) / (norm3(np) * norm3(nq));
-        if (sat && c < 1 - 1e-9) {
-            double d[3];
+        if (sat && dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
+            double d[3], u[3];
             sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
-            sat = add_direction(sat_edge, &m->nsat_edges, d);
+            unit3(d, u);
+            sat = add_direction(sat_edge, &m->nsat_edges, u);
         }
     }
-    for (size_t t = 0; t < m->nt && sat; ++t) {
-        double a[3], b[3], n[3];
-        sub3(&m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t]], a);
-        sub3(&m->v[3 * m->tri[3 * t + 2]], &m->v[3 * m->tri[3 * t]], b);
-        cross3(a, b, n);
-        sat = add_direction(sat_face, &m->nsat_faces, n);
-    }
+    for (size_t t = 0; t < m->nt && sat; ++t)
+        sat = add_direction(sat_face, &m->nsat_faces, m->plane[t]);
     /* The filter needs no convexity to be sound (a solid lies inside the
      * hull of its vertices), only to be useful: small meshes with few
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
     free(e);
-    if (m->nsat_faces > 0) {
-        size_t naxes = m->nsat_faces + m->nsat_edges;
-        m->axis = malloc(naxes * sizeof *m->axis);
-        if (m->axis == NULL)
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        for (size_t i = 0; i < naxes; ++i) {
-            sat_axis *a = &m->axis[i];
-            memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
-                   sizeof a->u);
-            a->lo = INFINITY;
-            a->hi = -INFINITY;
-            for (size_t k = 0; k < m->nv; ++k) {
-                double d = dot3(a->u, &m->v[3 * k]);
-                a->lo = d < a->lo ? d : a->lo;
-                a->hi = d > a->hi ? d : a->hi;
-            }
-        }
-    }
-    m->plane = NULL;
-    if (m->nsat_faces > 0) {
-        m->plane = malloc(m->nt * sizeof *m->plane);
-        if (m->plane == NULL)
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        for (size_t t = 0; t < m->nt; ++t) {
-            const double *p0 = &m->v[3 * m->tri[3 * t]];
-            double a[3], b[3], n[3];
-            sub3(&m->v[3 * m->tri[3 * t + 1]], p0, a);
-            sub3(&m->v[3 * m->tri[3 * t + 2]], p0, b);
-            cross3(a, b, n);
-            double len = norm3(n);
-            for (int k = 0; k < 3; ++k)
-                m->plane[t][k] = len > 0 ? n[k] / len : 0;
-            m->plane[t][3] = dot3(m->plane[t], p0);
-        }
-    }
     m->convex = convex;
+    if (m->nsat_faces == 0) { /* no filter, no planes */
+        free(m->plane);
+        m->plane = NULL;
+        return NOCT_OK;
+    }
+    size_t naxes = m->nsat_faces + m->nsat_edges;
+    m->axis = malloc(naxes * sizeof *m->axis);
+    if (m->axis == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    for (size_t i = 0; i < naxes; ++i) {
+        sat_axis *a = &m->axis[i];
+        memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
+               sizeof a->u);
+        a->lo = INFINITY;
+        a->hi = -INFINITY;
+        for (size_t k = 0; k < m->nv; ++k) {
+            double d = dot3(a->u, &m->v[3 * k]);
+            a->lo = d < a->lo ? d : a->lo;
+            a->hi = d > a->hi ? d : a->hi;
+        }
+    }
     return NOCT_OK;
 }
 
@@ -532,12 +649,24 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
      * (a gas of oriented boxes is made of meshes that rounding left a hair
      * off convex). */
     if (!m->convex && m->nv > HULL_MIN_VERTICES) {
-        FILE *quiet = fopen("/dev/null", "w");
+        /* qhull's tolerances follow the magnitude of the coordinates it
+         * is given: it gets the vertices relative to the mesh's least
+         * corner and scaled to its size (see scaler), so that the hull
+         * depends on neither the mesh's place nor its size. */
+        double *rel = malloc(3 * m->nv * sizeof *rel);
+        FILE *quiet = rel != NULL ? fopen("/dev/null", "w") : NULL;
         if (quiet != NULL) {
+            double emax = 0;
+            for (int k = 0; k < 3; ++k)
+                emax = noct_max(emax, m->hi[k] - m->lo[k]);
+            const scaler sc = scaler_for(emax);
+            for (size_t i = 0; i < m->nv; ++i)
+                for (int k = 0; k < 3; ++k)
+                    rel[3 * i + k] = scaled(&sc, m->v[3 * i + k] - m->lo[k]);
             qhT qh_storage, *qh = &qh_storage;
             char cmd[] = "qhull";
             qh_zero(qh, quiet);
-            if (qh_new_qhull(qh, 3, (int)m->nv, m->v, False, cmd, NULL, quiet) == 0) {
+            if (qh_new_qhull(qh, 3, (int)m->nv, rel, False, cmd, NULL, quiet) == 0) {
                 m->hull = malloc((size_t)qh->num_vertices * sizeof *m->hull);
                 if (m->hull != NULL) {
                     vertexT *vertex;
@@ -550,6 +679,7 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
             qh_memfreeshort(qh, &curlong, &totlong);
             fclose(quiet);
         }
+        free(rel);
     }
     if (m->hull == NULL) { /* convex, or qhull unavailable: every vertex */
         m->hull = malloc(m->nv * sizeof *m->hull);
@@ -821,8 +951,21 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
             m->lo[k] = noct_min(m->lo[k], m->v[3 * i + k]);
             m->hi[k] = noct_max(m->hi[k], m->v[3 * i + k]);
         }
-    /* Fan triangulation, and the signed volume to fix the orientation. */
-    double volume = 0;
+    /* Fan triangulation, and the signed volume to fix the orientation:
+     * 6 V = sum over the triangles of det(p0 - lo, p1 - p0, p2 - p0), on
+     * differences scaled to the mesh's size (see scaler). Its rounding is
+     * bounded by (ntri + 16) half-ulps of the sum of the terms'
+     * magnitudes (the differences, the cross product, the dot product and
+     * the sum), and underflow adds under 64 2^-1075 a triangle; a volume
+     * that does not clear both the tolerance and that bound has no sign to
+     * trust. */
+    double ext[3], emax = 0;
+    for (int k = 0; k < 3; ++k) {
+        ext[k] = m->hi[k] - m->lo[k];
+        emax = noct_max(emax, ext[k]);
+    }
+    const scaler sc = scaler_for(emax > 0 ? emax : 1);
+    double volume = 0, mag = 0;
     size_t t = 0;
     for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
         for (uint32_t c = 1; c + 1 < sizes[p]; ++c, ++t) {
@@ -830,21 +973,28 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
             tri[0] = indices[base];
             tri[1] = indices[base + c];
             tri[2] = indices[base + c + 1];
-            double a[3], b[3], cr[3];
-            sub3(&m->v[3 * tri[1]], &m->v[3 * tri[0]], a);
-            sub3(&m->v[3 * tri[2]], &m->v[3 * tri[0]], b);
+            const double *p0 = &m->v[3 * tri[0]], *p1 = &m->v[3 * tri[1]],
+                         *p2 = &m->v[3 * tri[2]];
+            double r[3], a[3], b[3], cr[3];
+            for (int k = 0; k < 3; ++k) {
+                r[k] = scaled(&sc, p0[k] - m->lo[k]);
+                a[k] = scaled(&sc, p1[k] - p0[k]);
+                b[k] = scaled(&sc, p2[k] - p0[k]);
+            }
             cross3(a, b, cr);
-            double rel[3];
-            sub3(&m->v[3 * tri[0]], m->lo, rel);
-            volume += dot3(rel, cr);
+            volume += dot3(r, cr);
+            mag += fabs(r[0]) * (fabs(a[1] * b[2]) + fabs(a[2] * b[1])) +
+                   fabs(r[1]) * (fabs(a[2] * b[0]) + fabs(a[0] * b[2])) +
+                   fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));
         }
     }
-    double ext[3];
-    sub3(m->hi, m->lo, ext);
-    double scale = ext[0] * ext[1] * ext[2];
-    if (!(fabs(volume) > 1e-12 * scale))
+    double box = scaled(&sc, ext[0]) * scaled(&sc, ext[1]) * scaled(&sc, ext[2]);
+    double rounding = (double)(ntri + 16) * 0x1p-53 * mag + (double)ntri * 0x1p-1068;
+    if (!(fabs(volume) > VOLUME_TOLERANCE * box) || !(fabs(volume) > rounding))
         st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
-                       "the mesh encloses no volume");
+                       "the mesh encloses no volume (none over %.2g of its "
+                       "bounding box's, or within its rounding)",
+                       VOLUME_TOLERANCE / 6);
     if (st == NOCT_OK && volume < 0) /* inside out: flip every triangle */
         for (size_t i = 0; i < ntri; ++i) {
             uint32_t tmp = m->tri[3 * i + 1];
@@ -883,6 +1033,15 @@ noctStatus noctMeshCreateBox(double hx, double hy, double hz, noctMesh **mesh,
     if (!positive_finite(hx) || !positive_finite(hy) || !positive_finite(hz))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "box half-extents (%g, %g, %g) must be positive", hx, hy, hz);
+    double hmax = fmax(hx, fmax(hy, hz)), hmin = fmin(hx, fmin(hy, hz));
+    if (hmax > NOCT_MAX_COORDINATE)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "box half-extents (%g, %g, %g): beyond the coordinate "
+                         "limit of %g", hx, hy, hz, NOCT_MAX_COORDINATE);
+    if (hmin / BOX_MIN_RATIO < hmax) /* hmin 2^29 is exact */
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "box half-extents (%g, %g, %g): too thin, the least is "
+                         "under 2^-29 of the largest", hx, hy, hz);
     double v[24];
     for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
         v[3 * i] = (i & 4) ? hx : -hx;
@@ -909,11 +1068,27 @@ noctStatus noctMeshCreateOrientedBox(const double half[3],
             return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
                              "oriented box: a half-extent or rotation entry "
                              "is not finite");
-    if (!positive_finite(half[0]) || !positive_finite(half[1]) ||
-        !positive_finite(half[2]))
+    double hmax = fmax(half[0], fmax(half[1], half[2]));
+    double hmin = fmin(half[0], fmin(half[1], half[2]));
+    /* Below the normal doubles, the rotated corners would lose their
+     * precision: a corner is rounded to within 2^-1074 at best. */
+    if (!(hmin >= DBL_MIN))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "oriented box: half-extents (%g, %g, %g) must be "
-                         "positive", half[0], half[1], half[2]);
+                         "positive and at least %g", half[0], half[1], half[2],
+                         DBL_MIN);
+    /* A corner has a coordinate of at least hmax / sqrt(3): past this,
+     * beyond the limit. */
+    if (hmax > 2 * NOCT_MAX_COORDINATE)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "oriented box: half-extents (%g, %g, %g) put its "
+                         "corners beyond the coordinate limit of %g", half[0],
+                         half[1], half[2], NOCT_MAX_COORDINATE);
+    if (hmin / BOX_MIN_RATIO < hmax)
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "oriented box: half-extents (%g, %g, %g): too thin, the "
+                         "least is under 2^-29 of the largest", half[0], half[1],
+                         half[2]);
     /* R^T R = I and det R = +1, within 1e-9. */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {

@@ -1330,6 +1330,400 @@ START_TEST(witness_nearly_a_box)
 }
 END_TEST
 
+/* ---- every scale, every position ------------------------------------------------ */
+
+/* The scales of the documented range the tests visit: near both ends of it
+ * and between, where squares and cubes of coordinates leave the doubles. */
+static const double SCALES[] = {1e-300, 1e-150, 1e75, 1e99};
+#define NSCALES (sizeof SCALES / sizeof *SCALES)
+
+static poly_list pl_scaled(const poly_list *p, double s)
+{
+    poly_list q = *p;
+    for (size_t i = 0; i < 3 * p->nv; ++i)
+        q.v[i] = p->v[i] * s;
+    return q;
+}
+
+/* p moved by (off, off, off); every coordinate must move exactly. */
+static poly_list pl_moved(const poly_list *p, double off)
+{
+    poly_list q = *p;
+    for (size_t i = 0; i < 3 * p->nv; ++i) {
+        q.v[i] = p->v[i] + off;
+        ck_assert_msg(q.v[i] - off == p->v[i], "offset %g is not exact", off);
+    }
+    return q;
+}
+
+/* The L-shaped prism: the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2) between
+ * z = 0 and z = 1. With 'split' each cap is two convex quadrilaterals
+ * along the diagonal (0,0)-(1,1), a valid non-convex solid; without, each
+ * cap is the L itself, a non-convex polygon. */
+static poly_list pl_lprism(bool split)
+{
+    static const double L[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+    poly_list p = {0};
+    for (int z = 0; z < 2; ++z)
+        for (int i = 0; i < 6; ++i)
+            pl_vertex(&p, L[i][0], L[i][1], z);
+    if (split) {
+        const uint32_t top1[4] = {6, 7, 8, 9}, top2[4] = {6, 9, 10, 11};
+        const uint32_t bot1[4] = {3, 2, 1, 0}, bot2[4] = {5, 4, 3, 0};
+        pl_poly(&p, 4, top1);
+        pl_poly(&p, 4, top2);
+        pl_poly(&p, 4, bot1);
+        pl_poly(&p, 4, bot2);
+    } else {
+        const uint32_t top[6] = {6, 7, 8, 9, 10, 11}, bot[6] = {5, 4, 3, 2, 1, 0};
+        pl_poly(&p, 6, top);
+        pl_poly(&p, 6, bot);
+    }
+    for (uint32_t i = 0; i < 6; ++i) {
+        uint32_t j = (i + 1) % 6;
+        const uint32_t side[4] = {i, j, j + 6, i + 6};
+        pl_poly(&p, 4, side);
+    }
+    return p;
+}
+
+/* Create a mesh; its status, and its convexity flag when created. */
+static noctStatus try_convex(const poly_list *p, bool *convex, noctError *err)
+{
+    noctMesh *m = NULL;
+    noctStatus st = noctMeshCreate(p->v, p->nv, p->sizes, p->np, p->idx, &m, err);
+    if (st == NOCT_OK) {
+        *convex = noctMeshIsConvex(m);
+        noctMeshDestroy(m);
+    } else {
+        ck_assert_ptr_null(m);
+    }
+    return st;
+}
+
+static void expect_valid(const poly_list *p, bool convex, double s, const char *what)
+{
+    noctError err;
+    bool got = !convex;
+    noctStatus st = try_convex(p, &got, &err);
+    ck_assert_msg(st == NOCT_OK, "%s at scale %g: %s", what, s,
+                  st == NOCT_OK ? "" : err.message);
+    ck_assert_msg(got == convex, "%s at scale %g: convex %d", what, s, got);
+}
+
+static void expect_refused(const poly_list *p, noctStatus want, const char *why, double s,
+                           const char *what)
+{
+    noctError err;
+    bool convex;
+    noctStatus st = try_convex(p, &convex, &err);
+    ck_assert_msg(st == want, "%s at scale %g: got %s, want %s", what, s,
+                  noctStatusString(st), noctStatusString(want));
+    ck_assert_msg(strstr(err.message, why) != NULL, "%s at scale %g: '%s' does not say '%s'",
+                  what, s, err.message, why);
+}
+
+/* Boxes, tetrahedra and an L-shaped prism are valid at every scale, with
+ * their convexity; their degenerate, bent and non-convex variants are
+ * refused for that reason at every scale; and the polygon tolerance is
+ * relative to the polygon: a face bent by 2^-33 of its size passes and
+ * one bent by 2^-24 does not, a box 1e-6 thin passes and one 1e-10 thin
+ * has faces without area, whatever the scale. */
+START_TEST(meshes_at_every_scale)
+{
+    double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    const poly_list box = pl_box(lo, hi);
+    const double reg[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const double skew[4][3] = {{1, 2, 3}, {-2, 1, 0}, {0, -3, 1}, {2, 2, -2}};
+    const poly_list tet = pl_tetra(reg), sk = pl_tetra(skew);
+    const poly_list ell = pl_lprism(true), lcap = pl_lprism(false);
+    const double flat_pts[4][3] = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 2, 0}};
+    const double line_pts[4][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 1}};
+    const poly_list flat = pl_tetra(flat_pts), line = pl_tetra(line_pts);
+    poly_list bent = box, nearly = box, thin = box, slab = box;
+    /* corner (1, 1, 1) into the box, off the face x = 1: the faces' fan
+     * diagonals from corner 7 fold inwards */
+    bent.v[3 * 7] -= 0x1p-23;
+    nearly.v[3 * 7] -= 0x1p-32;
+    for (int i = 0; i < 8; ++i) {
+        thin.v[3 * i + 2] *= 1e-10;
+        slab.v[3 * i + 2] *= 1e-6;
+    }
+    for (size_t i = 0; i < NSCALES; ++i) {
+        double s = SCALES[i];
+        poly_list p;
+        p = pl_scaled(&box, s);
+        expect_valid(&p, true, s, "box");
+        p = pl_scaled(&tet, s);
+        expect_valid(&p, true, s, "tetrahedron");
+        p = pl_scaled(&sk, s);
+        expect_valid(&p, true, s, "skew tetrahedron");
+        p = pl_scaled(&ell, s);
+        expect_valid(&p, false, s, "L prism");
+        p = pl_scaled(&nearly, s);
+        expect_valid(&p, false, s, "box bent by 2^-33");
+        p = pl_scaled(&slab, s);
+        expect_valid(&p, true, s, "slab 1e-6 thin");
+        p = pl_scaled(&flat, s);
+        expect_refused(&p, NOCT_ERR_DEGENERATE, "volume", s, "flat tetrahedron");
+        p = pl_scaled(&line, s);
+        expect_refused(&p, NOCT_ERR_DEGENERATE, "no area", s, "collinear face");
+        p = pl_scaled(&thin, s);
+        expect_refused(&p, NOCT_ERR_DEGENERATE, "no area", s, "box 1e-10 thin");
+        p = pl_scaled(&bent, s);
+        expect_refused(&p, NOCT_ERR_NONPLANAR, "plane", s, "box bent by 2^-24");
+        p = pl_scaled(&lcap, s);
+        expect_refused(&p, NOCT_ERR_NONCONVEX, "not convex", s, "L-shaped face");
+    }
+}
+END_TEST
+
+/* The box constructors over the documented range: what they accept, and
+ * what they refuse for the reasons their documentation gives. */
+START_TEST(box_constructors_at_every_scale)
+{
+    static const double sizes[] = {0x1p-1022, 1e-300, 1e-150, 1e75, 1e99, 1e100};
+    /* a rotation about no axis of the frame (entries rounded) */
+    const double rot[9] = {0.36, -0.48, 0.8, 0.8, 0.6, 0, -0.48, 0.64, 0.6};
+    noctMesh *m = NULL;
+    noctError err;
+    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; ++i) {
+        double s = sizes[i];
+        noctStatus st = noctMeshCreateBox(s, s / 2, s * 0x1p-28, &m, &err);
+        ck_assert_msg(st == NOCT_OK, "box %g: %s", s, st == NOCT_OK ? "" : err.message);
+        ck_assert(noctMeshIsConvex(m));
+        double lo[3], hi[3];
+        noctMeshBounds(m, lo, hi);
+        ck_assert(lo[0] == -s && hi[1] == s / 2 && hi[2] == s * 0x1p-28);
+        noctMeshDestroy(m);
+        ck_assert_int_eq(noctMeshCreateBox(s * 0x1p-30, s, s, &m, &err), NOCT_ERR_DEGENERATE);
+        ck_assert_ptr_null(m);
+        ck_assert_msg(strstr(err.message, "thin") != NULL, "%s", err.message);
+        if (s > 1e99)
+            continue; /* its rotated corners go past the limit */
+        const double half[3] = {s < 1 ? 4 * s : s, s < 1 ? 2 * s : s / 2, s < 1 ? s : s / 4};
+        st = noctMeshCreateOrientedBox(half, rot, &m, &err);
+        ck_assert_msg(st == NOCT_OK, "oriented box %g: %s", s, st == NOCT_OK ? "" : err.message);
+        noctMeshDestroy(m);
+        const double sliver[3] = {s < 1 ? s * 0x1p30 : s, s < 1 ? s * 0x1p30 : s,
+                                  s < 1 ? s : s * 0x1p-30};
+        ck_assert_int_eq(noctMeshCreateOrientedBox(sliver, rot, &m, &err), NOCT_ERR_DEGENERATE);
+        ck_assert_msg(strstr(err.message, "thin") != NULL, "%s", err.message);
+    }
+    /* subnormal half-extents are fine: the corners are exact */
+    ck_assert_int_eq(noctMeshCreateBox(0x1p-1074, 0x1p-1074, 0x1p-1073, &m, &err), NOCT_OK);
+    ck_assert(noctMeshIsConvex(m));
+    noctMeshDestroy(m);
+    ck_assert_int_eq(noctMeshCreateBox(2e100, 1e100, 1e100, &m, &err), NOCT_ERR_TOO_LARGE);
+    ck_assert_ptr_null(m);
+    const double huge[3] = {1e100, 1e100, 1e100};
+    ck_assert_int_eq(noctMeshCreateOrientedBox(huge, rot, &m, &err), NOCT_ERR_TOO_LARGE);
+    const double below[3] = {1, 1, 0x1p-1030};
+    ck_assert_int_eq(noctMeshCreateOrientedBox(below, rot, &m, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_null(m);
+}
+END_TEST
+
+/* The exact level's answer, both ways round, must be want, and the box
+ * level must not miss it. (Not the convex level: libccd's GJK has
+ * absolute tolerances.) */
+static void expect_exact(const noctMesh *a, const double ta[3], const noctMesh *b,
+                         const double tb[3], bool want)
+{
+    bool ab = collide(a, ta, b, tb, NOCT_ACCURACY_EXACT);
+    bool ba = collide(b, tb, a, ta, NOCT_ACCURACY_EXACT);
+    ck_assert_msg(ab == want && ba == want, "exact: got %d/%d, want %d", ab, ba, want);
+    if (want)
+        ck_assert(collide(a, ta, b, tb, NOCT_ACCURACY_BOX));
+}
+
+/* Two boxes of each scale (the power of two at or below it, so that the
+ * placements are exact) touch, overlap and miss exactly as at scale 1:
+ * the exact level on meshes at the ends of the range. */
+START_TEST(collide_at_every_scale)
+{
+    for (size_t i = 0; i < NSCALES; ++i) {
+        double s = ldexp(1, ilogb(SCALES[i]));
+        noctMesh *a, *b;
+        ck_assert_int_eq(noctMeshCreateBox(s, s, s, &a, NULL), NOCT_OK);
+        ck_assert_int_eq(noctMeshCreateBox(s / 2, s / 4, s, &b, NULL), NOCT_OK);
+        const double touch[3] = {1.5 * s, 0.5 * s, 0}, over[3] = {1.25 * s, 0.5 * s, 0};
+        const double miss[3] = {1.5 * s * (1 + 0x1p-40), 0.5 * s, 0};
+        const double corner[3] = {1.5 * s, 1.25 * s, 2 * s};
+        expect_exact(a, ORIGIN, b, touch, true);
+        expect_exact(a, ORIGIN, b, over, true);
+        expect_exact(a, ORIGIN, b, miss, false);
+        expect_exact(a, ORIGIN, b, corner, true);
+        noctMeshDestroy(a);
+        noctMeshDestroy(b);
+    }
+}
+END_TEST
+
+/* The separating-axis filter has its axes, face normals and edge
+ * directions, at every scale: two tetrahedra whose bounding boxes overlap
+ * but which a face plane of one separates are told apart by the filter,
+ * without a triangle test. (Not at 1e-300: the filter's margin is at
+ * least 1e-300, to cover underflow, so there it never separates.) */
+START_TEST(filter_axes_at_every_scale)
+{
+    const double reg[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const poly_list tet = pl_tetra(reg);
+    static const double scales[] = {1e-150, 1, 1e75, 1e99};
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; ++i) {
+        double s = scales[i];
+        poly_list p = pl_scaled(&tet, s);
+        noctMesh *m = pl_mesh(&p);
+        const double t[3] = {0.6 * s, 0.6 * s, 0.6 * s};
+        noctNarrowStats st = {0};
+        bool hit = true;
+        ck_assert_int_eq(noctCollide(m, ORIGIN, m, t, NOCT_ACCURACY_EXACT, &hit, &st), NOCT_OK);
+        ck_assert(!hit);
+        ck_assert_msg(st.sat_rejects == 1 && st.triangle_pairs == 0,
+                      "scale %g: %llu filter rejects, %llu triangle pairs", s,
+                      (unsigned long long)st.sat_rejects,
+                      (unsigned long long)st.triangle_pairs);
+        noctMeshDestroy(m);
+    }
+}
+END_TEST
+
+/* A rotation with rational entries (denominator 325), Rz Rx Rz for the
+ * Pythagorean angles (3, 4, 5) and (5, 12, 13), times 325: a box whose
+ * half-extents are 325 times integers has integer corners and exactly
+ * planar faces. */
+static void rational_rotation(long long r[9])
+{
+    const long long z[9] = {3, -4, 0, 4, 3, 0, 0, 0, 5};      /* / 5 */
+    const long long x[9] = {13, 0, 0, 0, 5, -12, 0, 12, 5};   /* / 13 */
+    long long zx[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            zx[3 * i + j] = 0;
+            for (int k = 0; k < 3; ++k)
+                zx[3 * i + j] += z[3 * i + k] * x[3 * k + j];
+        }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            r[3 * i + j] = 0;
+            for (int k = 0; k < 3; ++k)
+                r[3 * i + j] += zx[3 * i + k] * z[3 * k + j];
+        }
+    /* an orthogonal matrix times 325: its columns are orthogonal and of
+     * length 325 */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            ck_assert(r[i] * r[j] + r[3 + i] * r[3 + j] + r[6 + i] * r[6 + j] ==
+                      (i == j ? 325 * 325 : 0));
+}
+
+/* The tilted box: half-extents (3, 2, 1) * 325 rotated by that rotation,
+ * scaled by 2^-12 (corners within 1/2 of the origin, on the 2^-12 grid),
+ * as 6 exactly planar quadrilaterals; no face is parallel to an axis. */
+static poly_list pl_tilted_box(void)
+{
+    long long r[9];
+    rational_rotation(r);
+    const long long h[3] = {3, 2, 1};
+    poly_list p = {0};
+    for (int i = 0; i < 8; ++i) {
+        long long c[3];
+        const long long s[3] = {(i & 4) ? 1 : -1, (i & 2) ? 1 : -1, (i & 1) ? 1 : -1};
+        for (int k = 0; k < 3; ++k)
+            c[k] = r[3 * k] * s[0] * h[0] + r[3 * k + 1] * s[1] * h[1] +
+                   r[3 * k + 2] * s[2] * h[2];
+        pl_vertex(&p, (double)c[0] * 0x1p-12, (double)c[1] * 0x1p-12, (double)c[2] * 0x1p-12);
+    }
+    static const uint32_t q[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                     {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (int f = 0; f < 6; ++f)
+        pl_poly(&p, 4, q[f]);
+    return p;
+}
+
+/* A UV sphere of radius 1: 8 slices, 5 stacks, 64 triangles, its vertices
+ * rounded to the 2^-12 grid (the finest that 2^40 + x keeps exact). */
+static poly_list pl_sphere(void)
+{
+    const double pi = 3.14159265358979323846;
+    poly_list p = {0};
+    pl_vertex(&p, 0, 0, -1);
+    for (int st = 1; st < 5; ++st) {
+        double phi = pi * st / 5 - pi / 2, z = sin(phi), r = cos(phi);
+        for (int sl = 0; sl < 8; ++sl) {
+            double th = 2 * pi * sl / 8;
+            pl_vertex(&p, round(r * cos(th) * 4096) / 4096, round(r * sin(th) * 4096) / 4096,
+                      round(z * 4096) / 4096);
+        }
+    }
+    pl_vertex(&p, 0, 0, 1);
+    for (uint32_t sl = 0; sl < 8; ++sl) {
+        uint32_t n = (sl + 1) % 8;
+        const uint32_t bottom[3] = {0, 1 + n, 1 + sl}, top[3] = {33, 25 + sl, 25 + n};
+        pl_poly(&p, 3, bottom);
+        pl_poly(&p, 3, top);
+        for (uint32_t st = 0; st < 3; ++st) {
+            uint32_t a = 1 + 8 * st + sl, b = 1 + 8 * st + n;
+            const uint32_t t1[3] = {a, b, b + 8}, t2[3] = {a, b + 8, a + 8};
+            pl_poly(&p, 3, t1);
+            pl_poly(&p, 3, t2);
+        }
+    }
+    return p;
+}
+
+/* The vertex of p with the least z, which must be the only one there. */
+static const double *lowest_vertex(const poly_list *p)
+{
+    size_t best = 0;
+    for (size_t i = 1; i < p->nv; ++i)
+        if (p->v[3 * i + 2] < p->v[3 * best + 2])
+            best = i;
+    for (size_t i = 0; i < p->nv; ++i)
+        ck_assert(i == best || p->v[3 * i + 2] > p->v[3 * best + 2]);
+    return &p->v[3 * best];
+}
+
+/* The tilted box and the sphere moved exactly to 1e6, 1e9 and 2^40 from
+ * the origin are accepted as at the origin, with the same convexity, and
+ * a cube under their lowest vertex touches them, overlaps them when
+ * raised and misses them when lowered by 2^-10, wherever they are. */
+START_TEST(meshes_at_every_position)
+{
+    static const double offsets[] = {0, 1e6, 1e9, 0x1p40};
+    const poly_list shapes[2] = {pl_tilted_box(), pl_sphere()};
+    static const char *const names[2] = {"tilted box", "sphere"};
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.25, 0.25, 0.25, &cube, NULL), NOCT_OK);
+    for (int k = 0; k < 2; ++k) {
+        bool convex0 = false;
+        for (size_t i = 0; i < sizeof offsets / sizeof *offsets; ++i) {
+            double off = offsets[i];
+            poly_list p = pl_moved(&shapes[k], off);
+            noctError err;
+            noctMesh *m = NULL;
+            noctStatus st = noctMeshCreate(p.v, p.nv, p.sizes, p.np, p.idx, &m, &err);
+            ck_assert_msg(st == NOCT_OK, "%s at %g: %s", names[k], off,
+                          st == NOCT_OK ? "" : err.message);
+            if (i == 0)
+                convex0 = noctMeshIsConvex(m);
+            ck_assert_msg(noctMeshIsConvex(m) == convex0, "%s at %g: convexity", names[k], off);
+            const double *low = lowest_vertex(&p);
+            const double touch[3] = {low[0], low[1], low[2] - 0.25};
+            const double over[3] = {low[0], low[1], touch[2] + 0x1p-10};
+            const double miss[3] = {low[0], low[1], touch[2] - 0x1p-10};
+            expect_pair(m, ORIGIN, cube, touch, true, false);
+            expect_pair(m, ORIGIN, cube, over, true, true);
+            expect_pair(m, ORIGIN, cube, miss, false, false);
+            noctMeshDestroy(m);
+        }
+        if (k == 0)
+            ck_assert(convex0);
+    }
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 #ifndef NOCT_EFFICIENT
 START_TEST(die_null_arguments)
 {
@@ -1384,6 +1778,15 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, sat_filter_nearly_a_box);
     tcase_add_test(tc, witness_nearly_a_box);
     tcase_add_test(tc, level_timings);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("scale and position");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, meshes_at_every_scale);
+    tcase_add_test(tc, box_constructors_at_every_scale);
+    tcase_add_test(tc, collide_at_every_scale);
+    tcase_add_test(tc, filter_axes_at_every_scale);
+    tcase_add_test(tc, meshes_at_every_position);
     suite_add_tcase(s, tc);
 
 #ifndef NOCT_EFFICIENT

@@ -21,16 +21,37 @@
  * - finite vertex coordinates (#NOCT_ERR_NONFINITE) of magnitude at most
  *   #NOCT_MAX_COORDINATE (#NOCT_ERR_TOO_LARGE);
  * - polygons of at least 3 distinct, existing vertices
- *   (#NOCT_ERR_DEGENERATE, #NOCT_ERR_INDEX) that are planar within a
- *   relative tolerance of 1e-9 of the polygon's size (#NOCT_ERR_NONPLANAR)
- *   and strictly convex up to that tolerance, with non-zero area
- *   (#NOCT_ERR_NONCONVEX, #NOCT_ERR_DEGENERATE);
+ *   (#NOCT_ERR_DEGENERATE, #NOCT_ERR_INDEX) with an area, planar and
+ *   strictly convex within a tolerance of 1e-9 relative to the polygon's
+ *   own size. With D the polygon's diameter (the largest distance between
+ *   two of its corners) and N its Newell normal (whose length is twice its
+ *   area), a polygon must have
+ *   - an area: |N| > 1e-9 D^2 (#NOCT_ERR_DEGENERATE);
+ *   - every corner within 1e-9 D of the plane through its first corner
+ *     normal to N (#NOCT_ERR_NONPLANAR);
+ *   - at every corner b, between a and c, a turn
+ *     ((b - a) x (c - b)) . N / |N| > 1e-9 D^2 (#NOCT_ERR_NONCONVEX); for
+ *     a triangle, that is its area test;
  * - every edge shared by exactly two polygons (#NOCT_ERR_OPEN), which run
  *   along it in opposite directions (#NOCT_ERR_ORIENTATION);
- * - a non-zero enclosed volume (#NOCT_ERR_DEGENERATE).
+ * - an enclosed volume V with 6 |V| > 1e-12 (x1 - x0) (y1 - y0) (z1 - z0),
+ *   [x0, x1] x [y0, y1] x [z0, z1] being its bounding box, and larger
+ *   than a bound on its computation's rounding, so that its sign, which
+ *   tells outside from inside, is not rounding's (#NOCT_ERR_DEGENERATE).
  *
  * A mesh whose polygons all face inwards (negative volume) is accepted and
  * turned outside in: the solid is the same set of points.
+ *
+ * **Any size, any place.** The tests are computed on differences: between
+ * a polygon's corners and its first corner, and for the volume between the
+ * vertices and the bounding box's least corner, scaled by a power of two
+ * to the polygon's or the mesh's size. So the tolerances are the same at
+ * every size the coordinates allow (from #NOCT_MAX_COORDINATE down to the
+ * subnormal doubles), with rounding errors of about 1e-16 of the polygon's
+ * size (times its number of corners), far below them; and a mesh moved by
+ * a translation that keeps its coordinates exact (each moved coordinate a
+ * double equal to the sum) is accepted or refused alike, with the same
+ * convexity (noctMeshIsConvex()).
  *
  * **The solid, exactly.** Each polygon is split into a fan of triangles
  * from its first vertex; the solid is the closed region those triangles
@@ -98,8 +119,16 @@ NOCT_API noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
  * @pre @p mesh is not NULL.
  * @post On #NOCT_OK, @p *mesh is the box [-hx, hx] x [-hy, hy] x [-hz, hz]
  *       with 8 vertices and 6 quadrilaterals.
- * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID if a
- *         half-extent is not a finite positive number; #NOCT_ERR_NOMEM.
+ * @return #NOCT_OK for every box with half-extents in (0,
+ *         #NOCT_MAX_COORDINATE] (subnormal ones included) whose least is
+ *         at least 2^-29 of its largest; #NOCT_ERR_NONFINITE if a
+ *         half-extent is not finite; #NOCT_ERR_INVALID if one is not
+ *         positive; #NOCT_ERR_TOO_LARGE if one exceeds
+ *         #NOCT_MAX_COORDINATE; #NOCT_ERR_DEGENERATE if the least is under
+ *         2^-29 (about 1.9e-9) of the largest: the faces across the thin
+ *         side would be too thin for the polygons' tolerance (see the
+ *         module text), which such a ratio clears by far;
+ *         #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctMeshCreateBox(double hx, double hy, double hz,
                                       noctMesh **mesh, noctError *err);
@@ -118,9 +147,18 @@ NOCT_API noctStatus noctMeshCreateBox(double hx, double hy, double hz,
  * @post On #NOCT_OK, @p *mesh is that box, with 8 vertices and 12
  *       triangles (rounding makes its faces only nearly planar, so they
  *       are triangulated).
- * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID if a
- *         half-extent is not finite and positive or @p rotation is not
- *         orthonormal with determinant +1 within 1e-9; #NOCT_ERR_NOMEM.
+ * @return #NOCT_OK for every box whose half-extents are at least DBL_MIN
+ *         and whose least is at least 2^-29 of its largest, with corners
+ *         within #NOCT_MAX_COORDINATE; #NOCT_ERR_NONFINITE if a
+ *         half-extent or a rotation entry is not finite;
+ *         #NOCT_ERR_INVALID if a half-extent is under DBL_MIN (the least
+ *         normal double: below it the rotated corners lose their
+ *         precision; zero and negative ones included) or @p rotation is
+ *         not orthonormal with determinant +1 within 1e-9;
+ *         #NOCT_ERR_TOO_LARGE if a corner has a coordinate beyond
+ *         #NOCT_MAX_COORDINATE; #NOCT_ERR_DEGENERATE if the least
+ *         half-extent is under 2^-29 (about 1.9e-9) of the largest, as
+ *         for noctMeshCreateBox(); #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
                                               const double rotation[9],
