@@ -5,9 +5,23 @@
  * Fast Robust Geometric Predicates", 1997), and an exact integer evaluation
  * when the filter cannot prove the sign.
  *
- * The bounds assume no underflow or overflow. A permanent (the sum of the
- * absolute values of the determinant's terms) below 1e-250, or not finite,
- * sends the evaluation to the exact path, where neither can happen.
+ * The bounds assume no underflow or overflow. An overflow makes the
+ * permanent (the sum of the absolute values of the determinant's terms)
+ * infinite or NaN, which sends the evaluation to the exact path, where
+ * neither can happen. Underflow (gradual, IEEE 754's default) costs sums
+ * and differences nothing, and a product at most 2^-1075 beyond its
+ * relative rounding error; stage A's analysis holds for the computation
+ * without those absolute errors, which add up to about 2^-1074 in
+ * orient2d and to less than 2^-1073 (1 + |adz| + |bdz| + |cdz|) in
+ * orient3d, where the products of two differences are multiplied by a
+ * third (the permanent is off by as much). The filter accepts only
+ * |det| > E = fl(bound permanent), so |det| is at least the double after
+ * E, at least E (1 + 2^-53): a margin of about 2^-103 permanent. A
+ * permanent below 1e-250 (times 1 + |adz| + |bdz| + |cdz| in orient3d)
+ * goes to the exact path; above, the underflow errors are below 2^-240
+ * permanent, far inside the margin. The factor matters: with axes of
+ * unlike scales, a product of two tiny differences can underflow, then be
+ * multiplied by a huge third one, while the permanent is large.
  *
  * The exact path. A finite nonzero double is m 2^q with m an odd integer
  * below 2^53 and q >= -1074, and its magnitude is below 2^k for some
@@ -52,10 +66,11 @@ static int sign_of(double x)
     return (x > 0) - (x < 0);
 }
 
-/* The filter's verdict, or 2 if it cannot decide. */
-static int filtered(double det, double permanent, double bound)
+/* The filter's verdict, or 2 if it cannot decide: also when the permanent
+ * is below least, where underflow may have mattered (see the top). */
+static int filtered(double det, double permanent, double bound, double least)
 {
-    if (!isfinite(permanent) || permanent < TINY)
+    if (!isfinite(permanent) || permanent < least)
         return 2;
     if (fabs(det) > bound * permanent)
         return sign_of(det);
@@ -313,7 +328,7 @@ int noct_orient2d(const double a[2], const double b[2], const double c[2],
     double acx = a[0] - c[0], bcx = b[0] - c[0];
     double acy = a[1] - c[1], bcy = b[1] - c[1];
     double l = acx * bcy, r = acy * bcx;
-    int s = filtered(l - r, fabs(l) + fabs(r), CCW_BOUND);
+    int s = filtered(l - r, fabs(l) + fabs(r), CCW_BOUND, TINY);
     if (s != 2)
         return s;
     if (fallbacks != NULL)
@@ -335,7 +350,8 @@ int noct_orient3d(const double a[3], const double b[3], const double c[3],
     double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * fabs(adz) +
                        (fabs(cdxady) + fabs(adxcdy)) * fabs(bdz) +
                        (fabs(adxbdy) + fabs(bdxady)) * fabs(cdz);
-    int s = filtered(det, permanent, O3D_BOUND);
+    double least = TINY * (1 + fabs(adz) + fabs(bdz) + fabs(cdz));
+    int s = filtered(det, permanent, O3D_BOUND, least);
     if (s != 2)
         return s;
     if (fallbacks != NULL)
