@@ -2,18 +2,57 @@
 /*
  * Exact orientation predicates: a floating-point filter with Shewchuk's
  * stage-A error bounds ("Adaptive Precision Floating-Point Arithmetic and
- * Fast Robust Geometric Predicates", 1997), and GMP rationals when the
- * filter cannot prove the sign. A double converts to a rational exactly,
- * so the fallback's sign is the true sign.
+ * Fast Robust Geometric Predicates", 1997), and an exact integer evaluation
+ * when the filter cannot prove the sign.
  *
- * The bounds assume no underflow or overflow. A permanent (the sum of the
- * absolute values of the determinant's terms) below 1e-250, or not finite,
- * sends the evaluation to the exact path, where neither can happen.
+ * The bounds assume no underflow or overflow. An overflow makes the
+ * permanent (the sum of the absolute values of the determinant's terms)
+ * infinite or NaN, which sends the evaluation to the exact path, where
+ * neither can happen. Underflow (gradual, IEEE 754's default) costs sums
+ * and differences nothing, and a product at most 2^-1075 beyond its
+ * relative rounding error; stage A's analysis holds for the computation
+ * without those absolute errors, which add up to about 2^-1074 in
+ * orient2d and to less than 2^-1073 (1 + |adz| + |bdz| + |cdz|) in
+ * orient3d, where the products of two differences are multiplied by a
+ * third (the permanent is off by as much). The filter accepts only
+ * |det| > E = fl(bound permanent), so |det| is at least the double after
+ * E, at least E (1 + 2^-53): a margin of about 2^-103 permanent. A
+ * permanent below 1e-250 (times 1 + |adz| + |bdz| + |cdz| in orient3d)
+ * goes to the exact path; above, the underflow errors are below 2^-240
+ * permanent, far inside the margin. The factor matters: with axes of
+ * unlike scales, a product of two tiny differences can underflow, then be
+ * multiplied by a huge third one, while the permanent is large.
+ *
+ * The exact path. A finite nonzero double is m 2^q with m an odd integer
+ * below 2^53 and q >= -1074, and its magnitude is below 2^k for some
+ * k <= 1024. Dividing every coordinate on an axis by 2^emin, emin the
+ * smallest q among them, makes them all integers below
+ * 2^(kmax - emin) <= 2^2098, and multiplies the determinant (linear in
+ * each axis' column) by a positive power of two, which keeps its sign.
+ * The differences, the products and the sums are then computed exactly as
+ * sign-magnitude integers of GMP limbs, with the mpn layer.
+ *
+ * No allocation, so no abort: GMP's default allocator ends the process
+ * when memory runs out, and the library never does. The integers live in
+ * fixed buffers on the stack, sized for the worst case (differences below
+ * 2^2099, so 33 limbs of 64 bits; triple products about 100 limbs: about
+ * 9 KiB of stack in orient3d), and only mpn functions that take no
+ * scratch space are called: mpn_add, mpn_sub, mpn_cmp, mpn_mul_1 and
+ * mpn_addmul_1. Not mpn_mul, whose Toom-Cook branches take scratch space
+ * that GMP may get from its allocator; a schoolbook product over
+ * mpn_addmul_1 serves at these sizes. Inputs of like magnitude give
+ * integers of a limb or two, and no gcds are taken: the exact path costs
+ * several times less than GMP's rationals did (a few hundred nanoseconds
+ * against one to a few microseconds on the development machine).
  */
 #include "config.h"
 
+#include <assert.h>
 #include <gmp.h>
+#include <limits.h>
 #include <math.h>
+#include <stdbool.h>
+#include <string.h>
 
 #include "predicates.h"
 
@@ -27,23 +66,261 @@ static int sign_of(double x)
     return (x > 0) - (x < 0);
 }
 
-/* The filter's verdict, or 2 if it cannot decide. */
-static int filtered(double det, double permanent, double bound)
+/* The filter's verdict, or 2 if it cannot decide: also when the permanent
+ * is below least, where underflow may have mattered (see the top). */
+static int filtered(double det, double permanent, double bound, double least)
 {
-    if (!isfinite(permanent) || permanent < TINY)
+    if (!isfinite(permanent) || permanent < least)
         return 2;
     if (fabs(det) > bound * permanent)
         return sign_of(det);
     return 2;
 }
 
-/* out = x - y, exactly. */
-static void diff(mpq_t out, double x, double y, mpq_t scratch)
+/* ---- exact integers ------------------------------------------------------ */
+
+#if GMP_NAIL_BITS != 0 || GMP_NUMB_BITS > 64
+#error "the exact predicates assume GMP limbs of at most 64 bits, without nails"
+#endif
+
+/* Limbs for a count of bits. */
+#define LIMBS(bits) (((bits) + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS)
+
+/* Buffer sizes in limbs. An input scaled by 2^-emin is below 2^2098 (see
+ * the top); each later result may need a carry limb beyond the sum or the
+ * larger of its operands' sizes, whatever the values, and is given it. */
+#define IN_LIMBS LIMBS(1024 + 1074)            /* an input */
+#define DIFF_LIMBS (IN_LIMBS + 1)              /* a difference */
+#define PROD_LIMBS (2 * DIFF_LIMBS)            /* a product of two */
+#define MINOR_LIMBS (PROD_LIMBS + 1)           /* a 2x2 determinant */
+#define TERM_LIMBS (MINOR_LIMBS + DIFF_LIMBS)  /* a minor times a difference */
+#define SUM_LIMBS (TERM_LIMBS + 2)             /* the sum of three terms */
+
+/* An integer: sign and magnitude d[0..n), least significant limb first,
+ * d[n-1] != 0 (n == 0 for zero). The buffer d holds cap limbs. */
+typedef struct exact_int {
+    mp_limb_t *d;
+    mp_size_t n, cap;
+    bool neg;
+} exact_int;
+
+/* A finite double as a sign, an odd mantissa and two exponents:
+ * |x| = m 2^q < 2^top; m == 0 for a zero of either sign. */
+typedef struct exact_split {
+    uint64_t m;
+    int q, top;
+    bool neg;
+} exact_split;
+
+static exact_split exact_split_double(double x)
 {
-    mpq_set_d(out, x);
-    mpq_set_d(scratch, y);
-    mpq_sub(out, out, scratch);
+    exact_split s = {0, 0, 0, x < 0};
+    if (x == 0)
+        return s;
+    /* |x| = f 2^k with 1/2 <= f < 1, f of at most 53 significant bits
+     * (fewer for a subnormal), so f 2^53 is an integer. */
+    int k;
+    double f = frexp(fabs(x), &k);
+    uint64_t m = (uint64_t)(f * 0x1p53);
+    int q = k - 53;
+#if defined(__GNUC__)
+    int zeros = __builtin_ctzll(m); /* m != 0 */
+    m >>= zeros;
+    q += zeros;
+#else
+    while ((m & 1) == 0) {
+        m >>= 1;
+        ++q;
+    }
+#endif
+    s.m = m;
+    s.q = q;
+    s.top = k;
+    return s;
 }
+
+/* r = s / 2^emin, an integer since emin <= s.q. */
+static void exact_place(exact_int *r, const exact_split *s, int emin)
+{
+    r->neg = s->neg;
+    r->n = 0;
+    if (s->m == 0)
+        return;
+    int shift = s->q - emin;
+    mp_size_t i = shift / GMP_NUMB_BITS;
+    int bit = shift % GMP_NUMB_BITS;
+    assert(shift >= 0);
+    for (mp_size_t j = 0; j < i; ++j)
+        r->d[j] = 0;
+    /* The mantissa a limb at a time: the low GMP_NUMB_BITS - bit bits of
+     * what is left go to limb i, shifted up by bit. The last limb written
+     * holds m's top bit, so it is not zero. */
+    for (uint64_t m = s->m; m != 0; bit = 0) {
+        assert(i < r->cap);
+        r->d[i++] = (mp_limb_t)(m << bit);
+        int fit = GMP_NUMB_BITS - bit;
+        m = fit >= 64 ? 0 : m >> fit;
+    }
+    r->n = i;
+}
+
+static void exact_copy(exact_int *r, const exact_int *a, bool neg)
+{
+    assert(a->n <= r->cap);
+    if (a->n > 0)
+        memcpy(r->d, a->d, (size_t)a->n * sizeof *r->d);
+    r->n = a->n;
+    r->neg = neg;
+}
+
+/* r = a + b, or a - b if negate. r must not overlap a or b. */
+static void exact_add(exact_int *r, const exact_int *a, const exact_int *b, bool negate)
+{
+    bool bneg = b->neg != negate;
+    if (b->n == 0) {
+        exact_copy(r, a, a->neg);
+        return;
+    }
+    if (a->n == 0) {
+        exact_copy(r, b, bneg);
+        return;
+    }
+    /* mpn_add and mpn_sub take the longer operand first. */
+    if (a->neg == bneg) {
+        const exact_int *x = a->n >= b->n ? a : b, *y = x == a ? b : a;
+        assert(x->n < r->cap);
+        mp_limb_t carry = mpn_add(r->d, x->d, x->n, y->d, y->n);
+        r->n = x->n;
+        if (carry != 0)
+            r->d[r->n++] = carry;
+        r->neg = a->neg;
+        return;
+    }
+    int cmp = a->n != b->n ? (a->n > b->n ? 1 : -1) : mpn_cmp(a->d, b->d, a->n);
+    if (cmp == 0) {
+        r->n = 0;
+        r->neg = false;
+        return;
+    }
+    const exact_int *x = cmp > 0 ? a : b, *y = cmp > 0 ? b : a;
+    assert(x->n <= r->cap);
+    mpn_sub(r->d, x->d, x->n, y->d, y->n); /* |x| > |y|: no borrow */
+    r->n = x->n;
+    while (r->d[r->n - 1] == 0) /* stops: the difference is not zero */
+        --r->n;
+    r->neg = cmp > 0 ? a->neg : bneg;
+}
+
+/* r = a b, schoolbook: a row of mpn_addmul_1 per limb of the shorter
+ * factor. r must not overlap a or b. */
+static void exact_mul(exact_int *r, const exact_int *a, const exact_int *b)
+{
+    r->neg = a->neg != b->neg;
+    r->n = 0;
+    if (a->n == 0 || b->n == 0)
+        return;
+    if (a->n < b->n) {
+        const exact_int *t = a;
+        a = b;
+        b = t;
+    }
+    assert(a->n + b->n <= r->cap);
+    r->d[a->n] = mpn_mul_1(r->d, a->d, a->n, b->d[0]);
+    for (mp_size_t j = 1; j < b->n; ++j)
+        r->d[a->n + j] = mpn_addmul_1(r->d + j, a->d, a->n, b->d[j]);
+    /* Normalized factors: the product has a->n + b->n - 1 limbs or more. */
+    r->n = a->n + b->n;
+    if (r->d[r->n - 1] == 0)
+        --r->n;
+}
+
+static int exact_sign(const exact_int *a)
+{
+    return a->n == 0 ? 0 : a->neg ? -1 : 1;
+}
+
+/*
+ * The coordinate differences p[i][k] - p[n-1][k], i < n-1, k < dim, as
+ * integers, into diff[i * dim + k] (whose buffers hold DIFF_LIMBS). Each
+ * coordinate k has its own power of two: the determinant is linear in each
+ * column, so scaling one column scales it by a positive factor too, and
+ * axes of unlike scales (1e-300 on one, 1e300 on another) then cost no
+ * longer integers than one axis alone. False if an input is not finite.
+ */
+static bool exact_diffs(const double *const p[], int n, int dim, exact_int diff[])
+{
+    exact_split s[4][3];
+    int emin[3] = {INT_MAX, INT_MAX, INT_MAX};
+    assert(n <= 4 && dim <= 3);
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < dim; ++k) {
+            if (!isfinite(p[i][k]))
+                return false;
+            s[i][k] = exact_split_double(p[i][k]);
+            if (s[i][k].m != 0 && s[i][k].q < emin[k])
+                emin[k] = s[i][k].q;
+        }
+    mp_limb_t base_d[3][IN_LIMBS], in_d[IN_LIMBS];
+    exact_int base[3], in = {in_d, 0, IN_LIMBS, false};
+    for (int k = 0; k < dim; ++k) {
+        base[k] = (exact_int){base_d[k], 0, IN_LIMBS, false};
+        exact_place(&base[k], &s[n - 1][k], emin[k]);
+    }
+    for (int i = 0; i + 1 < n; ++i)
+        for (int k = 0; k < dim; ++k) {
+            exact_place(&in, &s[i][k], emin[k]);
+            exact_add(&diff[i * dim + k], &in, &base[k], true);
+        }
+    return true;
+}
+
+int noct_orient2d_exact(const double a[2], const double b[2], const double c[2])
+{
+    const double *p[3] = {a, b, c};
+    mp_limb_t diff_d[4][DIFF_LIMBS], l_d[PROD_LIMBS], r_d[PROD_LIMBS], det_d[MINOR_LIMBS];
+    exact_int diff[4], l = {l_d, 0, PROD_LIMBS, false}, r = {r_d, 0, PROD_LIMBS, false};
+    exact_int det = {det_d, 0, MINOR_LIMBS, false};
+    for (int i = 0; i < 4; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
+    if (!exact_diffs(p, 3, 2, diff))
+        return 0;
+    /* diff = {acx, acy, bcx, bcy}; det = acx bcy - acy bcx */
+    exact_mul(&l, &diff[0], &diff[3]);
+    exact_mul(&r, &diff[1], &diff[2]);
+    exact_add(&det, &l, &r, true);
+    return exact_sign(&det);
+}
+
+int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
+                        const double d[3])
+{
+    const double *p[4] = {a, b, c, d};
+    mp_limb_t diff_d[9][DIFF_LIMBS], l_d[PROD_LIMBS], r_d[PROD_LIMBS];
+    mp_limb_t minor_d[MINOR_LIMBS], term_d[TERM_LIMBS], sum_d[2][SUM_LIMBS];
+    exact_int diff[9], l = {l_d, 0, PROD_LIMBS, false}, r = {r_d, 0, PROD_LIMBS, false};
+    exact_int minor = {minor_d, 0, MINOR_LIMBS, false};
+    exact_int term = {term_d, 0, TERM_LIMBS, false};
+    exact_int sum[2] = {{sum_d[0], 0, SUM_LIMBS, false}, {sum_d[1], 0, SUM_LIMBS, false}};
+    for (int i = 0; i < 9; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
+    if (!exact_diffs(p, 4, 3, diff))
+        return 0;
+    /* diff[3 i + k] is coordinate k of p[i] - d. With x, y, z for the
+     * coordinates: det = sum over the cyclic (i, j, k) of
+     * z_i (x_j y_k - x_k y_j). The running sum alternates between two
+     * buffers, as exact_add does not work in place. */
+    for (int i = 0; i < 3; ++i) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        exact_mul(&l, &diff[3 * j], &diff[3 * k + 1]);
+        exact_mul(&r, &diff[3 * k], &diff[3 * j + 1]);
+        exact_add(&minor, &l, &r, true);
+        exact_mul(&term, &minor, &diff[3 * i + 2]);
+        exact_add(&sum[(i + 1) % 2], &sum[i % 2], &term, false);
+    }
+    return exact_sign(&sum[1]);
+}
+
+/* ---- the filtered predicates ---------------------------------------------- */
 
 int noct_orient2d(const double a[2], const double b[2], const double c[2],
                   uint64_t *fallbacks)
@@ -51,23 +328,12 @@ int noct_orient2d(const double a[2], const double b[2], const double c[2],
     double acx = a[0] - c[0], bcx = b[0] - c[0];
     double acy = a[1] - c[1], bcy = b[1] - c[1];
     double l = acx * bcy, r = acy * bcx;
-    int s = filtered(l - r, fabs(l) + fabs(r), CCW_BOUND);
+    int s = filtered(l - r, fabs(l) + fabs(r), CCW_BOUND, TINY);
     if (s != 2)
         return s;
     if (fallbacks != NULL)
         ++*fallbacks;
-    mpq_t ax, bx, ay, by, t;
-    mpq_inits(ax, bx, ay, by, t, NULL);
-    diff(ax, a[0], c[0], t);
-    diff(bx, b[0], c[0], t);
-    diff(ay, a[1], c[1], t);
-    diff(by, b[1], c[1], t);
-    mpq_mul(ax, ax, by);
-    mpq_mul(ay, ay, bx);
-    mpq_sub(ax, ax, ay);
-    s = mpq_sgn(ax);
-    mpq_clears(ax, bx, ay, by, t, NULL);
-    return s;
+    return noct_orient2d_exact(a, b, c);
 }
 
 int noct_orient3d(const double a[3], const double b[3], const double c[3],
@@ -84,33 +350,11 @@ int noct_orient3d(const double a[3], const double b[3], const double c[3],
     double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * fabs(adz) +
                        (fabs(cdxady) + fabs(adxcdy)) * fabs(bdz) +
                        (fabs(adxbdy) + fabs(bdxady)) * fabs(cdz);
-    int s = filtered(det, permanent, O3D_BOUND);
+    double least = TINY * (1 + fabs(adz) + fabs(bdz) + fabs(cdz));
+    int s = filtered(det, permanent, O3D_BOUND, least);
     if (s != 2)
         return s;
     if (fallbacks != NULL)
         ++*fallbacks;
-    mpq_t x[3], y[3], z[3], m, n, t, acc;
-    const double *p[3] = {a, b, c};
-    mpq_inits(m, n, t, acc, NULL);
-    for (int i = 0; i < 3; ++i) {
-        mpq_inits(x[i], y[i], z[i], NULL);
-        diff(x[i], p[i][0], d[0], t);
-        diff(y[i], p[i][1], d[1], t);
-        diff(z[i], p[i][2], d[2], t);
-    }
-    /* det = z0 (x1 y2 - x2 y1) + z1 (x2 y0 - x0 y2) + z2 (x0 y1 - x1 y0) */
-    mpq_set_ui(acc, 0, 1);
-    for (int i = 0; i < 3; ++i) {
-        int j = (i + 1) % 3, k = (i + 2) % 3;
-        mpq_mul(m, x[j], y[k]);
-        mpq_mul(n, x[k], y[j]);
-        mpq_sub(m, m, n);
-        mpq_mul(m, m, z[i]);
-        mpq_add(acc, acc, m);
-    }
-    s = mpq_sgn(acc);
-    for (int i = 0; i < 3; ++i)
-        mpq_clears(x[i], y[i], z[i], NULL);
-    mpq_clears(m, n, t, acc, NULL);
-    return s;
+    return noct_orient3d_exact(a, b, c, d);
 }

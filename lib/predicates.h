@@ -5,8 +5,11 @@
  * Each returns the exact sign (-1, 0 or +1) of a determinant of its
  * arguments as real numbers. A floating-point evaluation decides whenever
  * its error bound (Shewchuk's stage A) proves the sign; otherwise the
- * determinant is recomputed in GMP rationals, which is exact for any
- * finite doubles. *fallbacks, if not NULL, counts the exact recomputations.
+ * determinant is recomputed exactly in integer arithmetic (GMP's mpn layer
+ * on buffers on the stack), which is exact for any finite doubles and
+ * allocates nothing, so it can neither fail nor abort. *fallbacks, if not
+ * NULL, counts the exact recomputations. An input that is not finite has
+ * no exact sign: the exact path then returns 0.
  */
 #ifndef NOCT_LIB_PREDICATES_H
 #define NOCT_LIB_PREDICATES_H
@@ -24,5 +27,12 @@ int noct_orient3d(const double a[3], const double b[3], const double c[3],
  * counter-clockwise. */
 int noct_orient2d(const double a[2], const double b[2], const double c[2],
                   uint64_t *fallbacks);
+
+/* The exact paths alone, without the filter (and not counted): what the
+ * two above fall back to, declared here for the tests. Like every
+ * function without NOCT_API, they are hidden in the shared libraries. */
+int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
+                        const double d[3]);
+int noct_orient2d_exact(const double a[2], const double b[2], const double c[2]);
 
 #endif /* NOCT_LIB_PREDICATES_H */
