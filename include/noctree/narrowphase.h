@@ -44,7 +44,8 @@
  *   against the other and vice versa;
  *   if no boundaries meet, whether one solid contains a vertex of the
  *   other. Every decision is an orientation sign computed exactly (a
- *   floating-point filter with a GMP rational fallback), so the answer is
+ *   floating-point filter, with a fallback in exact integer arithmetic on
+ *   buffers of fixed size: no allocation), so the answer is
  *   exactly the definition above, whatever the scale, offset or
  *   degeneracy. The hull test is not used as a filter here: its tolerance
  *   could reject a touching pair.
@@ -86,7 +87,8 @@ typedef struct noctNarrowStats {
     uint64_t triangle_pairs;  /**< Triangle pairs tested edge by edge. */
     uint64_t containment_tests; /**< Point-in-solid tests. */
     uint64_t exact_fallbacks; /**< Orientation signs the filter could not
-                                   decide, computed with GMP. */
+                                   decide, computed in exact integer
+                                   arithmetic (GMP's mpn functions). */
     uint64_t sat_rejects;     /**< Exact level: pairs of small meshes
                                    a separating axis proved apart. */
     uint64_t witnesses;       /**< Exact level: pairs of small meshes
