@@ -559,6 +559,16 @@ static void mix_double(outcome *o, double d)
     mix(o, u);
 }
 
+/* A failure the called function documents (for the functions without a
+ * status: octCreate's NULL, octSplit's and octPrint's false). */
+static void documented(outcome *o)
+{
+    if (!o->nomem) {
+        o->nomem = true;
+        memcpy(o->nomem_phase, g_phase, sizeof g_phase);
+    }
+}
+
 /*
  * Judge the status of a call whose documentation lists NOCT_ERR_NOMEM
  * (nomem_documented) and, on failure, the noctError it filled (err, or
@@ -581,10 +591,7 @@ static bool judge(outcome *o, const char *call, noctStatus st, noctStatus expect
         if (err != NULL && err->status != NOCT_ERR_NOMEM)
             record(o, K_STATUS, "%s returned NOCT_ERR_NOMEM but its noctError says %s (%s)",
                  call, noctStatusString(err->status), err->message);
-        if (!o->nomem) {
-            o->nomem = true;
-            memcpy(o->nomem_phase, g_phase, sizeof g_phase);
-        }
+        documented(o);
         return false;
     }
     record(o, g_injected > 0 ? K_STATUS : K_HARNESS,
@@ -1338,7 +1345,7 @@ static void part_octree(outcome *o)
     phase("octCreate");
     octNode *root = octCreate();
     if (root == NULL) {
-        o->nomem = true;
+        documented(o);
         return;
     }
     nodes[nn++] = root;
@@ -1351,7 +1358,7 @@ static void part_octree(outcome *o)
             /* Documented: false, and the node unchanged and still a leaf. */
             if (octIsSplit(n) || octChild(n, OCT_LDB) != NULL)
                 record(o, K_STATUS, "octSplit failed but the node is split");
-            o->nomem = true;
+            documented(o);
             continue;
         }
         for (int v = OCT_LDB; v <= OCT_RUF; ++v)
@@ -1400,7 +1407,7 @@ static void part_octree(outcome *o)
             for (size_t i = 0; i < len; ++i)
                 mix(o, (unsigned char)text[i]);
         } else if (!printed) {
-            o->nomem = true; /* documented: a write failed */
+            documented(o); /* a write failed */
         }
         free(text);
     }
@@ -1826,9 +1833,12 @@ static void check_part(const char *name, part_fn *fn, bool fail_gmp_here, bool n
             run_child(fn, &base, this_k, pass == 2, fail_gmp, &rr);
             ++runs;
             const char *ph = rr.have_inject ? rr.inject.phase : "?";
-            if (verbose || rr.kind != K_NONE)
-                printf("%s %s pass %d (%s) k=%lu phase '%s': %s%s%s\n",
-                       rr.kind == K_NONE ? "ok  " : "FAIL", name, pass,
+            if (rr.kind == K_NONE && verbose)
+                printf("ok   %s pass %d k=%lu phase '%s': %s%s%s\n", name, pass, this_k, ph,
+                       rr.done.nomem ? "documented failure at '" : "same result",
+                       rr.done.nomem ? rr.done.nomem_phase : "", rr.done.nomem ? "'" : "");
+            if (rr.kind != K_NONE)
+                printf("FAIL %s pass %d (%s) k=%lu phase '%s': %s%s%s\n", name, pass,
                        pass == 1 ? "this point fails" : "every point from it fails", this_k,
                        ph, kind_names[rr.kind], rr.msg[0] ? ": " : "", rr.msg);
             if (rr.kind != K_NONE) {
