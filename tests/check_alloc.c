@@ -1587,15 +1587,18 @@ static void print_stack(const inject_rec *r, const char *indent)
     }
 }
 
-/* The call site a failure is grouped by: the innermost function in
- * libnoctree and the outermost one (where it allocated, and the API
- * function called), or the allocation's caller if the library is not on
- * the stack. */
+/* The call site a failure is grouped by: the function that allocated,
+ * then the innermost and the outermost functions of libnoctree on the
+ * stack (the one that asked, and the API function called). */
 static void site_name(const inject_rec *r, char *out, size_t n)
 {
     int first = 0;
     while (first < r->nframes && is_harness_frame(r->frames[first]))
         ++first;
+    if (first >= r->nframes) {
+        snprintf(out, n, "?");
+        return;
+    }
     int inner = -1, outer = -1;
     for (int i = first; i < r->nframes; ++i)
         if (is_library_frame(r->frames[i])) {
@@ -1603,16 +1606,21 @@ static void site_name(const inject_rec *r, char *out, size_t n)
                 inner = i;
             outer = i;
         }
-    if (inner < 0) {
-        snprintf(out, n, "%s", first < r->nframes ? lookup_symbol(r->frames[first])->inner : "?");
-        return;
+    const char *names[3];
+    int k = 0;
+    names[k++] = lookup_symbol(r->frames[first])->inner;
+    if (inner >= 0) {
+        const char *a = lookup_symbol(r->frames[inner])->inner;
+        const char *b = lookup_symbol(r->frames[outer])->outer;
+        if (strcmp(a, names[0]) != 0)
+            names[k++] = a;
+        if (strcmp(b, names[k - 1]) != 0)
+            names[k++] = b;
     }
-    const char *a = lookup_symbol(r->frames[inner])->inner;
-    const char *b = lookup_symbol(r->frames[outer])->outer;
-    if (strcmp(a, b) != 0)
-        snprintf(out, n, "%s in %s", a, b);
-    else
-        snprintf(out, n, "%s", a);
+    size_t used = 0;
+    out[0] = '\0';
+    for (int i = 0; i < k && used < n; ++i)
+        used += (size_t)snprintf(out + used, n - used, "%s%s", i ? " < " : "", names[i]);
 }
 
 /* ---- one run in a child process ---- */
