@@ -1798,7 +1798,7 @@ static void check_part(const char *name, part_fn *fn, bool fail_gmp_here, bool n
     if (getenv("NOCT_ALLOC_PASS") != NULL)
         only_pass = atoi(getenv("NOCT_ALLOC_PASS"));
     /* The points to fail: every one, or the first SAMPLE_HEAD and then one
-     * in each of SAMPLE_MAX - SAMPLE_HEAD equal stretches, at a seeded
+     * in each of sample_max - SAMPLE_HEAD - 1 equal stretches, at a seeded
      * offset (so that a periodic allocation pattern is not always hit at
      * the same place), and the last. */
     const bool sample = n > sample_max && !env_flag("NOCT_ALLOC_ALL");
