@@ -8,11 +8,13 @@ if HAVE_CHECK
 check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient
+	tests/check-predicates tests/check-world tests/check-world-efficient \
+	tests/check-alloc tests/check-alloc-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient
+	tests/check-predicates tests/check-world tests/check-world-efficient \
+	tests/check-alloc tests/check-alloc-efficient
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -57,6 +59,17 @@ tests_check_world_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_world_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
+# Every allocation of a workload fails in turn: the program replaces malloc
+# (so it exits 77, SKIP, under AddressSanitizer or valgrind).
+tests_check_alloc_SOURCES = tests/check_alloc.c $(test_common)
+tests_check_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_alloc_efficient_SOURCES = $(tests_check_alloc_SOURCES)
+tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/lib.sh \
@@ -75,10 +88,12 @@ AM_TESTS_ENVIRONMENT = \
 
 # Valgrind runs the suites in one process (no fork), so the death tests,
 # which abort by design, are left out by their tag; so are the "slow" test
-# cases (whole benchmark scenes), which the other builds run.
+# cases (whole benchmark scenes), which the other builds run. check-alloc
+# replaces malloc, which valgrind does too: it would only skip (exit 77).
 VALGRIND = valgrind
 check-valgrind: $(check_PROGRAMS)
 	@set -e; for t in $(check_PROGRAMS); do \
+	  case $$t in tests/check-alloc*) continue ;; esac; \
 	  echo "valgrind $$t"; \
 	  CK_FORK=no CK_EXCLUDE_TAGS='death slow' $(LIBTOOL) --mode=execute \
 	    $(VALGRIND) -q --error-exitcode=1 --leak-check=full \
