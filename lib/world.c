@@ -143,8 +143,12 @@ struct noctWorld {
     bool tree_owed;        /* a failure tore the tree down: rebuild owed */
     uint64_t shrink_from;  /* the first sub-step the root may shrink at */
     double (*prev)[3];     /* per mover: its position before the motion */
-    double (*prevvel)[3];  /* and its velocity, with the walls */
+    double (*prevvel)[3];  /* and its velocity, with walls or sub-steps */
     uint32_t capprev;
+    bool save_motion;      /* this sub-step's motion fills prev: the first */
+    bool save_vel;         /* and prevvel: velocities may change */
+    bool moved, touched;   /* this step moved objects; changed the tree */
+    pair_list held;        /* the colliding list before a step of sub-steps */
     size_t alive;
     size_t moving;         /* live objects with a non-zero speed */
     octNode *root;
@@ -1041,7 +1045,7 @@ static bool update_movers(noctWorld *w)
     if (!grow_array((void **)&w->slow, &w->capslow, (uint32_t)w->moving, sizeof *w->slow))
         return false;
     if (w->capprev < w->moving) {
-        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        const bool walls = (w->def.effects & (NOCT_EFFECT_WALLS | NOCT_EFFECT_SUBSTEP)) != 0;
         double(*p)[3] = realloc(w->prev, w->moving * sizeof *p);
         if (p != NULL)
             w->prev = p;
@@ -1629,6 +1633,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->free_slots);
     free(w->prev);
     free(w->prevvel);
+    free(w->held.p);
     free(w->mark);
     free(w->box);
     free(w->home);
@@ -1842,6 +1847,7 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
     const home_block *home = w->home;
     double(*pos)[3] = w->pos;
     double(*prev)[3] = w->prev, (*prevvel)[3] = w->prevvel;
+    const bool save = w->save_motion, save_vel = w->save_vel;
     const uint32_t *movers = w->movers;
     uint32_t *slow = w->slow;
     const uint32_t nm = w->nmovers;
@@ -1854,9 +1860,11 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
         const double x = p[0] + o->vel[0] * fraction, y = p[1] + o->vel[1] * fraction,
                      z = p[2] + o->vel[2] * fraction;
         /* kept until the step is through (roll_back) */
-        memcpy(prev[m], p, sizeof prev[m]);
-        if (walls)
-            memcpy(prevvel[m], o->vel, sizeof prevvel[m]);
+        if (save) {
+            memcpy(prev[m], p, sizeof prev[m]);
+            if (save_vel)
+                memcpy(prevvel[m], o->vel, sizeof prevvel[m]);
+        }
         p[0] = x;
         p[1] = y;
         p[2] = z;
@@ -1896,21 +1904,20 @@ static bool movers_escaped(const noctWorld *w)
 }
 
 /*
- * After a stage of a (sub-)step failed: the movers go back to where they
- * were before its motion (positions, velocities the walls turned, boxes),
- * the colliding list to the last one completed, and a tree that
- * maintenance may have changed halfway is torn down, to be built again
- * by the next step. So a failed step leaves no object moved and no
- * structure half-changed.
+ * After a stage of a step failed: the movers go back to where they were
+ * before the step (positions, velocities that walls or responses turned,
+ * boxes), and a tree that maintenance or the pair search may have changed
+ * halfway, or for positions that no longer hold, is torn down, to be
+ * built again by the next step. The caller restores the pair lists. So a
+ * failed step leaves no object moved and no structure half-changed.
  */
 static void roll_back(noctWorld *w, bool moved, bool tree_touched)
 {
     if (moved) {
-        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
         for (uint32_t m = 0; m < w->nmovers; ++m) {
             const uint32_t i = w->movers[m];
             memcpy(w->pos[i], w->prev[m], sizeof w->pos[i]);
-            if (walls)
+            if (w->save_vel)
                 memcpy(w->obj[i].vel, w->prevvel[m], sizeof w->obj[i].vel);
             place_box(&w->obj[i], w->pos[i], &w->box[i]);
             forget_home(w, i);
@@ -1973,12 +1980,11 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
             w->def.maintenance == NOCT_MAINTAIN_REBUILD
                 ? (walls ? move(w, fraction, true, false) : move(w, fraction, false, false))
                 : (walls ? move(w, fraction, true, true) : move(w, fraction, false, true));
-        if (far != UINT32_MAX) {
-            roll_back(w, true, false);
+        w->moved = true;
+        if (far != UINT32_MAX)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
                              "object %u would move beyond %g; no object moved", far,
                              NOCT_MAX_COORDINATE);
-        }
         w->c.moved += w->nmovers;
         /* |velocity| is the speed within 1e-9; a placed box moves by it
          * and a few roundings of the root's coordinates. */
@@ -1992,6 +1998,7 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
     double t1 = seconds();
     if (moving)
         w->c.seconds_motion += t1 - t0;
+    w->touched = true; /* from here on, the tree may change */
     if (w->root != NULL && moving) {
         /* A box that left the root makes the tree grow: a rebuild with a
          * root of at least twice the size. */
@@ -2015,11 +2022,9 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         w->merge_owed = false;
         merge_all(w, w->root);
     }
-    if (st != NOCT_OK) {
-        roll_back(w, moving, true);
+    if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "octree maintenance: %s; no object moved",
                          noctStatusString(st));
-    }
     double t2 = seconds();
     pair_list tmp = w->previous;
     w->previous = w->colliding;
@@ -2036,20 +2041,17 @@ static noctStatus substep(noctWorld *w, double fraction, noctError *err)
         st = NOCT_ERR_NOMEM;
     if (st == NOCT_OK)
         st = narrow(w);
-    size_t from_began = w->began.n, from_ended = w->ended.n;
+    const size_t from_began = w->began.n;
     if (st == NOCT_OK)
         sort_partners(&w->colliding);
     if (st == NOCT_OK && (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)))
         st = diff_events(w);
     if (st != NOCT_OK) {
-        /* The search's near pairs and budgets may be half made: the tree
-         * goes too. */
+        /* The search's near pairs and budgets may be half made (the tree
+         * goes too); the colliding list is the one before. */
         tmp = w->colliding;
         w->colliding = w->previous;
         w->previous = tmp;
-        w->began.n = from_began;
-        w->ended.n = from_ended;
-        roll_back(w, moving, true);
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
     }
@@ -2123,11 +2125,36 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         }
         w->c.substeps += k;
     }
+    /* A step of sub-steps that fails goes back to the step's start: its
+     * colliding list is kept aside (the sub-steps replace it). */
+    if (k > 1) {
+        pair_list *h = &w->held;
+        if (h->cap < w->colliding.n) {
+            noctPair *q = realloc(h->p, w->colliding.n * sizeof *q);
+            if (q == NULL)
+                return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+            h->p = q;
+            h->cap = w->colliding.n;
+        }
+        memcpy(h->p, w->colliding.p, w->colliding.n * sizeof *h->p);
+        h->n = w->colliding.n;
+    }
     ++w->c.steps;
+    w->moved = w->touched = false;
+    w->save_vel = (w->def.effects & NOCT_EFFECT_WALLS) != 0 || k > 1;
     for (uint64_t i = 0; i < k; ++i) {
+        w->save_motion = i == 0;
         noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, err);
-        if (st != NOCT_OK)
+        if (st != NOCT_OK) {
+            roll_back(w, w->moved, w->touched);
+            if (k > 1) {
+                pair_list t = w->colliding;
+                w->colliding = w->held;
+                w->held = t;
+            }
+            w->began.n = w->ended.n = 0;
             return st;
+        }
     }
     return NOCT_OK;
 }

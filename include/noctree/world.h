@@ -308,14 +308,14 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id);
  * @param[in]  world The world.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
- * A failed step changes nothing that a program can see but the error:
- * every object is where it was, with the velocity it had, before the
- * step (with #NOCT_EFFECT_SUBSTEP, before the failing sub-step: earlier
- * sub-steps stand and their events are in the began and ended lists), and
- * the colliding list is the last one completed. If the octree might have
- * been changed halfway, it is torn down and the next step builds it again
- * (noctWorldRoot() is NULL until then). The world can be stepped again,
- * changed or destroyed.
+ * A failed step changes nothing that a program can see but the error and
+ * the counters: every object is where it was, with the velocity it had,
+ * before the step (all of its sub-steps with #NOCT_EFFECT_SUBSTEP), the
+ * colliding list is the one before the step, and the began and ended
+ * lists are empty. If the octree might have been changed, it is torn
+ * down and the next step builds it again (noctWorldRoot() is NULL until
+ * then). The world can be stepped again, changed or destroyed; a step
+ * retried once memory is to be had gives what the failed one would have.
  * @return #NOCT_OK; #NOCT_ERR_TOO_LARGE if an object would move beyond
  *         #NOCT_MAX_COORDINATE, or would need more than #NOCT_MAX_SUBSTEPS
  *         sub-steps (the message and noctError::index name the object);
