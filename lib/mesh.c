@@ -5,6 +5,7 @@
  */
 #include "config.h"
 
+#include <errno.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -654,7 +655,15 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
          * corner and scaled to its size (see scaler), so that the hull
          * depends on neither the mesh's place nor its size. */
         double *rel = malloc(3 * m->nv * sizeof *rel);
-        FILE *quiet = rel != NULL ? fopen("/dev/null", "w") : NULL;
+        if (rel == NULL)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        errno = 0;
+        FILE *quiet = fopen("/dev/null", "w");
+        if (quiet == NULL && errno == ENOMEM) {
+            free(rel);
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        }
+        bool nomem = false;
         if (quiet != NULL) {
             double emax = 0;
             for (int k = 0; k < 3; ++k)
@@ -666,20 +675,37 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
             qhT qh_storage, *qh = &qh_storage;
             char cmd[] = "qhull";
             qh_zero(qh, quiet);
-            if (qh_new_qhull(qh, 3, (int)m->nv, rel, False, cmd, NULL, quiet) == 0) {
+            const int code = qh_new_qhull(qh, 3, (int)m->nv, rel, False, cmd, NULL, quiet);
+            if (code == 0) {
                 m->hull = malloc((size_t)qh->num_vertices * sizeof *m->hull);
+                nomem = m->hull == NULL;
                 if (m->hull != NULL) {
                     vertexT *vertex;
                     FORALLvertices
                         m->hull[m->nhull++] = (uint32_t)qh_pointid(qh, vertex->point);
                 }
             }
+            nomem = nomem || code == qh_ERRmem;
             qh_freeqhull(qh, !qh_ALL);
+            /* qh_memfreeshort frees qhull's size and free-list tables only
+             * once its setup got as far as LASTsize; a setup that ran out
+             * of memory between the two left them to us. */
+            if (qh->qhmem.LASTsize == 0) {
+                free(qh->qhmem.sizetable);
+                free(qh->qhmem.freelists);
+                qh->qhmem.sizetable = NULL;
+                qh->qhmem.freelists = NULL;
+            }
             int curlong, totlong;
             qh_memfreeshort(qh, &curlong, &totlong);
             fclose(quiet);
         }
         free(rel);
+        /* Without memory the mesh is not made: a hull of every vertex
+         * would give GJK other support points on ties, and so, at the
+         * convex level, another answer than the same mesh made with it. */
+        if (nomem)
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory (convex hull)");
     }
     if (m->hull == NULL) { /* convex, or qhull unavailable: every vertex */
         m->hull = malloc(m->nv * sizeof *m->hull);
