@@ -8,11 +8,13 @@ if HAVE_CHECK
 check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient
+	tests/check-predicates tests/check-world tests/check-world-efficient \
+	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient
+	tests/check-predicates tests/check-world tests/check-world-efficient \
+	tests/check-readers tests/check-readers-efficient
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -56,6 +58,15 @@ tests_check_world_efficient_SOURCES = $(tests_check_world_SOURCES)
 tests_check_world_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_world_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_readers_SOURCES = tests/check_readers.c $(test_common)
+tests_check_readers_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_readers_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_readers_efficient_SOURCES = $(tests_check_readers_SOURCES)
+tests_check_readers_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_readers_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_readers_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
