@@ -73,6 +73,11 @@ EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tes
 	tests/lib.sh \
 	tests/inline-client.c
 
+# The libFuzzer targets need clang: tests/fuzz/run.sh builds and runs them
+# (CI runs it briefly); make and make check leave them alone. The whole
+# folder is distributed: sources, dictionaries and seed corpora.
+EXTRA_DIST += tests/fuzz
+
 # The peer benchmark's event counts against SCENES.md, when it is built.
 if HAVE_PEERS
 TESTS += tests/peers.sh
