@@ -89,18 +89,52 @@ typedef struct reader {
     char *pos;   /* next unread character of the current line */
 } reader;
 
-/* Read the next line, with its comment (from '#') cut off. */
-static int next_line(reader *r)
+static noctStatus fail_at(const reader *r, noctError *err, noctStatus st,
+                          const char *what, const char *tok)
 {
+    char where[32] = "";
+    if (r->line > 0)
+        snprintf(where, sizeof where, ":%ld", r->line);
+    return noct_fail(err, st, -1, r->line, "%s%s: %s%s%s%s", r->path, where, what,
+                     tok ? " '" : "", tok ? tok : "", tok ? "'" : "");
+}
+
+/*
+ * Read the next line, with its comment (from '#') cut off: true if there
+ * was one, false at the end of the file or on a failure (*st set).
+ * getline(3) returns -1 at the end of the file, on a read error, and when
+ * it finds no memory for a long line; only the last sets errno to ENOMEM
+ * without the error indicator, so taking every -1 for the end would
+ * silently read a file short. A NUL byte would end the line for the
+ * tokenizer, silently too, so it is an error.
+ */
+static bool next_line(reader *r, noctStatus *st, noctError *err)
+{
+    errno = 0;
     ssize_t n = getline(&r->buf, &r->cap, r->f);
-    if (n < 0)
-        return ferror(r->f) ? -1 : 0;
+    if (n < 0) {
+        int e = errno;
+        if (e != ENOMEM && feof(r->f) && !ferror(r->f))
+            return false;
+        ++r->line; /* the line that could not be read */
+        *st = e == ENOMEM ? noct_fail(err, NOCT_ERR_NOMEM, -1, r->line,
+                                      "%s:%ld: out of memory reading the line",
+                                      r->path, r->line)
+                          : noct_fail(err, NOCT_ERR_IO, -1, r->line,
+                                      "%s:%ld: read error: %s", r->path, r->line,
+                                      strerror(e != 0 ? e : EIO));
+        return false;
+    }
     ++r->line;
+    if (memchr(r->buf, '\0', (size_t)n) != NULL) {
+        *st = fail_at(r, err, NOCT_ERR_PARSE, "NUL byte in line", NULL);
+        return false;
+    }
     char *hash = strchr(r->buf, '#');
     if (hash != NULL)
         *hash = '\0';
     r->pos = r->buf;
-    return 1;
+    return true;
 }
 
 /* The next whitespace-separated token of the current line, or NULL. */
@@ -116,16 +150,6 @@ static char *token(reader *r)
     if (*r->pos != '\0')
         *r->pos++ = '\0';
     return start;
-}
-
-static noctStatus fail_at(const reader *r, noctError *err, noctStatus st,
-                          const char *what, const char *tok)
-{
-    char where[32] = "";
-    if (r->line > 0)
-        snprintf(where, sizeof where, ":%ld", r->line);
-    return noct_fail(err, st, -1, r->line, "%s%s: %s%s%s%s", r->path, where, what,
-                     tok ? " '" : "", tok ? tok : "", tok ? "'" : "");
 }
 
 static bool parse_double(const char *tok, double *out)
@@ -174,15 +198,11 @@ static noctStatus read_xyz(reader *r, const char *first, double xyz[3],
 /* The next non-empty line's first token, or NULL at the end of the file. */
 static char *first_token(reader *r, noctStatus *st, noctError *err)
 {
-    int got;
-    while ((got = next_line(r)) > 0) {
+    while (next_line(r, st, err)) {
         char *tok = token(r);
         if (tok != NULL)
             return tok;
     }
-    if (got < 0)
-        *st = noct_fail(err, NOCT_ERR_IO, -1, r->line, "%s:%ld: read error: %s",
-                        r->path, r->line, strerror(errno));
     return NULL;
 }
 
@@ -222,7 +242,7 @@ static noctStatus read_off(reader *r, mesh_data *d, noctError *err)
         if (s2 != NOCT_OK)
             return s2;
         if (!add_vertex(d, xyz, r->line))
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+            return fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
     }
     uint32_t *corners = NULL;
     size_t ccap = 0;
@@ -238,8 +258,12 @@ static noctStatus read_off(reader *r, mesh_data *d, noctError *err)
                          "expected a face's corner count (3 to 1000000), found", tok);
             break;
         }
+        if (d->ni + n > NOCT_MESH_MAX_INDICES) {
+            st = fail_at(r, err, NOCT_ERR_TOO_LARGE, "too many face corners", NULL);
+            break;
+        }
         if (!grow((void **)&corners, &ccap, n, sizeof *corners)) {
-            st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+            st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
             break;
         }
         for (unsigned long c = 0; c < n && st == NOCT_OK; ++c) {
@@ -258,7 +282,7 @@ static noctStatus read_off(reader *r, mesh_data *d, noctError *err)
                 corners[c] = (uint32_t)i;
         }
         if (st == NOCT_OK && !add_polygon(d, corners, (uint32_t)n, r->line))
-            st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+            st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
     }
     free(corners);
     return st;
@@ -291,8 +315,7 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
     uint32_t *corners = NULL;
     size_t ccap = 0;
     noctStatus st = NOCT_OK;
-    int got;
-    while (st == NOCT_OK && (got = next_line(r)) > 0) {
+    while (st == NOCT_OK && next_line(r, &st, err)) {
         char *kw = token(r);
         if (kw == NULL)
             continue;
@@ -302,14 +325,14 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
             if (st == NOCT_OK && d->nv >= NOCT_MESH_MAX_VERTICES)
                 st = fail_at(r, err, NOCT_ERR_TOO_LARGE, "too many vertices", NULL);
             if (st == NOCT_OK && !add_vertex(d, xyz, r->line))
-                st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+                st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
         } else if (strcmp(kw, "f") == 0) {
             uint32_t n = 0;
             char *t;
             while (st == NOCT_OK && (t = token(r)) != NULL) {
                 noctStatus cs;
                 if (!grow((void **)&corners, &ccap, n + 1, sizeof *corners))
-                    st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+                    st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
                 else if ((cs = obj_corner(t, d->nv, &corners[n])) != NOCT_OK)
                     st = noct_fail(err, cs, (long)d->np, r->line,
                                    "%s:%ld: face %zu: bad vertex reference '%s' "
@@ -324,7 +347,7 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
             if (st == NOCT_OK && d->ni + n > NOCT_MESH_MAX_INDICES)
                 st = fail_at(r, err, NOCT_ERR_TOO_LARGE, "too many face corners", NULL);
             if (st == NOCT_OK && !add_polygon(d, corners, n, r->line))
-                st = noct_fail(err, NOCT_ERR_NOMEM, -1, r->line, "out of memory");
+                st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
         } else {
             bool known = false;
             for (size_t i = 0; i < sizeof ignored / sizeof *ignored; ++i)
@@ -333,9 +356,6 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
                 st = fail_at(r, err, NOCT_ERR_PARSE, "unsupported statement", kw);
         }
     }
-    if (st == NOCT_OK && got < 0)
-        st = noct_fail(err, NOCT_ERR_IO, -1, r->line, "%s:%ld: read error: %s",
-                       r->path, r->line, strerror(errno));
     free(corners);
     return st;
 }
@@ -354,9 +374,11 @@ noctStatus noctMeshRead(const char *path, noctMesh **mesh, noctError *err)
                          "%s: unknown mesh format (expected a .off or .obj file)",
                          path);
     reader r = {path, fopen(path, "r"), NULL, 0, 0, NULL};
-    if (r.f == NULL)
-        return noct_fail(err, NOCT_ERR_IO, -1, 0, "%s: cannot open: %s", path,
-                         strerror(errno));
+    if (r.f == NULL) {
+        int e = errno;
+        return noct_fail(err, e == ENOMEM ? NOCT_ERR_NOMEM : NOCT_ERR_IO, -1, 0,
+                         "%s: cannot open: %s", path, strerror(e));
+    }
     mesh_data d = {0};
     noctStatus st = off ? read_off(&r, &d, err) : read_obj(&r, &d, err);
     fclose(r.f);

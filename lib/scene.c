@@ -11,6 +11,8 @@
 #include <stdarg.h>
 #include <limits.h>
 #include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -90,6 +92,9 @@ typedef struct parser {
     long line;
     char *save;       /* strtok_r state */
     noctError *err;
+    long walls_line;  /* the effects line that last turned the walls on, or 0 */
+    bool container;   /* a walls line gave the container */
+    uint64_t objects; /* objects the scene will add: lines and families */
 } parser;
 
 static noctStatus perr(parser *p, noctStatus st, const char *fmt, ...)
@@ -151,6 +156,17 @@ static noctStatus end_of_line(parser *p)
 {
     char *tok = next(p);
     return tok ? perr(p, NOCT_ERR_PARSE, "unexpected '%s'", tok) : NOCT_OK;
+}
+
+/* A world holds at most 2^31 objects (noctWorldAdd()): count the ones
+ * the scene adds, so that a scene read is a scene that builds. */
+static noctStatus count_objects(parser *p, uint64_t n)
+{
+    const uint64_t most = UINT64_C(1) << 31;
+    if (n > most - p->objects)
+        return perr(p, NOCT_ERR_TOO_LARGE, "the scene would have more than 2^31 objects");
+    p->objects += n;
+    return NOCT_OK;
 }
 
 static noctStatus numbers(parser *p, const char *what, double *out, int n)
@@ -255,12 +271,18 @@ static noctStatus parse_object(parser *p, noctScene *s)
             return st;
         if (o.speed < 0)
             return perr(p, NOCT_ERR_INVALID, "negative speed");
-        if (o.speed > 0 && o.dir[0] == 0 && o.dir[1] == 0 && o.dir[2] == 0)
+        /* Scaled as the world scales it, so that (1e-200, 0, 0) and
+         * (1e200, 0, 0) are directions like (1, 0, 0), not zero or
+         * infinite. */
+        double unit[3];
+        if (o.speed > 0 && !noct_unit_direction(o.dir, unit))
             return perr(p, NOCT_ERR_INVALID, "a moving object needs a non-zero direction");
     }
     for (int k = 0; k < 3; ++k)
         if (fabs(o.pos[k]) > NOCT_MAX_COORDINATE)
             return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");
+    if ((st = count_objects(p, 1)) != NOCT_OK)
+        return st;
     if (s->nobjects == s->capobjects) {
         size_t cap = s->capobjects ? 2 * s->capobjects : 64;
         scene_object *q = realloc(s->objects, cap * sizeof *q);
@@ -291,7 +313,9 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         if (end == tok || *end != '\0' || errno != 0)
             return perr(p, NOCT_ERR_PARSE, "N must be an integer or 'big', not '%s'", tok);
         if (v < 1 || v > INT_MAX - 1)
-            return perr(p, NOCT_ERR_INVALID, "N must be at least 1 (or 'big'), not '%s'", tok);
+            return perr(p, NOCT_ERR_INVALID,
+                        "N must be at least 1 and below %d (or 'big'), not '%s'", INT_MAX,
+                        tok);
         s->def.N = (int)v;
         return end_of_line(p);
     }
@@ -354,6 +378,8 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
                             tok);
         }
         s->def.effects = e;
+        /* The container may come on a later line: checked at the end. */
+        p->walls_line = e & NOCT_EFFECT_WALLS ? p->line : 0;
         return NOCT_OK;
     }
     if (strcmp(kw, "walls") == 0) {
@@ -368,6 +394,7 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
             s->def.walls_hi[k] = w[k + 3];
         }
         s->def.effects |= NOCT_EFFECT_WALLS;
+        p->container = true;
         return NOCT_OK;
     }
     if (strcmp(kw, "mesh") == 0)
@@ -389,7 +416,10 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
             return perr(p, NOCT_ERR_INVALID, "unknown family '%s' (planes or gas)",
                         tok ? tok : "");
         }
-        if (st != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+        if (st != NOCT_OK || (st = end_of_line(p)) != NOCT_OK ||
+            (st = count_objects(p, f.gas ? (uint64_t)f.size
+                                         : 2 * (uint64_t)(2 * f.size + 1) *
+                                               (uint64_t)(2 * f.size + 1))) != NOCT_OK)
             return st;
         s->families[s->nfamilies++] = f;
         return NOCT_OK;
@@ -397,34 +427,67 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
     return perr(p, NOCT_ERR_PARSE, "unknown statement '%s'", kw);
 }
 
+/*
+ * Read the next line into *buf and count it: *got tells whether there was
+ * one. getline(3) returns -1 at the end of the file, on a read error, and
+ * when it finds no memory for a long line; only the last sets errno to
+ * ENOMEM without the error indicator, so taking every -1 for the end would
+ * silently read a file short. A NUL byte would end the line for the
+ * parser, silently too, so it is an error.
+ */
+static noctStatus scene_line(parser *p, FILE *f, char **buf, size_t *cap, bool *got)
+{
+    errno = 0;
+    ssize_t n = getline(buf, cap, f);
+    *got = n >= 0;
+    if (n >= 0) {
+        ++p->line;
+        return memchr(*buf, '\0', (size_t)n) ? perr(p, NOCT_ERR_PARSE, "NUL byte in line")
+                                             : NOCT_OK;
+    }
+    int e = errno;
+    if (e != ENOMEM && feof(f) && !ferror(f))
+        return NOCT_OK;
+    ++p->line; /* the line that could not be read */
+    if (e == ENOMEM)
+        return perr(p, NOCT_ERR_NOMEM, "out of memory reading the line");
+    return perr(p, NOCT_ERR_IO, "read error: %s", strerror(e != 0 ? e : EIO));
+}
+
 noctStatus noctSceneRead(const char *path, noctScene **scene, noctError *err)
 {
     NOCT_REQUIRE(path != NULL && scene != NULL);
     *scene = NULL;
     FILE *f = fopen(path, "r");
-    if (f == NULL)
-        return noct_fail(err, NOCT_ERR_IO, -1, 0, "%s: cannot open: %s", path,
-                         strerror(errno));
+    if (f == NULL) {
+        int e = errno;
+        return noct_fail(err, e == ENOMEM ? NOCT_ERR_NOMEM : NOCT_ERR_IO, -1, 0,
+                         "%s: cannot open: %s", path, strerror(e));
+    }
     noctScene *s = scene_new();
     if (s == NULL) {
         fclose(f);
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "%s: out of memory", path);
     }
-    parser p = {path, 0, NULL, err};
+    parser p = {path, 0, NULL, err, 0, false, 0};
     char *buf = NULL;
     size_t cap = 0;
-    noctStatus st = NOCT_OK;
-    while (st == NOCT_OK && getline(&buf, &cap, f) >= 0) {
-        ++p.line;
+    noctStatus st;
+    bool got;
+    while ((st = scene_line(&p, f, &buf, &cap, &got)) == NOCT_OK && got) {
         char *hash = strchr(buf, '#');
         if (hash != NULL)
             *hash = '\0';
         char *kw = strtok_r(buf, " \t\r\n", &p.save);
-        if (kw != NULL)
-            st = parse_line(&p, s, kw);
+        if (kw != NULL && (st = parse_line(&p, s, kw)) != NOCT_OK)
+            break;
     }
-    if (st == NOCT_OK && ferror(f))
-        st = noct_fail(err, NOCT_ERR_IO, -1, p.line, "%s:%ld: read error", path, p.line);
+    /* What noctWorldCreate() would reject across lines, at the line that
+     * asked for it. */
+    if (st == NOCT_OK && (s->def.effects & NOCT_EFFECT_WALLS) && !p.container)
+        st = noct_fail(err, NOCT_ERR_INVALID, -1, p.walls_line,
+                       "%s:%ld: the walls effect needs a container (a line "
+                       "'walls xlo ylo zlo xhi yhi zhi')", path, p.walls_line);
     if (st == NOCT_OK && s->nobjects == 0 && s->nfamilies == 0)
         st = noct_fail(err, NOCT_ERR_INVALID, -1, 0, "%s: the scene has no objects", path);
     free(buf);

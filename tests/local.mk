@@ -9,12 +9,14 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
-	tests/check-alloc tests/check-alloc-efficient
+	tests/check-alloc tests/check-alloc-efficient \
+	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
-	tests/check-alloc tests/check-alloc-efficient
+	tests/check-alloc tests/check-alloc-efficient \
+	tests/check-readers tests/check-readers-efficient
 endif
 
 tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
@@ -70,10 +72,26 @@ tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
+# The readers: NUL bytes, read errors, read-time checks, and allocation
+# failures while reading (its own small interposed malloc).
+tests_check_readers_SOURCES = tests/check_readers.c $(test_common)
+tests_check_readers_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_readers_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_readers_efficient_SOURCES = $(tests_check_readers_SOURCES)
+tests_check_readers_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_readers_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_readers_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/lib.sh \
 	tests/inline-client.c
+
+# The libFuzzer targets need clang: tests/fuzz/run.sh builds and runs them
+# (CI runs it briefly); make and make check leave them alone. The whole
+# folder is distributed: sources, dictionaries and seed corpora.
+EXTRA_DIST += tests/fuzz
 
 # The peer benchmark's event counts against SCENES.md, when it is built.
 if HAVE_PEERS

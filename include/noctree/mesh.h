@@ -173,7 +173,8 @@ NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
  * comments. OBJ: `v x y z [w]` and `f` lines whose corners are `i`,
  * `i/t`, `i/t/n` or `i//n` with 1-based or negative (relative) indices;
  * other statements (`vn`, `vt`, `o`, `g`, `s`, `usemtl`, `mtllib`) are
- * ignored. Either way the result is validated as by noctMeshCreate().
+ * ignored. Either way the result is validated as by noctMeshCreate(). A
+ * NUL byte anywhere in a line that is read is a syntax error.
  * @param[in]  path Path of the file.
  * @param[out] mesh Receives the new mesh on success, NULL otherwise.
  * @param[out] err  Receives the details of a failure, or NULL. Its message
@@ -183,8 +184,11 @@ NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
  * @post On #NOCT_OK, @p *mesh is the file's mesh. Nothing is kept from a
  *       file that fails.
  * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
- *         #NOCT_ERR_INVALID for an unknown extension; #NOCT_ERR_PARSE for
- *         a syntax error; any status of noctMeshCreate().
+ *         #NOCT_ERR_NOMEM if memory runs out, opening and reading lines
+ *         included (never a file read short); #NOCT_ERR_INVALID for an
+ *         unknown extension; #NOCT_ERR_PARSE for a syntax error;
+ *         #NOCT_ERR_TOO_LARGE for more vertices or polygon corners than
+ *         the limits; any status of noctMeshCreate().
  */
 NOCT_API noctStatus noctMeshRead(const char *path, noctMesh **mesh,
                                  noctError *err);

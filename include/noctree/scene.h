@@ -10,8 +10,10 @@
  *
  * A scene is read completely, and every line checked, before anything is
  * built: a file with an error anywhere yields an error naming the file,
- * the line and the problem, and nothing else. A scene owns its meshes; a
- * world built from it borrows them, so destroy the world first.
+ * the line and the problem, and nothing else. Reading checks everything
+ * that building the world would reject, so a scene that reads builds
+ * (memory permitting). A scene owns its meshes; a world built from it
+ * borrows them, so destroy the world first.
  * @{
  */
 #ifndef NOCTREE_SCENE_H
@@ -34,11 +36,24 @@ typedef struct noctScene noctScene;
  *                   folder.
  * @param[out] scene Receives the scene on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL; its
- *                   message starts with `path:line:`.
+ *                   message starts with `path:line:` (just `path:` when
+ *                   the file cannot be opened, has no objects, or no
+ *                   memory is left to start reading it).
  * @pre @p path and @p scene are not NULL.
- * @return #NOCT_OK; #NOCT_ERR_IO; #NOCT_ERR_PARSE for a syntax error;
- *         #NOCT_ERR_INVALID for a value out of range or an unknown name;
- *         any status of the mesh readers and constructors.
+ * @post On #NOCT_OK, noctSceneBuild() fails for no reason in the file:
+ *       only for want of memory, or for parameters changed through
+ *       noctSceneDef(). A direction is any finite vector other than zero,
+ *       however large or small its components (the world normalizes it).
+ * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
+ *         #NOCT_ERR_NOMEM if memory runs out, opening and reading lines
+ *         included (never a scene read short); #NOCT_ERR_PARSE for a
+ *         syntax error or a NUL byte in a line; #NOCT_ERR_NONFINITE for a
+ *         number that is not finite; #NOCT_ERR_INVALID for a value out of
+ *         range, an unknown name, a scene without objects, or the walls
+ *         effect without a container (named at the `effects` line that
+ *         turns it on); #NOCT_ERR_TOO_LARGE for a position beyond
+ *         #NOCT_MAX_COORDINATE or more than 2^31 objects; any status of
+ *         the mesh readers and constructors.
  */
 NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
                                   noctError *err);
@@ -85,8 +100,10 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
  * @param[out] world Receives the new world on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p scene and @p world are not NULL.
- * @return #NOCT_OK, or any status of noctWorldCreate(), noctWorldAdd() and
- *         the family builders.
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM; for parameters changed through
+ *         noctSceneDef(), any status of noctWorldCreate(). (For a scene
+ *         from noctSceneRead() or noctSceneFamily(), nothing else of
+ *         noctWorldAdd() and the family builders can fail.)
  */
 NOCT_API noctStatus noctSceneBuild(const noctScene *scene, noctWorld **world,
                                    noctError *err);

@@ -1,0 +1,672 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Check suite for the file readers: scene files (scene.h) and the OFF and
+ * OBJ mesh readers (mesh.h), on what the other suites leave out:
+ *  - a NUL byte in a line is an error naming the file and the line, not
+ *    the silent end of that line;
+ *  - a scene that reads is a scene that builds: what noctSceneBuild()
+ *    would reject is reported at read time, at a line;
+ *  - directions of any finite non-zero size are directions;
+ *  - running out of memory while reading is NOCT_ERR_NOMEM, never a file
+ *    read short with NOCT_OK: allocations are made to fail by a malloc
+ *    interposed in this program (glibc only; skipped, saying so, under
+ *    AddressSanitizer and wherever the interposition is not in force).
+ * The oracles are the files' own contents: the line each was built to
+ * fail at, and the objects and vertices it lists.
+ */
+#define _GNU_SOURCE /* getline; the __libc_* allocator entry points */
+#include <check.h>
+#include <errno.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <noctree/mesh.h>
+#include <noctree/scene.h>
+#include <noctree/world.h>
+
+#include "testutil.h"
+
+/* ---- an allocator that fails on demand ------------------------------------------ */
+
+#if defined(__SANITIZE_ADDRESS__)
+#  define READERS_ASAN 1
+#elif defined(__has_feature)
+#  if __has_feature(address_sanitizer)
+#    define READERS_ASAN 1
+#  endif
+#endif
+
+/* AddressSanitizer owns malloc (defining it here would clash with its
+ * interceptors), and the __libc_* entry points are glibc's. */
+#if !defined(READERS_ASAN) && defined(__GLIBC__)
+#  define READERS_INTERPOSE 1
+#endif
+
+/* Allocations counted while armed; the fail_nth-th of them fails (1 is the
+ * first; 0 never), and so does every one larger than fail_above. */
+static struct {
+    bool armed;
+    unsigned long count, fail_nth;
+    size_t fail_above;
+    unsigned long failed;
+} alloc_ctl = {false, 0, 0, SIZE_MAX, 0};
+
+#ifdef READERS_INTERPOSE
+extern void *__libc_malloc(size_t size);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t size);
+extern void __libc_free(void *p);
+
+static bool alloc_fails(size_t size)
+{
+    if (!alloc_ctl.armed)
+        return false;
+    ++alloc_ctl.count;
+    if (alloc_ctl.count == alloc_ctl.fail_nth || size > alloc_ctl.fail_above) {
+        ++alloc_ctl.failed;
+        errno = ENOMEM;
+        return true;
+    }
+    return false;
+}
+
+void *malloc(size_t size)
+{
+    return alloc_fails(size) ? NULL : __libc_malloc(size);
+}
+
+void *calloc(size_t n, size_t size)
+{
+    size_t total;
+    if (__builtin_mul_overflow(n, size, &total))
+        total = SIZE_MAX;
+    return alloc_fails(total) ? NULL : __libc_calloc(n, size);
+}
+
+void *realloc(void *p, size_t size)
+{
+    return alloc_fails(size) ? NULL : __libc_realloc(p, size);
+}
+
+void free(void *p)
+{
+    __libc_free(p);
+}
+#endif
+
+static void alloc_arm(unsigned long fail_nth, size_t fail_above)
+{
+    alloc_ctl.count = alloc_ctl.failed = 0;
+    alloc_ctl.fail_nth = fail_nth;
+    alloc_ctl.fail_above = fail_above;
+    alloc_ctl.armed = true;
+}
+
+static void alloc_disarm(void)
+{
+    alloc_ctl.armed = false;
+}
+
+/* Whether the malloc above is the one the program and the library call:
+ * not under AddressSanitizer, nor where a tool (valgrind) replaces it in
+ * the executable too. Says why when it is not. */
+static bool interposed(void)
+{
+#ifdef READERS_INTERPOSE
+    void *(*volatile call)(size_t) = malloc; /* not folded by the compiler */
+    alloc_arm(1, SIZE_MAX);
+    void *p = call(16);
+    alloc_disarm();
+    if (p == NULL && alloc_ctl.failed == 1)
+        return true;
+    free(p);
+    fprintf(stderr, "check-readers: malloc is not this program's (valgrind?): "
+                    "allocation failure tests skipped\n");
+    return false;
+#else
+    fprintf(stderr, "check-readers: built with AddressSanitizer or without glibc: "
+                    "allocation failure tests skipped\n");
+    return false;
+#endif
+}
+
+/* ---- files ------------------------------------------------------------------------ */
+
+/* Files are written to a fresh directory of this process, removed at exit. */
+static char tmp_dir[64];
+static char tmp_files[64][160];
+static size_t tmp_count;
+
+static void remove_temp(void)
+{
+    for (size_t i = 0; i < tmp_count; ++i) {
+        if (unlink(tmp_files[i]) != 0)
+            rmdir(tmp_files[i]);
+    }
+    rmdir(tmp_dir);
+}
+
+static const char *temp_path(const char *name)
+{
+    if (tmp_dir[0] == '\0') {
+        strcpy(tmp_dir, "/tmp/noct-readers-XXXXXX");
+        ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
+        atexit(remove_temp);
+    }
+    ck_assert_uint_lt(tmp_count, sizeof tmp_files / sizeof *tmp_files);
+    char *path = tmp_files[tmp_count++];
+    snprintf(path, sizeof tmp_files[0], "%s/%s", tmp_dir, name);
+    return path;
+}
+
+/* Write len bytes (NULs included) to a new file called name; returns its
+ * path. */
+static const char *write_bytes(const char *name, const char *data, size_t len)
+{
+    const char *path = temp_path(name);
+    FILE *f = fopen(path, "wb");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_uint_eq(fwrite(data, 1, len, f), len);
+    ck_assert_int_eq(fclose(f), 0);
+    return path;
+}
+
+static const char *write_text(const char *name, const char *text)
+{
+    return write_bytes(name, text, strlen(text));
+}
+
+/* The message must name this path and line: "path:line:". */
+static void expect_at(const noctError *err, const char *path, long line)
+{
+    char where[200];
+    snprintf(where, sizeof where, "%s:%ld:", path, line);
+    ck_assert_msg(strncmp(err->message, where, strlen(where)) == 0,
+                  "message '%s' does not start with '%s'", err->message, where);
+    ck_assert_int_eq(err->line, line);
+}
+
+static const char CUBE_OFF[] =
+    "OFF\n"
+    "8 6 12\n"
+    "0 0 0\n0 0 1\n0 1 0\n0 1 1\n1 0 0\n1 0 1\n1 1 0\n1 1 1\n"
+    "4 0 1 3 2\n4 4 6 7 5\n4 0 4 5 1\n4 2 3 7 6\n4 0 2 6 4\n4 1 5 7 3\n";
+
+/* Tetrahedra: unlike the cubes, whose coplanar corners take the exact
+ * predicates to GMP (which aborts when it finds no memory), their checks
+ * are decided in floating point, so only the readers' own allocations and
+ * the mesh's fail. */
+static const char TET_OFF[] = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                              "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+static const char TET_OBJ[] = "# tetrahedron\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                              "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+
+static const char CUBE_OBJ[] =
+    "v 0 0 0\nv 0 0 1\nv 0 1 0\nv 0 1 1\nv 1 0 0\nv 1 0 1\nv 1 1 0\nv 1 1 1\n"
+    "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
+
+/* Read and build a scene; returns the number of objects of its world, or
+ * fails the test. */
+static size_t build_count(const char *path)
+{
+    noctScene *sc;
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, &sc, &err);
+    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
+    noctWorld *w;
+    st = noctSceneBuild(sc, &w, &err);
+    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    size_t n = noctWorldObjectCount(w);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+    return n;
+}
+
+/* Expect a scene file to fail reading with status at line. */
+static void expect_scene(const char *name, const char *text, size_t len, noctStatus want,
+                         long line, const char *what)
+{
+    const char *path = write_bytes(name, text, len);
+    noctScene *sc = (noctScene *)1;
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, &sc, &err);
+    ck_assert_msg(st == want, "%s: got %s (%s), want %s", name, noctStatusString(st),
+                  err.message, noctStatusString(want));
+    ck_assert_ptr_null(sc);
+    expect_at(&err, path, line);
+    ck_assert_msg(strstr(err.message, what) != NULL, "'%s' lacks '%s'", err.message,
+                  what);
+}
+
+/* Expect a mesh file to fail reading with status at line. */
+static void expect_mesh(const char *name, const char *text, size_t len, noctStatus want,
+                        long line, const char *what)
+{
+    const char *path = write_bytes(name, text, len);
+    noctMesh *m = (noctMesh *)1;
+    noctError err = {0};
+    noctStatus st = noctMeshRead(path, &m, &err);
+    ck_assert_msg(st == want, "%s: got %s (%s), want %s", name, noctStatusString(st),
+                  err.message, noctStatusString(want));
+    ck_assert_ptr_null(m);
+    expect_at(&err, path, line);
+    ck_assert_msg(strstr(err.message, what) != NULL, "'%s' lacks '%s'", err.message,
+                  what);
+}
+
+/* ---- NUL bytes ------------------------------------------------------------------ */
+
+/* Each file would read without error if the line ended at its NUL: the
+ * rest of the line (which the readers used to drop) is what the file
+ * says, so reading it short would be wrong. */
+START_TEST(nul_byte_in_scene)
+{
+    static const char scene[] = "mesh a box 1 1 1\n"
+                                "object a 0 0 0\0 1 0 0 0.5\n"
+                                "object a 5 0 0\n";
+    expect_scene("nul.scene", scene, sizeof scene - 1, NOCT_ERR_PARSE, 2,
+                 "NUL byte in line");
+    /* In a comment too: the line is still not what the file says. */
+    static const char comment[] = "mesh a box 1 1 1 # a\0b\nobject a 0 0 0\n";
+    expect_scene("nul-comment.scene", comment, sizeof comment - 1, NOCT_ERR_PARSE, 1,
+                 "NUL byte in line");
+    /* The last line, without a newline. */
+    static const char last[] = "mesh a box 1 1 1\nobject a 0 0 0\0";
+    expect_scene("nul-last.scene", last, sizeof last - 1, NOCT_ERR_PARSE, 2,
+                 "NUL byte in line");
+}
+END_TEST
+
+START_TEST(nul_byte_in_off)
+{
+    char off[sizeof CUBE_OFF + 8];
+    size_t len = sizeof CUBE_OFF - 1;
+    memcpy(off, CUBE_OFF, sizeof CUBE_OFF);
+    /* line 4 is "0 0 1": make it "0 0 1\0 5" */
+    char *at = strstr(off, "0 0 1\n") + 5;
+    memmove(at + 3, at, (size_t)(off + len - at) + 1);
+    memcpy(at, "\0 5", 3);
+    expect_mesh("nul.off", off, len + 3, NOCT_ERR_PARSE, 4, "NUL byte in line");
+    /* in the colour part of a face line, which the reader otherwise skips */
+    memcpy(off, CUBE_OFF, sizeof CUBE_OFF);
+    at = strstr(off, "4 1 5 7 3\n") + 9;
+    memcpy(at, " 1\0 2\n", 6);
+    expect_mesh("nul-face.off", off, (size_t)(at - off) + 6, NOCT_ERR_PARSE, 16,
+                "NUL byte in line");
+}
+END_TEST
+
+START_TEST(nul_byte_in_obj)
+{
+    char obj[sizeof CUBE_OBJ + 16];
+    memcpy(obj, CUBE_OBJ, sizeof CUBE_OBJ);
+    size_t len = sizeof CUBE_OBJ - 1;
+    /* the last face line "f 2 6 8 4" gets "\0 l 1 2" before its newline */
+    memcpy(obj + len - 1, "\0 l 1 2\n", 8);
+    expect_mesh("nul.obj", obj, len + 7, NOCT_ERR_PARSE, 14, "NUL byte in line");
+    /* a NUL alone on a line between statements */
+    memcpy(obj, "v 0 0 0\n\0\nv 1 0 0\n", 18);
+    expect_mesh("nul-line.obj", obj, 18, NOCT_ERR_PARSE, 2, "NUL byte in line");
+}
+END_TEST
+
+/* A mesh file with a NUL, named by a scene: both files and lines. */
+START_TEST(nul_byte_in_scene_mesh)
+{
+    static const char obj[] = "v 0 0 0\nv 1 0 0\0\n";
+    const char *mpath = write_bytes("nul-mesh.obj", obj, sizeof obj - 1);
+    const char *spath = write_text("nul-mesh.scene", "N 2\nmesh m file nul-mesh.obj\n"
+                                                     "object m 0 0 0\n");
+    noctScene *sc = (noctScene *)1;
+    noctError err = {0};
+    ck_assert_int_eq(noctSceneRead(spath, &sc, &err), NOCT_ERR_PARSE);
+    ck_assert_ptr_null(sc);
+    expect_at(&err, spath, 2);
+    char inner[200];
+    snprintf(inner, sizeof inner, "%s:2: NUL byte in line", mpath);
+    ck_assert_msg(strstr(err.message, inner) != NULL, "'%s' lacks '%s'", err.message,
+                  inner);
+}
+END_TEST
+
+/* ---- read errors ------------------------------------------------------------------ */
+
+/* A directory opens for reading and fails at the first read (EISDIR). */
+START_TEST(read_error_is_io)
+{
+    const char *dir = temp_path("dir.off");
+    ck_assert_int_eq(mkdir(dir, 0700), 0);
+    noctMesh *m = (noctMesh *)1;
+    noctError err = {0};
+    ck_assert_int_eq(noctMeshRead(dir, &m, &err), NOCT_ERR_IO);
+    ck_assert_ptr_null(m);
+    expect_at(&err, dir, 1);
+    ck_assert_msg(strstr(err.message, "read error") != NULL, "%s", err.message);
+    const char *sdir = temp_path("dir.scene");
+    ck_assert_int_eq(mkdir(sdir, 0700), 0);
+    noctScene *sc = (noctScene *)1;
+    ck_assert_int_eq(noctSceneRead(sdir, &sc, &err), NOCT_ERR_IO);
+    ck_assert_ptr_null(sc);
+    expect_at(&err, sdir, 1);
+}
+END_TEST
+
+/* ---- what building would reject, at read time ---------------------------------- */
+
+START_TEST(walls_need_a_container)
+{
+    static const char *const body = "mesh a box 1 1 1\nobject a 0 0 0 1 0 0 0.1\n";
+    char text[256];
+    /* the effect on line 2, never a container: the error names line 2 */
+    snprintf(text, sizeof text, "N 4\neffects motion walls\n%s", body);
+    expect_scene("walls.scene", text, strlen(text), NOCT_ERR_INVALID, 2,
+                 "the walls effect needs a container");
+    /* a later effects line that turns them on again is the one named */
+    snprintf(text, sizeof text, "effects walls\neffects motion\n%seffects walls events\n",
+             body);
+    expect_scene("walls2.scene", text, strlen(text), NOCT_ERR_INVALID, 5,
+                 "the walls effect needs a container");
+    /* a container before or after the effect line, or the effect turned
+     * off again: these read, and build */
+    snprintf(text, sizeof text, "effects motion walls\n%swalls -5 -5 -5 5 5 5\n", body);
+    ck_assert_uint_eq(build_count(write_text("walls-after.scene", text)), 1);
+    snprintf(text, sizeof text, "walls -5 -5 -5 5 5 5\neffects walls\n%s", body);
+    ck_assert_uint_eq(build_count(write_text("walls-before.scene", text)), 1);
+    snprintf(text, sizeof text, "effects walls\neffects motion events\n%s", body);
+    ck_assert_uint_eq(build_count(write_text("walls-off.scene", text)), 1);
+    snprintf(text, sizeof text, "walls 0 0 0 1 1 1\neffects none\n%s", body);
+    ck_assert_uint_eq(build_count(write_text("walls-none.scene", text)), 1);
+}
+END_TEST
+
+/* Every world parameter a scene can set, at its limits, reads and builds;
+ * just beyond them, fails at its line. */
+START_TEST(scene_limits)
+{
+    ck_assert_uint_eq(build_count(write_text("limits.scene",
+        "N 1\nmax-depth 40\naccuracy box\nmaintenance rebuild\n"
+        "effects motion events response walls substep\n"
+        "walls -1e100 -1e100 -1e100 1e100 1e100 1e100\n"
+        "mesh a box 1 1 1\nobject a 1e100 -1e100 0\nobject a -1e100 0 1e100 0 0 1 1e300\n"
+        "family planes 0\nfamily gas 1\n")), 2 + 2 + 1);
+    ck_assert_uint_eq(build_count(write_text("big.scene",
+        "N big\nmax-depth 1\naccuracy convex\nmaintenance incremental\neffects none\n"
+        "mesh a box 1 1 1\nobject a 0 0 0\n")), 1);
+    static const struct {
+        const char *text;
+        noctStatus st;
+        long line;
+        const char *what;
+    } bad[] = {
+        {"mesh a box 1 1 1\nN 0\n", NOCT_ERR_INVALID, 2, "N must be at least 1"},
+        {"N 2147483647\n", NOCT_ERR_INVALID, 1, "N must be"},
+        {"max-depth 0\n", NOCT_ERR_INVALID, 1, "max-depth 0 is out of range"},
+        {"max-depth 41\n", NOCT_ERR_INVALID, 1, "max-depth 41 is out of range"},
+        {"accuracy perfect\n", NOCT_ERR_INVALID, 1, "unknown accuracy"},
+        {"maintenance lazy\n", NOCT_ERR_INVALID, 1, "maintenance must be"},
+        {"effects motion gravity\n", NOCT_ERR_INVALID, 1, "unknown effect 'gravity'"},
+        {"walls 0 0 0 1 0 1\n", NOCT_ERR_INVALID, 1, "walls: each low coordinate"},
+        {"walls 0 0 0 1 1 inf\n", NOCT_ERR_NONFINITE, 1, "not a finite number"},
+        {"family planes 1001\n", NOCT_ERR_INVALID, 1, "out of range"},
+        {"family gas 0\n", NOCT_ERR_INVALID, 1, "out of range"},
+        {"family gas 10000001\n", NOCT_ERR_INVALID, 1, "out of range"},
+        {"mesh a box 1 1 1\n\nobject a 0 1.1e100 0\n", NOCT_ERR_TOO_LARGE, 3,
+         "coordinate limit"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 1 0 0 -1\n", NOCT_ERR_INVALID, 2,
+         "negative speed"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 0 0 0 1\n", NOCT_ERR_INVALID, 2,
+         "non-zero direction"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 -0 0 -0 1e-300\n", NOCT_ERR_INVALID, 2,
+         "non-zero direction"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 1 0 0 1e309\n", NOCT_ERR_NONFINITE, 2,
+         "not a finite number"},
+        {"mesh a box 1 1 1\nobject b 0 0 0\n", NOCT_ERR_INVALID, 2, "unknown mesh 'b'"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; ++i) {
+        char name[32];
+        snprintf(name, sizeof name, "bad%zu.scene", i);
+        expect_scene(name, bad[i].text, strlen(bad[i].text), bad[i].st, bad[i].line,
+                     bad[i].what);
+    }
+}
+END_TEST
+
+/* Directions are compared with the largest component taken out first:
+ * (1e-200, 0, 0) is not zero, nor is (1e200, 0, 0) infinite. */
+START_TEST(tiny_and_huge_directions)
+{
+    const char *path = write_text("directions.scene",
+        "N 2\nmesh a box 0.5 0.5 0.5\n"
+        "object a 0 0 0    1e-200 0 0 0.25\n"
+        "object a 10 0 0   0 -1e200 0 0.25\n"
+        "object a 0 10 0   0 0 4.9e-324 0.25\n"
+        "object a 0 0 10   1e-200 -1e-200 0 0.25\n"
+        "object a 10 10 10 1.5e308 1.5e308 1.5e308 0.25\n");
+    noctScene *sc;
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, &sc, &err);
+    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
+    noctWorld *w;
+    st = noctSceneBuild(sc, &w, &err);
+    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 5);
+    const double h = sqrt(0.5), t = sqrt(1.0 / 3);
+    const double want[5][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {h, -h, 0}, {t, t, t}};
+    for (uint32_t i = 0; i < 5; ++i) {
+        noctObjectId id = {i, 1};
+        double pos[3], dir[3];
+        ck_assert_int_eq(noctWorldObject(w, id, pos, dir), NOCT_OK);
+        for (int k = 0; k < 3; ++k)
+            ck_assert_msg(fabs(dir[k] - want[i][k]) <= 1e-15, "object %u: direction "
+                          "(%g, %g, %g)", i, dir[0], dir[1], dir[2]);
+    }
+    /* they move by speed 0.25 along those directions */
+    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    double pos[3];
+    ck_assert_int_eq(noctWorldObject(w, (noctObjectId){0, 1}, pos, NULL), NOCT_OK);
+    ck_assert(pos[0] == 0.25 && pos[1] == 0 && pos[2] == 0);
+    ck_assert_int_eq(noctWorldObject(w, (noctObjectId){1, 1}, pos, NULL), NOCT_OK);
+    ck_assert(pos[0] == 10 && pos[1] == -0.25 && pos[2] == 0);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+}
+END_TEST
+
+/* ---- running out of memory -------------------------------------------------------- */
+
+/* A comment line of size bytes ("#xxx...\n"). */
+static char *long_comment(size_t size)
+{
+    char *line = malloc(size + 1);
+    ck_assert_ptr_nonnull(line);
+    line[0] = '#';
+    memset(line + 1, 'x', size - 2);
+    line[size - 1] = '\n';
+    line[size] = '\0';
+    return line;
+}
+
+/* getline(3) grows its buffer for a 1 MiB line; with every allocation
+ * above 64 KiB failing, it fails with ENOMEM, which the readers took for
+ * the end of the file: the lines after it were dropped, and the file read
+ * as OK (or as a file that ends too early). */
+START_TEST(getline_nomem_is_nomem)
+{
+    if (!interposed())
+        return;
+    const size_t big = (size_t)1 << 20, limit = (size_t)1 << 16;
+    char *comment = long_comment(big);
+    size_t cap = big + 1024;
+    char *text = malloc(cap);
+    ck_assert_ptr_nonnull(text);
+
+    snprintf(text, cap, "mesh a box 1 1 1\nobject a 0 0 0\n%sobject a 5 0 0\n", comment);
+    const char *spath = write_text("long.scene", text);
+    ck_assert_uint_eq(build_count(spath), 2); /* with memory, both objects */
+    noctScene *sc = (noctScene *)1;
+    noctError err = {0};
+    alloc_arm(0, limit);
+    noctStatus st = noctSceneRead(spath, &sc, &err);
+    alloc_disarm();
+    ck_assert_uint_gt(alloc_ctl.failed, 0);
+    ck_assert_msg(st == NOCT_ERR_NOMEM, "scene: got %s (%s)", noctStatusString(st),
+                  err.message);
+    ck_assert_ptr_null(sc);
+    expect_at(&err, spath, 3);
+    ck_assert_msg(strstr(err.message, "out of memory") != NULL, "%s", err.message);
+
+    /* OFF: the comment among the vertices */
+    const char *at = strstr(CUBE_OFF, "0 1 1\n");
+    snprintf(text, cap, "%.*s%s%s", (int)(at - CUBE_OFF), CUBE_OFF, comment, at);
+    const char *opath = write_text("long.off", text);
+    noctMesh *m = NULL;
+    ck_assert_int_eq(noctMeshRead(opath, &m, NULL), NOCT_OK);
+    noctMeshDestroy(m);
+    m = (noctMesh *)1;
+    alloc_arm(0, limit);
+    st = noctMeshRead(opath, &m, &err);
+    alloc_disarm();
+    ck_assert_msg(st == NOCT_ERR_NOMEM, "off: got %s (%s)", noctStatusString(st),
+                  err.message);
+    ck_assert_ptr_null(m);
+    expect_at(&err, opath, 6);
+
+    /* OBJ: the comment after the cube, before a line that is an error */
+    snprintf(text, cap, "%s%sl 1 2\n", CUBE_OBJ, comment);
+    const char *jpath = write_text("long.obj", text);
+    ck_assert_int_eq(noctMeshRead(jpath, &m, &err), NOCT_ERR_PARSE);
+    m = (noctMesh *)1;
+    alloc_arm(0, limit);
+    st = noctMeshRead(jpath, &m, &err);
+    alloc_disarm();
+    ck_assert_msg(st == NOCT_ERR_NOMEM, "obj: got %s (%s)", noctStatusString(st),
+                  err.message);
+    ck_assert_ptr_null(m);
+    expect_at(&err, jpath, 15);
+    free(text);
+    free(comment);
+}
+END_TEST
+
+/* Each allocation in turn fails, once, while a scene naming an OFF and an
+ * OBJ file is read: the reading fails with NOCT_ERR_NOMEM (fopen's
+ * included), or succeeds with the whole scene; nothing else. (No box
+ * meshes: see TET_OFF.) */
+START_TEST(every_allocation_failing)
+{
+    if (!interposed())
+        return;
+    write_text("tet.off", TET_OFF);
+    write_text("tet.obj", TET_OBJ);
+    const char *path = write_text("sweep.scene",
+        "# two meshes, five objects\n"
+        "N 2\nmesh off file tet.off\nmesh obj file tet.obj\n"
+        "object obj 0 0 0\nobject off 3 0 0 1 0 0 0.1\nobject obj 6 0 0\n"
+        "object off 9 0 0\nobject obj 12 0 0 0 1e-200 0 1\n");
+    ck_assert_uint_eq(build_count(path), 5);
+    unsigned long nomem = 0, ok = 0;
+    for (unsigned long n = 1;; ++n) {
+        noctScene *sc = (noctScene *)1;
+        noctError err = {0};
+        alloc_arm(n, SIZE_MAX);
+        noctStatus st = noctSceneRead(path, &sc, &err);
+        alloc_disarm();
+        bool failed = alloc_ctl.failed > 0;
+        if (st == NOCT_OK) {
+            ++ok;
+            noctWorld *w;
+            ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+            ck_assert_msg(noctWorldObjectCount(w) == 5, "allocation %lu failing: "
+                          "read short", n);
+            noctWorldDestroy(w);
+            noctSceneDestroy(sc);
+        } else {
+            ck_assert_msg(st == NOCT_ERR_NOMEM && failed, "allocation %lu failing: %s (%s)",
+                          n, noctStatusString(st), err.message);
+            ck_assert_ptr_null(sc);
+            ck_assert_msg(strstr(err.message, "out of memory") != NULL ||
+                          strstr(err.message, "Cannot allocate memory") != NULL,
+                          "allocation %lu failing: '%s'", n, err.message);
+            ++nomem;
+        }
+        if (!failed)
+            break; /* the read made fewer than n allocations: all were tried */
+    }
+    ck_assert_uint_gt(nomem, 10);
+    ck_assert_uint_gt(ok, 0);
+}
+END_TEST
+
+/* The same for each mesh format alone. */
+START_TEST(every_allocation_failing_mesh)
+{
+    if (!interposed())
+        return;
+    const char *paths[2] = {write_text("each.off", TET_OFF),
+                            write_text("each.obj", TET_OBJ)};
+    for (int i = 0; i < 2; ++i) {
+        unsigned long nomem = 0;
+        for (unsigned long n = 1;; ++n) {
+            noctMesh *m = (noctMesh *)1;
+            noctError err = {0};
+            alloc_arm(n, SIZE_MAX);
+            noctStatus st = noctMeshRead(paths[i], &m, &err);
+            alloc_disarm();
+            bool failed = alloc_ctl.failed > 0;
+            if (st == NOCT_OK) {
+                ck_assert_uint_eq(noctMeshVertexCount(m), 4);
+                ck_assert_uint_eq(noctMeshTriangleCount(m), 4);
+                noctMeshDestroy(m);
+            } else {
+                ck_assert_msg(st == NOCT_ERR_NOMEM && failed, "%s, allocation %lu "
+                              "failing: %s (%s)", paths[i], n, noctStatusString(st),
+                              err.message);
+                ck_assert_ptr_null(m);
+                ck_assert_msg(strncmp(err.message, paths[i], strlen(paths[i])) == 0,
+                              "'%s' does not name the file", err.message);
+                ++nomem;
+            }
+            if (!failed)
+                break;
+        }
+        ck_assert_uint_gt(nomem, 3);
+    }
+}
+END_TEST
+
+static Suite *readers_suite(void)
+{
+    Suite *s = suite_create("readers");
+    TCase *tc = tcase_create("NUL bytes and read errors");
+    tcase_add_test(tc, nul_byte_in_scene);
+    tcase_add_test(tc, nul_byte_in_off);
+    tcase_add_test(tc, nul_byte_in_obj);
+    tcase_add_test(tc, nul_byte_in_scene_mesh);
+    tcase_add_test(tc, read_error_is_io);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("read what builds");
+    tcase_add_test(tc, walls_need_a_container);
+    tcase_add_test(tc, scene_limits);
+    tcase_add_test(tc, tiny_and_huge_directions);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("out of memory");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, getline_nomem_is_nomem);
+    tcase_add_test(tc, every_allocation_failing);
+    tcase_add_test(tc, every_allocation_failing_mesh);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(readers_suite());
+}
