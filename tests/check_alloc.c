@@ -985,7 +985,7 @@ static void part_scene(outcome *o)
     phase("noctSceneFamily gas:24");
     err = fresh_err();
     st = noctSceneFamily("gas:24", &sc, &err);
-    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, false))
+    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
         goto out;
     noctSceneDef(sc)->N = 3;
     noctSceneDef(sc)->max_depth = 4;
@@ -1007,7 +1007,7 @@ static void part_scene(outcome *o)
     phase("noctSceneFamily planes:1");
     err = fresh_err();
     st = noctSceneFamily("planes:1", &sc, &err);
-    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, false))
+    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
         goto out;
     noctSceneDef(sc)->N = 2;
     noctSceneDef(sc)->max_depth = 4;

@@ -66,7 +66,8 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
  * @pre @p spec and @p scene are not NULL.
  * @post The scene runs 200 steps with the default world parameters (gas
  *       with its container walls).
- * @return #NOCT_OK; #NOCT_ERR_INVALID for an unknown family or size.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for an unknown family or size;
+ *         #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctSceneFamily(const char *spec, noctScene **scene,
                                     noctError *err);
