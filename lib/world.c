@@ -22,6 +22,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#if defined(__x86_64__) && defined(__SSE2__)
+#  include <emmintrin.h> /* _mm_stream_si64 */
+#endif
 
 #include <noctree/neighbor.h>
 #include <noctree/world.h>
@@ -32,9 +35,9 @@
 typedef struct cell {
     double lo[3];
     double size;
-    uint32_t *objs;      /* leaf: objects overlapping the cell */
-    uint32_t *back;      /* leaf: objs[i]'s entry in its spans is
-                            back[i], so removals need no search */
+    uint32_t *objs;      /* leaf: objects overlapping the cell, then
+                            (back_of) where each one's spans list the
+                            leaf, so removals need no search: 2 cap */
     uint32_t count, cap;
     uint32_t small;      /* leaf: objects small enough to split for */
     uint32_t stamp_obj;  /* enter check: last (object, step) that queried */
@@ -96,7 +99,6 @@ typedef struct object {
     aabb old;              /* the placed box before the last move */
     span *spans;           /* leaves it is in */
     uint32_t nspans, capspans;
-    double ext;            /* its box's largest extent (split rule) */
     bool alive;
     bool entering;         /* maintenance: needs the enter phase */
 } object;
@@ -110,7 +112,7 @@ typedef struct pair_list {
  * so that it reads one contiguous array instead of scattered objects. */
 typedef struct leaf_box {
     double lo[3], hi[3];
-    uint32_t id, back; /* the leaf's objs[i] and back[i] */
+    uint32_t id;
 } leaf_box;
 
 struct noctWorld {
@@ -142,12 +144,16 @@ struct noctWorld {
     bool merge_owed;       /* a merge lacked memory: merge_all() owed */
     bool tree_owed;        /* a failure tore the tree down: rebuild owed */
     uint64_t shrink_from;  /* the first sub-step the root may shrink at */
-    double (*prev)[3];     /* per mover: its position before the motion */
-    double (*prevvel)[3];  /* and its velocity, with walls or sub-steps */
-    uint32_t capprev;
-    bool save_motion;      /* this sub-step's motion fills prev: the first */
-    bool save_vel;         /* and prevvel: velocities may change */
+    /* What a failed step restores (roll_back): per mover, its position
+     * before the step, as the bits the motion loop streams out (see
+     * keep_position), and, for a step of sub-steps, its velocity; and
+     * which velocity components the walls turned (mover * 3 + axis). */
+    int64_t (*prev)[3];
+    double (*prevvel)[3];
+    uint64_t *flips;
+    uint32_t capprev, nflips;
     bool moved, touched;   /* this step moved objects; changed the tree */
+    uint64_t substeps;     /* this step's */
     pair_list held;        /* the colliding list before a step of sub-steps */
     size_t alive;
     size_t moving;         /* live objects with a non-zero speed */
@@ -252,11 +258,20 @@ static bool leaf_has(const noctWorld *w, const octNode *leaf, uint32_t id)
     return false;
 }
 
-/* Is an object of box extent ext one that a split of a cell of this
- * size can separate from others (it fits in a child)? See add_and_split. */
-static bool splits_for(double ext, double size)
+/* objs[i]'s entry in its spans for leaf c is back_of(c)[i]. */
+static NOCT_ALWAYS_INLINE uint32_t *back_of(const cell *c)
 {
-    return ext <= size / 2;
+    return c->objs + c->cap;
+}
+
+/* Is object o one that a split of a cell of this size can separate from
+ * others: is its box at most half the size on every axis, so that it fits
+ * in a child? See add_and_split. */
+static bool splits_for(const object *o, double size)
+{
+    const double h = size / 2;
+    return o->mhi[0] - o->mlo[0] <= h && o->mhi[1] - o->mlo[1] <= h &&
+           o->mhi[2] - o->mlo[2] <= h;
 }
 
 /* Put object id, whose spans entry for this leaf is s, at position i of
@@ -265,8 +280,20 @@ static NOCT_ALWAYS_INLINE void leaf_put(noctWorld *w, cell *c, uint32_t i, uint3
                                         uint32_t s)
 {
     c->objs[i] = id;
-    c->back[i] = s;
+    back_of(c)[i] = s;
     w->obj[id].spans[s].at = i;
+}
+
+/* The entry of object id's spans for the leaf whose cell is c (a search
+ * of its few spans, for the objects a sweep moved in the leaf's list). */
+static uint32_t span_of(const noctWorld *w, uint32_t id, const cell *c)
+{
+    const object *o = &w->obj[id];
+    for (uint32_t s = 0;; ++s) {
+        NOCT_INVARIANT(s < o->nspans);
+        if (cell_of(o->spans[s].leaf) == c)
+            return s;
+    }
 }
 
 /* Drop entry s of object id's spans (the leaf's list is the caller's):
@@ -280,7 +307,7 @@ static void span_drop(noctWorld *w, uint32_t id, uint32_t s)
     if (s == o->nspans)
         return;
     o->spans[s] = last;
-    cell_of(last.leaf)->back[last.at] = s;
+    back_of(cell_of(last.leaf))[last.at] = s;
 }
 
 /* The object at position r of leaf c went and the one at position last
@@ -300,15 +327,17 @@ static void near_leave(cell *c, uint32_t r, uint32_t last)
     c->nnear = k;
 }
 
-/* Room for one more object in leaf c. */
+/* Room for one more object in leaf c: both halves of objs double. */
 static bool leaf_reserve(cell *c)
 {
     if (c->count < c->cap)
         return true;
-    uint32_t cap = c->cap, cap2 = c->cap;
-    if (!grow_array((void **)&c->objs, &cap, c->count + 1, sizeof *c->objs) ||
-        !grow_array((void **)&c->back, &cap2, c->count + 1, sizeof *c->back))
-        return false; /* a list that grew is kept; cap stays the smaller */
+    const uint32_t cap = c->cap ? 2 * c->cap : 4;
+    uint32_t *q = realloc(c->objs, 2 * (size_t)cap * sizeof *q);
+    if (q == NULL)
+        return false;
+    memmove(q + cap, q + c->cap, c->count * sizeof *q);
+    c->objs = q;
     c->cap = cap;
     return true;
 }
@@ -322,7 +351,7 @@ static bool leaf_add(noctWorld *w, octNode *leaf, uint32_t id)
         return false;
     o->spans[o->nspans].leaf = leaf;
     leaf_put(w, c, c->count++, id, o->nspans++); /* fresh: after c->fresh */
-    c->small += splits_for(o->ext, c->size);
+    c->small += splits_for(o, c->size);
     forget_home(w, id);
     return true;
 }
@@ -373,10 +402,9 @@ static bool split_leaf(noctWorld *w, octNode *leaf)
     }
     /* The objects leave the leaf, each by its own entry: no search. */
     for (uint32_t j = 0; j < pc->count; ++j)
-        span_drop(w, pc->objs[j], pc->back[j]);
+        span_drop(w, pc->objs[j], back_of(pc)[j]);
     uint32_t *objs = pc->objs, count = pc->count;
-    free(pc->back);
-    pc->objs = pc->back = NULL;
+    pc->objs = NULL;
     pc->count = pc->cap = pc->small = 0;
     free(pc->near);
     pc->near = NULL;
@@ -407,7 +435,6 @@ static void free_cells_below(octNode *n)
         free_cells_below(k);
         cell *c = octSwapData(k, NULL);
         free(c->objs);
-        free(c->back);
         free(c->near);
     }
     free(block);
@@ -450,15 +477,12 @@ static void try_merge(noctWorld *w, octNode *p, bool up)
             return;
         }
         const uint32_t cap = distinct ? distinct : 1;
-        uint32_t *objs = malloc(cap * sizeof *objs), *back = malloc(cap * sizeof *back);
-        if (objs == NULL || back == NULL) {
-            free(objs);
-            free(back);
+        uint32_t *objs = malloc(2 * (size_t)cap * sizeof *objs);
+        if (objs == NULL) {
             w->merge_owed = true;
             return;
         }
         pc->objs = objs;
-        pc->back = back;
         pc->cap = cap;
         pc->count = pc->small = 0;
         pc->fresh = 0;
@@ -468,7 +492,7 @@ static void try_merge(noctWorld *w, octNode *p, bool up)
             cell *c = cell_of(NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i)));
             for (uint32_t j = 0; j < c->count; ++j) {
                 const uint32_t id = c->objs[j];
-                span_drop(w, id, c->back[j]);
+                span_drop(w, id, back_of(c)[j]);
                 if (w->mark[id] != w->epoch) {
                     w->mark[id] = w->epoch;
                     pc->objs[pc->count++] = id;
@@ -482,7 +506,7 @@ static void try_merge(noctWorld *w, octNode *p, bool up)
             NOCT_INVARIANT(o->nspans < o->capspans);
             o->spans[o->nspans].leaf = p;
             leaf_put(w, pc, j, pc->objs[j], o->nspans++);
-            pc->small += splits_for(o->ext, pc->size);
+            pc->small += splits_for(o, pc->size);
         }
         ++w->c.merges;
         p = up ? NOCT_NODE_PARENT(p) : NULL;
@@ -508,9 +532,10 @@ static void leaf_remove_at(noctWorld *w, octNode *leaf, uint32_t i)
     cell *c = cell_of(leaf);
     NOCT_INVARIANT(i < c->count);
     const uint32_t id = c->objs[i];
-    span_drop(w, id, c->back[i]);
-    NOCT_INVARIANT(c->small >= (uint32_t)splits_for(w->obj[id].ext, c->size));
-    c->small -= splits_for(w->obj[id].ext, c->size);
+    uint32_t *back = back_of(c);
+    span_drop(w, id, back[i]);
+    NOCT_INVARIANT(c->small >= (uint32_t)splits_for(&w->obj[id], c->size));
+    c->small -= splits_for(&w->obj[id], c->size);
     /* The fresh objects stay last: an old one's place goes to the last
      * old one, whose place goes to the last object. */
     const uint32_t last = --c->count;
@@ -518,11 +543,11 @@ static void leaf_remove_at(noctWorld *w, octNode *leaf, uint32_t i)
         const uint32_t last_old = --c->fresh;
         near_leave(c, i, last_old);
         if (i != last_old)
-            leaf_put(w, c, i, c->objs[last_old], c->back[last_old]);
+            leaf_put(w, c, i, c->objs[last_old], back[last_old]);
         if (last_old != last)
-            leaf_put(w, c, last_old, c->objs[last], c->back[last]);
+            leaf_put(w, c, last_old, c->objs[last], back[last]);
     } else if (i != last) {
-        leaf_put(w, c, i, c->objs[last], c->back[last]);
+        leaf_put(w, c, i, c->objs[last], back[last]);
     }
     ++w->c.leaves_left;
     octNode *p = NOCT_NODE_PARENT(leaf);
@@ -573,7 +598,6 @@ static void destroy_tree(noctWorld *w)
         octJoin(w->root, NULL);
     cell *rc = octSwapData(w->root, NULL);
     free(rc->objs);
-    free(rc->back);
     free(rc->near);
     free(rc);
     octDispose(w->root);
@@ -1045,14 +1069,19 @@ static bool update_movers(noctWorld *w)
     if (!grow_array((void **)&w->slow, &w->capslow, (uint32_t)w->moving, sizeof *w->slow))
         return false;
     if (w->capprev < w->moving) {
-        const bool walls = (w->def.effects & (NOCT_EFFECT_WALLS | NOCT_EFFECT_SUBSTEP)) != 0;
-        double(*p)[3] = realloc(w->prev, w->moving * sizeof *p);
+        const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
+        const bool sub = (w->def.effects & NOCT_EFFECT_SUBSTEP) != 0;
+        int64_t(*p)[3] = realloc(w->prev, w->moving * sizeof *p);
         if (p != NULL)
             w->prev = p;
-        double(*v)[3] = p && walls ? realloc(w->prevvel, w->moving * sizeof *v) : NULL;
+        double(*v)[3] = p && sub ? realloc(w->prevvel, w->moving * sizeof *v) : NULL;
         if (v != NULL)
             w->prevvel = v;
-        if (p == NULL || (walls && v == NULL))
+        uint64_t *f = p && (!sub || v) && walls
+                          ? realloc(w->flips, 3 * w->moving * sizeof *f) : NULL;
+        if (f != NULL)
+            w->flips = f;
+        if (p == NULL || (sub && v == NULL) || (walls && f == NULL))
             return false;
         w->capprev = (uint32_t)w->moving;
     }
@@ -1269,7 +1298,6 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
         memcpy(g[i].lo, o->lo, sizeof o->lo);
         memcpy(g[i].hi, o->hi, sizeof o->hi);
         g[i].id = c->objs[i];
-        g[i].back = c->back[i];
     }
     w->c.candidate_pairs += (uint64_t)c->count * (c->count - 1) / 2;
     /* The exhaustive mode keeps the report's test of every pair. */
@@ -1282,7 +1310,7 @@ static noctStatus search_leaf(noctWorld *w, cell *c)
          * near pairs are positions in it. */
         for (uint32_t i = 0; i < c->count; ++i)
             if (c->objs[i] != g[i].id) /* few move: tell only those */
-                leaf_put(w, c, i, g[i].id, g[i].back);
+                leaf_put(w, c, i, g[i].id, span_of(w, g[i].id, c));
     }
     const bool listing = sweep && c->count <= 0x10000;
     const double m2 = listing ? 2 * NEAR_STEPS * w->reach : 0;
@@ -1633,6 +1661,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->free_slots);
     free(w->prev);
     free(w->prevvel);
+    free(w->flips);
     free(w->held.p);
     free(w->mark);
     free(w->box);
@@ -1750,8 +1779,6 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     o->mesh = w->mesh[slot] = mesh;
     memcpy(o->mlo, mesh->lo, sizeof o->mlo);
     memcpy(o->mhi, mesh->hi, sizeof o->mhi);
-    o->ext = noct_max(noct_max(mesh->hi[0] - mesh->lo[0], mesh->hi[1] - mesh->lo[1]),
-                      mesh->hi[2] - mesh->lo[2]);
     forget_home(w, slot);
     o->speed = speed;
     for (int k = 0; k < 3; ++k) {
@@ -1825,6 +1852,26 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
 }
 
 /*
+ * Keep a mover's position before the motion, for roll_back: 24 bytes a
+ * mover that are written every step and read only after a failure, so on
+ * x86-64 they are streamed past the cache (non-temporal stores) rather
+ * than fetched into it to be written (the motion loop is bound by memory
+ * in large worlds). The array holds the doubles' bits.
+ */
+static NOCT_ALWAYS_INLINE void keep_position(int64_t dst[3], const double p[3])
+{
+    int64_t b[3];
+    memcpy(b, p, sizeof b);
+#if defined(__x86_64__) && defined(__SSE2__)
+    _mm_stream_si64((long long *)&dst[0], b[0]);
+    _mm_stream_si64((long long *)&dst[1], b[1]);
+    _mm_stream_si64((long long *)&dst[2], b[2]);
+#else
+    memcpy(dst, b, sizeof b);
+#endif
+}
+
+/*
  * Motion: each mover's position advances by fraction of its velocity
  * (times 1 is exact, so a whole step adds the velocity itself), walls
  * turn it back, and its box is placed. With incremental maintenance
@@ -1834,11 +1881,14 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
  * beyond NOCT_MAX_COORDINATE, or UINT32_MAX. One that passed the fast
  * test is not (home_of() keeps its positions within the limit), so with
  * it only the slow ones are checked, after the loop; without it the check
- * is gathered over the loop. The loop's other branches are the fast
- * test's, which almost every object passes, and the walls', decided
- * outside it (walls and fast are constants where it is inlined).
+ * is gathered over the loop. With save (the first sub-step of a step),
+ * the old positions and the velocity components the walls turn are kept
+ * for roll_back. The loop's other branches are the fast test's, which
+ * almost every object passes, and the walls', decided outside it (walls,
+ * fast and save are constants where it is inlined).
  */
-static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls, bool fast)
+static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool walls, bool fast,
+                                        bool save)
 {
     const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
     const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
@@ -1846,8 +1896,9 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
     aabb *box = w->box;
     const home_block *home = w->home;
     double(*pos)[3] = w->pos;
-    double(*prev)[3] = w->prev, (*prevvel)[3] = w->prevvel;
-    const bool save = w->save_motion, save_vel = w->save_vel;
+    int64_t(*prev)[3] = w->prev;
+    uint64_t *flips = w->flips;
+    uint32_t nflips = 0;
     const uint32_t *movers = w->movers;
     uint32_t *slow = w->slow;
     const uint32_t nm = w->nmovers;
@@ -1859,19 +1910,18 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
         double *p = pos[i];
         const double x = p[0] + o->vel[0] * fraction, y = p[1] + o->vel[1] * fraction,
                      z = p[2] + o->vel[2] * fraction;
-        /* kept until the step is through (roll_back) */
-        if (save) {
-            memcpy(prev[m], p, sizeof prev[m]);
-            if (save_vel)
-                memcpy(prevvel[m], o->vel, sizeof prevvel[m]);
-        }
+        if (save)
+            keep_position(prev[m], p);
         p[0] = x;
         p[1] = y;
         p[2] = z;
         if (walls)
             for (int k = 0; k < 3; ++k)
-                if ((p[k] < wlo[k] && o->vel[k] < 0) || (p[k] > whi[k] && o->vel[k] > 0))
+                if ((p[k] < wlo[k] && o->vel[k] < 0) || (p[k] > whi[k] && o->vel[k] > 0)) {
                     o->vel[k] = -o->vel[k];
+                    if (save)
+                        flips[nflips++] = 3 * (uint64_t)m + (uint64_t)k;
+                }
         if (!fast)
             beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
                       (fabs(z) > NOCT_MAX_COORDINATE);
@@ -1881,6 +1931,8 @@ static NOCT_ALWAYS_INLINE uint32_t move(noctWorld *w, double fraction, bool wall
         }
         place_box(o, p, &box[i]);
     }
+    if (save)
+        w->nflips = nflips;
     w->nslow = nslow;
     const uint32_t *check = fast ? slow : movers;
     const uint32_t ncheck = fast ? nslow : beyond ? nm : 0;
@@ -1914,10 +1966,18 @@ static bool movers_escaped(const noctWorld *w)
 static void roll_back(noctWorld *w, bool moved, bool tree_touched)
 {
     if (moved) {
+        /* Velocities: a step of sub-steps kept them whole (responses may
+         * have turned them too); a single step turned back what the walls
+         * turned. */
+        const bool kept = w->substeps > 1;
+        for (uint32_t f = 0; f < w->nflips && !kept; ++f) {
+            double *v = w->obj[w->movers[w->flips[f] / 3]].vel;
+            v[w->flips[f] % 3] = -v[w->flips[f] % 3];
+        }
         for (uint32_t m = 0; m < w->nmovers; ++m) {
             const uint32_t i = w->movers[m];
             memcpy(w->pos[i], w->prev[m], sizeof w->pos[i]);
-            if (w->save_vel)
+            if (kept)
                 memcpy(w->obj[i].vel, w->prevvel[m], sizeof w->obj[i].vel);
             place_box(&w->obj[i], w->pos[i], &w->box[i]);
             forget_home(w, i);
@@ -1965,21 +2025,25 @@ static bool root_too_large(const noctWorld *w)
 #define SHRINK_AFTER 64
 
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
-static noctStatus substep(noctWorld *w, double fraction, noctError *err)
+static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *err)
 {
     ++w->step; /* the stamps' clock: one tick per sub-step */
     noctStatus st = NOCT_OK;
     double t0 = seconds();
     bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->moving > 0;
-    if (moving && !update_movers(w))
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (moving) {
         const aabb root = root_box(w);
         const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
-        const uint32_t far =
-            w->def.maintenance == NOCT_MAINTAIN_REBUILD
-                ? (walls ? move(w, fraction, true, false) : move(w, fraction, false, false))
-                : (walls ? move(w, fraction, true, true) : move(w, fraction, false, true));
+        const bool fast = w->def.maintenance != NOCT_MAINTAIN_REBUILD;
+        uint32_t far;
+        if (!first) /* a later sub-step: roll_back has the step's start */
+            far = walls ? move(w, fraction, true, fast, false)
+                        : move(w, fraction, false, fast, false);
+        else if (fast)
+            far = walls ? move(w, fraction, true, true, true) : move(w, fraction, false, true, true);
+        else
+            far = walls ? move(w, fraction, true, false, true)
+                        : move(w, fraction, false, false, true);
         w->moved = true;
         if (far != UINT32_MAX)
             return noct_fail(err, NOCT_ERR_TOO_LARGE, (long)far, 0,
@@ -2136,15 +2200,20 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             h->p = q;
             h->cap = w->colliding.n;
         }
-        memcpy(h->p, w->colliding.p, w->colliding.n * sizeof *h->p);
+        if (w->colliding.n > 0)
+            memcpy(h->p, w->colliding.p, w->colliding.n * sizeof *h->p);
         h->n = w->colliding.n;
     }
+    if ((w->def.effects & NOCT_EFFECT_MOTION) && w->moving > 0 && !update_movers(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    w->substeps = k;
+    if (k > 1 && (w->def.effects & NOCT_EFFECT_MOTION))
+        for (uint32_t m = 0; m < w->nmovers; ++m)
+            memcpy(w->prevvel[m], w->obj[w->movers[m]].vel, sizeof w->prevvel[m]);
     ++w->c.steps;
     w->moved = w->touched = false;
-    w->save_vel = (w->def.effects & NOCT_EFFECT_WALLS) != 0 || k > 1;
     for (uint64_t i = 0; i < k; ++i) {
-        w->save_motion = i == 0;
-        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, err);
+        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, err);
         if (st != NOCT_OK) {
             roll_back(w, w->moved, w->touched);
             if (k > 1) {
@@ -2441,10 +2510,10 @@ static noctStatus validate_node(const noctWorld *w, octNode *n, walk *v, noctErr
         if (!overlaps(&w->box[id], c))
             return BAD("object %u is in a leaf its box does not overlap", id);
         const object *o = &w->obj[id];
-        if (c->back[j] >= o->nspans || o->spans[c->back[j]].leaf != n ||
-            o->spans[c->back[j]].at != j)
+        const uint32_t b = back_of(c)[j];
+        if (b >= o->nspans || o->spans[b].leaf != n || o->spans[b].at != j)
             return BAD("object %u's entry for a leaf does not point back to it", id);
-        small += splits_for(o->ext, c->size);
+        small += splits_for(o, c->size);
         ++v->refs[id];
     }
     if (small != c->small)
