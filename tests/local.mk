@@ -89,9 +89,26 @@ EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tes
 	tests/inline-client.c
 
 # The libFuzzer targets need clang: tests/fuzz/run.sh builds and runs them
-# (CI runs it briefly); make and make check leave them alone. The whole
-# folder is distributed: sources, dictionaries and seed corpora.
-EXTRA_DIST += tests/fuzz
+# (CI runs it briefly); make and make check leave them alone. Listed file
+# by file (a folder here would also take a build tree's tests/fuzz/).
+EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
+	tests/fuzz/fuzz_mesh.h tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_off.c \
+	tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_narrowphase.c \
+	tests/fuzz/scene.dict tests/fuzz/off.dict tests/fuzz/obj.dict \
+	tests/fuzz/corpus/scene/coincident.scene \
+	tests/fuzz/corpus/scene/every-statement.scene \
+	tests/fuzz/corpus/scene/two-cubes.scene \
+	tests/fuzz/corpus/scene/walls-late.scene \
+	tests/fuzz/corpus/off/cube.off tests/fuzz/corpus/off/dented.off \
+	tests/fuzz/corpus/off/tet.off \
+	tests/fuzz/corpus/obj/cube.obj tests/fuzz/corpus/obj/tet.obj \
+	tests/fuzz/corpus/narrowphase/boxes-touching \
+	tests/fuzz/corpus/narrowphase/dent-vs-tet \
+	tests/fuzz/corpus/narrowphase/flattened-numeric \
+	tests/fuzz/corpus/narrowphase/off-vs-box \
+	tests/fuzz/corpus/narrowphase/oriented-perm \
+	tests/fuzz/corpus/narrowphase/raw-huge \
+	tests/fuzz/corpus/narrowphase/tet-vs-rotated
 
 # The peer benchmark's event counts against SCENES.md, when it is built.
 if HAVE_PEERS
