@@ -259,6 +259,13 @@ static noctStatus contains(const placed *B, const double p[3], const exact_ctx *
     for (int k = 0; k < 3; ++k) {
         lo[k] = m->lo[k] + B->t[k];
         hi[k] = m->hi[k] + B->t[k];
+        /* Placed so far out that rounding flattened it onto a plane (its
+         * extent below an ulp of its place): the closed solid then has no
+         * interior, and p, not on its boundary, is outside. */
+        if (lo[k] == hi[k]) {
+            *inside = false;
+            return NOCT_OK;
+        }
     }
     uint64_t seed = 0x9e3779b97f4a7c15u;
     for (int attempt = 0; attempt < 64; ++attempt) {
@@ -266,7 +273,10 @@ static noctStatus contains(const placed *B, const double p[3], const exact_ctx *
         for (int k = 0; k < 3; ++k) {
             seed = seed * 6364136223846793005u + 1442695040888963407u;
             double u = (double)(seed >> 11) * 0x1p-53; /* [0, 1) */
-            double ext = hi[k] - lo[k] + fabs(p[k] - lo[k]) + 1;
+            /* q's distance from the box outgrows the rounding of its
+             * place, however far out the box is */
+            double ext = hi[k] - lo[k] + fabs(p[k] - lo[k]) + 1 +
+                         0x1p-40 * noct_max(fabs(lo[k]), fabs(hi[k]));
             q[k] = k == 0 ? hi[0] + ext * (1 + u) : lo[k] + (hi[k] - lo[k]) * u +
                    (u - 0.5) * ext;
         }

@@ -217,19 +217,6 @@ static bool valid_translation(const double t[3])
     return true;
 }
 
-/* Whether rounding flattens a placed mesh: all its vertices share a
- * coordinate once placed (a translation so large that the mesh's extent
- * is below its ulp). */
-static bool flattened(const shape *s, const double t[3])
-{
-    double lo[3], hi[3];
-    noctMeshBounds(s->mesh, lo, hi);
-    for (int k = 0; k < 3; ++k)
-        if ((hi[k] + t[k]) - (lo[k] + t[k]) == 0)
-            return true;
-    return false;
-}
-
 /* Both orders at one level; returns the answer (or -1 for a failure that
  * the translations explain). */
 static int collide_both(const shape *a, const double ta[3], const shape *b,
@@ -247,15 +234,6 @@ static int collide_both(const shape *a, const double ta[3], const shape *b,
         return -1;
     }
     if (level == NOCT_ACCURACY_CONVEX && (s1 == NOCT_ERR_NUMERIC || s2 == NOCT_ERR_NUMERIC))
-        return -1;
-    /* KNOWN ISSUE, to remove once narrowphase.c decides it: the exact
-     * level's point-in-solid test finds every ray ambiguous against a
-     * placed mesh that rounding made flat, and gives up with
-     * NOCT_ERR_NUMERIC (corpus/narrowphase/flattened-numeric), which
-     * narrowphase.h does not allow at that level. Tolerated for flat
-     * placements only, so that anything else still fails. */
-    if (level == NOCT_ACCURACY_EXACT && (s1 == NOCT_ERR_NUMERIC || s2 == NOCT_ERR_NUMERIC) &&
-        (flattened(a, ta) || flattened(b, tb)))
         return -1;
     FUZZ_CHECK(s1 == NOCT_OK && s2 == NOCT_OK, "%s: %s and %s", name, noctStatusString(s1),
                noctStatusString(s2));
