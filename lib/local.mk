@@ -6,6 +6,7 @@
 noctree_sources = \
 	lib/internal.h \
 	lib/direction.c \
+	lib/families.c \
 	lib/mesh.c \
 	lib/mesh_internal.h \
 	lib/meshio.c \
@@ -15,7 +16,8 @@ noctree_sources = \
 	lib/predicates.c \
 	lib/predicates.h \
 	lib/scene.c \
-	lib/world.c
+	lib/world.c \
+	lib/world_internal.h
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 

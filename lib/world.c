@@ -31,6 +31,7 @@
 
 #include "internal.h"
 #include "mesh_internal.h"
+#include "world_internal.h"
 
 typedef struct cell {
     double lo[3];
@@ -2040,7 +2041,8 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
             far = walls ? move(w, fraction, true, fast, false)
                         : move(w, fraction, false, fast, false);
         else if (fast)
-            far = walls ? move(w, fraction, true, true, true) : move(w, fraction, false, true, true);
+            far = walls ? move(w, fraction, true, true, true)
+                        : move(w, fraction, false, true, true);
         else
             far = walls ? move(w, fraction, true, false, true)
                         : move(w, fraction, false, false, true);
@@ -2328,116 +2330,36 @@ noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
     return NOCT_OK;
 }
 
-/* Undo a scene builder's additions after a failure: remove the n objects
- * it added (removal cannot fail) and destroy the meshes it made. */
-static noctStatus unbuild(noctWorld *w, noctObjectId *ids, size_t n, size_t owned_before,
-                          noctStatus st)
+/* ---- meshes the scene families make (families.c) ------------------------- */
+
+bool noct_world_reserve_meshes(noctWorld *w, size_t more)
 {
-    for (size_t i = 0; i < n; ++i)
-        noctWorldRemove(w, ids[i]);
-    while (w->nowned > owned_before)
+    if (w->nowned + more <= w->capowned)
+        return true;
+    const size_t cap = w->nowned + more;
+    noctMesh **q = realloc(w->owned, cap * sizeof *q);
+    if (q == NULL)
+        return false;
+    w->owned = q;
+    w->capowned = cap;
+    return true;
+}
+
+void noct_world_own_mesh(noctWorld *w, noctMesh *mesh)
+{
+    NOCT_INVARIANT(w->nowned < w->capowned);
+    w->owned[w->nowned++] = mesh;
+}
+
+size_t noct_world_owned_meshes(const noctWorld *w)
+{
+    return w->nowned;
+}
+
+void noct_world_destroy_meshes_from(noctWorld *w, size_t from)
+{
+    while (w->nowned > from)
         noctMeshDestroy(w->owned[--w->nowned]);
-    free(ids);
-    return st;
-}
-
-noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
-                              noctError *err)
-{
-    NOCT_REQUIRE(w != NULL && unit_cube != NULL);
-    if (k < 0 || k > 1000)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "planes: %d rings; it must be 0 to 1000", k);
-    const size_t total = 2 * (size_t)(2 * k + 1) * (size_t)(2 * k + 1);
-    noctObjectId *ids = malloc(total * sizeof *ids);
-    if (ids == NULL)
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    size_t n = 0;
-    for (int side = 0; side < 2; ++side) {
-        const double dir[3] = {side == 0 ? 1 : -1, 0, 0};
-        for (int i = -k; i <= k; ++i)
-            for (int j = -k; j <= k; ++j) {
-                int r = abs(i) > abs(j) ? abs(i) : abs(j);
-                double x = 3.02 + 0.1 * r;
-                double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
-                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
-                if (st != NOCT_OK)
-                    return unbuild(w, ids, n, w->nowned, st);
-                ++n;
-            }
-    }
-    free(ids);
-    return NOCT_OK;
-}
-
-double noctGasContainerSize(size_t n)
-{
-    return cbrt(10.0 * (double)n);
-}
-
-/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them. */
-static uint64_t splitmix64(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-static double unit_draw(uint64_t *state)
-{
-    return (double)(splitmix64(state) >> 11) * 0x1p-53;
-}
-
-noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
-{
-    NOCT_REQUIRE(w != NULL);
-    if (n < 1 || n > 10000000)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "gas: %zu boxes; it must be 1 to 10000000", n);
-    if (w->nowned + n > w->capowned) {
-        size_t cap = w->nowned + n;
-        noctMesh **q = realloc(w->owned, cap * sizeof *q);
-        if (q == NULL)
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        w->owned = q;
-        w->capowned = cap;
-    }
-    noctObjectId *ids = malloc(n * sizeof *ids);
-    if (ids == NULL)
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    const size_t owned_before = w->nowned;
-    const double pi = 3.141592653589793;
-    const double lb = noctGasContainerSize(n);
-    uint64_t state = 42;
-    for (size_t i = 0; i < n; ++i) {
-        double half[3];
-        for (int k = 0; k < 3; ++k)
-            half[k] = 0.25 + 0.5 * unit_draw(&state);
-        double u1 = unit_draw(&state), u2 = unit_draw(&state), u3 = unit_draw(&state);
-        double x = sqrt(1 - u1) * sin(2 * pi * u2), y = sqrt(1 - u1) * cos(2 * pi * u2);
-        double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
-        const double r[9] = {
-            1 - 2 * (y * y + z * z), 2 * (x * y - z * qw), 2 * (x * z + y * qw),
-            2 * (x * y + z * qw), 1 - 2 * (x * x + z * z), 2 * (y * z - x * qw),
-            2 * (x * z - y * qw), 2 * (y * z + x * qw), 1 - 2 * (x * x + y * y)};
-        double centre[3];
-        for (int k = 0; k < 3; ++k)
-            centre[k] = lb * unit_draw(&state);
-        double dz = 2 * unit_draw(&state) - 1, phi = 2 * pi * unit_draw(&state);
-        const double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi),
-                               dz};
-        noctMesh *m;
-        noctStatus st = noctMeshCreateOrientedBox(half, r, &m, err);
-        if (st != NOCT_OK)
-            return unbuild(w, ids, i, owned_before, st);
-        w->owned[w->nowned++] = m;
-        st = noctWorldAdd(w, m, centre, dir, 0.05, &ids[i], err);
-        if (st != NOCT_OK)
-            return unbuild(w, ids, i, owned_before, st);
-    }
-    free(ids);
-    return NOCT_OK;
 }
 
 /* ---- validation walk ----------------------------------------------------------- */

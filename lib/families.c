@@ -1,0 +1,126 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The benchmark scene families of SCENES.md, built in a world through its
+ * public API: the report's planes t_k and the gas of oriented boxes. They
+ * are not part of the world's core; the tools, the tests and scene files
+ * (noctree-scene(5)) use them. The world only keeps the meshes a family
+ * makes (world_internal.h).
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include <noctree/world.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+#include "world_internal.h"
+
+/* Undo a scene builder's additions after a failure: remove the n objects
+ * it added (removal cannot fail) and destroy the meshes it made. */
+static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, size_t owned_before,
+                          noctStatus st)
+{
+    for (size_t i = 0; i < n; ++i)
+        noctWorldRemove(w, ids[i]);
+    noct_world_destroy_meshes_from(w, owned_before);
+    free(ids);
+    return st;
+}
+
+noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && unit_cube != NULL);
+    if (k < 0 || k > 1000)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "planes: %d rings; it must be 0 to 1000", k);
+    const size_t total = 2 * (size_t)(2 * k + 1) * (size_t)(2 * k + 1);
+    noctObjectId *ids = malloc(total * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    size_t n = 0;
+    for (int side = 0; side < 2; ++side) {
+        const double dir[3] = {side == 0 ? 1 : -1, 0, 0};
+        for (int i = -k; i <= k; ++i)
+            for (int j = -k; j <= k; ++j) {
+                int r = abs(i) > abs(j) ? abs(i) : abs(j);
+                double x = 3.02 + 0.1 * r;
+                double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
+                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
+                if (st != NOCT_OK)
+                    return fam_unbuild(w, ids, n, noct_world_owned_meshes(w), st);
+                ++n;
+            }
+    }
+    free(ids);
+    return NOCT_OK;
+}
+
+double noctGasContainerSize(size_t n)
+{
+    return cbrt(10.0 * (double)n);
+}
+
+/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them. */
+static uint64_t fam_splitmix64(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+static double fam_unit_draw(uint64_t *state)
+{
+    return (double)(fam_splitmix64(state) >> 11) * 0x1p-53;
+}
+
+noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (n < 1 || n > 10000000)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "gas: %zu boxes; it must be 1 to 10000000", n);
+    if (!noct_world_reserve_meshes(w, n))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    noctObjectId *ids = malloc(n * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const size_t owned_before = noct_world_owned_meshes(w);
+    const double pi = 3.141592653589793;
+    const double lb = noctGasContainerSize(n);
+    uint64_t state = 42;
+    for (size_t i = 0; i < n; ++i) {
+        double half[3];
+        for (int k = 0; k < 3; ++k)
+            half[k] = 0.25 + 0.5 * fam_unit_draw(&state);
+        double u1 = fam_unit_draw(&state), u2 = fam_unit_draw(&state);
+        double u3 = fam_unit_draw(&state);
+        double x = sqrt(1 - u1) * sin(2 * pi * u2), y = sqrt(1 - u1) * cos(2 * pi * u2);
+        double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
+        const double r[9] = {
+            1 - 2 * (y * y + z * z), 2 * (x * y - z * qw), 2 * (x * z + y * qw),
+            2 * (x * y + z * qw), 1 - 2 * (x * x + z * z), 2 * (y * z - x * qw),
+            2 * (x * z - y * qw), 2 * (y * z + x * qw), 1 - 2 * (x * x + y * y)};
+        double centre[3];
+        for (int k = 0; k < 3; ++k)
+            centre[k] = lb * fam_unit_draw(&state);
+        double dz = 2 * fam_unit_draw(&state) - 1, phi = 2 * pi * fam_unit_draw(&state);
+        const double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi),
+                               dz};
+        noctMesh *m;
+        noctStatus st = noctMeshCreateOrientedBox(half, r, &m, err);
+        if (st != NOCT_OK)
+            return fam_unbuild(w, ids, i, owned_before, st);
+        noct_world_own_mesh(w, m);
+        st = noctWorldAdd(w, m, centre, dir, 0.05, &ids[i], err);
+        if (st != NOCT_OK)
+            return fam_unbuild(w, ids, i, owned_before, st);
+    }
+    free(ids);
+    return NOCT_OK;
+}
+
