@@ -982,49 +982,34 @@ static void part_scene(outcome *o)
     noctSceneDestroy(sc);
     sc = NULL;
 
-    phase("noctSceneFamily gas:24");
-    err = fresh_err();
-    st = noctSceneFamily("gas:24", &sc, &err);
-    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
-        goto out;
-    noctSceneDef(sc)->N = 3;
-    noctSceneDef(sc)->max_depth = 4;
-    phase("noctSceneBuild gas:24");
-    err = fresh_err();
-    st = noctSceneBuild(sc, &w, &err);
-    if (st != NOCT_OK && w != NULL)
-        record(o, K_STATUS, "noctSceneBuild failed but left a world");
-    if (!judge(o, "noctSceneBuild", st, NOCT_OK, &err, true))
-        goto out;
-    if (!steps(o, &w, "gas", 4))
-        goto out;
-    phase("gas: noctWorldDestroy");
-    noctWorldDestroy(w);
-    w = NULL;
-    noctSceneDestroy(sc);
-    sc = NULL;
-
-    phase("noctSceneFamily planes:1");
-    err = fresh_err();
-    st = noctSceneFamily("planes:1", &sc, &err);
-    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
-        goto out;
-    noctSceneDef(sc)->N = 2;
-    noctSceneDef(sc)->max_depth = 4;
-    phase("noctSceneBuild planes:1");
-    err = fresh_err();
-    st = noctSceneBuild(sc, &w, &err);
-    if (st != NOCT_OK && w != NULL)
-        record(o, K_STATUS, "noctSceneBuild failed but left a world");
-    if (!judge(o, "noctSceneBuild", st, NOCT_OK, &err, true))
-        goto out;
-    if (!steps(o, &w, "planes", 12))
-        goto out;
-    phase("planes: noctWorldDestroy");
-    noctWorldDestroy(w);
-    w = NULL;
-    noctSceneDestroy(sc);
-    sc = NULL;
+    /* the two families, each built small and stepped */
+    static const struct {
+        const char *spec, *name;
+        int N, steps;
+    } families[] = {{"gas:24", "gas", 3, 4}, {"planes:1", "planes", 2, 12}};
+    for (size_t f = 0; f < sizeof families / sizeof *families; ++f) {
+        phase("noctSceneFamily %s", families[f].spec);
+        err = fresh_err();
+        st = noctSceneFamily(families[f].spec, &sc, &err);
+        if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
+            goto out;
+        noctSceneDef(sc)->N = families[f].N;
+        noctSceneDef(sc)->max_depth = 4;
+        phase("noctSceneBuild %s", families[f].spec);
+        err = fresh_err();
+        st = noctSceneBuild(sc, &w, &err);
+        if (st != NOCT_OK && w != NULL)
+            record(o, K_STATUS, "noctSceneBuild failed but left a world");
+        if (!judge(o, "noctSceneBuild", st, NOCT_OK, &err, true))
+            goto out;
+        if (!steps(o, &w, families[f].name, families[f].steps))
+            goto out;
+        phase("%s: noctWorldDestroy", families[f].name);
+        noctWorldDestroy(w);
+        w = NULL;
+        noctSceneDestroy(sc);
+        sc = NULL;
+    }
 
     phase("noctSceneRead bad.scene");
     err = fresh_err();

@@ -110,6 +110,36 @@ static result run(const char *scene, int N, int steps)
     return r;
 }
 
+/* Run fn(arg, out) in a child process, so that the peak memory it reports
+ * (*peak_kib) is the run's own, and copy its size-byte result to out.
+ * False if the child could not be run or failed. */
+static bool in_child(void (*fn)(const void *arg, void *out), const void *arg, void *out,
+                     size_t size, long *peak_kib)
+{
+    int fds[2];
+    if (pipe(fds) != 0) {
+        perror("bench-world: pipe");
+        return false;
+    }
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        fn(arg, out);
+        ssize_t wr = write(fds[1], out, size);
+        _exit(wr == (ssize_t)size ? 0 : 1);
+    }
+    close(fds[1]);
+    ssize_t got = pid > 0 ? read(fds[0], out, size) : -1;
+    close(fds[0]);
+    int status;
+    struct rusage ru;
+    if (pid < 0 || wait4(pid, &status, 0, &ru) < 0)
+        return false;
+    *peak_kib = ru.ru_maxrss;
+    return got == (ssize_t)size && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 /* ---- overlap: bounded work whatever the objects share ------------------- */
 
 typedef struct overlap_result {
@@ -170,6 +200,18 @@ static overlap_result overlap_run(int kind, size_t n, int N, int depth)
     return r;
 }
 
+typedef struct overlap_job {
+    int kind;
+    size_t n;
+    int N, depth;
+} overlap_job;
+
+static void overlap_child(const void *arg, void *out)
+{
+    const overlap_job *j = arg;
+    *(overlap_result *)out = overlap_run(j->kind, j->n, j->N, j->depth);
+}
+
 /* Print the overlap workloads at the defaults, at N = 1 and at
  * max-depth 40, each at two sizes ten times apart: time and memory per
  * object (plus pair) that stay flat from the smaller to the larger size
@@ -188,38 +230,45 @@ static int overlap_bench(bool quick)
     for (int kind = 0; kind < 3; ++kind)
         for (size_t c = 0; c < sizeof configs / sizeof *configs; ++c)
             for (int z = 0; z < 2; ++z) {
-                int fds[2];
-                if (pipe(fds) != 0) {
-                    perror("bench-world: pipe");
-                    return EXIT_FAILURE;
-                }
-                fflush(stdout);
-                pid_t pid = fork();
-                if (pid == 0) {
-                    close(fds[0]);
-                    overlap_result r =
-                        overlap_run(kind, sizes[kind][z], configs[c][0], configs[c][1]);
-                    ssize_t wr = write(fds[1], &r, sizeof r);
-                    _exit(wr == (ssize_t)sizeof r ? 0 : 1);
-                }
-                close(fds[1]);
-                overlap_result r;
-                ssize_t got = read(fds[0], &r, sizeof r);
-                close(fds[0]);
-                int status;
-                struct rusage ru;
-                wait4(pid, &status, 0, &ru);
-                if (got != (ssize_t)sizeof r || !WIFEXITED(status) || !r.ok) {
+                const overlap_job job = {kind, sizes[kind][z], configs[c][0], configs[c][1]};
+                overlap_result r = {0};
+                long peak = 0;
+                const bool ran = in_child(overlap_child, &job, &r, sizeof r, &peak);
+                if (!ran || !r.ok) {
                     printf("%-26s %3d %5d   failed\n", names[kind], configs[c][0],
                            configs[c][1]);
                     return EXIT_FAILURE;
                 }
                 printf("%-26s %3d %5d %9zu %11zu %9.3f %9.3f %10.1f %12.1f\n", names[kind],
                        configs[c][0], configs[c][1], r.objects, r.pairs, r.add_s, r.step_s,
-                       (double)ru.ru_maxrss / 1024,
+                       (double)peak / 1024,
                        1e9 * (r.add_s + r.step_s) / (double)(r.objects + r.pairs));
             }
     return 0;
+}
+
+typedef struct scene_job {
+    const char *scene;
+    int N, steps, max_exhaustive;
+} scene_job;
+
+/* One row of the scene table; the exhaustive run is skipped (ok 2) above
+ * the cap. */
+static void scene_child(const void *arg, void *out)
+{
+    const scene_job *j = arg;
+    result *r = out;
+    if (j->N == NOCT_N_EXHAUSTIVE) {
+        const size_t n = strncmp(j->scene, "gas:", 4) == 0
+                             ? (size_t)atol(j->scene + 4)
+                             : (size_t)(2 * (2 * atol(j->scene + 7) + 1) *
+                                        (2 * atol(j->scene + 7) + 1));
+        if (n > (size_t)j->max_exhaustive) {
+            r->ok = 2;
+            return;
+        }
+    }
+    *r = run(j->scene, j->N, j->steps);
 }
 
 int main(int argc, char **argv)
@@ -277,45 +326,17 @@ int main(int argc, char **argv)
     for (int s = 0; s < nscenes; ++s) {
         double big_median = 0;
         for (size_t ni = 0; ni < sizeof Ns / sizeof *Ns; ++ni) {
-            int fds[2];
-            if (pipe(fds) != 0) {
-                perror("bench-world: pipe");
-                return EXIT_FAILURE;
-            }
-            pid_t pid = fork();
-            if (pid == 0) {
-                close(fds[0]);
-                result r = {0};
-                /* The exhaustive run is skipped above the cap. */
-                bool skip = false;
-                if (Ns[ni] == NOCT_N_EXHAUSTIVE) {
-                    size_t n = strncmp(scenes[s], "gas:", 4) == 0
-                                   ? (size_t)atol(scenes[s] + 4)
-                                   : (size_t)(2 * (2 * atol(scenes[s] + 7) + 1) *
-                                              (2 * atol(scenes[s] + 7) + 1));
-                    skip = n > (size_t)max_exhaustive;
-                }
-                if (!skip)
-                    r = run(scenes[s], Ns[ni], steps);
-                else
-                    r.ok = 2;
-                ssize_t wr = write(fds[1], &r, sizeof r);
-                _exit(wr == (ssize_t)sizeof r ? 0 : 1);
-            }
-            close(fds[1]);
-            result r;
-            ssize_t got = read(fds[0], &r, sizeof r);
-            close(fds[0]);
-            int status;
-            struct rusage ru;
-            wait4(pid, &status, 0, &ru);
+            const scene_job job = {scenes[s], Ns[ni], steps, max_exhaustive};
+            result r = {0};
+            long peak = 0;
+            const bool ran = in_child(scene_child, &job, &r, sizeof r, &peak);
             const char *nname = Ns[ni] == NOCT_N_EXHAUSTIVE ? "big" : NULL;
             char nbuf[16];
             if (nname == NULL) {
                 snprintf(nbuf, sizeof nbuf, "%d", Ns[ni]);
                 nname = nbuf;
             }
-            if (got != (ssize_t)sizeof r || !WIFEXITED(status) || r.ok == 0) {
+            if (!ran || r.ok == 0) {
                 printf("%-12s %8s %5s   failed\n", scenes[s], "", nname);
                 continue;
             }
@@ -327,18 +348,17 @@ int main(int argc, char **argv)
             if (Ns[ni] == NOCT_N_EXHAUSTIVE)
                 big_median = r.median;
             double ratio = big_median > 0 ? big_median / r.median : 0;
-            double peak = (double)ru.ru_maxrss / 1024;
+            const double peak_mib = (double)peak / 1024;
             printf("%-12s %8zu %5s %11.3f %11.3f %9.0f %8.2f %8zu %10.1f ", scenes[s],
                    r.objects, nname, 1e3 * r.median, 1e3 * r.p90,
-                   1e9 * r.median / (double)r.objects, r.setup, r.begins, peak);
+                   1e9 * r.median / (double)r.objects, r.setup, r.begins, peak_mib);
             if (ratio > 0)
                 printf("%8.2f\n", ratio);
             else
                 printf("%8s\n", "-");
             fprintf(csv, "%s,%zu,%s,%d,%.6g,%.6g,%.1f,%.3f,%zu,%ld,%.3f\n", scenes[s],
                     r.objects, nname, steps, r.median, r.p90,
-                    1e9 * r.median / (double)r.objects, r.setup, r.begins,
-                    ru.ru_maxrss, ratio);
+                    1e9 * r.median / (double)r.objects, r.setup, r.begins, peak, ratio);
             fflush(stdout);
         }
     }
