@@ -12,6 +12,7 @@
 #include <noctree/status.h>
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/broadphase.h>
 #include <noctree/world.h>
 #include <noctree/scene.h>
 

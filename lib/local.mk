@@ -47,6 +47,7 @@ EXTRA_lib_libnoctree_efficient_la_DEPENDENCIES = lib/libnoctree.sym
 
 noctreeincludedir = $(includedir)/noctree
 noctreeinclude_HEADERS = \
+	include/noctree/broadphase.h \
 	include/noctree/export.h \
 	include/noctree/mesh.h \
 	include/noctree/narrowphase.h \

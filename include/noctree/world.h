@@ -95,6 +95,7 @@
 
 #include <stdio.h>
 
+#include <noctree/broadphase.h>
 #include <noctree/export.h>
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
@@ -129,9 +130,6 @@ typedef struct noctPair {
 /** Most sub-steps one step may take with #NOCT_EFFECT_SUBSTEP: a step
  *  that would need more fails with #NOCT_ERR_TOO_LARGE, naming the object. */
 #define NOCT_MAX_SUBSTEPS (1u << 20)
-
-/** N that never splits the root: the exhaustive algorithm ("N = big"). */
-#define NOCT_N_EXHAUSTIVE 0x7fffffff
 
 /** @brief What a world simulates: OR these into noctWorldDef::effects. */
 enum noctEffect {
