@@ -48,6 +48,12 @@
 #  define NOCT_NODE_PARENT(n) octParent(n)
 #endif
 
+/* Split N with the eight children's storage given (zeroed or not), and
+ * join N's eight leaf children, returning their storage: the octree ADT's
+ * split and join without allocation, for the broadphase's pool. */
+void noct_oct_split_into(octNode *N, octNode kids[8]);
+octNode *noct_oct_unsplit(octNode *N);
+
 /* The direction whose axes are those of (x, y, z) that are not zero, on
  * the side of their signs; OCT_OMEGA for (0, 0, 0). */
 octDirection noct_direction_of(int x, int y, int z);

@@ -5,6 +5,11 @@
 
 noctree_sources = \
 	lib/internal.h \
+	lib/broadphase.c \
+	lib/broadphase_internal.h \
+	lib/broadphase_pairs.c \
+	lib/broadphase_query.c \
+	lib/broadphase_tree.c \
 	lib/direction.c \
 	lib/families.c \
 	lib/mesh.c \
@@ -17,7 +22,10 @@ noctree_sources = \
 	lib/predicates.h \
 	lib/scene.c \
 	lib/world.c \
-	lib/world_internal.h
+	lib/world_events.c \
+	lib/world_internal.h \
+	lib/world_motion.c \
+	lib/world_narrow.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 

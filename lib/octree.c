@@ -162,6 +162,35 @@ bool octSplit(octNode *N)
     return true;
 }
 
+/* The library's own split and join, with the children's storage the
+ * caller's (the broadphase's pool of blocks): no allocation, no free. */
+void noct_oct_split_into(octNode *N, octNode kids[8])
+{
+    NOCT_INVARIANT(N->children_ == NULL && N->generation_ < INT32_MAX);
+    for (unsigned i = 0; i < 8; ++i) {
+        kids[i].parent_ = N;
+        kids[i].children_ = NULL;
+        kids[i].data_ = NULL;
+        kids[i].generation_ = N->generation_ + 1;
+        kids[i].childType_ = (uint8_t)(OCT_LDB + i);
+        kids[i].iter_ = NOCT_ITER_UNSET;
+        kids[i].reserved_ = 0;
+    }
+    N->children_ = kids;
+    N->iter_ = NOCT_ITER_UNSET;
+}
+
+octNode *noct_oct_unsplit(octNode *N)
+{
+    octNode *kids = N->children_;
+    NOCT_INVARIANT(kids != NULL);
+    for (unsigned i = 0; i < 8; ++i)
+        NOCT_INVARIANT(kids[i].children_ == NULL);
+    N->children_ = NULL;
+    N->iter_ = NOCT_ITER_UNSET;
+    return kids;
+}
+
 void octJoin(octNode *N, octItemDisposer *kill)
 {
     NOCT_REQUIRE(N != NULL);

@@ -1,7 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Private: what the scene families (families.c) need of the world beyond
- * its public API, the meshes it keeps for them. Never installed.
+ * Private: the world's structures, shared by its stage files. Never
+ * installed.
+ *
+ *   world.c          the public API, and the step as its stages in order
+ *   world_motion.c   motion and walls, the movers, a failed step's roll-back
+ *   world_narrow.c   narrowphase dispatch of the broadphase's pairs
+ *   world_events.c   contact events and the response
+ *   families.c       the SCENES.md scene families (not the core)
+ *
+ * The world is the broadphase's client: its objects are proxies of the
+ * broadphase it embeds (same slots, same handles), whose local boxes are
+ * their meshes' boxes, placed at the objects' positions. Each stage has
+ * its own struct: the narrowphase dispatch knows nothing of the tree or
+ * its sweeps, the events nothing of either.
  */
 #ifndef NOCT_LIB_WORLD_INTERNAL_H
 #define NOCT_LIB_WORLD_INTERNAL_H
@@ -10,6 +22,113 @@
 #include <stddef.h>
 
 #include <noctree/world.h>
+
+#include "broadphase_internal.h"
+#include "mesh_internal.h"
+
+/* What the motion loop reads of an object: one record. */
+typedef struct noct_object {
+    const noctMesh *mesh;
+    double vel[3], speed;  /* vel = speed * unit direction */
+    double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
+    bool alive;
+} noct_object;
+
+/* Motion: the movers and what a failed step restores. */
+typedef struct noct_motion {
+    uint32_t *movers;      /* live moving objects, by slot */
+    uint32_t nmovers, capmovers;
+    double vmax;           /* the movers' greatest speed */
+    bool stale;            /* objects came or went since movers was made */
+    size_t moving;         /* live objects with a non-zero speed */
+    uint32_t *slow;        /* movers that failed the fast test */
+    uint32_t nslow, capslow;
+    /* What roll_back restores: per mover, its position before the step,
+     * as the bits the motion loop streams out (noct_keep_position), and,
+     * for a step of sub-steps, its velocity; and which velocity
+     * components the walls turned (mover * 3 + axis). */
+    int64_t (*prev)[3];
+    double (*prevvel)[3];
+    uint64_t *flips;
+    uint32_t capprev, nflips;
+} noct_motion;
+
+/* Events: the colliding pairs now and before, what began and ended. */
+typedef struct noct_events {
+    noct_pair_list colliding, previous, began, ended;
+    noct_pair_list held;   /* the colliding list before a step of sub-steps */
+    uint64_t *mark;        /* per slot: the response's epoch stamps */
+    uint64_t epoch;
+} noct_events;
+
+struct noctWorld {
+    noctWorldDef def;
+    noctBroadphase bp;     /* the world's objects are its proxies */
+    /* Per slot, with the broadphase's capacity. */
+    noct_object *obj;
+    double (*pos)[3];      /* the position (translation) */
+    const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
+                              reads it without touching the objects */
+    noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
+                              all the exact level reads of most pairs of
+                              boxes (64-byte aligned, two lines each) */
+    uint32_t capslots;
+    noct_motion motion;
+    noct_events events;
+    bool moved, touched;   /* this step moved objects; changed the tree */
+    uint64_t substeps;     /* this step's */
+    noctMesh **owned;      /* meshes the scene builders made */
+    size_t nowned, capowned;
+    noctWorldCounters c;   /* the world's own stages'; the broadphase's
+                              are added when they are read */
+};
+
+/* ---- world.c -------------------------------------------------------------------- */
+
+double noct_seconds(void);
+
+/* ---- world_motion.c ---------------------------------------------------------------- */
+
+/* The live movers in slot order and room for the step's records, after
+ * objects came or went; false without memory. */
+bool noct_world_update_movers(noctWorld *w);
+
+/* Move every mover by fraction of its velocity, with the walls, and place
+ * its box; with incremental maintenance, list in motion.slow those that
+ * fail the fast test. first: the step's first sub-step (keep what
+ * roll_back needs). Returns the first mover beyond NOCT_MAX_COORDINATE,
+ * or UINT32_MAX. */
+uint32_t noct_world_move(noctWorld *w, double fraction, bool first);
+
+/* Has a mover's box left the root? */
+bool noct_world_movers_escaped(const noctWorld *w);
+
+/* After a failed stage: movers back to where the step began, and a tree
+ * that was touched torn down. */
+void noct_world_roll_back(noctWorld *w, bool moved, bool tree_touched);
+
+/* The moving object that moves farthest for its size, and how far. */
+double noct_world_step_ratio(const noctWorld *w, uint32_t *which);
+
+/* ---- world_narrow.c ---------------------------------------------------------------- */
+
+/* The narrowphase, at the world's accuracy, on the pairs whose boxes
+ * overlap (sorted by their first object); the colliding ones are appended
+ * to colliding, with their generations. */
+noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
+                             noct_pair_list *colliding);
+
+/* ---- world_events.c ---------------------------------------------------------------- */
+
+/* began = colliding - previous, ended = previous - colliding (sorted),
+ * appended to the lists. */
+noctStatus noct_world_diff_events(noct_events *e, uint64_t *events);
+
+/* The response: every object in a pair that began (from the from'th on)
+ * reverses its direction once. */
+void noct_world_respond(noct_events *e, noct_object *obj, size_t from, uint64_t *reversals);
+
+/* ---- meshes the scene families make (families.c) ------------------------------ */
 
 /* Room for more meshes the world will own; false without memory. */
 bool noct_world_reserve_meshes(noctWorld *w, size_t more);

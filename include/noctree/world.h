@@ -110,22 +110,17 @@ extern "C" {
 typedef struct noctWorld noctWorld;
 
 /**
- * @brief A handle to an object of a world.
+ * @brief A handle to an object of a world: the handle of the object's
+ * proxy in the world's broadphase (broadphase.h).
  *
  * Handles are values. Once the object is removed its slot may be reused,
  * but with a new generation, so a stale handle is detected
  * (#NOCT_ERR_INVALID) rather than naming another object.
  */
-typedef struct noctObjectId {
-    uint32_t index;      /**< Slot of the object in the world. */
-    uint32_t generation; /**< Generation of the slot; 0 is never valid. */
-} noctObjectId;
+typedef noctProxyId noctObjectId;
 
 /** @brief Two objects, the one with the smaller index first. */
-typedef struct noctPair {
-    noctObjectId a; /**< The object with the smaller index. */
-    noctObjectId b; /**< The object with the larger index. */
-} noctPair;
+typedef noctProxyPair noctPair;
 
 /** Most sub-steps one step may take with #NOCT_EFFECT_SUBSTEP: a step
  *  that would need more fails with #NOCT_ERR_TOO_LARGE, naming the object. */

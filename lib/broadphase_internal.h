@@ -1,0 +1,356 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Private: the broadphase's structures, shared by its files and by the
+ * world, its client, which moves proxies in bulk on the fast path (the
+ * motion loop writes the placed boxes and runs the fast test itself).
+ * Never installed.
+ *
+ *   broadphase.c        the public API: proxies, filters, pairs, counters,
+ *                       validation, octree access
+ *   broadphase_tree.c   cells and their pool, split and merge, building
+ *                       the tree, maintenance (fast test, leave and enter
+ *                       checks)
+ *   broadphase_pairs.c  the pair search: sweeps, near pairs, ownership of
+ *                       pairs, filters, sorting
+ *   broadphase_query.c  box, point and segment queries
+ *
+ * Every node's datum is a cell: its cube (lo, size) and, for a leaf, the
+ * proxies whose boxes overlap it. Every proxy keeps the list of leaves it
+ * is in (its spans), and each leaf where each of its proxies lists it, so
+ * that removals need no search. Cells are closed for overlap (touching
+ * counts) and half-open for ownership of a point ([lo, lo + size), closed
+ * at the root's upper faces).
+ */
+#ifndef NOCT_LIB_BROADPHASE_INTERNAL_H
+#define NOCT_LIB_BROADPHASE_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/broadphase.h>
+
+#include "internal.h"
+
+typedef struct noct_cell {
+    double lo[3];
+    double size;
+    uint32_t *objs;      /* leaf: proxies overlapping the cell, then
+                            (noct_back_of) where each one's spans list the
+                            leaf: 2 cap entries. Kept, with its capacity,
+                            when the leaf splits or its block goes back to
+                            the pool: lists never shrink. */
+    uint32_t count, cap;
+    uint32_t small;      /* leaf: proxies small enough to split for */
+    uint32_t stamp_obj;  /* enter check: last (proxy, clock) that queried */
+    uint32_t fresh;      /* objs[fresh, count) came since the near pairs */
+    uint64_t stamp_step; /* this node as a neighbor */
+    /* Leaf, from its last sweep: every pair of its boxes not in near was
+     * at least budget apart (on some axis) then, less twice the reach of
+     * each search since, but for the pairs of the fresh proxies, which the
+     * next search adds. near holds the pairs that were closer, as
+     * positions in objs (low and high 16 bits). */
+    union {
+        double budget;
+        /* Node whose children are leaves: they hold at least this many
+         * distinct proxies (0: unknown). Proxies leaving them count it
+         * down, one each; more coming cannot make it wrong. */
+        uint32_t distinct;
+    };
+    uint32_t *near;
+    uint32_t nnear, capnear;
+} noct_cell;
+
+/* An axis-aligned box, closed. */
+typedef struct noct_aabb {
+    double lo[3], hi[3];
+} noct_aabb;
+
+/*
+ * A proxy's home block, as the positions that keep its box in it. The
+ * block is the block of cells of its smallest leaf's size, on that
+ * leaf's lattice, that its box overlaps, with the high side of the first
+ * column and the low side of the last on each axis; a box inside it
+ * overlaps the same cells, so its leaves are unchanged. lo[0] = +inf when
+ * there is none. See noct_bp_home_of().
+ */
+typedef struct noct_home {
+    double lo[3], hi[3];
+} noct_home;
+
+/* A leaf a proxy is in, and where the leaf lists it: objs[at]. */
+typedef struct noct_span {
+    octNode *leaf;
+    uint32_t at;
+} noct_span;
+
+typedef struct noct_proxy {
+    /* The box relative to a position: the placed box is
+     * [fl(mlo + p), fl(mhi + p)]. The world's proxies keep their mesh's
+     * box here and move by position; the public API's have position 0. */
+    double mlo[3], mhi[3];
+    noct_aabb old;        /* the placed box before the last move */
+    noct_span *spans;     /* leaves it is in */
+    uint32_t nspans, capspans;
+    bool alive;
+    bool entering;        /* maintenance: needs the enter phase */
+    uint64_t category, mask;
+    void *user;
+    double travel;        /* how far its box moved since the last pair
+                             search, on an axis (public moves) */
+    uint64_t travel_epoch;
+} noct_proxy;
+
+/* A list of pairs of proxies. */
+typedef struct noct_pair_list {
+    noctProxyPair *p;
+    size_t n, cap;
+} noct_pair_list;
+
+/* A leaf's boxes, gathered for the sweep so that it reads one array. */
+typedef struct noct_leaf_box {
+    double lo[3], hi[3];
+    uint32_t id;
+} noct_leaf_box;
+
+/* Eight sibling nodes and their cells: what a split takes from the pool
+ * and a merge gives back. */
+typedef struct noct_block {
+    octNode node[8];
+    noct_cell cell[8];
+} noct_block;
+
+struct noctBroadphase {
+    int N, max_depth;
+    bool hint;                /* bounds_lo/hi hold a hint for the root */
+    double bounds_lo[3], bounds_hi[3];
+    bool rebuild_mode;        /* the world rebuilds every step: the tree
+                                 holds no merge invariant */
+    noct_proxy *proxy;
+    /* Per slot, beside proxy, so that the world's per-step loops read
+     * small contiguous records: the placed box and the home block. */
+    noct_aabb *box;
+    noct_home *home;
+    uint32_t *gen;            /* per slot: its handles' generation */
+    uint64_t *mark;           /* per slot: epoch stamp for distinct counts */
+    uint64_t epoch;
+    uint32_t nslots, capslots;
+    uint32_t *free_slots;     /* room for capslots: removal cannot fail */
+    uint32_t nfree;
+    size_t alive;
+    size_t filtered;          /* live proxies whose filter is not all bits */
+    octNode *root;            /* NULL while there is no tree */
+    octNode *root_node;       /* the root's node, kept between trees */
+    noct_cell root_cell;
+    bool merge_owed;          /* a merge lacked memory: merge_all() owed */
+    bool tree_owed;           /* a failure tore the tree down */
+    uint64_t shrink_from;     /* the first tick the root may shrink at */
+    uint64_t clock;           /* the enter check's stamps: one tick per
+                                 world sub-step or public move */
+    /* The pool: every block made, and the free ones (room for all). */
+    noct_block **blocks, **free_blocks;
+    size_t nblocks, capblocks, nfree_blocks;
+    octNode **work;           /* enter check's worklist */
+    size_t nwork, capwork;
+    noct_leaf_box *gather;    /* pair search scratch */
+    uint32_t capgather;
+    double reach;             /* this search: how far any box may have
+                                 moved on an axis since the last, rounding
+                                 included */
+    noct_pair_list tested;    /* the pair search's pairs */
+    noctProxyPair *sorted;    /* radix sort scratch */
+    size_t capsorted;
+    uint32_t *digits;
+    uint32_t capdigits;
+    noct_pair_list pairs;     /* public: the last noctBroadphaseUpdatePairs */
+    uint64_t search_epoch;    /* public: searches made */
+    double pending_reach;     /* public: the largest travel since then */
+    noctBroadphaseCounters c;
+};
+
+/* ---- small helpers, inlined on the hot paths --------------------------------- */
+
+static inline noct_cell *noct_cell_of(const octNode *n)
+{
+    return NOCT_NODE_DATA(n);
+}
+
+/* objs[i]'s entry in its spans for leaf c is noct_back_of(c)[i]. */
+static NOCT_ALWAYS_INLINE uint32_t *noct_back_of(const noct_cell *c)
+{
+    return c->objs + c->cap;
+}
+
+static inline bool noct_overlaps(const noct_aabb *b, const noct_cell *c)
+{
+    for (int k = 0; k < 3; ++k)
+        if (b->hi[k] < c->lo[k] || b->lo[k] > c->lo[k] + c->size)
+            return false;
+    return true;
+}
+
+/* Box o lies in the closed box r. */
+static inline bool noct_box_within(const noct_aabb *o, const noct_aabb *r)
+{
+    return o->lo[0] >= r->lo[0] && o->lo[1] >= r->lo[1] && o->lo[2] >= r->lo[2] &&
+           o->hi[0] <= r->hi[0] && o->hi[1] <= r->hi[1] && o->hi[2] <= r->hi[2];
+}
+
+/* Are the leaves of a proxy at position p still those of its home block
+ * (the report's fast test, for a box in one leaf or several)? */
+static NOCT_ALWAYS_INLINE bool noct_inside_home(const double p[3], const noct_home *h)
+{
+    return p[0] >= h->lo[0] && p[0] <= h->hi[0] && p[1] >= h->lo[1] && p[1] <= h->hi[1] &&
+           p[2] >= h->lo[2] && p[2] <= h->hi[2];
+}
+
+static inline void noct_forget_home(noctBroadphase *bp, uint32_t id)
+{
+    bp->home[id].lo[0] = INFINITY;
+}
+
+/* The placed box: exactly the narrowphase's [fl(lo + t), fl(hi + t)]. */
+static NOCT_ALWAYS_INLINE void noct_place_box(const double mlo[3], const double mhi[3],
+                                              const double pos[3], noct_aabb *b)
+{
+    b->lo[0] = mlo[0] + pos[0];
+    b->lo[1] = mlo[1] + pos[1];
+    b->lo[2] = mlo[2] + pos[2];
+    b->hi[0] = mhi[0] + pos[0];
+    b->hi[1] = mhi[1] + pos[1];
+    b->hi[2] = mhi[2] + pos[2];
+}
+
+/* Put object id, whose spans entry for this leaf is s, at position i of
+ * the leaf's list, and tell the entry. */
+static NOCT_ALWAYS_INLINE void noct_leaf_put(noctBroadphase *bp, noct_cell *c, uint32_t i, uint32_t id,
+                                        uint32_t s)
+{
+    c->objs[i] = id;
+    noct_back_of(c)[i] = s;
+    bp->proxy[id].spans[s].at = i;
+}
+
+/* The entry of object id's spans for the leaf whose cell is c (a search
+ * of its few spans, for the objects a sweep moved in the leaf's list). */
+static inline uint32_t noct_span_of(const noctBroadphase *bp, uint32_t id, const noct_cell *c)
+{
+    const noct_proxy *o = &bp->proxy[id];
+    for (uint32_t s = 0;; ++s) {
+        NOCT_INVARIANT(s < o->nspans);
+        if (noct_cell_of(o->spans[s].leaf) == c)
+            return s;
+    }
+}
+
+/* Is object o one that a split of a cell of this size can separate from
+ * others: is its box at most half the size on every axis, so that it fits
+ * in a child? See add_and_split. */
+static inline bool noct_splits_for(const noct_proxy *o, double size)
+{
+    const double h = size / 2;
+    return o->mhi[0] - o->mlo[0] <= h && o->mhi[1] - o->mlo[1] <= h &&
+           o->mhi[2] - o->mlo[2] <= h;
+}
+
+/* Worlds from this many slots on prefetch what their loops will read:
+ * below it, it stays in cache. */
+#define PREFETCH_OBJECTS 8192
+
+/* Does this pair pass the filters? */
+static NOCT_ALWAYS_INLINE bool noct_filters_pass(const noct_proxy *a, const noct_proxy *b)
+{
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+bool noct_grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem);
+bool noct_pairs_push(noct_pair_list *l, noctProxyPair p);
+
+/* ---- broadphase.c ---------------------------------------------------------------- */
+
+/* Set up an empty broadphase in place (the world embeds one); check def. */
+noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctError *err);
+
+/* Free what an initialised broadphase holds (not bp itself). */
+void noct_bp_fini(noctBroadphase *bp);
+
+/* A slot for a new proxy, or UINT32_MAX (no memory, or 2^31 slots). */
+uint32_t noct_bp_new_slot(noctBroadphase *bp);
+
+/* Make slot s a live proxy with local box mlo, mhi at position pos and
+ * put it in the tree; on failure (NOMEM) the slot is free again. */
+noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], const double mhi[3],
+                       const double pos[3], void *user, uint64_t category, uint64_t mask);
+
+/* Take live proxy s out of the tree and free its slot; cannot fail. */
+void noct_bp_free_slot(noctBroadphase *bp, uint32_t s);
+
+/* ---- broadphase_tree.c ----------------------------------------------------------- */
+
+/* The root's cube as a box; everything when there is no tree. */
+noct_aabb noct_bp_root_box(const noctBroadphase *bp);
+
+/* Room for proxies up to capacity cap in every per-slot array. */
+bool noct_bp_reserve_slots(noctBroadphase *bp, uint32_t cap);
+
+/* Add proxy id (slot set up, box placed) to the tree: into the leaves it
+ * overlaps, or by a rebuild around a larger root if it lies outside.
+ * On failure the tree is torn down (tree_owed). */
+noctStatus noct_bp_insert(noctBroadphase *bp, uint32_t id);
+
+/* Remove proxy id from every leaf (cannot fail). */
+void noct_bp_unlink(noctBroadphase *bp, uint32_t id);
+
+/* Build the tree afresh with a root of at least min_size; tears it down
+ * on failure (tree_owed). */
+noctStatus noct_bp_rebuild(noctBroadphase *bp, double min_size);
+
+/* Tear the tree down; tree_owed if proxies are left. */
+void noct_bp_drop_tree(noctBroadphase *bp);
+
+/* Free every node and cell (the broadphase's end). */
+void noct_bp_free_tree(noctBroadphase *bp);
+
+/*
+ * Incremental maintenance of the proxies slow[0..n): their boxes (bp->box)
+ * moved from proxy.old and failed the fast test at their positions pos
+ * (NULL: position 0; reshaped proxies have no home block and skip it).
+ * If one left the root, *escaped is set and nothing else is done. nfast
+ * proxies passed the fast test elsewhere (counted).
+ */
+noctStatus noct_bp_maintain(noctBroadphase *bp, const double (*pos)[3], const uint32_t *slow,
+                            uint32_t n, uint32_t nfast, bool *escaped);
+
+/* After maintenance: grow the root if a box escaped it, shrink it if it
+ * is far too large, make the merges owed. Tears the tree down on failure. */
+noctStatus noct_bp_settle(noctBroadphase *bp, bool escaped);
+
+/* Proxy id's local box becomes mlo, mhi (its placed box is the caller's):
+ * its leaves' counts follow, and split if they must. False without
+ * memory (the tree is then inconsistent: drop it). */
+bool noct_bp_reshape(noctBroadphase *bp, uint32_t id, const double mlo[3], const double mhi[3]);
+
+/* The home block of proxy id while its leaves are those box b overlaps. */
+bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *h);
+
+/* Does box nb overlap the same cells of proxy id's smallest leaf's size
+ * as box b, which its leaves were made for? */
+bool noct_bp_same_cells(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
+                        const noct_aabb *nb);
+
+/* ---- broadphase_pairs.c ---------------------------------------------------------- */
+
+/* Every pair of proxies whose boxes overlap (and filters pass), once,
+ * into bp->tested (emptied first), unsorted; reach as bp->reach. */
+noctStatus noct_bp_search(noctBroadphase *bp);
+
+/* Sort bp->tested by its first proxy (stable radix sort). */
+bool noct_bp_sort_tested(noctBroadphase *bp);
+
+/* Sort pairs that are in order of their first proxy by their second. */
+void noct_pairs_sort_partners(noct_pair_list *l);
+
+/* Order of pairs by (a.index, b.index). */
+int noct_pair_cmp(const void *x, const void *y);
+
+#endif /* NOCT_LIB_BROADPHASE_INTERNAL_H */

@@ -1,0 +1,992 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The N-objects octree (report sections 2.2-2.4): cells and their pool,
+ * split and merge under the overlap rule, building the tree, and
+ * incremental maintenance (the fast test, the leave check and the enter
+ * check through neighbor finding).
+ *
+ * Nodes and cells come eight at a time from a pool of blocks (a split
+ * takes one, a merge gives it back), and a cell's lists keep their
+ * capacity when its leaf splits or its block goes back: once sizes
+ * settle, maintenance allocates nothing.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/mesh.h>
+#include <noctree/neighbor.h>
+
+#include "broadphase_internal.h"
+
+/* Is object id in leaf c? Whichever of its spans and the leaf's list is
+ * shorter is searched, so that neither a crowded leaf nor an object in
+ * many leaves makes the question costly. */
+static bool leaf_has(const noctBroadphase *bp, const octNode *leaf, uint32_t id)
+{
+    const noct_cell *c = noct_cell_of(leaf);
+    const noct_proxy *o = &bp->proxy[id];
+    if (o->nspans <= c->count) {
+        for (uint32_t i = 0; i < o->nspans; ++i)
+            if (o->spans[i].leaf == leaf)
+                return true;
+        return false;
+    }
+    for (uint32_t i = 0; i < c->count; ++i)
+        if (c->objs[i] == id)
+            return true;
+    return false;
+}
+
+
+/* Drop entry s of object id's spans (the leaf's list is the caller's):
+ * the last entry takes its place, and its leaf is told. */
+static void span_drop(noctBroadphase *bp, uint32_t id, uint32_t s)
+{
+    noct_proxy *o = &bp->proxy[id];
+    noct_forget_home(bp, id);
+    NOCT_INVARIANT(s < o->nspans);
+    const noct_span last = o->spans[--o->nspans];
+    if (s == o->nspans)
+        return;
+    o->spans[s] = last;
+    noct_back_of(noct_cell_of(last.leaf))[last.at] = s;
+}
+
+/* The object at position r of leaf c went and the one at position last
+ * took its place: r's near pairs go, last's follow it. The other pairs
+ * are as far apart as before. */
+static void near_leave(noct_cell *c, uint32_t r, uint32_t last)
+{
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < c->nnear; ++i) {
+        uint32_t a = c->near[i] & 0xffff, b = c->near[i] >> 16;
+        if (a == r || b == r)
+            continue;
+        a = a == last ? r : a;
+        b = b == last ? r : b;
+        c->near[k++] = a | b << 16;
+    }
+    c->nnear = k;
+}
+
+/* Room for one more object in leaf c: both halves of objs double. */
+static bool leaf_reserve(noct_cell *c)
+{
+    if (c->count < c->cap)
+        return true;
+    const uint32_t cap = c->cap ? 2 * c->cap : 4;
+    uint32_t *q = realloc(c->objs, 2 * (size_t)cap * sizeof *q);
+    if (q == NULL)
+        return false;
+    memmove(q + cap, q + c->cap, c->count * sizeof *q);
+    c->objs = q;
+    c->cap = cap;
+    return true;
+}
+
+static bool leaf_add(noctBroadphase *bp, octNode *leaf, uint32_t id)
+{
+    noct_cell *c = noct_cell_of(leaf);
+    noct_proxy *o = &bp->proxy[id];
+    if (!leaf_reserve(c) ||
+        !noct_grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
+        return false;
+    o->spans[o->nspans].leaf = leaf;
+    noct_leaf_put(bp, c, c->count++, id, o->nspans++); /* fresh: after c->fresh */
+    c->small += noct_splits_for(o, c->size);
+    noct_forget_home(bp, id);
+    return true;
+}
+
+/* ---- split and merge ------------------------------------------------------ */
+
+static bool split_leaf(noctBroadphase *bp, octNode *leaf);
+
+/*
+ * Add object id to the leaf, and split it if it now holds more than N
+ * objects that a split can separate: objects whose boxes are at most
+ * half the leaf's size on every axis (they fit in a child). Objects
+ * larger than that are listed but do not count: no split of the leaf
+ * can part two of them that overlap it (coincident objects, a pile,
+ * faces shared), so splitting for them would only multiply the leaves
+ * they are in, down to the maximum depth. So a leaf below the maximum
+ * depth holds at most N objects smaller than half its size, and an
+ * object is in at most 27 leaves of at least its own extent plus those
+ * that splits for smaller objects made.
+ */
+static bool add_and_split(noctBroadphase *bp, octNode *leaf, uint32_t id)
+{
+    if (!leaf_add(bp, leaf, id))
+        return false;
+    noct_cell *c = noct_cell_of(leaf);
+    if ((int)c->small > bp->N && octGeneration(leaf) < bp->max_depth)
+        return split_leaf(bp, leaf);
+    return true;
+}
+
+/* ---- the pool of nodes and cells -------------------------------------------- */
+
+/* A block of eight nodes and cells for a split: a free one, or a new one.
+ * Its cells keep the lists they had, emptied. */
+static noct_block *take_block(noctBroadphase *bp)
+{
+    if (bp->nfree_blocks > 0)
+        return bp->free_blocks[--bp->nfree_blocks];
+    if (bp->nblocks == bp->capblocks) {
+        /* blocks and free_blocks are the two halves of one array, so
+         * that giving a block back cannot fail */
+        const size_t cap = bp->capblocks ? 2 * bp->capblocks : 16;
+        noct_block **q = realloc(bp->blocks, 2 * cap * sizeof *q);
+        if (q == NULL)
+            return NULL;
+        bp->blocks = q;
+        bp->free_blocks = q + cap;
+        bp->capblocks = cap;
+    }
+    noct_block *b = calloc(1, sizeof *b);
+    if (b != NULL)
+        bp->blocks[bp->nblocks++] = b;
+    return b;
+}
+
+static void give_block(noctBroadphase *bp, noct_block *b)
+{
+    NOCT_INVARIANT(bp->nfree_blocks < bp->nblocks);
+    bp->free_blocks[bp->nfree_blocks++] = b;
+}
+
+/* Empty a cell for a new node, keeping its lists' memory. */
+static void reset_cell(noct_cell *c, const double lo[3], double size)
+{
+    memcpy(c->lo, lo, sizeof c->lo);
+    c->size = size;
+    c->count = c->small = c->fresh = c->stamp_obj = 0;
+    c->stamp_step = 0;
+    c->budget = 0;
+    c->nnear = 0;
+}
+
+/* Give the blocks of every node below n (not n's own) back to the pool;
+ * n becomes a leaf. */
+static void give_back_below(noctBroadphase *bp, octNode *n)
+{
+    if (!NOCT_NODE_IS_SPLIT(n))
+        return;
+    for (int i = 0; i < 8; ++i)
+        give_back_below(bp, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
+    give_block(bp, (noct_block *)noct_oct_unsplit(n));
+}
+
+/* ---- split and merge ---------------------------------------------------------- */
+
+/* Give the leaf 8 children and hand each object to the children its box
+ * overlaps (which may split in turn). */
+static bool split_leaf(noctBroadphase *bp, octNode *leaf)
+{
+    noct_cell *pc = noct_cell_of(leaf);
+    noct_block *b = take_block(bp);
+    if (b == NULL)
+        return false;
+    noct_oct_split_into(leaf, b->node);
+    noct_cell *kids = b->cell;
+    double half = pc->size / 2;
+    for (int i = 0; i < 8; ++i) {
+        const double lo[3] = {pc->lo[0] + ((i & 4) ? half : 0),
+                              pc->lo[1] + ((i & 2) ? half : 0),
+                              pc->lo[2] + ((i & 1) ? half : 0)};
+        reset_cell(&kids[i], lo, half);
+        octSwapData(&b->node[i], &kids[i]);
+    }
+    /* The objects leave the leaf, each by its own entry: no search. The
+     * list keeps its memory for a merge back. */
+    for (uint32_t j = 0; j < pc->count; ++j)
+        span_drop(bp, pc->objs[j], noct_back_of(pc)[j]);
+    const uint32_t *objs = pc->objs, count = pc->count;
+    pc->count = pc->small = pc->fresh = 0;
+    pc->nnear = 0;
+    pc->distinct = 0;
+    /* Removals below the new children do not count the parent's down. */
+    if (NOCT_NODE_PARENT(leaf) != NULL)
+        noct_cell_of(NOCT_NODE_PARENT(leaf))->distinct = 0;
+    ++bp->c.splits;
+    bool ok = true;
+    for (uint32_t j = 0; j < count && ok; ++j)
+        for (int i = 0; i < 8 && ok; ++i)
+            if (noct_overlaps(&bp->box[objs[j]], &kids[i]))
+                ok = add_and_split(bp, &b->node[i], objs[j]);
+    return ok;
+}
+
+/*
+ * If all of p's children are leaves holding N or fewer distinct objects,
+ * merge them into p; then try p's parent. Every object leaving a leaf
+ * asks, so the count of a node whose children hold too many is kept
+ * (cell.distinct): it is taken again only when as many objects have left
+ * as it was over N.
+ *
+ * A merge may need memory for p's list (it keeps the one it had before
+ * it split, and grows it by doubling); without it the siblings stay split,
+ * which costs pairs but not correctness, and bp->merge_owed makes the next
+ * step merge what it can (merge_all). Nothing else here allocates: an
+ * object's spans lose the children before they gain p. So a removal
+ * cannot fail.
+ */
+static void try_merge(noctBroadphase *bp, octNode *p, bool up)
+{
+    while (p != NULL && bp->N != NOCT_N_EXHAUSTIVE) {
+        noct_cell *pc = noct_cell_of(p);
+        if (pc->distinct > (uint32_t)bp->N)
+            return;
+        uint32_t distinct = 0;
+        ++bp->epoch;
+        for (int i = 0; i < 8; ++i) {
+            octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
+            if (NOCT_NODE_IS_SPLIT(k))
+                return;
+            const noct_cell *c = noct_cell_of(k);
+            for (uint32_t j = 0; j < c->count; ++j)
+                if (bp->mark[c->objs[j]] != bp->epoch) {
+                    bp->mark[c->objs[j]] = bp->epoch;
+                    ++distinct;
+                }
+        }
+        if (distinct > (uint32_t)bp->N) {
+            pc->distinct = distinct;
+            return;
+        }
+        if (distinct > pc->cap) {
+            uint32_t cap = pc->cap ? pc->cap : 4;
+            while (cap < distinct)
+                cap *= 2;
+            uint32_t *objs = realloc(pc->objs, 2 * (size_t)cap * sizeof *objs);
+            if (objs == NULL) {
+                bp->merge_owed = true;
+                return;
+            }
+            pc->objs = objs;
+            pc->cap = cap;
+        }
+        pc->count = pc->small = 0;
+        pc->nnear = 0;
+        pc->fresh = 0;
+        pc->budget = 0;
+        ++bp->epoch;
+        for (int i = 0; i < 8; ++i) {
+            noct_cell *c = noct_cell_of(NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i)));
+            for (uint32_t j = 0; j < c->count; ++j) {
+                const uint32_t id = c->objs[j];
+                span_drop(bp, id, noct_back_of(c)[j]);
+                if (bp->mark[id] != bp->epoch) {
+                    bp->mark[id] = bp->epoch;
+                    pc->objs[pc->count++] = id;
+                }
+            }
+        }
+        give_back_below(bp, p);
+        for (uint32_t j = 0; j < pc->count; ++j) {
+            noct_proxy *o = &bp->proxy[pc->objs[j]];
+            NOCT_INVARIANT(o->nspans < o->capspans);
+            o->spans[o->nspans].leaf = p;
+            noct_leaf_put(bp, pc, j, pc->objs[j], o->nspans++);
+            pc->small += noct_splits_for(o, pc->size);
+        }
+        ++bp->c.merges;
+        p = up ? NOCT_NODE_PARENT(p) : NULL;
+    }
+}
+
+/* Merge every group of leaf siblings that a merge without memory left
+ * split (try_merge), deepest first: each node after its children, and
+ * none upward from there (that would free nodes the walk still holds). */
+static void merge_all(noctBroadphase *bp, octNode *n)
+{
+    if (!NOCT_NODE_IS_SPLIT(n))
+        return;
+    for (int i = 0; i < 8; ++i)
+        merge_all(bp, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
+    try_merge(bp, n, false);
+}
+
+/* Remove the object at position i of the leaf (whose spans entry says
+ * so), then merge the siblings if they are few enough. Cannot fail. */
+static void leaf_remove_at(noctBroadphase *bp, octNode *leaf, uint32_t i)
+{
+    noct_cell *c = noct_cell_of(leaf);
+    NOCT_INVARIANT(i < c->count);
+    const uint32_t id = c->objs[i];
+    uint32_t *back = noct_back_of(c);
+    span_drop(bp, id, back[i]);
+    NOCT_INVARIANT(c->small >= (uint32_t)noct_splits_for(&bp->proxy[id], c->size));
+    c->small -= noct_splits_for(&bp->proxy[id], c->size);
+    /* The fresh objects stay last: an old one's place goes to the last
+     * old one, whose place goes to the last object. */
+    const uint32_t last = --c->count;
+    if (i < c->fresh) {
+        const uint32_t last_old = --c->fresh;
+        near_leave(c, i, last_old);
+        if (i != last_old)
+            noct_leaf_put(bp, c, i, c->objs[last_old], back[last_old]);
+        if (last_old != last)
+            noct_leaf_put(bp, c, last_old, c->objs[last], back[last]);
+    } else if (i != last) {
+        noct_leaf_put(bp, c, i, c->objs[last], back[last]);
+    }
+    ++bp->c.leaves_left;
+    octNode *p = NOCT_NODE_PARENT(leaf);
+    if (p != NULL && noct_cell_of(p)->distinct > 0)
+        --noct_cell_of(p)->distinct;
+    try_merge(bp, p, true);
+}
+
+/* Add id to every leaf under n that its box overlaps and lacks it (a new
+ * object, fresh true, lacks them all). If the worklist is on, newly
+ * entered leaves are pushed to it. */
+static bool insert_below(noctBroadphase *bp, octNode *n, uint32_t id, bool push, bool fresh)
+{
+    if (!noct_overlaps(&bp->box[id], noct_cell_of(n)))
+        return true;
+    if (NOCT_NODE_IS_SPLIT(n)) {
+        for (int i = 0; i < 8; ++i)
+            if (!insert_below(bp, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)), id, push,
+                              fresh))
+                return false;
+        return true;
+    }
+    if (!fresh && leaf_has(bp, n, id))
+        return true;
+    ++bp->c.leaves_entered;
+    if (push) {
+        if (bp->nwork == bp->capwork) {
+            size_t cap = bp->capwork ? 2 * bp->capwork : 64;
+            octNode **q = realloc(bp->work, cap * sizeof *q);
+            if (q == NULL)
+                return false;
+            bp->work = q;
+            bp->capwork = cap;
+        }
+        bp->work[bp->nwork++] = n;
+    }
+    return add_and_split(bp, n, id);
+}
+
+/* ---- building the tree ---------------------------------------------------------- */
+
+/* Give the tree's blocks back to the pool; the root's node and cell stay
+ * for the next tree. */
+static void destroy_tree(noctBroadphase *bp)
+{
+    if (bp->root == NULL)
+        return;
+    give_back_below(bp, bp->root);
+    bp->root_cell.count = bp->root_cell.small = 0;
+    bp->root = NULL;
+    for (uint32_t i = 0; i < bp->nslots; ++i) {
+        bp->proxy[i].nspans = 0;
+        noct_forget_home(bp, i);
+    }
+}
+
+/* Tear the tree down after a failure left it inconsistent; the next step
+ * or addition builds it again (rebuild). */
+void noct_bp_drop_tree(noctBroadphase *bp)
+{
+    destroy_tree(bp);
+    bp->tree_owed = bp->alive > 0;
+    bp->merge_owed = false;
+}
+
+/* Build the tree afresh around every live object: a root cube whose size
+ * is a power of two at least twice the objects' extent (and at least
+ * min_size). Its corner is the largest point of the lattice (m + s) h
+ * (h half the size, m an integer) at or below the objects' low corner, so
+ * the root contains them all. The shift s, a 20-bit binary fraction, moves
+ * cell boundaries off the round coordinates scenes like to use (a grid of
+ * objects at integer positions would otherwise straddle boundaries
+ * everywhere and miss the fast path) while every cell corner stays an
+ * exact dyadic number. No single shift suits every scale, so rebuild tries
+ * a few and keeps the one with which the fewest objects straddle the
+ * boundaries of cells about twice their typical size. */
+static const double ROOT_SHIFTS[] = {347127.0 / 1048576.0, 611953.0 / 1048576.0,
+                                     95349.0 / 1048576.0, 869381.0 / 1048576.0};
+
+/* The root corner on the lattice (m + s) h at or below lo. */
+static void root_corner(const double lo[3], const double hi[3], double size, double s,
+                        double corner[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        /* lo - h < corner <= lo, so corner + 2 h > lo + h >= hi. The
+         * lattice point is exact while |m| < 2^32; beyond that (objects
+         * very far from the origin for their size) fall back to m h. */
+        double h = size / 2, m = floor(lo[k] / h - s);
+        corner[k] = fabs(m) < 0x1p32 ? (m + s) * h : floor(lo[k] / h) * h;
+        if (corner[k] > lo[k] || corner[k] + size < hi[k])
+            corner[k] = floor(lo[k] / h) * h; /* a rounding safeguard */
+    }
+}
+
+/* Of a sample of the objects, how many straddle a boundary of the cells
+ * of size c laid from corner? */
+static size_t straddling(const noctBroadphase *bp, const double corner[3], double c,
+                         uint32_t stride)
+{
+    size_t n = 0;
+    for (uint32_t i = 0; i < bp->nslots; i += stride) {
+        if (!bp->proxy[i].alive)
+            continue;
+        const noct_aabb *o = &bp->box[i];
+        for (int k = 0; k < 3; ++k)
+            if (floor((o->lo[k] - corner[k]) / c) != floor((o->hi[k] - corner[k]) / c)) {
+                ++n;
+                break;
+            }
+    }
+    return n;
+}
+static noctStatus build_tree(noctBroadphase *bp, double min_size)
+{
+    destroy_tree(bp);
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    bool any = false;
+    for (uint32_t i = 0; i < bp->nslots; ++i) {
+        if (!bp->proxy[i].alive)
+            continue;
+        const noct_aabb *o = &bp->box[i];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = any ? noct_min(lo[k], o->lo[k]) : o->lo[k];
+            hi[k] = any ? noct_max(hi[k], o->hi[k]) : o->hi[k];
+        }
+        any = true;
+    }
+    for (int k = 0; k < 3 && bp->hint; ++k) {
+        lo[k] = any ? noct_min(lo[k], bp->bounds_lo[k]) : bp->bounds_lo[k];
+        hi[k] = any ? noct_max(hi[k], bp->bounds_hi[k]) : bp->bounds_hi[k];
+    }
+    double extent = noct_max(noct_max(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    double size = 1;
+    while (size < 2 * extent || size < min_size)
+        size *= 2;
+    while (size / 2 >= 2 * extent && size / 2 >= min_size && size > 0x1p-40)
+        size /= 2; /* the smallest power of two >= 2 extent (and min_size) */
+    if (bp->root_node == NULL) {
+        bp->root_node = octCreate();
+        if (bp->root_node == NULL)
+            return NOCT_ERR_NOMEM;
+        octSwapData(bp->root_node, &bp->root_cell);
+    }
+    noct_cell *rc = &bp->root_cell;
+    const double zero[3] = {0, 0, 0};
+    reset_cell(rc, zero, size);
+    /* Cells about twice the objects' mean size (a sample of at most about
+     * 4096 objects), and the shift that makes the fewest straddle them. */
+    uint32_t stride = bp->nslots > 4096 ? bp->nslots / 4096 : 1;
+    double mean = 0;
+    size_t counted = 0;
+    for (uint32_t i = 0; i < bp->nslots; i += stride)
+        if (bp->proxy[i].alive) {
+            const noct_aabb *o = &bp->box[i];
+            mean += noct_max(noct_max(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]),
+                             o->hi[2] - o->lo[2]);
+            ++counted;
+        }
+    double c = size;
+    if (counted > 0)
+        while (c / 2 >= 2 * (mean / (double)counted) && c > size * 0x1p-30)
+            c /= 2;
+    size_t best = SIZE_MAX;
+    for (size_t i = 0; i < sizeof ROOT_SHIFTS / sizeof *ROOT_SHIFTS; ++i) {
+        double corner[3];
+        root_corner(lo, hi, size, ROOT_SHIFTS[i], corner);
+        size_t n = counted > 0 ? straddling(bp, corner, c, stride) : 0;
+        if (n < best) {
+            best = n;
+            memcpy(rc->lo, corner, sizeof corner);
+        }
+    }
+    bp->root = bp->root_node;
+    ++bp->c.rebuilds;
+    for (uint32_t i = 0; i < bp->nslots; ++i)
+        if (bp->proxy[i].alive && !insert_below(bp, bp->root, i, false, true))
+            return NOCT_ERR_NOMEM;
+    return NOCT_OK;
+}
+
+/*
+ * Build the tree afresh (build_tree). A tree that a failure left half
+ * built, or half changed by a failed insertion, split or step, is torn
+ * down instead: the world then has no tree, bp->tree_owed says so, and the
+ * next noctWorldAdd() or noctWorldStep() builds it before anything else.
+ */
+noctStatus noct_bp_rebuild(noctBroadphase *bp, double min_size)
+{
+    noctStatus st = build_tree(bp, min_size);
+    if (st != NOCT_OK)
+        noct_bp_drop_tree(bp);
+    else
+        bp->tree_owed = bp->merge_owed = false;
+    return st;
+}
+
+/* The root's cube as a box; everything when there is no tree yet. */
+noct_aabb noct_bp_root_box(const noctBroadphase *bp)
+{
+    noct_aabb r = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+    if (bp->root != NULL) {
+        const noct_cell *rc = noct_cell_of(bp->root);
+        for (int k = 0; k < 3; ++k) {
+            r.lo[k] = rc->lo[k];
+            r.hi[k] = rc->lo[k] + rc->size;
+        }
+    }
+    return r;
+}
+
+static bool inside_root(const noctBroadphase *bp, const noct_aabb *o)
+{
+    const noct_aabb r = noct_bp_root_box(bp);
+    return noct_box_within(o, &r);
+}
+
+/* ---- incremental maintenance ------------------------------------------------- */
+
+/*
+ * Maintenance (report 2.4) runs in two phases over the moving objects, so
+ * that every split sees leaf lists that match the objects' new boxes.
+ *
+ * Phase A, per object: the fast test (a box strictly inside its only leaf,
+ * or more generally inside its home block, needs nothing; maintain()
+ * tries the block it has first, which reads no tree), then the leave
+ * check: remove the object from the leaves its box no longer overlaps,
+ * merging siblings that together hold N or fewer distinct objects.
+ * Returns whether phase B is needed.
+ */
+/* The lattice point base + q s (s a power of two, q an integer), or NaN
+ * when the sum is not exact (TwoSum's error is not zero). */
+static NOCT_ALWAYS_INLINE double lattice_point(double base, double q, double s)
+{
+    if (!(fabs(q) < 0x1p52))
+        return (double)NAN;
+    double d = q * s, x = base + d, bb = x - base;
+    return (base - (x - bb)) + (d - bb) == 0 ? x : (double)NAN;
+}
+
+/* The largest lattice point base + q s below x (up is false) or the
+ * smallest above x (up is true), strictly; NaN if not exact. */
+static NOCT_ALWAYS_INLINE double lattice_beyond(double base, double s, double x, bool up)
+{
+    /* floor((x - base) / s), without a call or a division: s is a power
+     * of two, so its inverse is exact; a q of 2^52 or more is refused. */
+    const double t = (x - base) * (1 / s);
+    if (!(fabs(t) < 0x1p52))
+        return (double)NAN;
+    double q = (double)(int64_t)t;
+    q = (q > t ? q - 1 : q) + (up ? 1 : 0);
+    for (int i = 0; i < 4; ++i) {
+        double g = lattice_point(base, q, s), n = lattice_point(base, up ? q - 1 : q + 1, s);
+        if (isnan(g) || isnan(n))
+            return (double)NAN;
+        if (up ? g <= x : g >= x)
+            q += up ? 1 : -1;
+        else if (up ? n > x : n < x)
+            q += up ? -1 : 1;
+        else
+            return g;
+    }
+    return (double)NAN;
+}
+
+/*
+ * A bound on the positions p whose coordinate fl(m + p) of a placed box
+ * compares with t as asked: since fl(m + p) does not decrease as p grows,
+ * every p >= q has fl(m + p) > t (up, strict) or >= t (up), and every
+ * p <= q has fl(m + p) < t (strict) or <= t. q starts at fl(t - m), a few
+ * units in the last place of the largest of them from the boundary, and
+ * steps away from it, doubling; NaN if a few steps do not do.
+ */
+static NOCT_ALWAYS_INLINE double position_bound(double m, double t, bool up, bool strict)
+{
+    double q = t - m;
+    double d = noct_max(0x1p-51 * noct_max(noct_max(fabs(t), fabs(m)), fabs(q)), 0x1p-1074);
+    for (int i = 0; i < 8; ++i) {
+        const double f = m + q;
+        if (up ? (strict ? f > t : f >= t) : (strict ? f < t : f <= t))
+            return q;
+        q = up ? q + d : q - d;
+        d *= 2;
+    }
+    return (double)NAN;
+}
+
+/* The home block of object id while its leaves are those box b overlaps
+ * (b: its box when they were last made so), as the positions that keep
+ * its box in it. */
+bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *h)
+{
+    const noct_proxy *o = &bp->proxy[id];
+    if (o->nspans == 0)
+        return false;
+    const noct_cell *small = noct_cell_of(o->spans[0].leaf);
+    for (uint32_t i = 1; i < o->nspans; ++i)
+        if (noct_cell_of(o->spans[i].leaf)->size < small->size)
+            small = noct_cell_of(o->spans[i].leaf);
+    const double s = small->size;
+    const noct_aabb root = noct_bp_root_box(bp);
+    for (int k = 0; k < 3; ++k) {
+        const double lo = lattice_beyond(small->lo[k], s, b->lo[k], false);
+        const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
+        /* No block that reaches out of the root, as one does when the box
+         * touches the root's face: then a box inside it could be outside
+         * the root (maintain() relies on it). NaN fails too. */
+        if (!(lo >= root.lo[k] && hi <= root.hi[k]))
+            return false;
+        /* The box's low side in (lo, lo + s], its high side in
+         * [hi - s, hi); the lattice points next to lo and hi are exact. */
+        const double p[4] = {position_bound(o->mlo[k], lo, true, true),
+                             position_bound(o->mlo[k], lo + s, false, false),
+                             position_bound(o->mhi[k], hi, false, true),
+                             position_bound(o->mhi[k], hi - s, true, false)};
+        if (isnan(p[0]) || isnan(p[1]) || isnan(p[2]) || isnan(p[3]))
+            return false;
+        /* and within the positions allowed, so that the motion loop need
+         * not check those that pass */
+        h->lo[k] = noct_max(noct_max(p[0], p[3]), -NOCT_MAX_COORDINATE);
+        h->hi[k] = noct_min(noct_min(p[1], p[2]), NOCT_MAX_COORDINATE);
+    }
+    return true;
+}
+
+/* Does box nb overlap the same cells of its smallest leaf's size as box
+ * b, whose leaves proxy id is in: the fast test of a public move, in box
+ * space, for a box that may change size too. */
+bool noct_bp_same_cells(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
+                        const noct_aabb *nb)
+{
+    const noct_proxy *o = &bp->proxy[id];
+    if (o->nspans == 0)
+        return false;
+    const noct_cell *small = noct_cell_of(o->spans[0].leaf);
+    for (uint32_t i = 1; i < o->nspans; ++i)
+        if (noct_cell_of(o->spans[i].leaf)->size < small->size)
+            small = noct_cell_of(o->spans[i].leaf);
+    const double s = small->size;
+    const noct_aabb root = noct_bp_root_box(bp);
+    for (int k = 0; k < 3; ++k) {
+        const double lo = lattice_beyond(small->lo[k], s, b->lo[k], false);
+        const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
+        if (!(lo >= root.lo[k] && hi <= root.hi[k]))
+            return false; /* NaN too */
+        if (!(nb->lo[k] > lo && nb->lo[k] <= lo + s && nb->hi[k] >= hi - s && nb->hi[k] < hi))
+            return false;
+    }
+    return true;
+}
+
+static noctStatus leave_phase(noctBroadphase *bp, const double (*pos)[3], uint32_t id,
+                              bool *enter)
+{
+    noct_proxy *o = &bp->proxy[id];
+    const noct_aabb *b = &bp->box[id];
+    *enter = false;
+    /* maintain() tried a block it had; one is taken when there was none
+     * (a proxy moved by the public API tested its own: pos NULL) */
+    if (pos != NULL && !isfinite(bp->home[id].lo[0]) &&
+        noct_bp_home_of(bp, id, &o->old, &bp->home[id]) &&
+        noct_inside_home(pos[id], &bp->home[id])) {
+        ++bp->c.inside_fast;
+        return NOCT_OK;
+    }
+    noct_forget_home(bp, id);
+    for (uint32_t i = 0; i < o->nspans;) {
+        if (noct_overlaps(b, noct_cell_of(o->spans[i].leaf))) {
+            ++i;
+            continue;
+        }
+        leaf_remove_at(bp, o->spans[i].leaf, o->spans[i].at);
+        i = 0; /* merges may have rewritten the list */
+    }
+    *enter = true;
+    return NOCT_OK;
+}
+
+/*
+ * Phase B, per object: the enter check. The leaves a box overlaps are
+ * connected, so a flood from the leaves it is still in finds them all.
+ * From each leaf whose boundary the box reaches, query the
+ * greater-or-equal neighbors in the directions it reaches (for a box that
+ * was inside its leaves, the quantized directions of its motion), each
+ * neighbor node once per object per step (the node's stamp), and add the
+ * object to the leaves below it that the box overlaps; newly entered
+ * leaves join the flood. A box that left every leaf it was in (it moved
+ * farther than its leaves are wide) is re-inserted from the root.
+ *
+ * A query is skipped when the part of the new box inside the leaf-sized
+ * cube across that face, edge or vertex lies inside the old box: every
+ * leaf there that the new box overlaps overlapped the old box, so the
+ * object is in it already (phase A only removed leaves the new box left).
+ */
+static noctStatus enter_phase(noctBroadphase *bp, uint32_t id)
+{
+    noct_proxy *o = &bp->proxy[id];
+    const noct_aabb *bx = &bp->box[id];
+    if (o->nspans == 0) {
+        ++bp->c.reinserts;
+        return insert_below(bp, bp->root, id, false, true) ? NOCT_OK : NOCT_ERR_NOMEM;
+    }
+    if (bp->capwork < o->nspans) {
+        octNode **q = realloc(bp->work, o->nspans * sizeof *q);
+        if (q == NULL)
+            return NOCT_ERR_NOMEM;
+        bp->work = q;
+        bp->capwork = o->nspans;
+    }
+    for (uint32_t i = 0; i < o->nspans; ++i)
+        bp->work[i] = o->spans[i].leaf;
+    bp->nwork = o->nspans;
+    for (size_t wi = 0; wi < bp->nwork; ++wi) {
+        const noct_cell *lc = noct_cell_of(bp->work[wi]);
+        /* Per axis: 0, and -1 / +1 if the box reaches that face. */
+        int reach[3][3], nr[3];
+        for (int k = 0; k < 3; ++k) {
+            nr[k] = 0;
+            reach[k][nr[k]++] = 0;
+            if (bx->lo[k] <= lc->lo[k])
+                reach[k][nr[k]++] = -1;
+            if (bx->hi[k] >= lc->lo[k] + lc->size)
+                reach[k][nr[k]++] = 1;
+        }
+        if (nr[0] + nr[1] + nr[2] == 3)
+            continue; /* strictly inside: no neighbor can be reached */
+        for (int a = 0; a < nr[0]; ++a)
+            for (int b = 0; b < nr[1]; ++b)
+                for (int c = 0; c < nr[2]; ++c) {
+                    const int v[3] = {reach[0][a], reach[1][b], reach[2][c]};
+                    bool covered = true;
+                    for (int k = 0; k < 3 && covered; ++k) {
+                        double clo = lc->lo[k] + v[k] * lc->size;
+                        double ilo = noct_max(bx->lo[k], clo);
+                        double ihi = noct_min(bx->hi[k], clo + lc->size);
+                        covered = ilo >= o->old.lo[k] && ihi <= o->old.hi[k];
+                    }
+                    if (covered)
+                        continue;
+                    octDirection d = noct_direction_of(v[0], v[1], v[2]);
+                    if (d == OCT_OMEGA)
+                        continue;
+                    octNode *nb = octGtEqNeighbor(bp->work[wi], d);
+                    ++bp->c.neighbor_queries;
+                    if (nb == NULL)
+                        continue;
+                    noct_cell *nc = noct_cell_of(nb);
+                    if (nc->stamp_step == bp->clock && nc->stamp_obj == id)
+                        continue;
+                    nc->stamp_step = bp->clock;
+                    nc->stamp_obj = id;
+                    if (!insert_below(bp, nb, id, true, false))
+                        return NOCT_ERR_NOMEM;
+                }
+    }
+    return NOCT_OK;
+}
+
+/*
+ * The slow objects' leaves are four dependent reads away (the object, its
+ * spans array, the leaf node, its cell), each a likely miss when objects
+ * are many: while slow object m is maintained, request them in stages for
+ * the objects 2, 4, 6 and 8 places ahead, each stage reading what the one
+ * before requested two objects earlier.
+ */
+
+static NOCT_ALWAYS_INLINE void prefetch_spans(const noctBroadphase *bp, const uint32_t *slow,
+                                              uint32_t n, uint32_t m)
+{
+    if (m + 8 < n)
+        NOCT_PREFETCH(&bp->proxy[slow[m + 8]].spans);
+    if (m + 6 < n)
+        NOCT_PREFETCH(bp->proxy[slow[m + 6]].spans);
+    if (m + 4 < n) {
+        const noct_proxy *o = &bp->proxy[slow[m + 4]];
+        for (uint32_t k = 0; k < o->nspans; ++k)
+            NOCT_PREFETCH(o->spans[k].leaf);
+    }
+    if (m + 2 < n) {
+        const noct_proxy *o = &bp->proxy[slow[m + 2]];
+        for (uint32_t k = 0; k < o->nspans; ++k)
+            NOCT_PREFETCH(noct_cell_of(o->spans[k].leaf));
+    }
+}
+
+/*
+ * Incremental maintenance. The caller (the world's motion loop, or a
+ * public move) ran the fast test and listed the boxes that failed it in
+ * slow. A box that passed lies in its home block, and so in its leaves
+ * and the root; of the others, if one left the root, *escaped is set and
+ * nothing else is done (the caller grows the tree, noct_bp_settle).
+ */
+noctStatus noct_bp_maintain(noctBroadphase *bp, const double (*pos)[3], const uint32_t *slow,
+                            uint32_t n, uint32_t nfast, bool *escaped)
+{
+    noctStatus st = NOCT_OK;
+    *escaped = false;
+    const noct_aabb root = noct_bp_root_box(bp);
+    for (uint32_t m = 0; m < n; ++m)
+        if (!noct_box_within(&bp->box[slow[m]], &root)) {
+            *escaped = true;
+            return NOCT_OK;
+        }
+    bp->c.inside_fast += nfast;
+    /* Below some thousands of objects they stay in cache. */
+    const bool ahead = bp->nslots >= PREFETCH_OBJECTS;
+    for (uint32_t m = 0; m < n && st == NOCT_OK; ++m) {
+        if (ahead)
+            prefetch_spans(bp, slow, n, m);
+        st = leave_phase(bp, pos, slow[m], &bp->proxy[slow[m]].entering);
+    }
+    for (uint32_t m = 0; m < n && st == NOCT_OK; ++m) {
+        if (ahead)
+            prefetch_spans(bp, slow, n, m);
+        if (bp->proxy[slow[m]].entering)
+            st = enter_phase(bp, slow[m]);
+    }
+    /* Their leaves are final for this step, and in cache: take their home
+     * blocks now, so that the next step's fast test can pass them. A
+     * later change to their leaves forgets the block again. */
+    for (uint32_t m = 0; m < n && st == NOCT_OK; ++m) {
+        const uint32_t id = slow[m];
+        if (ahead)
+            prefetch_spans(bp, slow, n, m);
+        if (!isfinite(bp->home[id].lo[0]) && !noct_bp_home_of(bp, id, &bp->box[id], &bp->home[id]))
+            noct_forget_home(bp, id);
+    }
+    return st;
+}
+
+/*
+ * Is the root far larger than its objects need? When all of them lie in
+ * one grandchild of the root (every other child and grandchild is an
+ * empty leaf: a split node always holds objects, try_merge sees to it),
+ * a rebuild fits a root at most half as large. A rebuilt root is less
+ * than four times the objects' extent, so it does not fit them in one of
+ * its grandchildren again until they draw together: the hysteresis that
+ * keeps an object going to and fro from rebuilding the tree every step.
+ */
+static bool root_too_large(const noctBroadphase *bp)
+{
+    const octNode *n = bp->root;
+    for (int level = 0; level < 2; ++level) {
+        if (!NOCT_NODE_IS_SPLIT(n))
+            return false;
+        const octNode *only = NULL;
+        for (int i = 0; i < 8; ++i) {
+            const octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
+            if (!NOCT_NODE_IS_SPLIT(k) && noct_cell_of(k)->count == 0)
+                continue;
+            if (only != NULL)
+                return false;
+            only = k;
+        }
+        if (only == NULL)
+            return false;
+        n = only;
+    }
+    return true;
+}
+
+/* Sub-steps after the root last grew before it may shrink: a group of
+ * objects drifting away grows the root (twice as large, the objects near
+ * its corner) and would otherwise shrink it again at once, to grow it a
+ * few steps later; so it rebuilds at most about once in this many. */
+#define SHRINK_AFTER 64
+
+/*
+ * After maintenance: grow the root if a box escaped it (a rebuild around
+ * a root twice as large), shrink it when all the proxies lie in one
+ * grandchild (not within SHRINK_AFTER ticks of a growth), and make the
+ * merges that lacked memory.
+ */
+noctStatus noct_bp_settle(noctBroadphase *bp, bool escaped)
+{
+    noctStatus st = NOCT_OK;
+    if (escaped && bp->root != NULL) {
+        st = noct_bp_rebuild(bp, 2 * noct_cell_of(bp->root)->size);
+        bp->shrink_from = bp->clock + SHRINK_AFTER;
+    }
+    if (st == NOCT_OK && bp->root != NULL && bp->clock >= bp->shrink_from &&
+        root_too_large(bp))
+        st = noct_bp_rebuild(bp, 0);
+    if (st == NOCT_OK && bp->root != NULL && bp->merge_owed) {
+        bp->merge_owed = false;
+        merge_all(bp, bp->root);
+    }
+    return st;
+}
+/* ---- proxies in and out, and the end --------------------------------------------- */
+
+noctStatus noct_bp_insert(noctBroadphase *bp, uint32_t id)
+{
+    if (bp->root == NULL || !inside_root(bp, &bp->box[id]))
+        return noct_bp_rebuild(bp, bp->root ? 2 * noct_cell_of(bp->root)->size : 0);
+    if (!insert_below(bp, bp->root, id, false, true)) {
+        noct_bp_drop_tree(bp); /* a split may have failed halfway */
+        return NOCT_ERR_NOMEM;
+    }
+    return NOCT_OK;
+}
+
+void noct_bp_unlink(noctBroadphase *bp, uint32_t id)
+{
+    noct_proxy *o = &bp->proxy[id];
+    while (o->nspans > 0)
+        leaf_remove_at(bp, o->spans[0].leaf, o->spans[0].at);
+}
+
+/* A proxy's box changed size: the leaves it is in count it again among
+ * the proxies small enough to split for, and split if they now hold too
+ * many. Its new local box is mlo, mhi. */
+bool noct_bp_reshape(noctBroadphase *bp, uint32_t id, const double mlo[3], const double mhi[3])
+{
+    noct_proxy *o = &bp->proxy[id];
+    for (uint32_t s = 0; s < o->nspans; ++s) {
+        noct_cell *c = noct_cell_of(o->spans[s].leaf);
+        NOCT_INVARIANT(c->small >= (uint32_t)noct_splits_for(o, c->size));
+        c->small -= noct_splits_for(o, c->size);
+    }
+    memcpy(o->mlo, mlo, sizeof o->mlo);
+    memcpy(o->mhi, mhi, sizeof o->mhi);
+    for (uint32_t s = 0; s < o->nspans; ++s) {
+        noct_cell *c = noct_cell_of(o->spans[s].leaf);
+        c->small += noct_splits_for(o, c->size);
+    }
+    for (uint32_t s = 0; s < o->nspans; ++s) {
+        octNode *leaf = o->spans[s].leaf;
+        if ((int)noct_cell_of(leaf)->small > bp->N && octGeneration(leaf) < bp->max_depth) {
+            if (!split_leaf(bp, leaf))
+                return false;
+            s = UINT32_MAX; /* the split rewrote the list: again */
+        }
+    }
+    return true;
+}
+
+void noct_bp_free_tree(noctBroadphase *bp)
+{
+    destroy_tree(bp);
+    for (size_t i = 0; i < bp->nblocks; ++i) {
+        for (int k = 0; k < 8; ++k) {
+            free(bp->blocks[i]->cell[k].objs);
+            free(bp->blocks[i]->cell[k].near);
+        }
+        free(bp->blocks[i]);
+    }
+    free(bp->blocks);
+    bp->blocks = bp->free_blocks = NULL;
+    bp->nblocks = bp->capblocks = bp->nfree_blocks = 0;
+    free(bp->root_cell.objs);
+    free(bp->root_cell.near);
+    if (bp->root_node != NULL) {
+        octSwapData(bp->root_node, NULL);
+        octDispose(bp->root_node);
+    }
+    bp->root_node = NULL;
+}
