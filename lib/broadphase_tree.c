@@ -182,8 +182,23 @@ static void give_back_below(noctBroadphase *bp, octNode *n)
 
 /* ---- split and merge ---------------------------------------------------------- */
 
+/* Add proxy id to node n, a leaf, or, if an earlier proxy of the same
+ * split made it split in turn, to the leaves below it that its box
+ * overlaps. */
+static bool hand_down(noctBroadphase *bp, octNode *n, uint32_t id)
+{
+    if (!NOCT_NODE_IS_SPLIT(n))
+        return add_and_split(bp, n, id);
+    for (int i = 0; i < 8; ++i) {
+        octNode *k = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
+        if (noct_overlaps(&bp->box[id], noct_cell_of(k)) && !hand_down(bp, k, id))
+            return false;
+    }
+    return true;
+}
+
 /* Give the leaf 8 children and hand each object to the children its box
- * overlaps (which may split in turn). */
+ * overlaps (which may split in turn: hand_down). */
 static bool split_leaf(noctBroadphase *bp, octNode *leaf)
 {
     noct_cell *pc = noct_cell_of(leaf);
@@ -216,7 +231,7 @@ static bool split_leaf(noctBroadphase *bp, octNode *leaf)
     for (uint32_t j = 0; j < count && ok; ++j)
         for (int i = 0; i < 8 && ok; ++i)
             if (noct_overlaps(&bp->box[objs[j]], &kids[i]))
-                ok = add_and_split(bp, &b->node[i], objs[j]);
+                ok = hand_down(bp, &b->node[i], objs[j]);
     return ok;
 }
 
