@@ -16,7 +16,7 @@
 #include "broadphase_internal.h"
 #include "mesh_internal.h"
 
-bool noct_grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem)
+bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem)
 {
     if (need <= *cap)
         return true;

@@ -263,8 +263,32 @@ static NOCT_ALWAYS_INLINE bool noct_filters_pass(const noct_proxy *a, const noct
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
-bool noct_grow_array(void **p, uint32_t *cap, uint32_t need, size_t elem);
-bool noct_pairs_push(noct_pair_list *l, noctProxyPair p);
+/* Room for need elements of size elem in *p (capacity *cap), doubling;
+ * false without memory. Inlined: the sweeps call it for every near pair. */
+bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem);
+static NOCT_ALWAYS_INLINE bool noct_grow_array(void **p, uint32_t *cap, uint32_t need,
+                                               size_t elem)
+{
+    return need <= *cap || noct_grow_array_slow(p, cap, need, elem);
+}
+
+/* Append p to l, doubling; false without memory. */
+bool noct_pairs_grow(noct_pair_list *l);
+static NOCT_ALWAYS_INLINE bool noct_pairs_push(noct_pair_list *l, noctProxyPair p)
+{
+    if (l->n == l->cap && !noct_pairs_grow(l))
+        return false;
+    l->p[l->n++] = p;
+    return true;
+}
+
+/* Order of pairs by (a.index, b.index). */
+static inline int noct_pair_order(const noctProxyPair *a, const noctProxyPair *b)
+{
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
 
 /* ---- broadphase.c ---------------------------------------------------------------- */
 
@@ -350,7 +374,7 @@ bool noct_bp_sort_tested(noctBroadphase *bp);
 /* Sort pairs that are in order of their first proxy by their second. */
 void noct_pairs_sort_partners(noct_pair_list *l);
 
-/* Order of pairs by (a.index, b.index). */
+/* noct_pair_order for qsort. */
 int noct_pair_cmp(const void *x, const void *y);
 
 #endif /* NOCT_LIB_BROADPHASE_INTERNAL_H */

@@ -17,26 +17,20 @@
 
 /* ---- pair search, events, response ------------------------------------------- */
 
-bool noct_pairs_push(noct_pair_list *l, noctProxyPair p)
+bool noct_pairs_grow(noct_pair_list *l)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 64;
-        noctProxyPair *q = realloc(l->p, cap * sizeof *q);
-        if (q == NULL)
-            return false;
-        l->p = q;
-        l->cap = cap;
-    }
-    l->p[l->n++] = p;
+    const size_t cap = l->cap ? 2 * l->cap : 64;
+    noctProxyPair *q = realloc(l->p, cap * sizeof *q);
+    if (q == NULL)
+        return false;
+    l->p = q;
+    l->cap = cap;
     return true;
 }
 
 int noct_pair_cmp(const void *x, const void *y)
 {
-    const noctProxyPair *a = x, *b = y;
-    if (a->a.index != b->a.index)
-        return a->a.index < b->a.index ? -1 : 1;
-    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+    return noct_pair_order(x, y);
 }
 
 /* Does the leaf own point p: [lo, lo + size) per axis, closed at the

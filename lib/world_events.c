@@ -18,7 +18,7 @@ noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
     while (i < now->n || j < before->n) {
         int c = i == now->n      ? 1
                 : j == before->n ? -1
-                                 : noct_pair_cmp(&now->p[i], &before->p[j]);
+                                 : noct_pair_order(&now->p[i], &before->p[j]);
         if (c == 0 && now->p[i].a.generation == before->p[j].a.generation &&
             now->p[i].b.generation == before->p[j].b.generation) {
             ++i;

@@ -36,6 +36,11 @@ tools_bench_world_SOURCES = tools/bench-world.c
 tools_bench_world_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_bench_world_LDADD = lib/libnoctree-efficient.la
 
+# Two builds of the library in one process, step for step (dlopen).
+noinst_PROGRAMS += tools/bench-ab
+tools_bench_ab_SOURCES = tools/bench-ab.c
+tools_bench_ab_LDADD = -ldl
+
 # libnoctree against FCL's and ODE's broadphases, when both are installed.
 if HAVE_PEERS
 noinst_PROGRAMS += tools/bench-peers

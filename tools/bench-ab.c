@@ -1,0 +1,169 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * bench-ab: two builds of libnoctree in one process, step for step.
+ *
+ * Loads two shared libraries (say, the efficient library of main and of a
+ * branch) with dlopen(3), each in its own namespace, builds the same
+ * SCENES.md scene in each, and steps them in turn: on even steps A first,
+ * on odd steps B first, so that whatever the machine does to one does it
+ * to the other. Prints per scene the median step of each, their ratio
+ * B / A with the spread of the per-step ratios (their quartiles), and
+ * fails if the two found different contact-begin counts: a faster build
+ * that finds other pairs did other work.
+ *
+ * Usage: bench-ab [--steps S] LIB_A LIB_B SCENE...
+ *   SCENE is planes:K or gas:N; S defaults to the scene's own steps.
+ * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <noctree/scene.h>
+#include <noctree/world.h>
+
+typedef struct lib {
+    const char *path;
+    void *handle;
+    noctStatus (*family)(const char *, noctScene **, noctError *);
+    noctStatus (*build)(const noctScene *, noctWorld **, noctError *);
+    int (*steps)(const noctScene *);
+    void (*scene_destroy)(noctScene *);
+    noctStatus (*step)(noctWorld *, noctError *);
+    size_t (*began)(const noctWorld *, const noctPair **);
+    void (*destroy)(noctWorld *);
+} lib;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+/* Object pointers to function pointers: POSIX allows it for dlsym. */
+#define SYM(l, field, name)                                                       \
+    do {                                                                          \
+        void *p = dlsym((l)->handle, name);                                       \
+        if (p == NULL) {                                                          \
+            fprintf(stderr, "bench-ab: %s: no %s\n", (l)->path, name);            \
+            return 0;                                                             \
+        }                                                                         \
+        memcpy(&(l)->field, &p, sizeof p);                                        \
+    } while (0)
+
+static int load(lib *l, const char *path)
+{
+    l->path = path;
+    l->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (l->handle == NULL) {
+        fprintf(stderr, "bench-ab: %s\n", dlerror());
+        return 0;
+    }
+    SYM(l, family, "noctSceneFamily");
+    SYM(l, build, "noctSceneBuild");
+    SYM(l, steps, "noctSceneSteps");
+    SYM(l, scene_destroy, "noctSceneDestroy");
+    SYM(l, step, "noctWorldStep");
+    SYM(l, began, "noctWorldBegan");
+    SYM(l, destroy, "noctWorldDestroy");
+    return 1;
+}
+
+/* Run one scene in both; 0 on failure. */
+static int run(lib *ab, const char *spec, int steps_opt)
+{
+    noctScene *scene[2] = {NULL, NULL};
+    noctWorld *world[2] = {NULL, NULL};
+    noctError err;
+    int ok = 1, steps = steps_opt;
+    for (int i = 0; i < 2 && ok; ++i) {
+        if (ab[i].family(spec, &scene[i], &err) != NOCT_OK ||
+            ab[i].build(scene[i], &world[i], &err) != NOCT_OK) {
+            fprintf(stderr, "bench-ab: %s with %s: %s\n", spec, ab[i].path, err.message);
+            ok = 0;
+        }
+        if (ok && steps <= 0)
+            steps = ab[i].steps(scene[i]);
+    }
+    double *t[2] = {calloc((size_t)steps + 1, sizeof(double)),
+                    calloc((size_t)steps + 1, sizeof(double))};
+    double *ratio = calloc((size_t)steps + 1, sizeof(double));
+    size_t begins[2] = {0, 0};
+    if (t[0] == NULL || t[1] == NULL || ratio == NULL)
+        ok = 0;
+    for (int s = 0; s < steps && ok; ++s) {
+        for (int turn = 0; turn < 2 && ok; ++turn) {
+            const int i = (s + turn) % 2;
+            const double t0 = now();
+            if (ab[i].step(world[i], &err) != NOCT_OK) {
+                fprintf(stderr, "bench-ab: %s step %d with %s: %s\n", spec, s, ab[i].path,
+                        err.message);
+                ok = 0;
+            }
+            t[i][s] = now() - t0;
+            const noctPair *p;
+            begins[i] += ab[i].began(world[i], &p);
+        }
+        ratio[s] = t[1][s] / t[0][s];
+    }
+    if (ok) {
+        qsort(t[0], (size_t)steps, sizeof(double), cmp_double);
+        qsort(t[1], (size_t)steps, sizeof(double), cmp_double);
+        qsort(ratio, (size_t)steps, sizeof(double), cmp_double);
+        printf("%-14s %6d %12.3f %12.3f %8.3f   %.3f-%.3f %10zu%s\n", spec, steps,
+               1e3 * t[0][steps / 2], 1e3 * t[1][steps / 2], ratio[steps / 2],
+               ratio[steps / 4], ratio[3 * steps / 4], begins[0],
+               begins[0] == begins[1] ? "" : "  EVENTS DIFFER");
+        fflush(stdout);
+        ok = begins[0] == begins[1];
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (world[i] != NULL)
+            ab[i].destroy(world[i]);
+        if (scene[i] != NULL)
+            ab[i].scene_destroy(scene[i]);
+        free(t[i]);
+    }
+    free(ratio);
+    return ok;
+}
+
+int main(int argc, char **argv)
+{
+    int steps = 0, a = 1;
+    if (a + 1 < argc && strcmp(argv[a], "--steps") == 0) {
+        steps = atoi(argv[a + 1]);
+        a += 2;
+        if (steps < 1) {
+            fprintf(stderr, "bench-ab: --steps needs a positive count\n");
+            return 2;
+        }
+    }
+    if (argc - a < 3 || strcmp(argv[1], "--help") == 0) {
+        fprintf(stderr, "usage: bench-ab [--steps S] LIB_A LIB_B SCENE...\n");
+        return 2;
+    }
+    lib ab[2];
+    memset(ab, 0, sizeof ab);
+    if (!load(&ab[0], argv[a]) || !load(&ab[1], argv[a + 1]))
+        return 1;
+    printf("A: %s\nB: %s\n", argv[a], argv[a + 1]);
+    printf("%-14s %6s %12s %12s %8s   %-11s %10s\n", "scene", "steps", "A ms/step",
+           "B ms/step", "B/A", "quartiles", "begins");
+    int ok = 1;
+    for (int i = a + 2; i < argc; ++i)
+        ok = run(ab, argv[i], steps) && ok;
+    dlclose(ab[0].handle);
+    dlclose(ab[1].handle);
+    return ok ? 0 : 1;
+}
