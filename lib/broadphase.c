@@ -203,9 +203,11 @@ void noct_bp_free_slot(noctBroadphase *bp, uint32_t s)
     noct_proxy *o = &bp->proxy[s];
     if (bp->root != NULL)
         noct_bp_unlink(bp, s);
-    o->nspans = 0;
+    NOCT_INVARIANT(o->alive && o->nspans == 0 && bp->alive > 0);
     o->alive = false;
     --bp->alive;
+    NOCT_INVARIANT(bp->filtered >= (size_t)(o->category != NOCT_FILTER_ALL ||
+                                            o->mask != NOCT_FILTER_ALL));
     bp->filtered -= o->category != NOCT_FILTER_ALL || o->mask != NOCT_FILTER_ALL;
     NOCT_INVARIANT(bp->nfree < bp->capslots);
     bp->free_slots[bp->nfree++] = s;

@@ -214,6 +214,10 @@ static bool split_leaf(noctBroadphase *bp, octNode *leaf)
                               pc->lo[2] + ((i & 1) ? half : 0)};
         reset_cell(&kids[i], lo, half);
         octSwapData(&b->node[i], &kids[i]);
+        /* a node's generation is its depth: its cell is the root's size
+         * halved that many times */
+        NOCT_INVARIANT(octGeneration(&b->node[i]) == octGeneration(leaf) + 1 &&
+                       ldexp(bp->root_cell.size, -octGeneration(&b->node[i])) == half);
     }
     /* The objects leave the leaf, each by its own entry: no search. The
      * list keeps its memory for a merge back. */
@@ -333,6 +337,10 @@ static void leaf_remove_at(noctBroadphase *bp, octNode *leaf, uint32_t i)
     NOCT_INVARIANT(i < c->count);
     const uint32_t id = c->objs[i];
     uint32_t *back = noct_back_of(c);
+    /* the proxy is in the leaf it leaves, and its entry says so */
+    NOCT_INVARIANT(c->count > 0 && back[i] < bp->proxy[id].nspans &&
+                   bp->proxy[id].spans[back[i]].leaf == leaf &&
+                   bp->proxy[id].spans[back[i]].at == i);
     span_drop(bp, id, back[i]);
     NOCT_INVARIANT(c->small >= (uint32_t)noct_splits_for(&bp->proxy[id], c->size));
     c->small -= noct_splits_for(&bp->proxy[id], c->size);

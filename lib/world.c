@@ -234,6 +234,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
         return NOCT_ERR_INVALID;
     noct_bp_free_slot(&w->bp, id.index); /* cannot fail */
     o->alive = false;
+    NOCT_INVARIANT(w->motion.moving >= (size_t)(o->speed > 0));
     w->motion.moving -= o->speed > 0;
     w->motion.stale = w->motion.stale || o->speed > 0;
     /* Drop its pairs from the lists a caller may read. */
