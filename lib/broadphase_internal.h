@@ -147,9 +147,12 @@ struct noctBroadphase {
     uint64_t shrink_from;     /* the first tick the root may shrink at */
     uint64_t clock;           /* the enter check's stamps: one tick per
                                  world sub-step or public move */
-    /* The pool: every block made, and the free ones (room for all). */
+    /* The pool: every block made, and the free ones (room for all);
+     * blocks are made in chunks. */
     noct_block **blocks, **free_blocks;
     size_t nblocks, capblocks, nfree_blocks;
+    noct_block **chunks;
+    size_t nchunks, capchunks;
     octNode **work;           /* enter check's worklist */
     size_t nwork, capwork;
     noct_leaf_box *gather;    /* pair search scratch */

@@ -129,16 +129,22 @@ static bool add_and_split(noctBroadphase *bp, octNode *leaf, uint32_t id)
 
 /* ---- the pool of nodes and cells -------------------------------------------- */
 
-/* A block of eight nodes and cells for a split: a free one, or a new one.
- * Its cells keep the lists they had, emptied. */
+/* A block of eight nodes and cells for a split: a free one, or one of a
+ * new chunk of them, half as many as there are already (so that a tree
+ * that grows a little past its largest size so far does not allocate
+ * again at once). Its cells keep the lists they had, emptied. */
 static noct_block *take_block(noctBroadphase *bp)
 {
     if (bp->nfree_blocks > 0)
         return bp->free_blocks[--bp->nfree_blocks];
-    if (bp->nblocks == bp->capblocks) {
+    const size_t k = bp->nblocks / 2 > 16 ? bp->nblocks / 2 : 16;
+    if (bp->nblocks + k > bp->capblocks) {
         /* blocks and free_blocks are the two halves of one array, so
-         * that giving a block back cannot fail */
-        const size_t cap = bp->capblocks ? 2 * bp->capblocks : 16;
+         * that giving a block back cannot fail; free_blocks is empty
+         * here, so nothing of it moves */
+        size_t cap = bp->capblocks ? 2 * bp->capblocks : 32;
+        while (cap < bp->nblocks + k)
+            cap *= 2;
         noct_block **q = realloc(bp->blocks, 2 * cap * sizeof *q);
         if (q == NULL)
             return NULL;
@@ -146,10 +152,23 @@ static noct_block *take_block(noctBroadphase *bp)
         bp->free_blocks = q + cap;
         bp->capblocks = cap;
     }
-    noct_block *b = calloc(1, sizeof *b);
-    if (b != NULL)
-        bp->blocks[bp->nblocks++] = b;
-    return b;
+    if (bp->nchunks == bp->capchunks) {
+        const size_t cap = bp->capchunks ? 2 * bp->capchunks : 8;
+        noct_block **q = realloc(bp->chunks, cap * sizeof *q);
+        if (q == NULL)
+            return NULL;
+        bp->chunks = q;
+        bp->capchunks = cap;
+    }
+    noct_block *chunk = calloc(k, sizeof *chunk);
+    if (chunk == NULL)
+        return NULL;
+    bp->chunks[bp->nchunks++] = chunk;
+    for (size_t i = 0; i < k; ++i)
+        bp->blocks[bp->nblocks++] = &chunk[i];
+    for (size_t i = k; i-- > 1;)
+        bp->free_blocks[bp->nfree_blocks++] = &chunk[i];
+    return &chunk[0];
 }
 
 static void give_block(noctBroadphase *bp, noct_block *b)
@@ -1000,8 +1019,12 @@ void noct_bp_free_tree(noctBroadphase *bp)
             free(bp->blocks[i]->cell[k].objs);
             free(bp->blocks[i]->cell[k].near);
         }
-        free(bp->blocks[i]);
     }
+    for (size_t i = 0; i < bp->nchunks; ++i)
+        free(bp->chunks[i]);
+    free(bp->chunks);
+    bp->chunks = NULL;
+    bp->nchunks = bp->capchunks = 0;
     free(bp->blocks);
     bp->blocks = bp->free_blocks = NULL;
     bp->nblocks = bp->capblocks = bp->nfree_blocks = 0;
