@@ -427,6 +427,7 @@ noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err)
     bp->tested.n = 0;
     bp->pending_reach = 0;
     ++bp->search_epoch;
+    ++bp->frame;
     bp->c.pairs += bp->pairs.n;
     return NOCT_OK;
 }

@@ -144,7 +144,8 @@ struct noctBroadphase {
     noct_cell root_cell;
     bool merge_owed;          /* a merge lacked memory: merge_all() owed */
     bool tree_owed;           /* a failure tore the tree down */
-    uint64_t shrink_from;     /* the first tick the root may shrink at */
+    uint64_t frame;           /* world sub-steps and public pair searches */
+    uint64_t shrink_from;     /* the first frame the root may shrink at */
     uint64_t clock;           /* the enter check's stamps: one tick per
                                  world sub-step or public move */
     /* The pool: every block made, and the free ones (room for all);

@@ -935,7 +935,8 @@ static bool root_too_large(const noctBroadphase *bp)
     return true;
 }
 
-/* Sub-steps after the root last grew before it may shrink: a group of
+/* Frames (world sub-steps, public pair searches) after the root last grew
+ * before it may shrink: a group of
  * objects drifting away grows the root (twice as large, the objects near
  * its corner) and would otherwise shrink it again at once, to grow it a
  * few steps later; so it rebuilds at most about once in this many. */
@@ -952,9 +953,9 @@ noctStatus noct_bp_settle(noctBroadphase *bp, bool escaped)
     noctStatus st = NOCT_OK;
     if (escaped && bp->root != NULL) {
         st = noct_bp_rebuild(bp, 2 * noct_cell_of(bp->root)->size);
-        bp->shrink_from = bp->clock + SHRINK_AFTER;
+        bp->shrink_from = bp->frame + SHRINK_AFTER;
     }
-    if (st == NOCT_OK && bp->root != NULL && bp->clock >= bp->shrink_from &&
+    if (st == NOCT_OK && bp->root != NULL && bp->frame >= bp->shrink_from &&
         root_too_large(bp))
         st = noct_bp_rebuild(bp, 0);
     if (st == NOCT_OK && bp->root != NULL && bp->merge_owed) {

@@ -332,6 +332,7 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
 static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *err)
 {
     ++w->bp.clock; /* the enter check's stamps: one tick per sub-step */
+    ++w->bp.frame;
     noctStatus st = NOCT_OK;
     const double t0 = noct_seconds();
     const bool moving = (w->def.effects & NOCT_EFFECT_MOTION) != 0 && w->motion.moving > 0;

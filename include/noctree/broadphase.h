@@ -275,8 +275,9 @@ typedef bool noctQueryFcn(void *context, noctProxyId id, void *user_data);
  *      not change the broadphase.
  * @post fcn was called once for each such proxy that the filter lets
  *       through, in an order that depends only on the operations made,
- *       until it returned false. Returns #NOCT_OK, or #NOCT_ERR_NONFINITE
- *       or #NOCT_ERR_INVALID (lo > hi) with no call made.
+ *       until it returned false. The box may be infinite (-INFINITY to
+ *       INFINITY: every proxy). Returns #NOCT_OK, or #NOCT_ERR_NONFINITE
+ *       (a NaN) or #NOCT_ERR_INVALID (lo > hi) with no call made.
  */
 NOCT_API noctStatus noctBroadphaseQueryBox(const noctBroadphase *bp, const double lo[3],
                                            const double hi[3], noctQueryFilter filter,
@@ -286,7 +287,8 @@ NOCT_API noctStatus noctBroadphaseQueryBox(const noctBroadphase *bp, const doubl
  * @brief Visit the proxies whose closed boxes contain point p.
  * @pre bp != NULL && p != NULL && fcn != NULL; fcn does not change the
  *      broadphase.
- * @post As noctBroadphaseQueryBox() with the box [p, p].
+ * @post As noctBroadphaseQueryBox() with the box [p, p]; a p that is
+ *       not finite gives #NOCT_ERR_NONFINITE.
  */
 NOCT_API noctStatus noctBroadphaseQueryPoint(const noctBroadphase *bp, const double p[3],
                                              noctQueryFilter filter, noctQueryFcn *fcn,
