@@ -527,6 +527,12 @@ octNode *noctWorldRoot(const noctWorld *w)
     return w->bp.root;
 }
 
+const noctBroadphase *noctWorldBroadphase(const noctWorld *w)
+{
+    NOCT_REQUIRE(w != NULL);
+    return &w->bp;
+}
+
 void noctWorldPrintCell(FILE *strm, const void *data)
 {
     NOCT_REQUIRE(strm != NULL && data != NULL);

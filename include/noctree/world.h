@@ -430,6 +430,22 @@ NOCT_API noctStatus noctWorldValidate(const noctWorld *world, noctError *err);
 NOCT_API octNode *noctWorldRoot(const noctWorld *world);
 
 /**
+ * @brief The world's broadphase, read-only: its proxies are the world's
+ * objects (the same handles, noctObjectId being noctProxyId), their boxes
+ * the objects' placed boxes.
+ *
+ * Use it for the broadphase's queries (noctBroadphaseQueryBox(),
+ * noctBroadphaseQueryPoint(), noctBroadphaseRayCast()) on the world's
+ * objects, its counters, validation and tree. The pair list of
+ * noctBroadphasePairs() is not the world's: the world's pairs are
+ * noctWorldColliding().
+ * @pre world != NULL
+ * @post The pointer is valid while the world is; the broadphase changes
+ *       with the world (each step, addition and removal).
+ */
+NOCT_API const noctBroadphase *noctWorldBroadphase(const noctWorld *world);
+
+/**
  * @brief An #octItemPrinter for the nodes of noctWorldRoot()'s tree.
  *
  * Prints the node's cube and, for a leaf, the indices of its objects, for
