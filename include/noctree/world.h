@@ -29,6 +29,14 @@
  *    pair that began colliding reverses its direction once (SCENES.md's
  *    contact-begin rule; the colliding set before step 1 is empty).
  *
+ * **Layers.** The world is built on the broadphase (broadphase.h): its
+ * objects are the proxies of a broadphase it owns, with the same handles,
+ * whose boxes are the meshes' boxes placed at the objects' positions
+ * (noctWorldBroadphase() gives it, read-only, for queries). A step is the
+ * stages above in order: motion, maintenance of the broadphase's tree,
+ * the broadphase's pair search, the narrowphase on its pairs, events and
+ * response.
+ *
  * **The octree.** Objects are inserted into every leaf their bounding box
  * overlaps (closed boxes, cells closed on every side); a leaf splits when
  * its N+1st object small enough to be separated arrives (the overlap rule
