@@ -173,6 +173,7 @@ noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], cons
     o->nspans = 0;
     o->alive = true;
     o->entering = false;
+    o->boxed = false;
     o->user = user;
     o->category = category;
     o->mask = mask;
@@ -248,6 +249,7 @@ noctStatus noctBroadphaseAdd(noctBroadphase *bp, const double lo[3], const doubl
     st = noct_bp_add(bp, s, lo, hi, zero, user_data, category, mask);
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "out of memory");
+    bp->proxy[s].boxed = true;
     id->index = s;
     id->generation = bp->gen[s];
     return NOCT_OK;
@@ -358,14 +360,25 @@ noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double l
     }
     o->travel += d;
     bp->pending_reach = noct_max(bp->pending_reach, o->travel);
-    noct_forget_home(bp, s);
-    /* Its local box is the box itself (position 0). */
-    const bool reshaped = memcmp(mlo, lo, sizeof mlo) != 0 || memcmp(mhi, hi, sizeof mhi) != 0;
-    const bool fast = noct_bp_same_cells(bp, s, &old, &nb);
-    if (reshaped && !noct_bp_reshape(bp, s, lo, hi))
+    /* The fast test, on the block its leaves were made for (kept in home
+     * while they last, else taken from its leaves now). */
+    noct_home *blk = &bp->home[s];
+    if (!isfinite(blk->lo[0]) && !noct_bp_block_of(bp, s, &old, blk, &o->block))
+        noct_forget_home(bp, s);
+    const bool fast = isfinite(blk->lo[0]) && noct_in_block(blk, o->block, &nb);
+    /* Its local box is the box itself (position 0); a new size changes
+     * its leaves' counts (and may split them), first. */
+    bool resized = false;
+    for (int k = 0; k < 3; ++k)
+        resized = resized || hi[k] - lo[k] != mhi[k] - mlo[k];
+    if (resized && !noct_bp_reshape(bp, s, lo, hi)) {
         st = NOCT_ERR_NOMEM;
-    if (st == NOCT_OK && fast && o->nspans > 0 && noct_bp_same_cells(bp, s, &old, &nb)) {
-        /* (a split for its new size may have changed its leaves) */
+    } else if (!resized) {
+        memcpy(o->mlo, lo, sizeof o->mlo);
+        memcpy(o->mhi, hi, sizeof o->mhi);
+    }
+    if (st == NOCT_OK && fast && isfinite(blk->lo[0])) {
+        /* (still: a split for its new size would have forgotten it) */
         bp->box[s] = nb;
         ++bp->c.inside_fast;
         return NOCT_OK;
@@ -377,9 +390,13 @@ noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double l
         st = noct_bp_maintain(bp, NULL, &s, 1, 0, &escaped);
         if (st == NOCT_OK && escaped)
             st = noct_bp_settle(bp, true);
+        /* its leaves are final: the block of the next fast test */
+        if (st == NOCT_OK && !noct_bp_block_of(bp, s, &nb, blk, &o->block))
+            noct_forget_home(bp, s);
     }
     if (st != NOCT_OK) {
         /* the proxy keeps its old box; the tree is built again later */
+        noct_forget_home(bp, s);
         bp->box[s] = old;
         memcpy(o->mlo, mlo, sizeof mlo);
         memcpy(o->mhi, mhi, sizeof mhi);
@@ -642,7 +659,11 @@ noctStatus noctBroadphaseValidate(const noctBroadphase *bp, noctError *err)
                      overlapped_leaves(b, bp->root));
         else if (isfinite(h->lo[0])) {
             noct_home now;
-            if (!noct_bp_home_of(bp, i, b, &now) || memcmp(&now, h, sizeof now) != 0)
+            double size = 0;
+            if (o->boxed ? !noct_bp_block_of(bp, i, b, &now, &size) || size != o->block
+                         : !noct_bp_home_of(bp, i, b, &now))
+                st = BAD("proxy %u has a home block but its leaves have none", i);
+            else if (memcmp(&now, h, sizeof now) != 0)
                 st = BAD("proxy %u's home block is not that of its leaves", i);
         }
     }

@@ -67,7 +67,8 @@ typedef struct noct_aabb {
 } noct_aabb;
 
 /*
- * A proxy's home block, as the positions that keep its box in it. The
+ * A proxy's home block, as the positions that keep its box in it (for
+ * the public API's proxies, the block itself: noct_proxy.boxed). The
  * block is the block of cells of its smallest leaf's size, on that
  * leaf's lattice, that its box overlaps, with the high side of the first
  * column and the low side of the last on each axis; a box inside it
@@ -94,6 +95,10 @@ typedef struct noct_proxy {
     uint32_t nspans, capspans;
     bool alive;
     bool entering;        /* maintenance: needs the enter phase */
+    bool boxed;           /* a public proxy: home holds its block in box
+                             space (noct_bp_block_of), of cells of size
+                             block, while it is finite */
+    double block;
     uint64_t category, mask;
     void *user;
     double travel;        /* how far its box moved since the last pair
@@ -361,10 +366,23 @@ bool noct_bp_reshape(noctBroadphase *bp, uint32_t id, const double mlo[3], const
 /* The home block of proxy id while its leaves are those box b overlaps. */
 bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *h);
 
-/* Does box nb overlap the same cells of proxy id's smallest leaf's size
- * as box b, which its leaves were made for? */
-bool noct_bp_same_cells(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
-                        const noct_aabb *nb);
+/* The block of cells, of proxy id's smallest leaf's size s, that box b
+ * overlaps (its leaves were made for b), in box space: the lattice lines
+ * around b, into blk; false if there is none. */
+bool noct_bp_block_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *blk,
+                      double *s);
+
+/* Does box nb overlap the cells of block blk (cells of size s), and so
+ * lie in the same leaves: its low side in (lo, lo + s], its high side in
+ * [hi - s, hi), on every axis? The lattice points are exact. */
+static inline bool noct_in_block(const noct_home *blk, double s, const noct_aabb *nb)
+{
+    for (int k = 0; k < 3; ++k)
+        if (!(nb->lo[k] > blk->lo[k] && nb->lo[k] <= blk->lo[k] + s &&
+              nb->hi[k] >= blk->hi[k] - s && nb->hi[k] < blk->hi[k]))
+            return false;
+    return true;
+}
 
 /* ---- broadphase_pairs.c ---------------------------------------------------------- */
 

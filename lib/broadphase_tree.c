@@ -699,11 +699,12 @@ bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, 
     return true;
 }
 
-/* Does box nb overlap the same cells of its smallest leaf's size as box
- * b, whose leaves proxy id is in: the fast test of a public move, in box
- * space, for a box that may change size too. */
-bool noct_bp_same_cells(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
-                        const noct_aabb *nb)
+/* The block of cells of proxy id's smallest leaf's size that box b, which
+ * its leaves were made for, overlaps, in box space: blk->lo and blk->hi
+ * are the lattice lines around b and *size the cells' size; false if
+ * there is none (see noct_in_block). */
+bool noct_bp_block_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *blk,
+                      double *size)
 {
     const noct_proxy *o = &bp->proxy[id];
     if (o->nspans == 0)
@@ -719,9 +720,10 @@ bool noct_bp_same_cells(const noctBroadphase *bp, uint32_t id, const noct_aabb *
         const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
         if (!(lo >= root.lo[k] && hi <= root.hi[k]))
             return false; /* NaN too */
-        if (!(nb->lo[k] > lo && nb->lo[k] <= lo + s && nb->hi[k] >= hi - s && nb->hi[k] < hi))
-            return false;
+        blk->lo[k] = lo;
+        blk->hi[k] = hi;
     }
+    *size = s;
     return true;
 }
 

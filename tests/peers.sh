@@ -32,6 +32,16 @@ check "bench-peers --steps 55 exits 0" [ $? -eq 0 ]
 check "bench-peers: 4 libraries, 25 begins each" begins_are "$tmp/s.txt" planes:3 25 4
 check "bench-peers: 2 repeats x 4 libraries in the CSV" [ "$(wc -l < "$tmp/s.csv")" -eq 9 ]
 
+# The bare broadphases on the same boxes: every library counts the same
+# overlapping pairs (the tool fails otherwise), 248 650 on gas:1000.
+"$peers" --quick --broadphase > "$tmp/b.txt" 2> "$tmp/b.err"
+check "bench-peers --broadphase --quick exits 0" [ $? -eq 0 ]
+check "bench-peers --broadphase: nothing on stderr" [ ! -s "$tmp/b.err" ]
+check "bench-peers --broadphase: planes:3, 3 libraries, 980 pairs each" \
+    begins_are "$tmp/b.txt" planes:3 980 3
+check "bench-peers --broadphase: gas:1000, 3 libraries, 248650 pairs each" \
+    begins_are "$tmp/b.txt" gas:1000 248650 3
+
 expect_prog "$peers" 0 '^usage' --help
 expect_prog "$peers" 2 "'planes:x': a scene is planes:K" planes:x
 expect_prog "$peers" 2 "'gas:0': a scene is" gas:0

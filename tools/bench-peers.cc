@@ -24,7 +24,13 @@
  * (default 60); its row then says how many steps it covers, and its events
  * are not compared.
  *
- * Usage: bench-peers [--quick] [--steps S] [--repeats R] [--N N]
+ * With --broadphase the libraries run their bare broadphases instead, on
+ * the same axis-aligned boxes (each body's world-space bounding box): the
+ * bodies move and bounce, each library updates its broadphase and counts
+ * the overlapping pairs, with no narrowphase and no response. Their pair
+ * totals must agree.
+ *
+ * Usage: bench-peers [--quick] [--broadphase] [--steps S] [--repeats R] [--N N]
  *                    [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
@@ -238,12 +244,13 @@ struct Dynamics {
 
 struct Result {
     double median, p90, setup;
-    size_t objects, begins;
+    size_t objects, begins; // begins: overlapping pairs with --broadphase
     int steps; // steps done: fewer than asked when the budget ran out
     int ok;
 };
 
 struct Options {
+    bool broadphase = false; // pairs of boxes only: --broadphase
     int steps = 200;
     int repeats = 3;
     int N = 30;
@@ -402,6 +409,174 @@ Result run_ode(Scene &s, const Options &o, bool sap, bool gas)
     return r;
 }
 
+// ---- the bare broadphases (--broadphase) ------------------------------------
+//
+// The same boxes in every library: each body's world-space bounding box,
+// as a centre c and half-extents e (e = |R| h), given to libnoctree as
+// [c - e, c + e] and to FCL and ODE as an axis-aligned box of sides 2e at
+// c, whose bounding boxes they compute as exactly c -+ e. The bodies move
+// and bounce off the walls, with no response: every library sees the same
+// boxes at every step and must count the same overlapping pairs (closed
+// boxes: touching counts, in all three).
+
+void world_box(const Body &b, double c[3], double e[3])
+{
+    for (int a = 0; a < 3; ++a) {
+        c[a] = b.c[a];
+        e[a] = std::fabs(b.r[3 * a]) * b.h[0] + std::fabs(b.r[3 * a + 1]) * b.h[1] +
+               std::fabs(b.r[3 * a + 2]) * b.h[2];
+    }
+}
+
+// p += v and the walls, as Dynamics::move (which the response needs).
+void move_bodies(Scene &s)
+{
+    for (Body &b : s.body)
+        for (int a = 0; a < 3; ++a) {
+            b.c[a] += b.v[a];
+            if (s.walls && ((b.c[a] < 0 && b.v[a] < 0) || (b.c[a] > s.lb && b.v[a] > 0)))
+                b.v[a] = -b.v[a];
+        }
+}
+
+Result run_bp_noctree(Scene &s, const Options &o)
+{
+    Result r = {};
+    const double t0 = now();
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = o.N;
+    noctBroadphase *bp;
+    noctError err;
+    if (noctBroadphaseCreate(&def, &bp, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s\n", err.message);
+        return r;
+    }
+    std::vector<noctProxyId> id(s.body.size());
+    double c[3], e[3];
+    for (size_t i = 0; i < s.body.size(); ++i) {
+        world_box(s.body[i], c, e);
+        const double lo[3] = {c[0] - e[0], c[1] - e[1], c[2] - e[2]};
+        const double hi[3] = {c[0] + e[0], c[1] + e[1], c[2] + e[2]};
+        if (noctBroadphaseAdd(bp, lo, hi, nullptr, NOCT_FILTER_ALL, NOCT_FILTER_ALL, &id[i],
+                              &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s\n", err.message);
+            return r;
+        }
+    }
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        move_bodies(s);
+        for (size_t i = 0; i < s.body.size(); ++i) {
+            world_box(s.body[i], c, e);
+            const double lo[3] = {c[0] - e[0], c[1] - e[1], c[2] - e[2]};
+            const double hi[3] = {c[0] + e[0], c[1] + e[1], c[2] + e[2]};
+            if (noctBroadphaseMove(bp, id[i], lo, hi, &err) != NOCT_OK) {
+                std::fprintf(stderr, "bench-peers: %s\n", err.message);
+                return r;
+            }
+        }
+        if (noctBroadphaseUpdatePairs(bp, &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s\n", err.message);
+            return r;
+        }
+        const noctProxyPair *p;
+        r.begins += noctBroadphasePairs(bp, &p);
+        t.push_back(now() - a);
+    }
+    summarize(t, r);
+    noctBroadphaseDestroy(bp);
+    return r;
+}
+
+bool fcl_count(fcl::CollisionObjectd *, fcl::CollisionObjectd *, void *data)
+{
+    ++*static_cast<size_t *>(data);
+    return false; // go on
+}
+
+Result run_bp_fcl(Scene &s, const Options &o)
+{
+    Result r = {};
+    const double t0 = now();
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
+    std::vector<fcl::CollisionObjectd *> raw;
+    double c[3], e[3];
+    for (const Body &b : s.body) {
+        world_box(b, c, e);
+        auto box = std::make_shared<fcl::Boxd>(2 * e[0], 2 * e[1], 2 * e[2]);
+        obj.emplace_back(new fcl::CollisionObjectd(box, fcl::Matrix3d::Identity(),
+                                                   fcl::Vector3d(c[0], c[1], c[2])));
+        raw.push_back(obj.back().get());
+    }
+    fcl::DynamicAABBTreeCollisionManagerd mgr;
+    mgr.registerObjects(raw);
+    mgr.setup();
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        move_bodies(s);
+        for (size_t i = 0; i < raw.size(); ++i) {
+            world_box(s.body[i], c, e);
+            raw[i]->setTranslation(fcl::Vector3d(c[0], c[1], c[2]));
+            raw[i]->computeAABB();
+        }
+        mgr.update();
+        size_t n = 0;
+        mgr.collide(&n, fcl_count);
+        r.begins += n;
+        t.push_back(now() - a);
+    }
+    summarize(t, r);
+    return r;
+}
+
+void ode_count(void *data, dGeomID, dGeomID)
+{
+    ++*static_cast<size_t *>(data);
+}
+
+Result run_bp_ode(Scene &s, const Options &o, bool sap, bool gas)
+{
+    Result r = {};
+    const double t0 = now();
+    dInitODE2(0);
+    dSpaceID space = sap ? dSweepAndPruneSpaceCreate(nullptr, gas ? dSAP_AXES_XYZ : dSAP_AXES_YZX)
+                         : dHashSpaceCreate(nullptr);
+    std::vector<dGeomID> geom;
+    double c[3], e[3];
+    for (const Body &b : s.body) {
+        world_box(b, c, e);
+        dGeomID g = dCreateBox(space, 2 * e[0], 2 * e[1], 2 * e[2]);
+        dGeomSetPosition(g, c[0], c[1], c[2]);
+        geom.push_back(g);
+    }
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        move_bodies(s);
+        for (size_t i = 0; i < geom.size(); ++i)
+            dGeomSetPosition(geom[i], s.body[i].c[0], s.body[i].c[1], s.body[i].c[2]);
+        size_t n = 0;
+        dSpaceCollide(space, &n, ode_count);
+        r.begins += n;
+        t.push_back(now() - a);
+    }
+    summarize(t, r);
+    dSpaceDestroy(space);
+    dCloseODE();
+    return r;
+}
+
 const char *const LIBS[] = {"libnoctree", "fcl-dtree", "ode-sap", "ode-hash"};
 const int NLIBS = 4;
 
@@ -411,6 +586,14 @@ Result run_one(const char *spec, int lib, const Options &o)
     long size;
     if (!parse_scene(spec, &gas, &size))
         return Result{};
+    if (o.broadphase) {
+        Scene s = make_scene(gas, size);
+        if (lib == 0)
+            return run_bp_noctree(s, o);
+        if (lib == 1)
+            return run_bp_fcl(s, o);
+        return run_bp_ode(s, o, lib == 2, gas);
+    }
     if (lib == 0)
         return run_noctree(spec, o);
     Scene s = make_scene(gas, size);
@@ -471,13 +654,16 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 
 void usage(FILE *f)
 {
-    std::fputs("usage: bench-peers [--quick] [--steps S] [--repeats R] [--N N]\n"
+    std::fputs("usage: bench-peers [--quick] [--broadphase] [--steps S] [--repeats R] [--N N]\n"
                "                   [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
                "libnoctree,fcl-dtree,ode-sap,ode-hash (default all but ode-hash,\n"
                "which takes seconds a step on the large planes).\n"
-               "--quick: planes:3 gas:1000, 1 repeat, 200 steps.\n",
+               "--quick: planes:3 gas:1000, 1 repeat, 200 steps.\n"
+               "--broadphase: the bare broadphases on the scenes' boxes, pairs of\n"
+               "overlapping boxes only (no narrowphase, no response); the pairs\n"
+               "column is their total over the steps, and must agree.\n",
                f);
 }
 
@@ -496,6 +682,8 @@ int main(int argc, char **argv)
         const bool has = i + 1 < argc;
         if (std::strcmp(a, "--quick") == 0) {
             quick = true;
+        } else if (std::strcmp(a, "--broadphase") == 0) {
+            o.broadphase = true;
         } else if (std::strcmp(a, "--help") == 0) {
             usage(stdout);
             return 0;
@@ -565,16 +753,24 @@ int main(int argc, char **argv)
         std::fputs("scene,objects,library,repeat,steps,median_s,p90_s,setup_s,begins,peak_kib\n",
                    csv);
     }
-    std::printf("bench-peers: libnoctree %s (efficient build, N = %d, exact) against FCL %s "
-                "(dynamic AABB tree)\nand ODE %s (sweep and prune; hash), each with its own "
-                "box-box test; one thread\n",
-                NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+    if (o.broadphase)
+        std::printf("bench-peers --broadphase: libnoctree %s's broadphase (efficient build, "
+                    "N = %d) against\nFCL %s (dynamic AABB tree) and ODE %s (sweep and prune; "
+                    "hash) on the same axis-aligned\nboxes: move, update, find the overlapping "
+                    "pairs; no narrowphase; one thread\n",
+                    NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+    else
+        std::printf("bench-peers: libnoctree %s (efficient build, N = %d, exact) against FCL %s "
+                    "(dynamic AABB tree)\nand ODE %s (sweep and prune; hash), each with its own "
+                    "box-box test; one thread\n",
+                    NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
     std::printf("per-step wall time of the whole step, %d steps: median over %d interleaved "
                 "runs of each run's\nmedian (+-: half the range, %% of the median); x: this "
                 "library's median over libnoctree's\n\n",
                 o.steps, o.repeats);
     std::printf("%-11s %8s  %-10s %10s %6s %10s %9s %7s %8s %8s %7s\n", "scene", "objects",
-                "library", "median ms", "+-", "p90 ms", "ns/obj", "setup s", "begins",
+                "library", "median ms", "+-", "p90 ms", "ns/obj", "setup s",
+                o.broadphase ? "pairs" : "begins",
                 "peak MiB", "x");
     bool all_ok = true;
     for (const char *spec : scenes) {
@@ -601,8 +797,8 @@ int main(int argc, char **argv)
         bool gas;
         long size;
         parse_scene(spec, &gas, &size);
-        size_t known;
-        const bool has_known = known_begins(gas, size, o.steps, &known);
+        size_t known = 0;
+        const bool has_known = !o.broadphase && known_begins(gas, size, o.steps, &known);
         // Every run that did all its steps must find the same events.
         size_t first = SIZE_MAX;
         for (int l = 0; l < NLIBS; ++l)
@@ -611,8 +807,10 @@ int main(int argc, char **argv)
                     if (first == SIZE_MAX)
                         first = r.begins;
                     if (r.begins != first || (has_known && r.begins != known)) {
-                        std::printf("%-11s %8zu  %-10s contact begins %zu, but %s %zu\n", spec,
-                                    r.objects, LIBS[l], r.begins,
+                        std::printf("%-11s %8zu  %-10s %s %zu, but %s %zu\n", spec,
+                                    r.objects, LIBS[l],
+                                    o.broadphase ? "overlapping pairs" : "contact begins",
+                                    r.begins,
                                     has_known ? "SCENES.md says" : "another run found",
                                     has_known ? known : first);
                         all_ok = false;
