@@ -31,6 +31,70 @@ bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem)
     return true;
 }
 
+void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
+{
+    unsigned k = 0;
+    while (k < NOCT_APOOL_CLASSES && (uint64_t)p->base << k < need)
+        ++k;
+    if (k == NOCT_APOOL_CLASSES)
+        return NULL;
+    *cap = p->base << k;
+    if (p->cls[k].n > 0)
+        return p->cls[k].free[--p->cls[k].n];
+    /* None free: make a quarter as many again as there are (at least
+     * two), so that a little more demand than ever before does not
+     * allocate at once. */
+    const size_t more = p->cls[k].made / 4 > 2 ? p->cls[k].made / 4 : 2;
+    if (p->cls[k].made + more > p->cls[k].cap) {
+        size_t c = p->cls[k].cap ? 2 * p->cls[k].cap : 16;
+        while (c < p->cls[k].made + more)
+            c *= 2;
+        void **q = realloc(p->cls[k].free, c * sizeof *q);
+        if (q == NULL)
+            return NULL;
+        p->cls[k].free = q;
+        p->cls[k].cap = c;
+    }
+    for (size_t i = 0; i < more; ++i) {
+        void *a = malloc((size_t)*cap * p->elem);
+        if (a == NULL)
+            break;
+        ++p->cls[k].made;
+        p->cls[k].free[p->cls[k].n++] = a;
+    }
+    return p->cls[k].n > 0 ? p->cls[k].free[--p->cls[k].n] : NULL;
+}
+
+void *noct_apool_take_free(noct_apool *p, uint32_t cap)
+{
+    unsigned k = 0;
+    while (k < NOCT_APOOL_CLASSES && p->base << k != cap)
+        ++k;
+    return k < NOCT_APOOL_CLASSES && p->cls[k].n > 0 ? p->cls[k].free[--p->cls[k].n] : NULL;
+}
+
+void noct_apool_give(noct_apool *p, void *a, uint32_t cap)
+{
+    if (a == NULL)
+        return;
+    unsigned k = 0;
+    while (p->base << k != cap)
+        ++k;
+    NOCT_INVARIANT(k < NOCT_APOOL_CLASSES && p->cls[k].n < p->cls[k].made);
+    p->cls[k].free[p->cls[k].n++] = a;
+}
+
+void noct_apool_free(noct_apool *p)
+{
+    for (unsigned k = 0; k < NOCT_APOOL_CLASSES; ++k) {
+        for (size_t i = 0; i < p->cls[k].n; ++i)
+            free(p->cls[k].free[i]);
+        free(p->cls[k].free);
+        p->cls[k].free = NULL;
+        p->cls[k].n = p->cls[k].cap = p->cls[k].made = 0;
+    }
+}
+
 noctBroadphaseDef noctDefaultBroadphaseDef(void)
 {
     noctBroadphaseDef d;
@@ -65,6 +129,12 @@ noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctEr
         hint = hint && def->bounds_lo[k] < def->bounds_hi[k];
     }
     memset(bp, 0, sizeof *bp);
+    bp->objs_pool.elem = 2 * sizeof(uint32_t);
+    bp->objs_pool.base = 4;
+    bp->near_pool.elem = sizeof(uint32_t);
+    bp->near_pool.base = 8;
+    bp->spans_pool.elem = sizeof(noct_span);
+    bp->spans_pool.base = 8; /* most proxies are in 8 leaves or fewer */
     bp->N = def->N;
     bp->max_depth = def->max_depth;
     bp->hint = hint;
@@ -90,6 +160,9 @@ void noct_bp_fini(noctBroadphase *bp)
     free(bp->sorted);
     free(bp->digits);
     free(bp->pairs.p);
+    noct_apool_free(&bp->objs_pool);
+    noct_apool_free(&bp->near_pool);
+    noct_apool_free(&bp->spans_pool);
 }
 
 noctStatus noctBroadphaseCreate(const noctBroadphaseDef *def, noctBroadphase **bp,

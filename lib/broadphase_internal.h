@@ -27,6 +27,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include <noctree/broadphase.h>
 
@@ -37,9 +38,9 @@ typedef struct noct_cell {
     double size;
     uint32_t *objs;      /* leaf: proxies overlapping the cell, then
                             (noct_back_of) where each one's spans list the
-                            leaf: 2 cap entries. Kept, with its capacity,
-                            when the leaf splits or its block goes back to
-                            the pool: lists never shrink. */
+                            leaf: 2 cap entries, from objs_pool. Given
+                            back when the leaf splits or its block goes
+                            back to the pool. */
     uint32_t count, cap;
     uint32_t small;      /* leaf: proxies small enough to split for */
     uint32_t stamp_obj;  /* enter check: last (proxy, clock) that queried */
@@ -118,6 +119,58 @@ typedef struct noct_leaf_box {
     uint32_t id;
 } noct_leaf_box;
 
+/*
+ * Arrays pooled by size class: class k holds base << k elements of elem
+ * bytes. A list that must grow takes an array of a larger class and gives
+ * its own back; a leaf that splits or goes back to the pool gives its
+ * lists back. So the arrays of each class in use never outnumber the most
+ * ever in use at once, and once that settles nothing is allocated. A
+ * class's free stack has room for every array of the class ever made, so
+ * giving one back cannot fail.
+ */
+#define NOCT_APOOL_CLASSES 28
+typedef struct noct_apool {
+    size_t elem;
+    uint32_t base;
+    struct {
+        void **free;
+        size_t n, cap, made;
+    } cls[NOCT_APOOL_CLASSES];
+} noct_apool;
+
+/* An array of at least need elements, its capacity into *cap; NULL
+ * without memory (or beyond the largest class). */
+void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap);
+
+/* A free array of capacity cap (a class's), or NULL if none is free: it
+ * never allocates. For lists that shrink, so that the arrays in use
+ * follow the lists' sizes now rather than the largest they ever were. */
+void *noct_apool_take_free(noct_apool *p, uint32_t cap);
+
+/* Give back array a of capacity cap (from noct_apool_take; NULL and 0
+ * for none); cannot fail. */
+void noct_apool_give(noct_apool *p, void *a, uint32_t cap);
+
+/* Free every array given back. */
+void noct_apool_free(noct_apool *p);
+
+/* A list of n elements in *a (capacity *cap) that has a quarter of its
+ * room or less in use moves to a free array of half the capacity, if the
+ * pool has one (elem bytes each, first n copied). */
+static inline void noct_apool_shrink(noct_apool *p, void **a, uint32_t *cap, uint32_t n)
+{
+    if (*cap <= p->base || n > *cap / 4)
+        return;
+    void *q = noct_apool_take_free(p, *cap / 2);
+    if (q == NULL)
+        return;
+    if (n > 0)
+        memcpy(q, *a, n * p->elem);
+    noct_apool_give(p, *a, *cap);
+    *a = q;
+    *cap /= 2;
+}
+
 /* Eight sibling nodes and their cells: what a split takes from the pool
  * and a merge gives back. */
 typedef struct noct_block {
@@ -159,6 +212,9 @@ struct noctBroadphase {
     size_t nblocks, capblocks, nfree_blocks;
     noct_block **chunks;
     size_t nchunks, capchunks;
+    /* The leaves' lists (2 cap entries), their near pairs and the
+     * proxies' spans, pooled by size. */
+    noct_apool objs_pool, near_pool, spans_pool;
     octNode **work;           /* enter check's worklist */
     size_t nwork, capwork;
     noct_leaf_box *gather;    /* pair search scratch */

@@ -132,6 +132,24 @@ static NOCT_ALWAYS_INLINE bool offer_pair(noctBroadphase *bp, const noct_cell *c
     return noct_pairs_push(&bp->tested, (noctProxyPair){{ia, 0}, {ib, 0}});
 }
 
+/* Room for one more near pair in leaf c: a larger array from the pool,
+ * the old one given back. */
+static NOCT_ALWAYS_INLINE bool near_reserve(noctBroadphase *bp, noct_cell *c)
+{
+    if (c->nnear < c->capnear)
+        return true;
+    uint32_t cap;
+    uint32_t *q = noct_apool_take(&bp->near_pool, c->nnear + 1, &cap);
+    if (q == NULL)
+        return false;
+    if (c->nnear > 0)
+        memcpy(q, c->near, c->nnear * sizeof *q);
+    noct_apool_give(&bp->near_pool, c->near, c->capnear);
+    c->near = q;
+    c->capnear = cap;
+    return true;
+}
+
 /* How many steps of reach a sweep's near pairs are kept for: a leaf is
  * swept about once in that many steps, and its near pairs tested in the
  * others. */
@@ -159,7 +177,7 @@ static bool near_fresh(noctBroadphase *bp, noct_cell *c)
                 noct_max(b->lo[2] - a->hi[2], a->lo[2] - b->hi[2]));
             if (gap > budget)
                 continue;
-            if (!noct_grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
+            if (!near_reserve(bp, c))
                 return false;
             c->near[c->nnear++] = i | r << 16;
         }
@@ -258,7 +276,7 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
                 continue;
             }
             if (listing) {
-                if (!noct_grow_array((void **)&c->near, &c->capnear, c->nnear + 1, sizeof *c->near))
+                if (!near_reserve(bp, c))
                     return NOCT_ERR_NOMEM;
                 c->near[c->nnear++] = i | j << 16;
             }
@@ -269,6 +287,7 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
         }
     }
     c->budget = !listing ? 0 : c->nnear > 0 ? m2 : apart;
+    noct_apool_shrink(&bp->near_pool, (void **)&c->near, &c->capnear, c->nnear);
     c->fresh = c->count;
     return NOCT_OK;
 }

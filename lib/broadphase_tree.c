@@ -49,10 +49,11 @@ static void span_drop(noctBroadphase *bp, uint32_t id, uint32_t s)
     noct_forget_home(bp, id);
     NOCT_INVARIANT(s < o->nspans);
     const noct_span last = o->spans[--o->nspans];
-    if (s == o->nspans)
-        return;
-    o->spans[s] = last;
-    noct_back_of(noct_cell_of(last.leaf))[last.at] = s;
+    if (s != o->nspans) {
+        o->spans[s] = last;
+        noct_back_of(noct_cell_of(last.leaf))[last.at] = s;
+    }
+    noct_apool_shrink(&bp->spans_pool, (void **)&o->spans, &o->capspans, o->nspans);
 }
 
 /* The object at position r of leaf c went and the one at position last
@@ -72,18 +73,49 @@ static void near_leave(noct_cell *c, uint32_t r, uint32_t last)
     c->nnear = k;
 }
 
-/* Room for one more object in leaf c: both halves of objs double. */
-static bool leaf_reserve(noct_cell *c)
+/* Room for need objects in leaf c: a list of a larger class from the pool,
+ * both halves copied, the old one given back. */
+static bool leaf_reserve(noctBroadphase *bp, noct_cell *c, uint32_t need)
 {
-    if (c->count < c->cap)
+    if (need <= c->cap)
         return true;
-    const uint32_t cap = c->cap ? 2 * c->cap : 4;
-    uint32_t *q = realloc(c->objs, 2 * (size_t)cap * sizeof *q);
+    uint32_t cap;
+    uint32_t *q = noct_apool_take(&bp->objs_pool, need, &cap);
     if (q == NULL)
         return false;
-    memmove(q + cap, q + c->cap, c->count * sizeof *q);
+    if (c->count > 0) {
+        memcpy(q, c->objs, c->count * sizeof *q);
+        memcpy(q + cap, c->objs + c->cap, c->count * sizeof *q);
+    }
+    noct_apool_give(&bp->objs_pool, c->objs, c->cap);
     c->objs = q;
     c->cap = cap;
+    return true;
+}
+
+/* Give a cell's lists back to the pools. */
+static void give_lists(noctBroadphase *bp, noct_cell *c)
+{
+    noct_apool_give(&bp->objs_pool, c->objs, c->cap);
+    noct_apool_give(&bp->near_pool, c->near, c->capnear);
+    c->objs = c->near = NULL;
+    c->cap = c->capnear = c->count = c->nnear = 0;
+}
+
+/* Room for one more span of proxy o, from the pool as leaf_reserve. */
+static bool spans_reserve(noctBroadphase *bp, noct_proxy *o)
+{
+    if (o->nspans < o->capspans)
+        return true;
+    uint32_t cap;
+    noct_span *q = noct_apool_take(&bp->spans_pool, o->nspans + 1, &cap);
+    if (q == NULL)
+        return false;
+    if (o->nspans > 0)
+        memcpy(q, o->spans, o->nspans * sizeof *q);
+    noct_apool_give(&bp->spans_pool, o->spans, o->capspans);
+    o->spans = q;
+    o->capspans = cap;
     return true;
 }
 
@@ -91,8 +123,7 @@ static bool leaf_add(noctBroadphase *bp, octNode *leaf, uint32_t id)
 {
     noct_cell *c = noct_cell_of(leaf);
     noct_proxy *o = &bp->proxy[id];
-    if (!leaf_reserve(c) ||
-        !noct_grow_array((void **)&o->spans, &o->capspans, o->nspans + 1, sizeof *o->spans))
+    if (!leaf_reserve(bp, c, c->count + 1) || !spans_reserve(bp, o))
         return false;
     o->spans[o->nspans].leaf = leaf;
     noct_leaf_put(bp, c, c->count++, id, o->nspans++); /* fresh: after c->fresh */
@@ -177,9 +208,10 @@ static void give_block(noctBroadphase *bp, noct_block *b)
     bp->free_blocks[bp->nfree_blocks++] = b;
 }
 
-/* Empty a cell for a new node, keeping its lists' memory. */
+/* Empty a cell (whose lists went back to the pools) for a new node. */
 static void reset_cell(noct_cell *c, const double lo[3], double size)
 {
+    NOCT_INVARIANT(c->objs == NULL && c->near == NULL);
     memcpy(c->lo, lo, sizeof c->lo);
     c->size = size;
     c->count = c->small = c->fresh = c->stamp_obj = 0;
@@ -196,7 +228,10 @@ static void give_back_below(noctBroadphase *bp, octNode *n)
         return;
     for (int i = 0; i < 8; ++i)
         give_back_below(bp, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i)));
-    give_block(bp, (noct_block *)noct_oct_unsplit(n));
+    noct_block *b = (noct_block *)noct_oct_unsplit(n);
+    for (int i = 0; i < 8; ++i)
+        give_lists(bp, &b->cell[i]);
+    give_block(bp, b);
 }
 
 /* ---- split and merge ---------------------------------------------------------- */
@@ -255,6 +290,7 @@ static bool split_leaf(noctBroadphase *bp, octNode *leaf)
         for (int i = 0; i < 8 && ok; ++i)
             if (noct_overlaps(&bp->box[objs[j]], &kids[i]))
                 ok = hand_down(bp, &b->node[i], objs[j]);
+    give_lists(bp, pc); /* an inner node holds none */
     return ok;
 }
 
@@ -295,17 +331,10 @@ static void try_merge(noctBroadphase *bp, octNode *p, bool up)
             pc->distinct = distinct;
             return;
         }
-        if (distinct > pc->cap) {
-            uint32_t cap = pc->cap ? pc->cap : 4;
-            while (cap < distinct)
-                cap *= 2;
-            uint32_t *objs = realloc(pc->objs, 2 * (size_t)cap * sizeof *objs);
-            if (objs == NULL) {
-                bp->merge_owed = true;
-                return;
-            }
-            pc->objs = objs;
-            pc->cap = cap;
+        pc->count = 0;
+        if (!leaf_reserve(bp, pc, distinct ? distinct : 1)) {
+            bp->merge_owed = true;
+            return;
         }
         pc->count = pc->small = 0;
         pc->nnear = 0;
@@ -376,6 +405,18 @@ static void leaf_remove_at(noctBroadphase *bp, octNode *leaf, uint32_t i)
     } else if (i != last) {
         noct_leaf_put(bp, c, i, c->objs[last], back[last]);
     }
+    /* a list a quarter full moves to a smaller array, if one is free (its
+     * two halves move apart: shrink by hand) */
+    if (c->cap > bp->objs_pool.base && c->count <= c->cap / 4) {
+        uint32_t *q = noct_apool_take_free(&bp->objs_pool, c->cap / 2);
+        if (q != NULL) {
+            memcpy(q, c->objs, c->count * sizeof *q);
+            memcpy(q + c->cap / 2, c->objs + c->cap, c->count * sizeof *q);
+            noct_apool_give(&bp->objs_pool, c->objs, c->cap);
+            c->objs = q;
+            c->cap /= 2;
+        }
+    }
     ++bp->c.leaves_left;
     octNode *p = NOCT_NODE_PARENT(leaf);
     if (p != NULL && noct_cell_of(p)->distinct > 0)
@@ -423,7 +464,8 @@ static void destroy_tree(noctBroadphase *bp)
     if (bp->root == NULL)
         return;
     give_back_below(bp, bp->root);
-    bp->root_cell.count = bp->root_cell.small = 0;
+    give_lists(bp, &bp->root_cell);
+    bp->root_cell.small = 0;
     bp->root = NULL;
     for (uint32_t i = 0; i < bp->nslots; ++i) {
         bp->proxy[i].nspans = 0;
@@ -1017,12 +1059,7 @@ bool noct_bp_reshape(noctBroadphase *bp, uint32_t id, const double mlo[3], const
 void noct_bp_free_tree(noctBroadphase *bp)
 {
     destroy_tree(bp);
-    for (size_t i = 0; i < bp->nblocks; ++i) {
-        for (int k = 0; k < 8; ++k) {
-            free(bp->blocks[i]->cell[k].objs);
-            free(bp->blocks[i]->cell[k].near);
-        }
-    }
+    /* every list is back in its pool (noct_bp_fini frees them) */
     for (size_t i = 0; i < bp->nchunks; ++i)
         free(bp->chunks[i]);
     free(bp->chunks);
@@ -1031,8 +1068,6 @@ void noct_bp_free_tree(noctBroadphase *bp)
     free(bp->blocks);
     bp->blocks = bp->free_blocks = NULL;
     bp->nblocks = bp->capblocks = bp->nfree_blocks = 0;
-    free(bp->root_cell.objs);
-    free(bp->root_cell.near);
     if (bp->root_node != NULL) {
         octSwapData(bp->root_node, NULL);
         octDispose(bp->root_node);

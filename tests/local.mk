@@ -10,12 +10,14 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
+	tests/check-zero-alloc tests/check-zero-alloc-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
 	tests/check-narrowphase tests/check-narrowphase-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
+	tests/check-zero-alloc tests/check-zero-alloc-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -71,6 +73,17 @@ tests_check_alloc_efficient_SOURCES = $(tests_check_alloc_SOURCES)
 tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+# No allocation in the step once sizes settle: counts them (an
+# interposed malloc, so it skips under AddressSanitizer and valgrind).
+tests_check_zero_alloc_SOURCES = tests/check_zero_alloc.c $(test_common)
+tests_check_zero_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_zero_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_zero_alloc_efficient_SOURCES = $(tests_check_zero_alloc_SOURCES)
+tests_check_zero_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_zero_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_zero_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 # The readers: NUL bytes, read errors, read-time checks, and allocation
 # failures while reading (its own small interposed malloc).
@@ -128,7 +141,7 @@ AM_TESTS_ENVIRONMENT = \
 VALGRIND = valgrind
 check-valgrind: $(check_PROGRAMS)
 	@set -e; for t in $(check_PROGRAMS); do \
-	  case $$t in tests/check-alloc*) continue ;; esac; \
+	  case $$t in tests/check-alloc*|tests/check-zero-alloc*) continue ;; esac; \
 	  echo "valgrind $$t"; \
 	  CK_FORK=no CK_EXCLUDE_TAGS='death slow' $(LIBTOOL) --mode=execute \
 	    $(VALGRIND) -q --error-exitcode=1 --leak-check=full \

@@ -1,0 +1,345 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * No allocation in the step once sizes settle (issue 17).
+ *
+ * The program defines malloc and its family, forwarding to glibc's
+ * __libc_malloc and friends, and counts the calls made while counting is
+ * on, with the caller of the first few. Each test warms a workload up,
+ * then counts the allocations of a stretch of steps, which must be none:
+ * the octree's nodes and cells come from the broadphase's pool, leaf lists
+ * and every scratch array keep their capacity. The stretches are chosen so
+ * that the trees split and merge leaves throughout (the counters prove
+ * it), so that the pool and the kept lists, not a quiet tree, are what is
+ * tested.
+ *
+ * Skipped (exit status 77) under AddressSanitizer and valgrind, which own
+ * malloc, as check-alloc is.
+ */
+#define _GNU_SOURCE /* dladdr, RTLD_DEFAULT */
+#include <check.h>
+#include <dlfcn.h>
+#include <errno.h>
+#include <malloc.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/broadphase.h>
+#include <noctree/scene.h>
+#include <noctree/world.h>
+
+#include "testutil.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#  define ZA_ASAN 1
+#elif defined(__has_feature)
+#  if __has_feature(address_sanitizer)
+#    define ZA_ASAN 1
+#  endif
+#endif
+#ifndef ZA_ASAN
+#  define ZA_ASAN 0
+#endif
+
+#if !ZA_ASAN
+
+/* ---- the counting allocator ------------------------------------------------ */
+
+static volatile int g_counting;
+static unsigned long g_allocs;
+#define MAX_CALLERS 8
+static void *g_callers[MAX_CALLERS];
+
+extern void *__libc_malloc(size_t size);
+extern void *__libc_calloc(size_t n, size_t size);
+extern void *__libc_realloc(void *p, size_t size);
+extern void __libc_free(void *p);
+extern void *__libc_memalign(size_t align, size_t size);
+extern void *__libc_valloc(size_t size);
+extern void *__libc_pvalloc(size_t size);
+
+static void count(void *caller)
+{
+    if (!g_counting)
+        return;
+    if (g_allocs < MAX_CALLERS)
+        g_callers[g_allocs] = caller;
+    ++g_allocs;
+}
+
+void *malloc(size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_malloc(size);
+}
+
+void *calloc(size_t n, size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_calloc(n, size);
+}
+
+void *realloc(void *p, size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_realloc(p, size);
+}
+
+void *reallocarray(void *p, size_t n, size_t size)
+{
+    if (size != 0 && n > SIZE_MAX / size) {
+        errno = ENOMEM;
+        return NULL;
+    }
+    count(__builtin_return_address(0));
+    return __libc_realloc(p, n * size);
+}
+
+void free(void *p)
+{
+    __libc_free(p);
+}
+
+void *memalign(size_t align, size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_memalign(align, size);
+}
+
+void *aligned_alloc(size_t align, size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_memalign(align, size);
+}
+
+int posix_memalign(void **out, size_t align, size_t size)
+{
+    if (align < sizeof(void *) || (align & (align - 1)) != 0)
+        return EINVAL;
+    count(__builtin_return_address(0));
+    void *p = __libc_memalign(align, size);
+    if (p == NULL)
+        return ENOMEM;
+    *out = p;
+    return 0;
+}
+
+void *valloc(size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_valloc(size);
+}
+
+void *pvalloc(size_t size)
+{
+    count(__builtin_return_address(0));
+    return __libc_pvalloc(size);
+}
+
+static size_t (*libc_usable_size)(void *);
+
+size_t malloc_usable_size(void *p)
+{
+    return p != NULL && libc_usable_size != NULL ? libc_usable_size(p) : 0;
+}
+
+static void counting_on(void)
+{
+    g_allocs = 0;
+    g_counting = 1;
+}
+
+/* Stop counting; print the callers of the first allocations, if any. */
+static unsigned long counting_off(const char *what)
+{
+    g_counting = 0;
+    for (unsigned long i = 0; i < g_allocs && i < MAX_CALLERS; ++i) {
+        Dl_info info;
+        if (dladdr(g_callers[i], &info) != 0 && info.dli_sname != NULL)
+            printf("%s: allocation %lu from %s+%#lx in %s\n", what, i + 1, info.dli_sname,
+                   (unsigned long)((const char *)g_callers[i] - (const char *)info.dli_saddr),
+                   info.dli_fname);
+        else if (dladdr(g_callers[i], &info) != 0)
+            printf("%s: allocation %lu from %s+%#lx (addr2line -e it)\n", what, i + 1,
+                   info.dli_fname,
+                   (unsigned long)((const char *)g_callers[i] - (const char *)info.dli_fbase));
+        else
+            printf("%s: allocation %lu from %p\n", what, i + 1, g_callers[i]);
+    }
+    return g_allocs;
+}
+
+/* ---- the workloads ----------------------------------------------------------- */
+
+#define WARM_UP 800
+#define COUNTED 200
+
+/* A SCENES.md scene at N, warmed up, then counted. */
+static void world_stretch(const char *spec, int N, bool expect_churn)
+{
+    noctScene *sc;
+    noctWorld *w;
+    noctError err;
+    ck_assert_int_eq(noctSceneFamily(spec, &sc, &err), NOCT_OK);
+    noctSceneDef(sc)->N = N;
+    ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+    for (int s = 0; s < WARM_UP; ++s)
+        ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    noctWorldCounters before, after;
+    noctWorldGetCounters(w, &before);
+    counting_on();
+    noctStatus st = NOCT_OK;
+    for (int s = 0; s < COUNTED && st == NOCT_OK; ++s)
+        st = noctWorldStep(w, &err);
+    const unsigned long n = counting_off(spec);
+    ck_assert_int_eq(st, NOCT_OK);
+    noctWorldGetCounters(w, &after);
+    printf("%s, N = %d: %d steps, %lu allocations; %llu splits, %llu merges, %llu leaves "
+           "entered, %llu colliding pairs\n",
+           spec, N, COUNTED, n, (unsigned long long)(after.splits - before.splits),
+           (unsigned long long)(after.merges - before.merges),
+           (unsigned long long)(after.leaves_entered - before.leaves_entered),
+           (unsigned long long)(after.colliding_pairs - before.colliding_pairs));
+    ck_assert_uint_gt(after.colliding_pairs, before.colliding_pairs);
+    ck_assert_uint_gt(after.leaves_entered, before.leaves_entered);
+    if (expect_churn) {
+        ck_assert_uint_gt(after.splits, before.splits);
+        ck_assert_uint_gt(after.merges, before.merges);
+    }
+    ck_assert_uint_eq(n, 0);
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+}
+
+START_TEST(gas_steps)
+{
+    world_stretch("gas:2000", 10, true);
+}
+END_TEST
+
+START_TEST(splitting_steps)
+{
+    /* at N = 3 the gas's leaves split and merge all the time */
+    world_stretch("gas:2000", 3, true);
+}
+END_TEST
+
+static uint64_t rng = 0x9e3779b97f4a7c15u;
+static double uniform(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (double)(rng >> 11) * 0x1p-53;
+}
+
+/* The public broadphase: boxes bouncing in a cube, moved and searched each
+ * frame, some growing and shrinking. */
+START_TEST(broadphase_frames)
+{
+    enum { n = 1500 };
+    static double lo[n][3], hi[n][3], v[n][3];
+    static noctProxyId id[n];
+    const double side = 40;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = 2;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    for (int i = 0; i < n; ++i) {
+        const double s = 0.2 + 0.6 * uniform();
+        for (int k = 0; k < 3; ++k) {
+            lo[i][k] = (side - s) * uniform();
+            hi[i][k] = lo[i][k] + s;
+            v[i][k] = 0.2 * (uniform() - 0.5);
+        }
+        ck_assert_int_eq(noctBroadphaseAdd(bp, lo[i], hi[i], NULL, NOCT_FILTER_ALL,
+                                           NOCT_FILTER_ALL, &id[i], &err),
+                         NOCT_OK);
+    }
+    noctBroadphaseCounters before, after;
+    size_t pairs = 0;
+    unsigned long allocs = 0;
+    int failures = 0;
+    for (int f = 0; f < WARM_UP + COUNTED; ++f) {
+        if (f == WARM_UP) {
+            noctBroadphaseGetCounters(bp, &before);
+            counting_on();
+        }
+        for (int i = 0; i < n; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                if ((lo[i][k] + v[i][k] < 0) || (hi[i][k] + v[i][k] > side))
+                    v[i][k] = -v[i][k];
+                lo[i][k] += v[i][k];
+                hi[i][k] += v[i][k];
+            }
+            if (i % 97 == f % 97) /* now and then a box changes size */
+                hi[i][0] = lo[i][0] + (hi[i][0] - lo[i][0] < 0.5 ? 0.8 : 0.3);
+            /* (no ck_assert while counting: Check's bookkeeping allocates) */
+            failures += noctBroadphaseMove(bp, id[i], lo[i], hi[i], &err) != NOCT_OK;
+        }
+        failures += noctBroadphaseUpdatePairs(bp, &err) != NOCT_OK;
+        const noctProxyPair *p;
+        if (f >= WARM_UP)
+            pairs += noctBroadphasePairs(bp, &p);
+    }
+    allocs = counting_off("broadphase");
+    ck_assert_int_eq(failures, 0);
+    noctBroadphaseGetCounters(bp, &after);
+    printf("broadphase, N = 2: %d frames, %lu allocations; %llu splits, %llu merges, %zu "
+           "pairs\n",
+           COUNTED, allocs, (unsigned long long)(after.splits - before.splits),
+           (unsigned long long)(after.merges - before.merges), pairs);
+    ck_assert_uint_gt(after.splits, before.splits);
+    ck_assert_uint_gt(after.merges, before.merges);
+    ck_assert_uint_gt(pairs, 0);
+    ck_assert_uint_eq(allocs, 0);
+    ck_assert_int_eq(noctBroadphaseValidate(bp, &err), NOCT_OK);
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+/* Why the test cannot run here, or NULL. */
+static const char *skip_reason(void)
+{
+    const char *pre = getenv("LD_PRELOAD");
+    if (pre != NULL && strstr(pre, "vgpreload") != NULL)
+        return "running under valgrind, which replaces malloc";
+    void *(*volatile alloc)(size_t) = malloc;
+    counting_on();
+    void *p = alloc(24);
+    const unsigned long n = g_allocs;
+    g_counting = 0;
+    free(p);
+    return n == 1 ? NULL
+                  : "malloc does not reach the test's allocator (another allocator is "
+                    "interposed)";
+}
+
+#endif /* !ZA_ASAN */
+
+int main(void)
+{
+#if ZA_ASAN
+    puts("skipped: built with AddressSanitizer, which owns malloc");
+    return 77;
+#else
+    void *sym = dlsym(RTLD_NEXT, "malloc_usable_size");
+    memcpy(&libc_usable_size, &sym, sizeof sym);
+    const char *why = skip_reason();
+    if (why != NULL) {
+        printf("skipped: %s\n", why);
+        return 77;
+    }
+    Suite *s = suite_create("zero-alloc");
+    TCase *tc = tcase_create("steps");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, gas_steps);
+    tcase_add_test(tc, splitting_steps);
+    tcase_add_test(tc, broadphase_frames);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+#endif
+}
