@@ -11,6 +11,7 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
 	tests/check-zero-alloc tests/check-zero-alloc-efficient \
+	tests/check-broadphase tests/check-broadphase-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
@@ -18,6 +19,7 @@ TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-predicates tests/check-world tests/check-world-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
 	tests/check-zero-alloc tests/check-zero-alloc-efficient \
+	tests/check-broadphase tests/check-broadphase-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -73,6 +75,15 @@ tests_check_alloc_efficient_SOURCES = $(tests_check_alloc_SOURCES)
 tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
+tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_broadphase_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_broadphase_efficient_SOURCES = $(tests_check_broadphase_SOURCES)
+tests_check_broadphase_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_broadphase_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_broadphase_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 # No allocation in the step once sizes settle: counts them (an
 # interposed malloc, so it skips under AddressSanitizer and valgrind).

@@ -1,0 +1,664 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The broadphase on its own (broadphase.h), against brute force: random
+ * boxes of every size, moved, grown, added and removed, with filters; after
+ * every batch of moves the pairs must be exactly those of an all-pairs test
+ * of the closed boxes, sorted, and the validation walk must hold; queries
+ * against a scan of every box; leaves against the boxes that overlap them;
+ * bad input reported by status with nothing changed.
+ */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/broadphase.h>
+#include <noctree/mesh.h>
+#include <noctree/octree.h>
+#include <noctree/world.h>
+
+#include "testutil.h"
+
+static uint64_t rng;
+static double uniform(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (double)(rng >> 11) * 0x1p-53;
+}
+
+#define MAXP 600
+
+/* The test's own record of every proxy. */
+typedef struct model {
+    int n;
+    bool alive[MAXP];
+    noctProxyId id[MAXP];
+    double lo[MAXP][3], hi[MAXP][3];
+    uint64_t cat[MAXP], mask[MAXP];
+} model;
+
+static bool boxes_meet(const double alo[3], const double ahi[3], const double blo[3],
+                       const double bhi[3])
+{
+    for (int k = 0; k < 3; ++k)
+        if (ahi[k] < blo[k] || bhi[k] < alo[k])
+            return false;
+    return true;
+}
+
+/* The broadphase's pairs are exactly the brute force's, in order. */
+static void check_pairs(noctBroadphase *bp, const model *m)
+{
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    ck_assert_msg(noctBroadphaseValidate(bp, &err) == NOCT_OK, "invalid: %s", err.message);
+    const noctProxyPair *p;
+    const size_t n = noctBroadphasePairs(bp, &p);
+    /* model slots in proxy index order */
+    static int by_index[MAXP];
+    int live = 0;
+    for (int i = 0; i < m->n; ++i)
+        if (m->alive[i])
+            by_index[live++] = i;
+    for (int i = 1; i < live; ++i) /* insertion sort by proxy index */
+        for (int j = i; j > 0 && m->id[by_index[j - 1]].index > m->id[by_index[j]].index; --j) {
+            const int t = by_index[j];
+            by_index[j] = by_index[j - 1];
+            by_index[j - 1] = t;
+        }
+    size_t k = 0;
+    for (int x = 0; x < live; ++x)
+        for (int y = x + 1; y < live; ++y) {
+            const int a = by_index[x], b = by_index[y];
+            if (!boxes_meet(m->lo[a], m->hi[a], m->lo[b], m->hi[b]) ||
+                !(m->cat[a] & m->mask[b]) || !(m->cat[b] & m->mask[a]))
+                continue;
+            ck_assert_msg(k < n, "pair (%u, %u) missing: only %zu pairs", m->id[a].index,
+                          m->id[b].index, n);
+            ck_assert_msg(p[k].a.index == m->id[a].index && p[k].b.index == m->id[b].index,
+                          "pair %zu is (%u, %u), expected (%u, %u)", k, p[k].a.index,
+                          p[k].b.index, m->id[a].index, m->id[b].index);
+            ck_assert_uint_eq(p[k].a.generation, m->id[a].generation);
+            ck_assert_uint_eq(p[k].b.generation, m->id[b].generation);
+            ++k;
+        }
+    ck_assert_msg(k == n, "%zu pairs found, %zu expected", n, k);
+}
+
+/* A random box: tiny to larger than the scene, some flat or points. */
+static void random_box(double lo[3], double hi[3], double scene)
+{
+    const double u = uniform();
+    const double size = u < 0.1 ? 1e-6 : u < 0.8 ? 0.5 * uniform() : u < 0.95 ? 5 * uniform()
+                                                                      : 2 * scene * uniform();
+    const bool cluster = uniform() < 0.2;
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = cluster ? 1 + 0.5 * uniform() : scene * uniform();
+        hi[k] = lo[k] + (uniform() < 0.05 ? 0 : size * (0.3 + uniform()));
+    }
+}
+
+static uint64_t random_bits(void)
+{
+    const double u = uniform();
+    return u < 0.7 ? NOCT_FILTER_ALL : (uint64_t)1 << (int)(4 * uniform());
+}
+
+static void add_one(noctBroadphase *bp, model *m, int i, double scene)
+{
+    noctError err;
+    random_box(m->lo[i], m->hi[i], scene);
+    m->cat[i] = random_bits();
+    m->mask[i] = random_bits();
+    ck_assert_int_eq(noctBroadphaseAdd(bp, m->lo[i], m->hi[i], &m->alive[i], m->cat[i],
+                                       m->mask[i], &m->id[i], &err),
+                     NOCT_OK);
+    m->alive[i] = true;
+}
+
+/* Move proxy i: a little, far, out of the scene, or to a new size. */
+static void move_one(noctBroadphase *bp, model *m, int i, double scene)
+{
+    noctError err;
+    const double u = uniform();
+    if (u < 0.05) {
+        random_box(m->lo[i], m->hi[i], scene);
+    } else if (u < 0.08) {
+        for (int k = 0; k < 3; ++k) { /* far away, out of the root */
+            const double d = scene * (4 + 8 * uniform()) * (uniform() < 0.5 ? -1 : 1);
+            m->lo[i][k] += d;
+            m->hi[i][k] += d;
+        }
+    } else if (u < 0.15) {
+        for (int k = 0; k < 3; ++k) /* a new size */
+            m->hi[i][k] = m->lo[i][k] + (m->hi[i][k] - m->lo[i][k]) * (0.25 + 2 * uniform());
+    } else {
+        for (int k = 0; k < 3; ++k) {
+            const double d = 0.2 * (uniform() - 0.5);
+            m->lo[i][k] += d;
+            m->hi[i][k] += d;
+        }
+    }
+    ck_assert_int_eq(noctBroadphaseMove(bp, m->id[i], m->lo[i], m->hi[i], &err), NOCT_OK);
+}
+
+static const int CONFIG_N[] = {1, 2, 10, NOCT_N_EXHAUSTIVE};
+static const int CONFIG_DEPTH[] = {3, 10, 40};
+
+/* Random scenes in every configuration, checked after every batch. */
+START_TEST(pairs_against_brute_force)
+{
+    const int N = CONFIG_N[_i % 4], depth = CONFIG_DEPTH[_i / 4];
+    rng = 0x1234567u + (uint64_t)_i;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = N;
+    def.max_depth = depth;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    const double scene = 20;
+    m.n = 250;
+    for (int i = 0; i < m.n; ++i)
+        add_one(bp, &m, i, scene);
+    check_pairs(bp, &m);
+    for (int batch = 0; batch < 30; ++batch) {
+        for (int i = 0; i < m.n; ++i) {
+            if (!m.alive[i] || i % 5 == 0) /* a fifth never move */
+                continue;
+            if (uniform() < 0.5)
+                move_one(bp, &m, i, scene);
+        }
+        /* removals and additions, slots reused */
+        for (int r = 0; r < 5; ++r) {
+            const int i = 1 + (int)(uniform() * (m.n - 1));
+            if (m.alive[i]) {
+                const noctProxyId old = m.id[i];
+                ck_assert_int_eq(noctBroadphaseRemove(bp, old), NOCT_OK);
+                m.alive[i] = false;
+                ck_assert_int_eq(noctBroadphaseRemove(bp, old), NOCT_ERR_INVALID);
+                ck_assert_int_eq(noctBroadphaseMove(bp, old, m.lo[i], m.hi[i], NULL),
+                                 NOCT_ERR_INVALID);
+                ck_assert_int_eq(noctBroadphaseSetFilter(bp, old, 1, 1), NOCT_ERR_INVALID);
+                ck_assert_int_eq(noctBroadphaseProxy(bp, old, NULL, NULL, NULL, NULL, NULL),
+                                 NOCT_ERR_INVALID);
+            } else {
+                add_one(bp, &m, i, scene);
+            }
+        }
+        if (batch % 3 == 0) { /* filters change */
+            const int i = (int)(uniform() * m.n);
+            if (m.alive[i]) {
+                m.cat[i] = random_bits();
+                m.mask[i] = random_bits();
+                ck_assert_int_eq(noctBroadphaseSetFilter(bp, m.id[i], m.cat[i], m.mask[i]),
+                                 NOCT_OK);
+            }
+        }
+        check_pairs(bp, &m);
+        size_t live = 0;
+        for (int i = 0; i < m.n; ++i)
+            live += m.alive[i];
+        ck_assert_uint_eq(noctBroadphaseProxyCount(bp), live);
+    }
+    /* single moves, each checked */
+    for (int t = 0; t < 40; ++t) {
+        const int i = (int)(uniform() * m.n);
+        if (m.alive[i]) {
+            move_one(bp, &m, i, scene);
+            check_pairs(bp, &m);
+        }
+    }
+    /* what a proxy holds */
+    for (int i = 0; i < m.n; ++i)
+        if (m.alive[i]) {
+            double lo[3], hi[3];
+            void *user;
+            uint64_t cat, mask;
+            ck_assert_int_eq(noctBroadphaseProxy(bp, m.id[i], lo, hi, &user, &cat, &mask),
+                             NOCT_OK);
+            ck_assert(memcmp(lo, m.lo[i], sizeof lo) == 0 && memcmp(hi, m.hi[i], sizeof hi) == 0);
+            ck_assert_ptr_eq(user, &m.alive[i]);
+            ck_assert(cat == m.cat[i] && mask == m.mask[i]);
+        }
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+/* ---- queries ---------------------------------------------------------------- */
+
+typedef struct seen {
+    int calls;
+    int stop_after;
+    uint32_t idx[MAXP];
+    double t[MAXP];
+    double clip; /* ray: the fraction to return */
+} seen;
+
+static bool on_proxy(void *ctx, noctProxyId id, void *user)
+{
+    (void)user;
+    seen *s = ctx;
+    s->idx[s->calls++] = id.index;
+    return s->calls != s->stop_after;
+}
+
+static double on_ray(void *ctx, noctProxyId id, void *user, double t)
+{
+    (void)user;
+    seen *s = ctx;
+    s->idx[s->calls] = id.index;
+    s->t[s->calls++] = t;
+    return s->calls == s->stop_after ? s->clip : 1;
+}
+
+/* The fraction at which the segment o + t d, t in [0, 1], enters the
+ * closed box, or -1: a slab test, written here apart from the library. */
+static double slab_enter(const double o[3], const double d[3], const double lo[3],
+                         const double hi[3])
+{
+    double t0 = 0, t1 = 1;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0) {
+            if (o[k] < lo[k] || o[k] > hi[k])
+                return -1;
+            continue;
+        }
+        double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
+        if (a > b) {
+            const double x = a;
+            a = b;
+            b = x;
+        }
+        t0 = a > t0 ? a : t0;
+        t1 = b < t1 ? b : t1;
+        if (t0 > t1)
+            return -1;
+    }
+    return t0;
+}
+
+static int cmp_u32(const void *x, const void *y)
+{
+    const uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
+    return (a > b) - (a < b);
+}
+
+START_TEST(queries_against_brute_force)
+{
+    rng = 0xfeedu + (uint64_t)_i;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = _i == 0 ? 2 : 10;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.n = 300;
+    for (int i = 0; i < m.n; ++i)
+        add_one(bp, &m, i, 20);
+    for (int i = 0; i < m.n; ++i)
+        if (i % 3 == 0)
+            move_one(bp, &m, i, 20);
+    static seen s;
+    for (int q = 0; q < 60; ++q) {
+        double lo[3], hi[3];
+        random_box(lo, hi, 20);
+        const noctQueryFilter f = {random_bits(), random_bits()};
+        memset(&s, 0, sizeof s);
+        s.stop_after = -1;
+        ck_assert_int_eq(noctBroadphaseQueryBox(bp, lo, hi, f, on_proxy, &s), NOCT_OK);
+        static uint32_t want[MAXP];
+        int nw = 0;
+        for (int i = 0; i < m.n; ++i)
+            if (m.alive[i] && boxes_meet(lo, hi, m.lo[i], m.hi[i]) && (m.cat[i] & f.mask) &&
+                (f.category & m.mask[i]))
+                want[nw++] = m.id[i].index;
+        qsort(want, (size_t)nw, sizeof *want, cmp_u32);
+        qsort(s.idx, (size_t)s.calls, sizeof *s.idx, cmp_u32);
+        ck_assert_int_eq(s.calls, nw); /* each once */
+        ck_assert(memcmp(want, s.idx, (size_t)nw * sizeof *want) == 0);
+        /* the same as a point query at a corner of a box */
+        const double *pt = m.lo[q % m.n];
+        memset(&s, 0, sizeof s);
+        s.stop_after = -1;
+        ck_assert_int_eq(noctBroadphaseQueryPoint(bp, pt, noctDefaultQueryFilter(), on_proxy, &s),
+                         NOCT_OK);
+        nw = 0;
+        for (int i = 0; i < m.n; ++i)
+            if (m.alive[i] && boxes_meet(pt, pt, m.lo[i], m.hi[i]))
+                ++nw;
+        ck_assert_int_eq(s.calls, nw);
+        ck_assert_int_ge(nw, 1); /* its own box */
+        /* early stop */
+        memset(&s, 0, sizeof s);
+        s.stop_after = 1;
+        ck_assert_int_eq(noctBroadphaseQueryPoint(bp, pt, noctDefaultQueryFilter(), on_proxy, &s),
+                         NOCT_OK);
+        ck_assert_int_eq(s.calls, 1);
+    }
+    /* an infinite box reports every proxy */
+    const double inf[3] = {INFINITY, INFINITY, INFINITY}, ninf[3] = {-INFINITY, -INFINITY,
+                                                                     -INFINITY};
+    memset(&s, 0, sizeof s);
+    s.stop_after = -1;
+    ck_assert_int_eq(noctBroadphaseQueryBox(bp, ninf, inf, noctDefaultQueryFilter(), on_proxy, &s),
+                     NOCT_OK);
+    ck_assert_int_eq(s.calls, (int)noctBroadphaseProxyCount(bp));
+    /* rays: the set, the order, clipping */
+    for (int q = 0; q < 60; ++q) {
+        double o[3], d[3];
+        for (int k = 0; k < 3; ++k) {
+            o[k] = 20 * uniform();
+            d[k] = q % 7 == 0 && k == 1 ? 0 : 30 * (uniform() - 0.5);
+        }
+        memset(&s, 0, sizeof s);
+        s.stop_after = -1;
+        ck_assert_int_eq(noctBroadphaseRayCast(bp, o, d, noctDefaultQueryFilter(), on_ray, &s),
+                         NOCT_OK);
+        int nw = 0;
+        for (int i = 0; i < m.n; ++i)
+            if (m.alive[i] && slab_enter(o, d, m.lo[i], m.hi[i]) >= 0)
+                ++nw;
+        ck_assert_int_eq(s.calls, nw);
+        for (int c = 0; c < s.calls; ++c) {
+            int i = 0;
+            while (!(m.alive[i] && m.id[i].index == s.idx[c]))
+                ++i;
+            ck_assert(s.t[c] == slab_enter(o, d, m.lo[i], m.hi[i]));
+            if (c > 0)
+                ck_assert(s.t[c - 1] < s.t[c] ||
+                          (s.t[c - 1] == s.t[c] && s.idx[c - 1] < s.idx[c]));
+        }
+        if (s.calls >= 3) {
+            /* clip at the second hit's t: the third and later are reported
+             * only if they enter at that t too */
+            const double clip = s.t[1];
+            int expect = 0;
+            for (int c = 0; c < s.calls; ++c)
+                expect += c < 2 || s.t[c] <= clip;
+            memset(&s, 0, sizeof s);
+            s.stop_after = 2;
+            s.clip = clip;
+            if (clip > 0) {
+                ck_assert_int_eq(
+                    noctBroadphaseRayCast(bp, o, d, noctDefaultQueryFilter(), on_ray, &s),
+                    NOCT_OK);
+                ck_assert_int_eq(s.calls, expect);
+            }
+            /* 0 stops */
+            memset(&s, 0, sizeof s);
+            s.stop_after = 1;
+            s.clip = 0;
+            ck_assert_int_eq(noctBroadphaseRayCast(bp, o, d, noctDefaultQueryFilter(), on_ray, &s),
+                             NOCT_OK);
+            ck_assert_int_eq(s.calls, 1);
+        }
+    }
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+static bool on_pair(void *ctx, noctProxyId a, void *ua, noctProxyId b, void *ub)
+{
+    (void)ua;
+    (void)ub;
+    seen *s = ctx;
+    ck_assert_uint_lt(a.index, b.index);
+    s->idx[s->calls++] = a.index;
+    return s->calls != s->stop_after;
+}
+
+/* ---- leaves, counters, the fast path ----------------------------------------------- */
+
+typedef struct walk {
+    const noctBroadphase *bp;
+    const model *m;
+    uint64_t nodes, leaves;
+} walk;
+
+static void walk_tree(walk *w, octNode *n)
+{
+    ++w->nodes;
+    if (octIsSplit(n)) {
+        ck_assert_uint_eq(noctBroadphaseCell(w->bp, n, NULL, NULL, NULL, 0), 0);
+        for (int i = 0; i < 8; ++i)
+            walk_tree(w, octChild(n, (octDirection)(OCT_LDB + i)));
+        return;
+    }
+    ++w->leaves;
+    double lo[3], size;
+    static noctProxyId ids[MAXP];
+    const size_t n_in = noctBroadphaseCell(w->bp, n, lo, &size, ids, MAXP);
+    const double hi[3] = {lo[0] + size, lo[1] + size, lo[2] + size};
+    size_t want = 0;
+    for (int i = 0; i < w->m->n; ++i)
+        if (w->m->alive[i] && boxes_meet(lo, hi, w->m->lo[i], w->m->hi[i])) {
+            ++want;
+            bool found = false;
+            for (size_t j = 0; j < n_in; ++j)
+                found = found || (ids[j].index == w->m->id[i].index &&
+                                  ids[j].generation == w->m->id[i].generation);
+            ck_assert_msg(found, "proxy %u overlaps a leaf that does not list it",
+                          w->m->id[i].index);
+        }
+    ck_assert_uint_eq(n_in, want);
+}
+
+START_TEST(leaves_and_counters)
+{
+    rng = 77;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = 2;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    ck_assert_ptr_null(noctBroadphaseRoot(bp));
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.n = 200;
+    for (int i = 0; i < m.n; ++i)
+        add_one(bp, &m, i, 10);
+    for (int round = 0; round < 3; ++round) {
+        walk w = {bp, &m, 0, 0};
+        walk_tree(&w, noctBroadphaseRoot(bp));
+        noctBroadphaseCounters c;
+        noctBroadphaseGetCounters(bp, &c);
+        ck_assert_uint_eq(c.nodes, w.nodes);
+        ck_assert_uint_eq(c.leaves, w.leaves);
+        ck_assert_uint_eq(c.proxies, noctBroadphaseProxyCount(bp));
+        ck_assert_uint_eq(c.leaves, 1 + 7 * (c.nodes - c.leaves)); /* 8 children each */
+        for (int i = 0; i < m.n; ++i)
+            move_one(bp, &m, i, 10);
+    }
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+START_TEST(fast_path_and_pair_callbacks)
+{
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = 1;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    /* a row of small boxes 1 apart, each 0.1 wide: the root splits */
+    noctProxyId id[16];
+    for (int i = 0; i < 16; ++i) {
+        const double lo[3] = {i, 0.45, 0.45}, hi[3] = {i + 0.1, 0.55, 0.55};
+        ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, NOCT_FILTER_ALL, NOCT_FILTER_ALL,
+                                           &id[i], &err),
+                         NOCT_OK);
+    }
+    noctBroadphaseCounters a, b;
+    noctBroadphaseGetCounters(bp, &a);
+    ck_assert_uint_gt(a.splits, 0);
+    /* a tiny move inside the leaf: the fast test settles it */
+    const double lo[3] = {5.001, 0.45, 0.45}, hi[3] = {5.101, 0.55, 0.55};
+    ck_assert_int_eq(noctBroadphaseMove(bp, id[5], lo, hi, &err), NOCT_OK);
+    noctBroadphaseGetCounters(bp, &b);
+    ck_assert_uint_eq(b.moves, a.moves + 1);
+    ck_assert_uint_eq(b.inside_fast, a.inside_fast + 1);
+    ck_assert_uint_eq(b.leaves_entered, a.leaves_entered);
+    /* overlapping chains: i with i + 1 when they are 0.5 wide */
+    for (int i = 0; i < 16; ++i) {
+        const double l[3] = {i, 0, 0}, h[3] = {i + 1, 1, 1};
+        ck_assert_int_eq(noctBroadphaseMove(bp, id[i], l, h, &err), NOCT_OK);
+    }
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    const noctProxyPair *p;
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &p), 15); /* touching faces count */
+    for (size_t i = 0; i < 15; ++i)
+        ck_assert(p[i].a.index == id[i].index && p[i].b.index == id[i + 1].index);
+    static seen s;
+    memset(&s, 0, sizeof s);
+    s.stop_after = -1;
+    ck_assert_uint_eq(noctBroadphaseForEachPair(bp, on_pair, &s), 15);
+    ck_assert_int_eq(s.calls, 15);
+    for (int i = 0; i < 15; ++i)
+        ck_assert_uint_eq(s.idx[i], id[i].index);
+    memset(&s, 0, sizeof s);
+    s.stop_after = 4;
+    ck_assert_uint_eq(noctBroadphaseForEachPair(bp, on_pair, &s), 4);
+    ck_assert_int_eq(s.calls, 4);
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+/* ---- bad input ------------------------------------------------------------------------ */
+
+START_TEST(bad_input_changes_nothing)
+{
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    noctBroadphase *bp;
+    noctError err;
+    def.N = 0;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_null(bp);
+    def = noctDefaultBroadphaseDef();
+    def.max_depth = 41;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
+    def.max_depth = 0;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
+    def = noctDefaultBroadphaseDef();
+    def.bounds_lo[1] = NAN;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_NONFINITE);
+    def = noctDefaultBroadphaseDef();
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    noctProxyId a, b;
+    ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, NOCT_FILTER_ALL, NOCT_FILTER_ALL, &a,
+                                       &err),
+                     NOCT_OK);
+    ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, NOCT_FILTER_ALL, NOCT_FILTER_ALL, &b,
+                                       &err),
+                     NOCT_OK);
+    const double nan3[3] = {0, NAN, 0}, inf3[3] = {INFINITY, 1, 1}, big[3] = {0, 0, 1e101},
+                 low[3] = {2, 0, 0};
+    struct {
+        const double *lo, *hi;
+        noctStatus st;
+    } bad[] = {{nan3, hi, NOCT_ERR_NONFINITE},
+               {lo, inf3, NOCT_ERR_NONFINITE},
+               {low, hi, NOCT_ERR_INVALID},
+               {lo, big, NOCT_ERR_TOO_LARGE}};
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; ++i) {
+        noctProxyId c = {7, 7};
+        ck_assert_int_eq(noctBroadphaseAdd(bp, bad[i].lo, bad[i].hi, NULL, NOCT_FILTER_ALL,
+                                           NOCT_FILTER_ALL, &c, &err),
+                         bad[i].st);
+        ck_assert_uint_eq(c.index, 0);
+        ck_assert_uint_eq(c.generation, 0);
+        ck_assert_int_eq(noctBroadphaseMove(bp, a, bad[i].lo, bad[i].hi, &err), bad[i].st);
+        ck_assert_uint_eq(noctBroadphaseProxyCount(bp), 2);
+        double plo[3], phi[3];
+        ck_assert_int_eq(noctBroadphaseProxy(bp, a, plo, phi, NULL, NULL, NULL), NOCT_OK);
+        ck_assert(memcmp(plo, lo, sizeof lo) == 0 && memcmp(phi, hi, sizeof hi) == 0);
+    }
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    const noctProxyPair *p;
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &p), 1);
+    ck_assert_int_eq(noctBroadphaseQueryBox(bp, nan3, hi, noctDefaultQueryFilter(), on_proxy,
+                                            NULL),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctBroadphaseQueryBox(bp, low, hi, noctDefaultQueryFilter(), on_proxy,
+                                            NULL),
+                     NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctBroadphaseQueryPoint(bp, inf3, noctDefaultQueryFilter(), on_proxy,
+                                              NULL),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctBroadphaseRayCast(bp, lo, nan3, noctDefaultQueryFilter(), on_ray, NULL),
+                     NOCT_ERR_NONFINITE);
+    /* removal drops the pair from the list */
+    ck_assert_int_eq(noctBroadphaseRemove(bp, b), NOCT_OK);
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &p), 0);
+    noctBroadphaseDestroy(bp);
+    noctBroadphaseDestroy(NULL);
+}
+END_TEST
+
+/* ---- the world's broadphase ------------------------------------------------------ */
+
+START_TEST(world_broadphase_is_the_objects)
+{
+    noctWorldDef def = noctDefaultWorldDef();
+    def.effects |= NOCT_EFFECT_WALLS;
+    const double side = noctGasContainerSize(500);
+    for (int k = 0; k < 3; ++k) {
+        def.walls_lo[k] = 0;
+        def.walls_hi[k] = side;
+    }
+    noctWorld *w;
+    noctError err;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldAddGas(w, 500, &err), NOCT_OK);
+    for (int s = 0; s < 20; ++s)
+        ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    const noctBroadphase *bp = noctWorldBroadphase(w);
+    ck_assert_uint_eq(noctBroadphaseProxyCount(bp), 500);
+    ck_assert_int_eq(noctBroadphaseValidate(bp, &err), NOCT_OK);
+    /* every object's handle is its proxy's, with the same box */
+    static seen s;
+    memset(&s, 0, sizeof s);
+    s.stop_after = -1;
+    const double lo[3] = {0, 0, 0}, hi[3] = {side / 2, side / 2, side / 2};
+    ck_assert_int_eq(noctBroadphaseQueryBox(bp, lo, hi, noctDefaultQueryFilter(), on_proxy, &s),
+                     NOCT_OK);
+    int want = 0;
+    for (uint32_t i = 0; i < 500; ++i) {
+        noctObjectId id = {i, 1};
+        double olo[3], ohi[3], plo[3], phi[3];
+        ck_assert_int_eq(noctWorldObjectBox(w, id, olo, ohi), NOCT_OK);
+        ck_assert_int_eq(noctBroadphaseProxy(bp, id, plo, phi, NULL, NULL, NULL), NOCT_OK);
+        ck_assert(memcmp(olo, plo, sizeof olo) == 0 && memcmp(ohi, phi, sizeof ohi) == 0);
+        want += boxes_meet(lo, hi, olo, ohi);
+    }
+    ck_assert_int_eq(s.calls, want);
+    ck_assert_int_gt(want, 0);
+    noctWorldDestroy(w);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("broadphase");
+    TCase *tc = tcase_create("brute force");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, pairs_against_brute_force, 0, 12);
+    tcase_add_loop_test(tc, queries_against_brute_force, 0, 2);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("tree");
+    tcase_add_test(tc, leaves_and_counters);
+    tcase_add_test(tc, fast_path_and_pair_callbacks);
+    tcase_add_test(tc, world_broadphase_is_the_objects);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("bad input");
+    tcase_add_test(tc, bad_input_changes_nothing);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+}
