@@ -6,6 +6,10 @@ noinst_PROGRAMS += docs/examples/octree-demo
 docs_examples_octree_demo_SOURCES = docs/examples/octree-demo.c
 docs_examples_octree_demo_LDADD = lib/libnoctree.la
 
+noinst_PROGRAMS += docs/examples/broadphase-demo
+docs_examples_broadphase_demo_SOURCES = docs/examples/broadphase-demo.c
+docs_examples_broadphase_demo_LDADD = lib/libnoctree.la
+
 EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md \
 	docs/doxygen-header.html $(docs_results)
 docs_results = \

@@ -174,6 +174,12 @@ installcheck-local:
 	    -o "$$tmp/demo-$$mod"; \
 	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/demo-$$mod" > "$$tmp/out"; \
 	  grep -q 'OMEGA 0' "$$tmp/out"; \
+	  echo "cc broadphase-demo.c $$flags"; \
+	  $(CC) -std=c11 $(srcdir)/docs/examples/broadphase-demo.c $$flags \
+	    -o "$$tmp/bp-$$mod"; \
+	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/bp-$$mod" > "$$tmp/out"; \
+	  grep -q '^pairs total 31$$' "$$tmp/out"; \
+	  grep -q '^ray: first crate A$$' "$$tmp/out"; \
 	done; \
 	NM='$(NM)' top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
 	  $(SHELL) $(srcdir)/tests/exports.sh '$(DESTDIR)$(libdir)'

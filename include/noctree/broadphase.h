@@ -141,6 +141,10 @@ NOCT_API noctBroadphaseDef noctDefaultBroadphaseDef(void);
  *       N < 1 or max_depth outside 1..40, #NOCT_ERR_NONFINITE for a bounds
  *       hint that is not finite, #NOCT_ERR_TOO_LARGE for one beyond
  *       #NOCT_MAX_COORDINATE, #NOCT_ERR_NOMEM.
+ * @param def the parameters.
+ * @param bp the broadphase.
+ * @param err receives the details of a failure, or NULL.
+ * @return #NOCT_OK or a failure status (see @post).
  */
 NOCT_API noctStatus noctBroadphaseCreate(const noctBroadphaseDef *def, noctBroadphase **bp,
                                          noctError *err);
@@ -148,6 +152,7 @@ NOCT_API noctStatus noctBroadphaseCreate(const noctBroadphaseDef *def, noctBroad
 /**
  * @brief Free a broadphase and its tree. NULL is allowed.
  * @post bp and every handle and octNode it gave are invalid.
+ * @param bp the broadphase.
  */
 NOCT_API void noctBroadphaseDestroy(noctBroadphase *bp);
 
@@ -167,6 +172,7 @@ NOCT_API void noctBroadphaseDestroy(noctBroadphase *bp);
  *       #NOCT_ERR_INVALID (lo > hi on an axis), #NOCT_ERR_TOO_LARGE (a
  *       coordinate beyond #NOCT_MAX_COORDINATE, or 2^31 proxies),
  *       #NOCT_ERR_NOMEM.
+ * @return #NOCT_OK or a failure status (see @post).
  */
 NOCT_API noctStatus noctBroadphaseAdd(noctBroadphase *bp, const double lo[3],
                                       const double hi[3], void *user_data, uint64_t category,
@@ -180,6 +186,12 @@ NOCT_API noctStatus noctBroadphaseAdd(noctBroadphase *bp, const double lo[3],
  *       #NOCT_ERR_NONFINITE or #NOCT_ERR_TOO_LARGE nothing changed. On
  *       #NOCT_ERR_NOMEM the proxy keeps its old box and the tree is
  *       rebuilt before its next use.
+ * @param bp the broadphase.
+ * @param id the proxy's handle.
+ * @param lo the box's low corner.
+ * @param hi the box's high corner.
+ * @param err receives the details of a failure, or NULL.
+ * @return #NOCT_OK or a failure status (see @post).
  */
 NOCT_API noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double lo[3],
                                        const double hi[3], noctError *err);
@@ -191,6 +203,9 @@ NOCT_API noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const
  *       fail otherwise but with #NOCT_ERR_INVALID for a stale handle. The
  *       pairs of the last noctBroadphaseUpdatePairs() that named it are
  *       dropped from the list.
+ * @param bp the broadphase.
+ * @param id the proxy's handle.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
  */
 NOCT_API noctStatus noctBroadphaseRemove(noctBroadphase *bp, noctProxyId id);
 
@@ -199,6 +214,11 @@ NOCT_API noctStatus noctBroadphaseRemove(noctBroadphase *bp, noctProxyId id);
  * @pre bp != NULL
  * @post On #NOCT_OK the next noctBroadphaseUpdatePairs() filters with
  *       them; #NOCT_ERR_INVALID for a stale handle.
+ * @param bp the broadphase.
+ * @param id the proxy's handle.
+ * @param category the proxy's category bits (or where to put them).
+ * @param mask the categories it pairs with (or where to put them).
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
  */
 NOCT_API noctStatus noctBroadphaseSetFilter(noctBroadphase *bp, noctProxyId id,
                                             uint64_t category, uint64_t mask);
@@ -209,6 +229,14 @@ NOCT_API noctStatus noctBroadphaseSetFilter(noctBroadphase *bp, noctProxyId id,
  * @post On #NOCT_OK each of lo, hi, user_data, category and mask that is
  *       not NULL receives the proxy's; #NOCT_ERR_INVALID for a stale
  *       handle.
+ * @param bp the broadphase.
+ * @param id the proxy's handle.
+ * @param lo the box's low corner.
+ * @param hi the box's high corner.
+ * @param user_data the proxy's user data (or where to put it).
+ * @param category the proxy's category bits (or where to put them).
+ * @param mask the categories it pairs with (or where to put them).
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
  */
 NOCT_API noctStatus noctBroadphaseProxy(const noctBroadphase *bp, noctProxyId id, double lo[3],
                                         double hi[3], void **user_data, uint64_t *category,
@@ -217,6 +245,8 @@ NOCT_API noctStatus noctBroadphaseProxy(const noctBroadphase *bp, noctProxyId id
 /**
  * @brief The number of live proxies.
  * @pre bp != NULL
+ * @param bp the broadphase.
+ * @return the number of live proxies.
  */
 NOCT_API size_t noctBroadphaseProxyCount(const noctBroadphase *bp);
 
@@ -227,6 +257,9 @@ NOCT_API size_t noctBroadphaseProxyCount(const noctBroadphase *bp);
  *       give every pair whose closed boxes overlap and whose filters match,
  *       once, sorted by (a.index, b.index). On #NOCT_ERR_NOMEM the list is
  *       empty and the tree is rebuilt before its next use.
+ * @param bp the broadphase.
+ * @param err receives the details of a failure, or NULL.
+ * @return #NOCT_OK or #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err);
 
@@ -235,6 +268,9 @@ NOCT_API noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err
  * @pre bp != NULL && pairs != NULL
  * @post *pairs points at the sorted list, valid until the next call that
  *       changes the broadphase; returns its length.
+ * @param bp the broadphase.
+ * @param pairs receives the list.
+ * @return the number of pairs.
  */
 NOCT_API size_t noctBroadphasePairs(const noctBroadphase *bp, const noctProxyPair **pairs);
 
@@ -249,6 +285,10 @@ typedef bool noctPairFcn(void *context, noctProxyId a, void *user_a, noctProxyId
  * in order, until it returns false.
  * @pre bp != NULL && fcn != NULL; fcn does not change the broadphase.
  * @post Returns how many calls were made.
+ * @param bp the broadphase.
+ * @param fcn the function to call.
+ * @param context passed to fcn.
+ * @return the number of calls made.
  */
 NOCT_API size_t noctBroadphaseForEachPair(const noctBroadphase *bp, noctPairFcn *fcn,
                                           void *context);
@@ -260,7 +300,10 @@ typedef struct noctQueryFilter {
     uint64_t mask;     /**< The categories it reports. */
 } noctQueryFilter;
 
-/** @brief A filter that reports every proxy: both fields every bit. */
+/**
+ * @brief A filter that reports every proxy.
+ * @return a filter with both fields #NOCT_FILTER_ALL.
+ */
 NOCT_API noctQueryFilter noctDefaultQueryFilter(void);
 
 /**
@@ -278,6 +321,13 @@ typedef bool noctQueryFcn(void *context, noctProxyId id, void *user_data);
  *       until it returned false. The box may be infinite (-INFINITY to
  *       INFINITY: every proxy). Returns #NOCT_OK, or #NOCT_ERR_NONFINITE
  *       (a NaN) or #NOCT_ERR_INVALID (lo > hi) with no call made.
+ * @param bp the broadphase.
+ * @param lo the box's low corner.
+ * @param hi the box's high corner.
+ * @param filter which proxies to report.
+ * @param fcn the function to call.
+ * @param context passed to fcn.
+ * @return #NOCT_OK, #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID.
  */
 NOCT_API noctStatus noctBroadphaseQueryBox(const noctBroadphase *bp, const double lo[3],
                                            const double hi[3], noctQueryFilter filter,
@@ -289,6 +339,12 @@ NOCT_API noctStatus noctBroadphaseQueryBox(const noctBroadphase *bp, const doubl
  *      broadphase.
  * @post As noctBroadphaseQueryBox() with the box [p, p]; a p that is
  *       not finite gives #NOCT_ERR_NONFINITE.
+ * @param bp the broadphase.
+ * @param p the point.
+ * @param filter which proxies to report.
+ * @param fcn the function to call.
+ * @param context passed to fcn.
+ * @return #NOCT_OK or #NOCT_ERR_NONFINITE.
  */
 NOCT_API noctStatus noctBroadphaseQueryPoint(const noctBroadphase *bp, const double p[3],
                                              noctQueryFilter filter, noctQueryFcn *fcn,
@@ -313,6 +369,13 @@ typedef double noctRayFcn(void *context, noctProxyId id, void *user_data, double
  *       max starts at 1 and is what fcn last returned (if less); in order
  *       of t, ties in order of index. Returns #NOCT_OK, or
  *       #NOCT_ERR_NONFINITE with no call made, or #NOCT_ERR_NOMEM.
+ * @param bp the broadphase.
+ * @param origin where the segment starts.
+ * @param translation the segment, from origin to its end.
+ * @param filter which proxies to report.
+ * @param fcn the function to call.
+ * @param context passed to fcn.
+ * @return #NOCT_OK, #NOCT_ERR_NONFINITE or #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3],
                                           const double translation[3], noctQueryFilter filter,
@@ -321,6 +384,8 @@ NOCT_API noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double
 /**
  * @brief Copy the counters.
  * @pre bp != NULL && counters != NULL
+ * @param bp the broadphase.
+ * @param counters receives the counters.
  */
 NOCT_API void noctBroadphaseGetCounters(const noctBroadphase *bp,
                                         noctBroadphaseCounters *counters);
@@ -332,6 +397,9 @@ NOCT_API void noctBroadphaseGetCounters(const noctBroadphase *bp,
  * @pre bp != NULL
  * @post #NOCT_OK, or #NOCT_ERR_INVARIANT with err saying what is wrong
  *       (a bug in the library), or #NOCT_ERR_NOMEM.
+ * @param bp the broadphase.
+ * @param err receives the details of a failure, or NULL.
+ * @return #NOCT_OK, #NOCT_ERR_INVARIANT or #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctBroadphaseValidate(const noctBroadphase *bp, noctError *err);
 
@@ -342,12 +410,16 @@ NOCT_API noctStatus noctBroadphaseValidate(const noctBroadphase *bp, noctError *
  *       tree belongs to the broadphase: read it, never change it. Each
  *       node's datum is a cell that noctBroadphasePrintCell() prints and
  *       noctBroadphaseCell() reads.
+ * @param bp the broadphase.
+ * @return the root, or NULL.
  */
 NOCT_API octNode *noctBroadphaseRoot(const noctBroadphase *bp);
 
 /**
  * @brief Print a node's cell: an octItemPrinter for octPrint().
  * @pre strm != NULL && data != NULL (a datum of this broadphase's tree)
+ * @param strm the stream to print to.
+ * @param data a node's datum.
  */
 NOCT_API void noctBroadphasePrintCell(FILE *strm, const void *data);
 
@@ -357,6 +429,13 @@ NOCT_API void noctBroadphasePrintCell(FILE *strm, const void *data);
  * @post lo and size (if not NULL) receive the cube; the first max of the
  *       leaf's proxies are copied to ids. Returns how many the leaf holds
  *       (0 for an inner node).
+ * @param bp the broadphase.
+ * @param node a node of the tree.
+ * @param lo the box's low corner.
+ * @param size receives the cube's side, or NULL.
+ * @param ids receives the leaf's proxies.
+ * @param max room in ids.
+ * @return the number of proxies in the leaf; 0 for an inner node.
  */
 NOCT_API size_t noctBroadphaseCell(const noctBroadphase *bp, const octNode *node,
                                    double lo[3], double *size, noctProxyId *ids, size_t max);

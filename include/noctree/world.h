@@ -447,6 +447,8 @@ NOCT_API octNode *noctWorldRoot(const noctWorld *world);
  * objects, its counters, validation and tree. The pair list of
  * noctBroadphasePairs() is not the world's: the world's pairs are
  * noctWorldColliding().
+ * @param world the world.
+ * @return its broadphase.
  * @pre world != NULL
  * @post The pointer is valid while the world is; the broadphase changes
  *       with the world (each step, addition and removal).
