@@ -230,7 +230,8 @@ noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3
         free(rq.hit);
         return NOCT_ERR_NOMEM;
     }
-    qsort(rq.hit, rq.n, sizeof *rq.hit, cmp_hit);
+    if (rq.n > 1)
+        qsort(rq.hit, rq.n, sizeof *rq.hit, cmp_hit);
     double max = 1;
     for (size_t i = 0; i < rq.n; ++i) {
         if (i > 0 && rq.hit[i].id == rq.hit[i - 1].id && rq.hit[i].t == rq.hit[i - 1].t)
