@@ -683,7 +683,7 @@ static noctStatus validate_node(const noctBroadphase *bp, octNode *n, walk *v, n
     if (small != c->small)
         return BAD("a leaf counts %u proxies small enough to split for; they are %u",
                    c->small, small);
-    if ((int)small > bp->N && octGeneration(n) < bp->max_depth)
+    if ((int)small > bp->N && noct_may_split(bp, n))
         return BAD("a leaf at generation %d holds %u proxies it could split for (N = %d)",
                    octGeneration(n), small, bp->N);
     return NOCT_OK;

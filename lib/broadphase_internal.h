@@ -318,6 +318,35 @@ static inline bool noct_splits_for(const noct_proxy *o, double size)
            o->mhi[2] - o->mlo[2] <= h;
 }
 
+/* The finest cell, relative to its coordinates: a cell's size is at least
+ * NOCT_CELL_RESOLUTION times the largest magnitude of its corners'
+ * coordinates (2^20 ulps of them), so that far from the origin no split
+ * makes a cell whose corners round together or onto its parent's, and
+ * every corner stays exact (the root's shift has 20 bits below its half
+ * size, which is at most 2^31 of its coordinates: 20 + 31 + 1 < 53 bits).
+ * A leaf at that size stays a leaf whatever it holds, as at the maximum
+ * depth. */
+#define NOCT_CELL_RESOLUTION 0x1p-32
+
+/* The largest magnitude of a coordinate of a cube's corners. */
+static inline double noct_cube_magnitude(const double lo[3], double size)
+{
+    double m = 0;
+    for (int k = 0; k < 3; ++k)
+        m = noct_max(m, noct_max(fabs(lo[k]), fabs(lo[k] + size)));
+    return m;
+}
+
+/* May this leaf split if it holds more than N proxies it could split
+ * for: is it above the maximum depth, and are its children no finer than
+ * NOCT_CELL_RESOLUTION allows? */
+static inline bool noct_may_split(const noctBroadphase *bp, const octNode *leaf)
+{
+    const noct_cell *c = noct_cell_of(leaf);
+    return octGeneration(leaf) < bp->max_depth &&
+           c->size / 2 >= NOCT_CELL_RESOLUTION * noct_cube_magnitude(c->lo, c->size);
+}
+
 /* Worlds from this many slots on prefetch what their loops will read:
  * below it, it stays in cache. */
 #define PREFETCH_OBJECTS 8192

@@ -153,7 +153,7 @@ static bool add_and_split(noctBroadphase *bp, octNode *leaf, uint32_t id)
     if (!leaf_add(bp, leaf, id))
         return false;
     noct_cell *c = noct_cell_of(leaf);
-    if ((int)c->small > bp->N && octGeneration(leaf) < bp->max_depth)
+    if ((int)c->small > bp->N && noct_may_split(bp, leaf))
         return split_leaf(bp, leaf);
     return true;
 }
@@ -549,6 +549,13 @@ static noctStatus build_tree(noctBroadphase *bp, double min_size)
         hi[k] = any ? noct_max(hi[k], bp->bounds_hi[k]) : bp->bounds_hi[k];
     }
     double extent = noct_max(noct_max(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    /* Far from the origin the root is no finer than NOCT_CELL_RESOLUTION
+     * allows (twice over, so that it may split once), which also keeps
+     * root_corner's lattice index below 2^31. */
+    double far = 0;
+    for (int k = 0; k < 3; ++k)
+        far = noct_max(far, noct_max(fabs(lo[k]), fabs(hi[k])));
+    min_size = noct_max(min_size, 4 * NOCT_CELL_RESOLUTION * far);
     double size = 1;
     while (size < 2 * extent || size < min_size)
         size *= 2;
@@ -1047,7 +1054,7 @@ bool noct_bp_reshape(noctBroadphase *bp, uint32_t id, const double mlo[3], const
     }
     for (uint32_t s = 0; s < o->nspans; ++s) {
         octNode *leaf = o->spans[s].leaf;
-        if ((int)noct_cell_of(leaf)->small > bp->N && octGeneration(leaf) < bp->max_depth) {
+        if ((int)noct_cell_of(leaf)->small > bp->N && noct_may_split(bp, leaf)) {
             if (!split_leaf(bp, leaf))
                 return false;
             s = UINT32_MAX; /* the split rewrote the list: again */

@@ -240,6 +240,22 @@ typedef struct seen {
     double clip; /* ray: the fraction to return */
 } seen;
 
+/* A point query looking for one proxy. */
+typedef struct point_hit {
+    int calls;
+    noctProxyId want;
+    bool seen;
+} point_hit;
+
+static bool on_found(void *ctx, noctProxyId id, void *user)
+{
+    (void)user;
+    point_hit *f = ctx;
+    ++f->calls;
+    f->seen |= id.index == f->want.index && id.generation == f->want.generation;
+    return true;
+}
+
 static bool on_proxy(void *ctx, noctProxyId id, void *user)
 {
     (void)user;
@@ -644,6 +660,71 @@ START_TEST(world_broadphase_is_the_objects)
 }
 END_TEST
 
+/*
+ * Far from the origin, cells must stay wider than the coordinates'
+ * rounding: coincident points and boxes of a few ulps, at offsets from 10
+ * to 1e99, moved by a few ulps at a time, give exactly the brute force's
+ * pairs, every proxy is found by a point query at its corner, and the tree
+ * stays small (no runaway splitting into cells narrower than an ulp).
+ */
+static const double FAR_OFFSETS[] = {10.5, 1003.3, -1048576.1, 3e12, -7.25e15, 1e90, -9e99};
+
+START_TEST(far_from_the_origin)
+{
+    const double offset = FAR_OFFSETS[_i / 3];
+    const int n_of[] = {1, 3, 10};
+    const int depth_of[] = {40, 10, 40};
+    rng = 0xfa12 + (uint64_t)_i;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = n_of[_i % 3];
+    def.max_depth = depth_of[_i % 3];
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.n = 48;
+    /* a scene some hundred ulps across */
+    const double ulp = nextafter(fabs(offset), INFINITY) - fabs(offset);
+    const double scene = 256 * ulp;
+    for (int i = 0; i < m.n; ++i) {
+        const bool point = i < 12; /* a dozen coincident points */
+        for (int k = 0; k < 3; ++k) {
+            m.lo[i][k] = point ? offset : offset + scene * floor(16 * uniform()) / 16;
+            m.hi[i][k] = point ? offset : m.lo[i][k] + scene * floor(8 * uniform()) / 16;
+        }
+        m.cat[i] = m.mask[i] = NOCT_FILTER_ALL;
+        ck_assert_int_eq(noctBroadphaseAdd(bp, m.lo[i], m.hi[i], NULL, NOCT_FILTER_ALL,
+                                           NOCT_FILTER_ALL, &m.id[i], &err),
+                         NOCT_OK);
+        m.alive[i] = true;
+    }
+    for (int round = 0; round < 20; ++round) {
+        check_pairs(bp, &m);
+        for (int i = 0; i < m.n; ++i) {
+            point_hit f = {0, m.id[i], false};
+            ck_assert_int_eq(noctBroadphaseQueryPoint(bp, m.lo[i], noctDefaultQueryFilter(),
+                                                      on_found, &f),
+                             NOCT_OK);
+            ck_assert_msg(f.seen, "proxy %d not found at its corner (offset %g)", i, offset);
+        }
+        noctBroadphaseCounters c;
+        noctBroadphaseGetCounters(bp, &c);
+        ck_assert_msg(c.nodes <= 8 * 40 * (uint64_t)m.n, "%llu nodes for %d proxies",
+                      (unsigned long long)c.nodes, m.n);
+        for (int i = 12; i < m.n; ++i) { /* a few ulps at a time */
+            for (int k = 0; k < 3; ++k) {
+                const double d = scene * floor(8 * uniform() - 4) / 64;
+                m.lo[i][k] += d;
+                m.hi[i][k] += d;
+            }
+            ck_assert_int_eq(noctBroadphaseMove(bp, m.id[i], m.lo[i], m.hi[i], &err), NOCT_OK);
+        }
+    }
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("broadphase");
@@ -656,6 +737,8 @@ int main(void)
     tcase_add_test(tc, leaves_and_counters);
     tcase_add_test(tc, fast_path_and_pair_callbacks);
     tcase_add_test(tc, world_broadphase_is_the_objects);
+    tcase_add_loop_test(tc, far_from_the_origin, 0,
+                        3 * (int)(sizeof FAR_OFFSETS / sizeof *FAR_OFFSETS));
     suite_add_tcase(s, tc);
     tc = tcase_create("bad input");
     tcase_add_test(tc, bad_input_changes_nothing);

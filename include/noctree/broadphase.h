@@ -42,7 +42,12 @@
  * margin is not swept again (see world.h, step 3).
  *
  * **Limits.** Coordinates lie within #NOCT_MAX_COORDINATE; at most 2^31
- * proxies; N and the depth as for a world. Bad input is reported by
+ * proxies; N and the depth as for a world. A cell is never smaller than
+ * 2^-32 of the largest magnitude of its corners' coordinates (2.3e-7 at
+ * 1000, 0.23 at 10^9; about 2^20 of the coordinates' ulps): far from
+ * the origin a leaf of that size stays a leaf whatever it holds, as at
+ * the maximum depth, so coincident or sub-ulp proxies there cost a leaf
+ * of all their pairs, never a runaway split. Bad input is reported by
  * status, never by aborting, but for violated requires clauses in the
  * defensive build.
  *
@@ -98,7 +103,8 @@ typedef struct noctBroadphaseDef {
                               separate (1 or more), or #NOCT_N_EXHAUSTIVE
                               (never split: every pair of proxies is a
                               candidate). Default 10. */
-    int max_depth;       /**< Deepest leaf generation, 1 to 40. Default 10. */
+    int max_depth;       /**< Deepest leaf generation, 1 to 40; see also
+                              the finest cell under Limits. Default 10. */
     double bounds_lo[3]; /**< Bounds hint: the first root covers this box as
                               well as the proxies. Ignored unless
                               bounds_lo < bounds_hi on every axis. Default

@@ -167,7 +167,10 @@ typedef struct noctWorldDef {
                                  separate (1 or more; see "The octree"
                                  above), or #NOCT_N_EXHAUSTIVE. Default 10. */
     int max_depth;          /**< Deepest leaf generation (1 to 40); leaves
-                                 there may hold more than N. Default 10. */
+                                 there, and leaves at the finest cell size
+                                 far from the origin (broadphase.h,
+                                 Limits), may hold more than N. Default
+                                 10. */
     noctAccuracy accuracy;  /**< Narrowphase level. Default exact. */
     unsigned effects;       /**< #noctEffect bits. Default: motion, events
                                  and response. */
