@@ -11,6 +11,7 @@
 #include <noctree/neighbor.h>
 #include <noctree/status.h>
 #include <noctree/mesh.h>
+#include <noctree/transform.h>
 #include <noctree/narrowphase.h>
 #include <noctree/broadphase.h>
 #include <noctree/world.h>

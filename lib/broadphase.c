@@ -399,26 +399,24 @@ size_t noctBroadphaseProxyCount(const noctBroadphase *bp)
 }
 
 /*
- * A move: the fast test in box space (the new box overlaps the same cells
- * of the proxy's smallest leaf's size), else the leave and enter checks
- * (noct_bp_maintain), else, for a box that left the root, a rebuild. A
- * box that changed size changes its leaves' counts first (and may split
- * them), while its box is still the one they were made for.
+ * A move of proxy s to the local box mlo, mhi at pos: the fast test in box
+ * space (the new box overlaps the same cells of the proxy's smallest
+ * leaf's size), else the leave and enter checks (noct_bp_maintain), else,
+ * for a box that left the root, a rebuild. A box that changed size
+ * changes its leaves' counts first (and may split them), while its box is
+ * still the one they were made for. On failure (NOMEM) the proxy keeps its
+ * old box and the tree is owed.
  */
-noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double lo[3],
-                              const double hi[3], noctError *err)
+noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo_new[3],
+                           const double mhi_new[3], const double pos[3])
 {
-    NOCT_REQUIRE(bp != NULL && lo != NULL && hi != NULL);
-    noct_proxy *o = lookup(bp, id);
-    if (o == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0, "stale proxy handle");
-    noctStatus st = check_box(lo, hi, err);
-    if (st != NOCT_OK)
-        return st;
+    noct_proxy *o = &bp->proxy[s];
+    noctStatus st = NOCT_OK;
     if (bp->tree_owed && (st = noct_bp_rebuild(bp, 0)) != NOCT_OK)
-        return noct_fail(err, st, -1, 0, "rebuilding the octree: out of memory");
-    const uint32_t s = id.index;
-    const noct_aabb old = bp->box[s], nb = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        return st;
+    noct_aabb nb;
+    noct_place_box(mlo_new, mhi_new, pos, &nb);
+    const noct_aabb old = bp->box[s];
     const double mlo[3] = {o->mlo[0], o->mlo[1], o->mlo[2]};
     const double mhi[3] = {o->mhi[0], o->mhi[1], o->mhi[2]};
     ++bp->c.moves;
@@ -426,7 +424,7 @@ noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double l
     /* how far the box moved, for the pair search's margins */
     double d = 0;
     for (int k = 0; k < 3; ++k)
-        d = noct_max(d, noct_max(fabs(lo[k] - old.lo[k]), fabs(hi[k] - old.hi[k])));
+        d = noct_max(d, noct_max(fabs(nb.lo[k] - old.lo[k]), fabs(nb.hi[k] - old.hi[k])));
     if (o->travel_epoch != bp->search_epoch) {
         o->travel = 0;
         o->travel_epoch = bp->search_epoch;
@@ -439,16 +437,15 @@ noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double l
     if (!isfinite(blk->lo[0]) && !noct_bp_block_of(bp, s, &old, blk, &o->block))
         noct_forget_home(bp, s);
     const bool fast = isfinite(blk->lo[0]) && noct_in_block(blk, o->block, &nb);
-    /* Its local box is the box itself (position 0); a new size changes
-     * its leaves' counts (and may split them), first. */
+    /* a new size changes its leaves' counts (and may split them), first */
     bool resized = false;
     for (int k = 0; k < 3; ++k)
-        resized = resized || hi[k] - lo[k] != mhi[k] - mlo[k];
-    if (resized && !noct_bp_reshape(bp, s, lo, hi)) {
+        resized = resized || mhi_new[k] - mlo_new[k] != mhi[k] - mlo[k];
+    if (resized && !noct_bp_reshape(bp, s, mlo_new, mhi_new)) {
         st = NOCT_ERR_NOMEM;
     } else if (!resized) {
-        memcpy(o->mlo, lo, sizeof o->mlo);
-        memcpy(o->mhi, hi, sizeof o->mhi);
+        memcpy(o->mlo, mlo_new, sizeof o->mlo);
+        memcpy(o->mhi, mhi_new, sizeof o->mhi);
     }
     if (st == NOCT_OK && fast && isfinite(blk->lo[0])) {
         /* (still: a split for its new size would have forgotten it) */
@@ -474,8 +471,26 @@ noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double l
         memcpy(o->mlo, mlo, sizeof mlo);
         memcpy(o->mhi, mhi, sizeof mhi);
         noct_bp_drop_tree(bp);
-        return noct_fail(err, st, (long)s, 0, "moving proxy %u: out of memory", s);
     }
+    return st;
+}
+
+noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double lo[3],
+                              const double hi[3], noctError *err)
+{
+    NOCT_REQUIRE(bp != NULL && lo != NULL && hi != NULL);
+    noct_proxy *o = lookup(bp, id);
+    if (o == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0, "stale proxy handle");
+    noctStatus st = check_box(lo, hi, err);
+    if (st != NOCT_OK)
+        return st;
+    /* its local box is the box itself, at position 0 */
+    const double zero[3] = {0, 0, 0};
+    st = noct_bp_move_to(bp, id.index, lo, hi, zero);
+    if (st != NOCT_OK)
+        return noct_fail(err, st, (long)id.index, 0, "moving proxy %u: out of memory",
+                         id.index);
     return NOCT_OK;
 }
 

@@ -400,6 +400,12 @@ uint32_t noct_bp_new_slot(noctBroadphase *bp);
 noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], const double mhi[3],
                        const double pos[3], void *user, uint64_t category, uint64_t mask);
 
+/* Give live proxy s the local box mlo, mhi at position pos, keeping the
+ * tree exact at once; on failure (NOMEM) it keeps its old box and the
+ * tree is owed. */
+noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo[3],
+                           const double mhi[3], const double pos[3]);
+
 /* Take live proxy s out of the tree and free its slot; cannot fail. */
 void noct_bp_free_slot(noctBroadphase *bp, uint32_t s);
 

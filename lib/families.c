@@ -24,7 +24,7 @@ static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, size_t 
                           noctStatus st)
 {
     for (size_t i = 0; i < n; ++i)
-        noctWorldRemove(w, ids[i]);
+        noctWorldRemove(w, ids[i], NULL);
     noct_world_destroy_meshes_from(w, owned_before);
     free(ids);
     return st;

@@ -21,6 +21,7 @@ noctree_sources = \
 	lib/predicates.c \
 	lib/predicates.h \
 	lib/scene.c \
+	lib/transform.c \
 	lib/world.c \
 	lib/world_events.c \
 	lib/world_internal.h \
@@ -64,6 +65,7 @@ noctreeinclude_HEADERS = \
 	include/noctree/octree_inline.h \
 	include/noctree/scene.h \
 	include/noctree/status.h \
+	include/noctree/transform.h \
 	include/noctree/world.h
 nodist_noctreeinclude_HEADERS = include/noctree/version.h
 include_HEADERS = include/noctree.h

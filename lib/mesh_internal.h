@@ -151,4 +151,16 @@ noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const
                                     const double tb[3], noctAccuracy accuracy,
                                     bool *colliding, noctNarrowStats *stats);
 
+/* ---- transform.c ---- */
+
+/* Is R the identity matrix? */
+bool noct_is_identity(const double R[9]);
+
+/* out = fl(R v) in transform.h's order. */
+void noct_rotate(const double R[9], const double v[3], double out[3]);
+
+/* A new mesh of m's triangles with the vertices fl(R v). */
+noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **out,
+                             noctError *err);
+
 #endif /* NOCT_LIB_MESH_INTERNAL_H */

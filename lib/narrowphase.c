@@ -943,3 +943,33 @@ noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
                                            : &stats->seconds_exact) += now() - t0;
     return st;
 }
+
+noctStatus noctCollideTransformed(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
+                                  const noctTransform *xb, noctAccuracy accuracy,
+                                  bool *colliding, noctNarrowStats *stats, noctError *err)
+{
+    NOCT_REQUIRE(a != NULL && xa != NULL && b != NULL && xb != NULL && colliding != NULL);
+    const noctTransform *x[2] = {xa, xb};
+    const noctMesh *m[2] = {a, b};
+    noctMesh *rotated[2] = {NULL, NULL};
+    noctStatus st = NOCT_OK;
+    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
+        double R[9];
+        st = noctTransformCheck(x[i], err);
+        if (st == NOCT_OK)
+            st = noctQuatToMatrix(&x[i]->q, R, err);
+        if (st == NOCT_OK && !noct_is_identity(R)) {
+            st = noct_mesh_rotated(m[i], R, &rotated[i], err);
+            if (st == NOCT_OK)
+                m[i] = rotated[i];
+        }
+    }
+    if (st == NOCT_OK) {
+        st = noctCollide(m[0], xa->p, m[1], xb->p, accuracy, colliding, stats);
+        if (st != NOCT_OK)
+            noct_fail(err, st, -1, 0, "collision test: %s", noctStatusString(st));
+    }
+    noctMeshDestroy(rotated[0]);
+    noctMeshDestroy(rotated[1]);
+    return st;
+}

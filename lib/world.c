@@ -94,8 +94,12 @@ void noctWorldDestroy(noctWorld *w)
 {
     if (w == NULL)
         return;
+    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+        if (w->obj[i].alive)
+            noctMeshDestroy(w->pose[i].rotated);
     noct_bp_fini(&w->bp);
     free(w->obj);
+    free(w->pose);
     free(w->pos);
     free(w->mesh);
     free(w->slot);
@@ -141,6 +145,7 @@ static bool reserve_slots(noctWorld *w)
     GROW(obj);
     GROW(pos);
     GROW(mesh);
+    GROW(pose);
     GROW(events.mark);
 #undef GROW
     /* aligned, so not realloc */
@@ -153,6 +158,164 @@ static bool reserve_slots(noctWorld *w)
     w->slot = slots;
     w->capslots = cap;
     return true;
+}
+
+noctObjectDef noctDefaultObjectDef(void)
+{
+    noctObjectDef d;
+    memset(&d, 0, sizeof d);
+    d.mesh = NULL;
+    d.transform = noctIdentityTransform();
+    d.type = NOCT_OBJECT_MOVING;
+    d.user_data = NULL;
+    d.category = d.mask = NOCT_FILTER_ALL;
+    return d;
+}
+
+static noctStatus check_velocity(const double v[3], noctError *err)
+{
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(v[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "velocity (%g, %g, %g) is not finite", v[0], v[1], v[2]);
+    return NOCT_OK;
+}
+
+static bool known_type(noctObjectType t)
+{
+    return t == NOCT_OBJECT_STATIC || t == NOCT_OBJECT_KINEMATIC || t == NOCT_OBJECT_MOVING;
+}
+
+/* |v|, rounded up a little: the motion's reach and sub-steps take it as
+ * a bound on the distance moved. */
+static double speed_of(const double v[3])
+{
+    const double m = noct_max(noct_max(fabs(v[0]), fabs(v[1])), fabs(v[2]));
+    const double a = v[0] / m, b = v[1] / m, c = v[2] / m; /* no overflow */
+    return m * sqrt(a * a + b * b + c * c) * (1 + 0x1p-40);
+}
+
+/* The mesh of a shape rotated by R: the shape itself for the identity,
+ * else a new rotated copy in *rotated. */
+static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMesh **rotated,
+                               noctError *err)
+{
+    *rotated = NULL;
+    if (noct_is_identity(R))
+        return NOCT_OK;
+    noctStatus st = noct_mesh_rotated(shape, R, rotated, err);
+    if (st != NOCT_OK && err != NULL) {
+        char why[NOCT_ERROR_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        noct_fail(err, st, err->index, 0, "the rotated mesh: %s", why);
+    }
+    return st;
+}
+
+/* An object's placed mesh, its box form and local box, from its pose. */
+static void place_mesh(noctWorld *w, uint32_t s)
+{
+    const noct_pose *p = &w->pose[s];
+    noct_object *o = &w->obj[s];
+    const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape;
+    o->mesh = w->mesh[s] = m;
+    memcpy(o->mlo, m->lo, sizeof o->mlo);
+    memcpy(o->mhi, m->hi, sizeof o->mhi);
+    if (m->has_box)
+        noct_box_slot_fill(m, &w->slot[s]);
+    else
+        w->slot[s].has_box = 0;
+}
+
+/* Make object o moving at velocity v, or not moving (v kept in its pose). */
+static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const double v[3])
+{
+    noct_object *o = &w->obj[s];
+    const bool was = o->speed > 0;
+    w->pose[s].type = type;
+    if (type == NOCT_OBJECT_MOVING) {
+        memcpy(o->vel, v, sizeof o->vel);
+        o->speed = v[0] != 0 || v[1] != 0 || v[2] != 0 ? speed_of(v) : 0;
+        memset(w->pose[s].vel, 0, sizeof w->pose[s].vel);
+    } else {
+        memcpy(w->pose[s].vel, v, sizeof w->pose[s].vel);
+        memset(o->vel, 0, sizeof o->vel);
+        o->speed = 0;
+    }
+    const bool is = o->speed > 0;
+    NOCT_INVARIANT(w->motion.moving >= (size_t)was);
+    w->motion.moving = w->motion.moving - was + is;
+    /* the movers list and its greatest speed are made again */
+    w->motion.stale = w->motion.stale || was || is;
+}
+
+/* An object's velocity: the moving one's, or the one its pose keeps. */
+static const double *velocity_of(const noctWorld *w, uint32_t s)
+{
+    return w->pose[s].type == NOCT_OBJECT_MOVING ? w->obj[s].vel : w->pose[s].vel;
+}
+
+noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObjectId *id,
+                                 noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && def != NULL && def->mesh != NULL && id != NULL);
+    id->index = id->generation = 0;
+    noctStatus st = noctTransformCheck(&def->transform, err);
+    if (st == NOCT_OK)
+        st = check_velocity(def->velocity, err);
+    if (st != NOCT_OK)
+        return st;
+    if (!known_type(def->type))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d",
+                         (int)def->type);
+    if (def->category == 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "an object's category is 0: it could never pair");
+    double R[9];
+    noctQuatToMatrix(&def->transform.q, R, NULL); /* checked above */
+    noctMesh *rotated;
+    st = rotate_shape(def->mesh, R, &rotated, err);
+    if (st != NOCT_OK)
+        return st;
+    const uint32_t slot = noct_bp_new_slot(&w->bp);
+    if (slot == UINT32_MAX) {
+        noctMeshDestroy(rotated);
+        return w->bp.nslots >= 0x80000000u
+                   ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects")
+                   : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    if (!reserve_slots(w)) {
+        /* the slot is not live yet: give it back as it is (a new last
+         * slot goes altogether: the world's arrays may not reach it) */
+        if (slot + 1 == w->bp.nslots)
+            --w->bp.nslots;
+        else
+            w->bp.free_slots[w->bp.nfree++] = slot;
+        noctMeshDestroy(rotated);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    noct_object *o = &w->obj[slot];
+    memset(o, 0, sizeof *o);
+    noct_pose *p = &w->pose[slot];
+    memset(p, 0, sizeof *p);
+    p->shape = def->mesh;
+    p->rotated = rotated;
+    p->q = def->transform.q;
+    memcpy(p->R, R, sizeof R);
+    place_mesh(w, slot);
+    memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
+    w->events.mark[slot] = 0;
+    st = noct_bp_add(&w->bp, slot, o->mlo, o->mhi, w->pos[slot], def->user_data,
+                     def->category, def->mask);
+    if (st != NOCT_OK) {
+        noctMeshDestroy(rotated);
+        return noct_fail(err, st, -1, 0, "out of memory");
+    }
+    o->alive = true;
+    set_motion(w, slot, def->type, def->velocity);
+    id->index = slot;
+    id->generation = w->bp.gen[slot];
+    return NOCT_OK;
 }
 
 noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double position[3],
@@ -185,69 +348,173 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
             return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                              "a moving object needs a non-zero direction");
     }
-    const uint32_t slot = noct_bp_new_slot(&w->bp);
-    if (slot == UINT32_MAX)
-        return w->bp.nslots >= 0x80000000u
-                   ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects")
-                   : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    if (!reserve_slots(w)) {
-        /* the slot is not live yet: give it back as it is (a new last
-         * slot goes altogether: the world's arrays may not reach it) */
-        if (slot + 1 == w->bp.nslots)
-            --w->bp.nslots;
-        else
-            w->bp.free_slots[w->bp.nfree++] = slot;
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    }
-    noct_object *o = &w->obj[slot];
-    memset(o, 0, sizeof *o);
-    o->mesh = w->mesh[slot] = mesh;
-    memcpy(o->mlo, mesh->lo, sizeof o->mlo);
-    memcpy(o->mhi, mesh->hi, sizeof o->mhi);
-    o->speed = speed;
-    for (int k = 0; k < 3; ++k) {
-        w->pos[slot][k] = position[k];
-        o->vel[k] = speed * unit[k];
-    }
-    w->events.mark[slot] = 0;
-    if (mesh->has_box)
-        noct_box_slot_fill(mesh, &w->slot[slot]);
-    else
-        w->slot[slot].has_box = 0;
-    noctStatus st = noct_bp_add(&w->bp, slot, mesh->lo, mesh->hi, position, NULL,
-                                NOCT_FILTER_ALL, NOCT_FILTER_ALL);
-    if (st != NOCT_OK)
-        return noct_fail(err, st, -1, 0, "out of memory");
-    o->alive = true;
-    w->motion.moving += speed > 0;
-    w->motion.stale = w->motion.stale || speed > 0;
-    id->index = slot;
-    id->generation = w->bp.gen[slot];
-    return NOCT_OK;
+    noctObjectDef def = noctDefaultObjectDef();
+    def.mesh = mesh;
+    memcpy(def.transform.p, position, sizeof def.transform.p);
+    for (int k = 0; k < 3; ++k)
+        def.velocity[k] = speed * unit[k];
+    noctStatus st = noctWorldCreateObject(w, &def, id, err);
+    if (st == NOCT_OK && w->obj[id->index].speed > 0)
+        w->obj[id->index].speed = speed; /* as given: |velocity| within 1e-9 */
+    return st;
 }
 
-noctStatus noctWorldRemove(noctWorld *w, noctObjectId id)
+noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
     noct_object *o = lookup(w, id);
     if (o == NULL)
-        return NOCT_ERR_INVALID;
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    set_motion(w, id.index, NOCT_OBJECT_STATIC, velocity_of(w, id.index));
     noct_bp_free_slot(&w->bp, id.index); /* cannot fail */
     o->alive = false;
-    NOCT_INVARIANT(w->motion.moving >= (size_t)(o->speed > 0));
-    w->motion.moving -= o->speed > 0;
-    w->motion.stale = w->motion.stale || o->speed > 0;
-    /* Drop its pairs from the lists a caller may read. */
-    noct_pair_list *lists[2] = {&w->events.colliding, &w->events.previous};
-    for (int l = 0; l < 2; ++l) {
-        size_t k = 0;
-        for (size_t i = 0; i < lists[l]->n; ++i)
-            if (lists[l]->p[i].a.index != id.index && lists[l]->p[i].b.index != id.index)
-                lists[l]->p[k++] = lists[l]->p[i];
-        lists[l]->n = k;
-    }
-    w->events.began.n = w->events.ended.n = 0;
+    noctMeshDestroy(w->pose[id.index].rotated);
+    w->pose[id.index].rotated = NULL;
+    /* The lists stay: the colliding one holds its pairs, which the next
+     * step's diff ends. */
     return NOCT_OK;
+}
+
+noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransform *x,
+                                 noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL);
+    if (lookup(w, id) == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    noctStatus st = noctTransformCheck(x, err);
+    if (st != NOCT_OK)
+        return st;
+    const uint32_t s = id.index;
+    noct_pose *p = &w->pose[s];
+    double R[9];
+    noctQuatToMatrix(&x->q, R, NULL); /* checked above */
+    const bool turned = memcmp(R, p->R, sizeof R) != 0;
+    noctMesh *rotated = p->rotated;
+    if (turned && (st = rotate_shape(p->shape, R, &rotated, err)) != NOCT_OK)
+        return st;
+    const noctMesh *m = rotated != NULL ? rotated : p->shape;
+    st = noct_bp_move_to(&w->bp, s, m->lo, m->hi, x->p);
+    if (st != NOCT_OK) {
+        if (turned)
+            noctMeshDestroy(rotated);
+        return noct_fail(err, st, (long)s, 0, "moving object %u: out of memory", s);
+    }
+    if (turned) {
+        noctMeshDestroy(p->rotated);
+        p->rotated = rotated;
+        memcpy(p->R, R, sizeof R);
+        place_mesh(w, s);
+    }
+    p->q = x->q;
+    memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetTransform(const noctWorld *w, noctObjectId id, noctTransform *x)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(x->p, w->pos[id.index], sizeof x->p);
+    x->q = w->pose[id.index].q;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetVelocity(noctWorld *w, noctObjectId id, const double velocity[3],
+                                noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && velocity != NULL);
+    if (lookup(w, id) == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    noctStatus st = check_velocity(velocity, err);
+    if (st != NOCT_OK)
+        return st;
+    set_motion(w, id.index, w->pose[id.index].type, velocity);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetVelocity(const noctWorld *w, noctObjectId id, double velocity[3])
+{
+    NOCT_REQUIRE(w != NULL && velocity != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(velocity, velocity_of(w, id.index), 3 * sizeof *velocity);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetType(noctWorld *w, noctObjectId id, noctObjectType type,
+                            noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (lookup(w, id) == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    if (!known_type(type))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d", (int)type);
+    double v[3];
+    memcpy(v, velocity_of(w, id.index), sizeof v);
+    set_motion(w, id.index, type, v);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetType(const noctWorld *w, noctObjectId id, noctObjectType *type)
+{
+    NOCT_REQUIRE(w != NULL && type != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    *type = w->pose[id.index].type;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetFilter(noctWorld *w, noctObjectId id, uint64_t category, uint64_t mask,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (lookup(w, id) == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    if (category == 0)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "an object's category is 0: it could never pair");
+    return noctBroadphaseSetFilter(&w->bp, id, category, mask);
+}
+
+noctStatus noctWorldGetFilter(const noctWorld *w, noctObjectId id, uint64_t *category,
+                              uint64_t *mask)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    return noctBroadphaseProxy(&w->bp, id, NULL, NULL, NULL, category, mask);
+}
+
+noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    w->bp.proxy[id.index].user = user_data;
+    return NOCT_OK;
+}
+
+void *noctWorldGetUserData(const noctWorld *w, noctObjectId id)
+{
+    NOCT_REQUIRE(w != NULL);
+    return lookup(w, id) != NULL ? w->bp.proxy[id.index].user : NULL;
+}
+
+const noctMesh *noctWorldGetMesh(const noctWorld *w, noctObjectId id)
+{
+    NOCT_REQUIRE(w != NULL);
+    return lookup(w, id) != NULL ? w->pose[id.index].shape : NULL;
 }
 
 /* ---- the step ------------------------------------------------------------------------ */
@@ -328,6 +595,19 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
     return st;
 }
 
+/* Objects a program moved since the last step (noctWorldSetTransform())
+ * moved at most pending_reach each, on top of the motion: the pair
+ * search's reach grows by it, and by the rounding of the root's
+ * coordinates. */
+static void add_teleports_reach(noctWorld *w)
+{
+    const noct_aabb root = noct_bp_root_box(&w->bp);
+    double r = 0;
+    for (int k = 0; k < 3; ++k)
+        r = noct_max(r, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
+    w->bp.reach += w->bp.pending_reach * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
+}
+
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
 static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *err)
 {
@@ -339,6 +619,8 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
     w->bp.reach = 0;
     if (moving && (st = stage_motion(w, fraction, first, err)) != NOCT_OK)
         return st;
+    if (first && w->bp.pending_reach > 0)
+        add_teleports_reach(w);
     const double t1 = noct_seconds();
     if (moving)
         w->c.seconds_motion += t1 - t0;
@@ -355,6 +637,10 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
+    if (first) { /* the teleports' travel is in this search's reach */
+        w->bp.pending_reach = 0;
+        ++w->bp.search_epoch;
+    }
     w->c.colliding_pairs += w->events.colliding.n;
     const double t3 = noct_seconds();
     w->c.seconds_pairs += t3 - t2;
@@ -568,6 +854,21 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                              w->obj[i].alive ? "alive" : "dead");
         if (!w->obj[i].alive)
             continue;
+        const noct_pose *p = &w->pose[i];
+        if (w->obj[i].mesh != (p->rotated != NULL ? p->rotated : p->shape) ||
+            w->mesh[i] != w->obj[i].mesh)
+            return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
+                             "object %u's placed mesh is not its shape or its rotated copy",
+                             i);
+        if ((p->rotated == NULL) != noct_is_identity(p->R))
+            return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
+                             "object %u has %s rotated copy", i,
+                             p->rotated == NULL ? "no" : "a needless");
+        if ((w->obj[i].speed > 0) != (p->type == NOCT_OBJECT_MOVING &&
+                                      (w->obj[i].vel[0] != 0 || w->obj[i].vel[1] != 0 ||
+                                       w->obj[i].vel[2] != 0)))
+            return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
+                             "object %u's speed does not match its type and velocity", i);
         noct_aabb b;
         noct_place_box(w->obj[i].mlo, w->obj[i].mhi, w->pos[i], &b);
         if (memcmp(&b, &w->bp.box[i], sizeof b) != 0)

@@ -28,11 +28,25 @@
 
 /* What the motion loop reads of an object: one record. */
 typedef struct noct_object {
-    const noctMesh *mesh;
+    const noctMesh *mesh;  /* the mesh as placed: the shape, or its rotated
+                              copy (noct_pose) */
     double vel[3], speed;  /* vel = speed * unit direction */
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
     bool alive;
 } noct_object;
+
+/* What the program set of an object and the step never reads: its
+ * shape, its rotation, its type, and the velocity of an object that is
+ * not moving (a moving object's is obj[i].vel, which the response turns). */
+typedef struct noct_pose {
+    const noctMesh *shape;  /* the mesh it was made with */
+    noctMesh *rotated;      /* shape with its vertices rotated by R, owned;
+                               NULL when R is the identity */
+    noctQuat q;             /* as given */
+    double R[9];            /* noctQuatToMatrix(q) */
+    double vel[3];          /* the velocity of a static or kinematic object */
+    noctObjectType type;
+} noct_pose;
 
 /* Motion: the movers and what a failed step restores. */
 typedef struct noct_motion {
@@ -69,6 +83,7 @@ struct noctWorld {
     double (*pos)[3];      /* the position (translation) */
     const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
                               reads it without touching the objects */
+    noct_pose *pose;       /* what the program set (not read by the step) */
     noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
                               all the exact level reads of most pairs of
                               boxes (64-byte aligned, two lines each) */

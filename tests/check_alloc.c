@@ -1103,7 +1103,7 @@ static bool add_object(outcome *o, noctWorld *w, const world_meshes *wm, uint64_
 /* Remove an object; a failure other than a documented one stops the run. */
 static bool remove_object(outcome *o, noctWorld *w, noctObjectId id, bool *alive)
 {
-    noctStatus st = noctWorldRemove(w, id);
+    noctStatus st = noctWorldRemove(w, id, NULL);
     if (st == NOCT_OK) {
         *alive = false;
         return true;

@@ -879,7 +879,7 @@ START_TEST(coincident_objects_add_and_remove)
     ck_assert_uint_le(most, 27);
     ck_assert_uint_le(nodes, 1 + 8 * 8);
     for (int i = 0; i < n; ++i)
-        ck_assert_int_eq(noctWorldRemove(w, ids[i]), NOCT_OK);
+        ck_assert_int_eq(noctWorldRemove(w, ids[i], NULL), NOCT_OK);
     validate_ok(w);
     ck_assert_uint_eq(noctWorldObjectCount(w), 0);
     /* fewer, stepped: every pair collides */
@@ -946,7 +946,7 @@ START_TEST(root_shrinks_back)
     step_ok(w);
     noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
     ck_assert(size > 1e50);
-    ck_assert_int_eq(noctWorldRemove(w, id), NOCT_OK);
+    ck_assert_int_eq(noctWorldRemove(w, id, NULL), NOCT_OK);
     step_ok(w);
     validate_ok(w);
     noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
@@ -1069,9 +1069,11 @@ START_TEST(handles_and_bad_input)
     step_ok(w);
     const noctPair *pairs;
     ck_assert_uint_eq(noctWorldColliding(w, &pairs), 1);
-    ck_assert_int_eq(noctWorldRemove(w, a), NOCT_OK);
-    ck_assert_uint_eq(noctWorldColliding(w, &pairs), 0);
-    ck_assert_int_eq(noctWorldRemove(w, a), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldRemove(w, a, NULL), NOCT_OK);
+    /* the last step's lists stay, a's pair with its stale handle */
+    ck_assert_uint_eq(noctWorldColliding(w, &pairs), 1);
+    ck_assert_uint_eq(pairs[0].a.generation, a.generation);
+    ck_assert_int_eq(noctWorldRemove(w, a, NULL), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldObject(w, a, NULL, NULL), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldAdd(w, cube, p, d, 0, &c, NULL), NOCT_OK);
     ck_assert_uint_eq(c.index, a.index);          /* the slot is reused */
@@ -1079,8 +1081,17 @@ START_TEST(handles_and_bad_input)
     ck_assert_int_eq(noctWorldObject(w, a, NULL, NULL), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldObject(w, c, NULL, NULL), NOCT_OK);
     noctObjectId bogus = {999, 1};
-    ck_assert_int_eq(noctWorldRemove(w, bogus), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldRemove(w, bogus, NULL), NOCT_ERR_INVALID);
     validate_ok(w);
+    /* the next step ends a's pair and begins c's, in a's old slot */
+    step_ok(w);
+    ck_assert_uint_eq(noctWorldEnded(w, &pairs), 1);
+    ck_assert_uint_eq(pairs[0].a.index, a.index);
+    ck_assert_uint_eq(pairs[0].a.generation, a.generation);
+    ck_assert_uint_eq(pairs[0].b.generation, b.generation);
+    ck_assert_uint_eq(noctWorldBegan(w, &pairs), 1);
+    ck_assert_uint_eq(pairs[0].a.generation, c.generation);
+    ck_assert_uint_eq(noctWorldColliding(w, &pairs), 1);
     noctError err;
     const double nan3[3] = {NAN, 0, 0}, zero[3] = {0, 0, 0}, far[3] = {1e200, 0, 0};
     ck_assert_int_eq(noctWorldAdd(w, cube, nan3, d, 1, &c, &err), NOCT_ERR_NONFINITE);
@@ -1168,7 +1179,7 @@ START_TEST(inspect_tree)
         ck_assert_double_eq(lo[k], pos[k] - 0.5);
         ck_assert_double_eq(hi[k], pos[k] + 0.5);
     }
-    ck_assert_int_eq(noctWorldRemove(w, ids[3]), NOCT_OK);
+    ck_assert_int_eq(noctWorldRemove(w, ids[3], NULL), NOCT_OK);
     ck_assert_int_eq(noctWorldObjectBox(w, ids[3], lo, hi), NOCT_ERR_INVALID);
     noctWorldDestroy(w);
 
@@ -1302,7 +1313,7 @@ START_TEST(handles_through_churn)
         if (s % 6 == 0)
             for (int r = 0; r < NOBJ / 6; ++r) {
                 int i = (int)test_rand_below(&rng, NOBJ);
-                ck_assert_int_eq(noctWorldRemove(w, ids[i]), NOCT_OK);
+                ck_assert_int_eq(noctWorldRemove(w, ids[i], NULL), NOCT_OK);
                 gone[ngone++] = ids[i];
                 ck_assert_int_eq(noctWorldAdd(w, mesh_of[i], pos[i], (double[3]){1, 0, 0},
                                               0.125, &ids[i], NULL),

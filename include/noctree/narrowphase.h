@@ -60,6 +60,7 @@
 #include <noctree/export.h>
 #include <noctree/mesh.h>
 #include <noctree/status.h>
+#include <noctree/transform.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -126,6 +127,37 @@ NOCT_API noctStatus noctCollide(const noctMesh *a, const double ta[3],
                                 const noctMesh *b, const double tb[3],
                                 noctAccuracy accuracy, bool *colliding,
                                 noctNarrowStats *stats);
+
+/**
+ * @brief Decide whether two meshes placed by rigid transforms collide.
+ *
+ * As noctCollide(), with each mesh rotated as well as translated: its
+ * placed vertices are fl(fl(R v) + t) (transform.h). A mesh whose
+ * rotation is the identity is used as it is; a rotated one is copied with
+ * its vertices rotated (O(V log V) time and memory for V vertices, freed
+ * before returning), so a program that tests one rotated mesh often
+ * should rotate it once with noctMeshCreate() and call noctCollide().
+ * @param[in]  a         The first mesh.
+ * @param[in]  xa        Its transform.
+ * @param[in]  b         The second mesh (may be @p a).
+ * @param[in]  xb        Its transform.
+ * @param[in]  accuracy  The accuracy level.
+ * @param[out] colliding Receives the answer on #NOCT_OK.
+ * @param[in,out] stats  Counters to add this test's work to, or NULL.
+ * @param[out] err       Receives the details of a failure, or NULL.
+ * @pre @p a, @p xa, @p b, @p xb and @p colliding are not NULL.
+ * @post On #NOCT_OK, @p *colliding is the answer of the chosen level for
+ *       the placed solids; it does not depend on the order of the two.
+ * @return #NOCT_OK; the failures of noctTransformCheck() for a bad
+ *         transform; #NOCT_ERR_INVALID for an unknown accuracy;
+ *         #NOCT_ERR_DEGENERATE (or another mesh status) if rounding the
+ *         rotated vertices made the mesh degenerate; #NOCT_ERR_NUMERIC;
+ *         #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctCollideTransformed(const noctMesh *a, const noctTransform *xa,
+                                           const noctMesh *b, const noctTransform *xb,
+                                           noctAccuracy accuracy, bool *colliding,
+                                           noctNarrowStats *stats, noctError *err);
 
 /**
  * @brief Return the name of an accuracy level.

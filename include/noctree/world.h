@@ -109,6 +109,7 @@
 #include <noctree/narrowphase.h>
 #include <noctree/octree.h>
 #include <noctree/status.h>
+#include <noctree/transform.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -179,6 +180,41 @@ typedef struct noctWorldDef {
                                  #NOCT_EFFECT_WALLS. Default 0. */
     double walls_hi[3];     /**< The container's high corner. Default 0. */
 } noctWorldDef;
+
+/** @brief How an object moves. */
+typedef enum noctObjectType {
+    NOCT_OBJECT_STATIC,    /**< Never moved by the world; a program may
+                                still set its transform (a teleport). */
+    NOCT_OBJECT_KINEMATIC, /**< Moved only by the program, with
+                                noctWorldSetTransform(); its velocity is
+                                kept for the program but not used. */
+    NOCT_OBJECT_MOVING     /**< Moved by the world's motion effect by its
+                                velocity, and reversed by the response. */
+} noctObjectType;
+
+/**
+ * @brief Everything an object is made with; fill with
+ *        noctDefaultObjectDef(), then set what differs.
+ */
+typedef struct noctObjectDef {
+    const noctMesh *mesh;    /**< Its shape, borrowed: it must outlive the
+                                  object; any number of objects may share
+                                  it. Required. */
+    noctTransform transform; /**< Where it is: rotation, then translation
+                                  (transform.h). Default the identity. */
+    double velocity[3];      /**< Distance per step, as a vector, used bit
+                                  for bit by the motion effect (a moving
+                                  object). Default 0. */
+    noctObjectType type;     /**< Default #NOCT_OBJECT_MOVING. */
+    void *user_data;         /**< Returned by noctWorldGetUserData() and
+                                  the broadphase's queries. Default NULL. */
+    uint64_t category;       /**< Its category bits (not 0). Two objects
+                                  are paired only if each one's category
+                                  meets the other's mask. Default
+                                  #NOCT_FILTER_ALL. */
+    uint64_t mask;           /**< The categories it pairs with. Default
+                                  #NOCT_FILTER_ALL. */
+} noctObjectDef;
 
 /**
  * @brief Per-stage work and time, totalled over the world's steps.
@@ -292,20 +328,58 @@ NOCT_API noctStatus noctWorldAdd(noctWorld *world, const noctMesh *mesh,
                                  noctObjectId *id, noctError *err);
 
 /**
+ * @brief Return the default object definition.
+ * @return No mesh (one must be set), the identity transform, zero
+ *         velocity, #NOCT_OBJECT_MOVING, no user data, every category and
+ *         mask bit set.
+ */
+NOCT_API noctObjectDef noctDefaultObjectDef(void);
+
+/**
+ * @brief Add an object made from a definition.
+ *
+ * With a rotation other than the identity the world keeps a copy of the
+ * mesh with its vertices rotated (transform.h, "Placement") while that
+ * rotation lasts: memory and time of a mesh creation, once per rotation
+ * set, none per step.
+ * @param[in]  world The world.
+ * @param[in]  def   The object.
+ * @param[out] id    Receives the new object's handle; {0, 0} on failure.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world, @p def, @p def->mesh and @p id are not NULL.
+ * @post On #NOCT_OK the object is in the octree; it takes part in the
+ *       next step. On failure no object was added.
+ * @return #NOCT_OK; the failures of noctTransformCheck(); a mesh status
+ *         if rotating the mesh's vertices made it degenerate;
+ *         #NOCT_ERR_NONFINITE for a velocity that is not finite;
+ *         #NOCT_ERR_TOO_LARGE for more than 2^31 objects (a velocity that
+ *         would carry an object beyond #NOCT_MAX_COORDINATE fails the
+ *         step that would);
+ *         #NOCT_ERR_INVALID for an unknown type or a category of 0;
+ *         #NOCT_ERR_NOMEM (as for noctWorldAdd()).
+ */
+NOCT_API noctStatus noctWorldCreateObject(noctWorld *world, const noctObjectDef *def,
+                                          noctObjectId *id, noctError *err);
+
+/**
  * @brief Remove an object.
- * @param[in] world The world.
- * @param[in] id    The object.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
  * Removal never needs memory, so it cannot fail once the handle is good:
  * it removes the object whole, or (for a bad handle) changes nothing.
- * @post On #NOCT_OK the object is gone from the tree and the pair lists;
- *       its handle is stale; the began and ended lists are empty. Leaf
- *       siblings left with N or fewer objects merge (if a merge finds no
- *       memory, they stay split until the next step merges them).
+ * @post On #NOCT_OK the object is gone from the tree; its handle is
+ *       stale. The lists of the last step are left as they were: the
+ *       colliding list still holds the object's pairs, with its now stale
+ *       handle, until the next step, whose ended list reports them (with
+ *       the events effect). Leaf siblings left with N or fewer objects
+ *       merge (if a merge finds no memory, they stay split until the next
+ *       step merges them).
  * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle
  *         (then nothing changed).
  */
-NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id);
+NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError *err);
 
 /**
  * @brief Run one step.
@@ -373,6 +447,149 @@ NOCT_API size_t noctWorldEnded(const noctWorld *world, const noctPair **pairs);
  */
 NOCT_API noctStatus noctWorldObject(const noctWorld *world, noctObjectId id,
                                     double position[3], double direction[3]);
+
+/**
+ * @brief Move an object to a new transform at once (a teleport).
+ *
+ * The octree follows at once; the next step tests the object where it
+ * now is, with the events of whatever it began or stopped touching. A new
+ * rotation replaces the object's rotated copy of its mesh (see
+ * noctWorldCreateObject()); the same rotation again costs nothing.
+ * Allowed for objects of every type, between steps.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[in]  x     Its new transform.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world and @p x are not NULL.
+ * @post On #NOCT_OK the object is at @p x. On failure nothing changed but,
+ *       for #NOCT_ERR_NOMEM, the octree may have been torn down (the
+ *       next step builds it again).
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle; the failures of
+ *         noctTransformCheck(); a mesh status if rotating the mesh made it
+ *         degenerate; #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldSetTransform(noctWorld *world, noctObjectId id,
+                                          const noctTransform *x, noctError *err);
+
+/**
+ * @brief Read an object's transform.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] x     Receives its position and the rotation quaternion as
+ *                   it was given.
+ * @pre @p world and @p x are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetTransform(const noctWorld *world, noctObjectId id,
+                                          noctTransform *x);
+
+/**
+ * @brief Set an object's velocity, used bit for bit.
+ * @param[in]  world    The world.
+ * @param[in]  id       The object.
+ * @param[in]  velocity Distance per step.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p world and @p velocity are not NULL.
+ * @post On #NOCT_OK a moving object moves by @p velocity from the next
+ *       step; other objects keep it for when they become moving. On
+ *       failure nothing changed.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle;
+ *         #NOCT_ERR_NONFINITE for a component that is not finite.
+ */
+NOCT_API noctStatus noctWorldSetVelocity(noctWorld *world, noctObjectId id,
+                                         const double velocity[3], noctError *err);
+
+/**
+ * @brief Read an object's velocity (as the response last left it).
+ * @param[in]  world    The world.
+ * @param[in]  id       The object.
+ * @param[out] velocity Receives it.
+ * @pre @p world and @p velocity are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetVelocity(const noctWorld *world, noctObjectId id,
+                                         double velocity[3]);
+
+/**
+ * @brief Change how an object moves.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[in]  type  Its new type; its velocity is kept.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or an unknown
+ *         type (then nothing changed).
+ */
+NOCT_API noctStatus noctWorldSetType(noctWorld *world, noctObjectId id, noctObjectType type,
+                                     noctError *err);
+
+/**
+ * @brief Read an object's type.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] type  Receives it.
+ * @pre @p world and @p type are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetType(const noctWorld *world, noctObjectId id,
+                                     noctObjectType *type);
+
+/**
+ * @brief Set an object's collision filter.
+ *
+ * Pairs that the new filter forbids end at the next step (their ended
+ * events), and pairs it allows begin there.
+ * @param[in]  world    The world.
+ * @param[in]  id       The object.
+ * @param[in]  category Its category bits, not 0.
+ * @param[in]  mask     The categories it pairs with.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or a category of
+ *         0 (then nothing changed).
+ */
+NOCT_API noctStatus noctWorldSetFilter(noctWorld *world, noctObjectId id, uint64_t category,
+                                       uint64_t mask, noctError *err);
+
+/**
+ * @brief Read an object's collision filter.
+ * @param[in]  world    The world.
+ * @param[in]  id       The object.
+ * @param[out] category Receives its category bits, or NULL.
+ * @param[out] mask     Receives its mask, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetFilter(const noctWorld *world, noctObjectId id,
+                                       uint64_t *category, uint64_t *mask);
+
+/**
+ * @brief Set the pointer a program keeps with an object.
+ * @param[in] world     The world.
+ * @param[in] id        The object.
+ * @param[in] user_data Any pointer; the world never reads it.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldSetUserData(noctWorld *world, noctObjectId id, void *user_data);
+
+/**
+ * @brief Read the pointer a program keeps with an object.
+ * @param[in] world The world.
+ * @param[in] id    The object.
+ * @pre @p world is not NULL.
+ * @return The pointer, or NULL for a stale handle.
+ */
+NOCT_API void *noctWorldGetUserData(const noctWorld *world, noctObjectId id);
+
+/**
+ * @brief The mesh an object was made with (not its rotated copy).
+ * @param[in] world The world.
+ * @param[in] id    The object.
+ * @pre @p world is not NULL.
+ * @return The mesh, or NULL for a stale handle.
+ */
+NOCT_API const noctMesh *noctWorldGetMesh(const noctWorld *world, noctObjectId id);
 
 /**
  * @brief Return the number of objects.

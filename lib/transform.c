@@ -1,0 +1,174 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Rigid transforms (transform.h): quaternions to matrices, as documented
+ * there operation by operation, so that the same quaternion always gives
+ * the same matrix, and meshes rotated by them (the rotated copy an object
+ * keeps while its rotation lasts).
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/transform.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+
+static const double IDENTITY[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+noctTransform noctIdentityTransform(void)
+{
+    noctTransform x = {{0, 0, 0}, {0, 0, 0, 1}};
+    return x;
+}
+
+/* sin and cos of an angle in degrees, exact at multiples of 45 degrees
+ * (as exact as a double holds sqrt(1/2)). */
+static void sincos_degrees(double deg, double *s, double *c)
+{
+    deg = fmod(deg, 360);
+    if (deg > 180)
+        deg -= 360;
+    else if (deg < -180)
+        deg += 360;
+    const double eighths = deg / 45;
+    if (eighths == floor(eighths)) {
+        static const double r = 0.70710678118654752440; /* sqrt(1/2) */
+        static const double S[9] = {0, -r, -1, -r, 0, r, 1, r, 0};
+        static const double C[9] = {-1, -r, 0, r, 1, r, 0, -r, -1};
+        const int i = (int)eighths + 4; /* -180 .. 180 in steps of 45 */
+        *s = S[i];
+        *c = C[i];
+        return;
+    }
+    const double a = deg * (3.14159265358979323846 / 180);
+    *s = sin(a);
+    *c = cos(a);
+}
+
+noctStatus noctQuatFromAxisAngle(const double axis[3], double degrees, noctQuat *q)
+{
+    NOCT_REQUIRE(axis != NULL && q != NULL);
+    *q = (noctQuat){0, 0, 0, 1};
+    if (!isfinite(axis[0]) || !isfinite(axis[1]) || !isfinite(axis[2]) || !isfinite(degrees))
+        return NOCT_ERR_NONFINITE;
+    double u[3];
+    if (!noct_unit_direction(axis, u))
+        return NOCT_ERR_INVALID;
+    double s, c;
+    /* the half angle, reduced so that w >= 0 for angles in [-180, 180] */
+    double half = fmod(degrees, 360);
+    if (half > 180)
+        half -= 360;
+    else if (half < -180)
+        half += 360;
+    sincos_degrees(half / 2, &s, &c);
+    *q = (noctQuat){s * u[0], s * u[1], s * u[2], c};
+    return NOCT_OK;
+}
+
+static double snap(double x)
+{
+    if (fabs(x) <= NOCT_ROTATION_SNAP)
+        return 0;
+    if (fabs(x - 1) <= NOCT_ROTATION_SNAP)
+        return 1;
+    if (fabs(x + 1) <= NOCT_ROTATION_SNAP)
+        return -1;
+    return x;
+}
+
+noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err)
+{
+    NOCT_REQUIRE(q != NULL && R != NULL);
+    memcpy(R, IDENTITY, sizeof IDENTITY);
+    double x = q->x, y = q->y, z = q->z, w = q->w;
+    if (!isfinite(x) || !isfinite(y) || !isfinite(z) || !isfinite(w))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                         "rotation quaternion (%g, %g, %g, %g) is not finite", x, y, z, w);
+    /* one operation a statement: no compiler may fuse them */
+    const double x2 = x * x, y2 = y * y, z2 = z * z, w2 = w * w;
+    const double s1 = x2 + y2, s2 = s1 + z2;
+    const double n = s2 + w2;
+    if (!(fabs(n - 1) <= NOCT_QUAT_TOLERANCE))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "rotation quaternion (%g, %g, %g, %g) has squared length %g; "
+                         "it must be within %g of 1",
+                         x, y, z, w, n, NOCT_QUAT_TOLERANCE);
+    if (n != 1) {
+        const double l = sqrt(n);
+        x /= l;
+        y /= l;
+        z /= l;
+        w /= l;
+    }
+    const double xx = x * x, yy = y * y, zz = z * z;
+    const double xy = x * y, xz = x * z, yz = y * z;
+    const double xw = x * w, yw = y * w, zw = z * w;
+    R[0] = snap(1 - 2 * (yy + zz));
+    R[1] = snap(2 * (xy - zw));
+    R[2] = snap(2 * (xz + yw));
+    R[3] = snap(2 * (xy + zw));
+    R[4] = snap(1 - 2 * (xx + zz));
+    R[5] = snap(2 * (yz - xw));
+    R[6] = snap(2 * (xz - yw));
+    R[7] = snap(2 * (yz + xw));
+    R[8] = snap(1 - 2 * (xx + yy));
+    return NOCT_OK;
+}
+
+noctStatus noctTransformCheck(const noctTransform *x, noctError *err)
+{
+    NOCT_REQUIRE(x != NULL);
+    for (int k = 0; k < 3; ++k) {
+        if (!isfinite(x->p[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "translation (%g, %g, %g) is not finite", x->p[0], x->p[1],
+                             x->p[2]);
+        if (fabs(x->p[k]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "translation (%g, %g, %g) lies beyond %g", x->p[0], x->p[1],
+                             x->p[2], NOCT_MAX_COORDINATE);
+    }
+    double R[9];
+    return noctQuatToMatrix(&x->q, R, err);
+}
+
+bool noct_is_identity(const double R[9])
+{
+    return memcmp(R, IDENTITY, sizeof IDENTITY) == 0;
+}
+
+/* fl(R v), in the documented order. */
+void noct_rotate(const double R[9], const double v[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i) {
+        volatile double a = R[3 * i] * v[0];
+        volatile double b = R[3 * i + 1] * v[1];
+        volatile double c = R[3 * i + 2] * v[2];
+        out[i] = (a + b) + c;
+    }
+}
+
+noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **out,
+                             noctError *err)
+{
+    *out = NULL;
+    double *v = malloc(3 * m->nv * sizeof *v);
+    uint32_t *sizes = malloc(m->nt * sizeof *sizes);
+    if (v == NULL || sizes == NULL) {
+        free(v);
+        free(sizes);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (size_t i = 0; i < m->nv; ++i)
+        noct_rotate(R, &m->v[3 * i], &v[3 * i]);
+    for (size_t i = 0; i < m->nt; ++i)
+        sizes[i] = 3;
+    noctStatus st = noctMeshCreate(v, m->nv, sizes, m->nt, m->tri, out, err);
+    free(v);
+    free(sizes);
+    return st;
+}
