@@ -431,16 +431,27 @@ noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo_new[
     }
     o->travel += d;
     bp->pending_reach = noct_max(bp->pending_reach, o->travel);
-    /* The fast test, on the block its leaves were made for (kept in home
-     * while they last, else taken from its leaves now). */
-    noct_home *blk = &bp->home[s];
-    if (!isfinite(blk->lo[0]) && !noct_bp_block_of(bp, s, &old, blk, &o->block))
-        noct_forget_home(bp, s);
-    const bool fast = isfinite(blk->lo[0]) && noct_in_block(blk, o->block, &nb);
     /* a new size changes its leaves' counts (and may split them), first */
-    bool resized = false;
-    for (int k = 0; k < 3; ++k)
+    bool resized = false, reboxed = false;
+    for (int k = 0; k < 3; ++k) {
         resized = resized || mhi_new[k] - mlo_new[k] != mhi[k] - mlo[k];
+        reboxed = reboxed || mlo_new[k] != mlo[k] || mhi_new[k] != mhi[k];
+    }
+    /* The fast test. A public proxy's, on the block its leaves were made
+     * for, in box space (kept in home while they last, else taken from
+     * its leaves now); a world object's, on its home in position space,
+     * which holds only while its local box is the same. */
+    noct_home *blk = &bp->home[s];
+    bool fast;
+    if (o->boxed) {
+        if (!isfinite(blk->lo[0]) && !noct_bp_block_of(bp, s, &old, blk, &o->block))
+            noct_forget_home(bp, s);
+        fast = isfinite(blk->lo[0]) && noct_in_block(blk, o->block, &nb);
+    } else {
+        if (reboxed)
+            noct_forget_home(bp, s);
+        fast = isfinite(blk->lo[0]) && noct_inside_home(pos, blk);
+    }
     if (resized && !noct_bp_reshape(bp, s, mlo_new, mhi_new)) {
         st = NOCT_ERR_NOMEM;
     } else if (!resized) {
@@ -461,7 +472,8 @@ noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo_new[
         if (st == NOCT_OK && escaped)
             st = noct_bp_settle(bp, true);
         /* its leaves are final: the block of the next fast test */
-        if (st == NOCT_OK && !noct_bp_block_of(bp, s, &nb, blk, &o->block))
+        if (st == NOCT_OK && !(o->boxed ? noct_bp_block_of(bp, s, &nb, blk, &o->block)
+                                        : noct_bp_home_of(bp, s, &nb, blk)))
             noct_forget_home(bp, s);
     }
     if (st != NOCT_OK) {

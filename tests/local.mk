@@ -12,6 +12,7 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
 	tests/check-zero-alloc tests/check-zero-alloc-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
+	tests/check-objects tests/check-objects-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
@@ -20,6 +21,7 @@ TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-alloc tests/check-alloc-efficient \
 	tests/check-zero-alloc tests/check-zero-alloc-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
+	tests/check-objects tests/check-objects-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -75,6 +77,15 @@ tests_check_alloc_efficient_SOURCES = $(tests_check_alloc_SOURCES)
 tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_objects_SOURCES = tests/check_objects.c $(test_common)
+tests_check_objects_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_objects_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_objects_efficient_SOURCES = $(tests_check_objects_SOURCES)
+tests_check_objects_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_objects_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_objects_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
 tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)

@@ -1,0 +1,869 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * A world that programs drive (world.h, transform.h): quaternions and
+ * their matrices against the rotations they name; rotations by multiples
+ * of 90 degrees moving hard cases exactly; random rotated scenes of boxes
+ * and non-convex meshes, static, kinematic (driven by set-transform) and
+ * moving, with filters, teleports, type and velocity changes, removals and
+ * additions, checked after every step against a brute force of exact tests
+ * on the placed shapes, the events against the brute force's differences,
+ * and the motion and response against the test's own run of them; events
+ * that follow every change; bad input changing nothing.
+ */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
+#include <noctree/transform.h>
+#include <noctree/world.h>
+
+#include "testutil.h"
+
+static uint64_t rng;
+static double uniform(void)
+{
+    return (double)(test_rand(&rng) >> 11) * 0x1p-53;
+}
+
+/* ---- meshes ------------------------------------------------------------------ */
+
+/* An L-shaped prism: the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2) less (1,1),
+ * z from -1/2 to 1/2; non-convex, its faces convex polygons. */
+static noctMesh *make_ell(void)
+{
+    static const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+    double v[36];
+    for (int i = 0; i < 12; ++i) {
+        v[3 * i] = P[i % 6][0] - 1;
+        v[3 * i + 1] = P[i % 6][1] - 1;
+        v[3 * i + 2] = i < 6 ? -0.5 : 0.5;
+    }
+    uint32_t sizes[10], idx[40];
+    size_t n = 0, k = 0;
+    const uint32_t faces[4][4] = {{6, 7, 8, 9}, {6, 9, 10, 11}, {0, 3, 2, 1}, {0, 5, 4, 3}};
+    for (int f = 0; f < 4; ++f) {
+        sizes[n++] = 4;
+        for (int c = 0; c < 4; ++c)
+            idx[k++] = faces[f][c];
+    }
+    for (uint32_t i = 0; i < 6; ++i) {
+        const uint32_t j = (i + 1) % 6;
+        sizes[n++] = 4;
+        idx[k++] = i;
+        idx[k++] = j;
+        idx[k++] = j + 6;
+        idx[k++] = i + 6;
+    }
+    noctMesh *m;
+    noctError err;
+    ck_assert_msg(noctMeshCreate(v, 12, sizes, n, idx, &m, &err) == NOCT_OK, "%s", err.message);
+    ck_assert(!noctMeshIsConvex(m));
+    return m;
+}
+
+static noctMesh *make_box(double hx, double hy, double hz)
+{
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreateBox(hx, hy, hz, &m, NULL), NOCT_OK);
+    return m;
+}
+
+/* ---- rotations ------------------------------------------------------------------ */
+
+static void mat_vec(const double R[9], const double v[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = R[3 * i] * v[0] + R[3 * i + 1] * v[1] + R[3 * i + 2] * v[2];
+}
+
+/* Rodrigues' formula, the test's own: the matrix of the rotation by a
+ * radians about unit axis u. */
+static void rodrigues(const double u[3], double a, double R[9])
+{
+    const double c = cos(a), s = sin(a), t = 1 - c;
+    R[0] = t * u[0] * u[0] + c;
+    R[1] = t * u[0] * u[1] - s * u[2];
+    R[2] = t * u[0] * u[2] + s * u[1];
+    R[3] = t * u[0] * u[1] + s * u[2];
+    R[4] = t * u[1] * u[1] + c;
+    R[5] = t * u[1] * u[2] - s * u[0];
+    R[6] = t * u[0] * u[2] - s * u[1];
+    R[7] = t * u[1] * u[2] + s * u[0];
+    R[8] = t * u[2] * u[2] + c;
+}
+
+START_TEST(quaternions_and_matrices)
+{
+    double R[9], E[9];
+    noctError err;
+    const noctQuat one = {0, 0, 0, 1};
+    ck_assert_int_eq(noctQuatToMatrix(&one, R, &err), NOCT_OK);
+    for (int i = 0; i < 9; ++i)
+        ck_assert(R[i] == (i % 4 == 0 ? 1.0 : 0.0));
+    /* every quarter turn about each axis: exactly 0, 1 and -1, and the
+     * rotation that the axis and angle name */
+    for (int axis = 0; axis < 3; ++axis)
+        for (int quarter = -4; quarter <= 8; ++quarter) {
+            double u[3] = {0, 0, 0};
+            u[axis] = 1;
+            noctQuat q;
+            ck_assert_int_eq(noctQuatFromAxisAngle(u, 90.0 * quarter, &q), NOCT_OK);
+            ck_assert_int_eq(noctQuatToMatrix(&q, R, &err), NOCT_OK);
+            rodrigues(u, quarter * (3.14159265358979323846 / 2), E);
+            for (int i = 0; i < 9; ++i) {
+                ck_assert_msg(R[i] == 0 || R[i] == 1 || R[i] == -1,
+                              "axis %d, %d quarters: entry %d is %.17g", axis, quarter, i, R[i]);
+                ck_assert_msg(R[i] == round(E[i]), "axis %d, %d quarters: entry %d", axis,
+                              quarter, i);
+            }
+        }
+    /* random quaternions: the matrix is Rodrigues' within rounding, the
+     * same twice, and a near-unit quaternion is normalised */
+    rng = 77;
+    for (int n = 0; n < 200; ++n) {
+        double u[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+        const double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        for (int k = 0; k < 3; ++k)
+            u[k] /= l;
+        const double deg = 720 * uniform() - 360;
+        noctQuat q;
+        ck_assert_int_eq(noctQuatFromAxisAngle(u, deg, &q), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&q, R, &err), NOCT_OK);
+        rodrigues(u, deg * (3.14159265358979323846 / 180), E);
+        for (int i = 0; i < 9; ++i)
+            ck_assert_msg(fabs(R[i] - E[i]) < 1e-14, "entry %d: %.17g against %.17g", i, R[i],
+                          E[i]);
+        double R2[9];
+        const noctQuat scaled = {q.x * (1 + 3e-7), q.y * (1 + 3e-7), q.z * (1 + 3e-7),
+                                 q.w * (1 + 3e-7)};
+        ck_assert_int_eq(noctQuatToMatrix(&scaled, R2, &err), NOCT_OK);
+        for (int i = 0; i < 9; ++i)
+            ck_assert(fabs(R2[i] - E[i]) < 1e-14);
+        double R3[9];
+        ck_assert_int_eq(noctQuatToMatrix(&scaled, R3, &err), NOCT_OK);
+        ck_assert(memcmp(R2, R3, sizeof R2) == 0);
+        /* q and -q: the same rotation */
+        const noctQuat neg = {-q.x, -q.y, -q.z, -q.w};
+        ck_assert_int_eq(noctQuatToMatrix(&neg, R3, &err), NOCT_OK);
+        ck_assert(memcmp(R, R3, sizeof R) == 0);
+    }
+    /* bad quaternions */
+    const noctQuat nan = {NAN, 0, 0, 1}, inf = {0, INFINITY, 0, 0}, big = {0, 0, 0, 1.001},
+                   zero = {0, 0, 0, 0};
+    ck_assert_int_eq(noctQuatToMatrix(&nan, R, &err), NOCT_ERR_NONFINITE);
+    ck_assert(R[0] == 1 && R[1] == 0); /* the identity */
+    ck_assert_int_eq(noctQuatToMatrix(&inf, R, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctQuatToMatrix(&big, R, &err), NOCT_ERR_INVALID);
+    ck_assert_msg(strstr(err.message, "squared length") != NULL, "%s", err.message);
+    ck_assert_int_eq(noctQuatToMatrix(&zero, R, &err), NOCT_ERR_INVALID);
+    const double zaxis[3] = {0, 0, 0}, nanaxis[3] = {NAN, 0, 1}, x[3] = {1, 0, 0};
+    noctQuat q;
+    ck_assert_int_eq(noctQuatFromAxisAngle(zaxis, 90, &q), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctQuatFromAxisAngle(nanaxis, 90, &q), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctQuatFromAxisAngle(x, INFINITY, &q), NOCT_ERR_NONFINITE);
+    ck_assert(q.w == 1 && q.x == 0);
+}
+END_TEST
+
+/* ---- rotation exactness ----------------------------------------------------- */
+
+/* Hard cases: two meshes and B's offset from A, touching or a hair apart. */
+typedef struct hard_case {
+    int a, b;         /* 0: unit cube, 1: the L, 2: a flat box */
+    double t[3];      /* B's translation (A's is 0) */
+} hard_case;
+
+#define HAIR 0x1p-40
+static const hard_case HARD[] = {
+    {0, 0, {1, 0, 0}},                 /* faces touch */
+    {0, 0, {1 + HAIR, 0, 0}},          /* a hair apart */
+    {0, 0, {1, 1, 0}},                 /* edges touch */
+    {0, 0, {1, 1 + HAIR, 0}},
+    {0, 0, {1, 1, 1}},                 /* corners touch */
+    {0, 0, {1, 1, 1 + HAIR}},
+    {0, 0, {1 - HAIR, 0.5, 0.25}},     /* overlapping a hair */
+    {1, 0, {0.5, 0.5, 0}},             /* a cube in the L's notch, touching both arms */
+    {1, 0, {0.5 + HAIR, 0.5, 0}},      /* still touching one arm */
+    {1, 0, {0.5 + HAIR, 0.5 + HAIR, 0}}, /* in the notch, touching neither */
+    {1, 1, {1, 1, 0}},                 /* two Ls, one's notch corner on the other's */
+    {1, 1, {2, 0, 0}},                 /* side by side, faces touching */
+    {1, 1, {2 + HAIR, 0, 0}},
+    {2, 0, {0, 0, 0.5 + 0.0625}},      /* a flat box on a cube's top face */
+    {2, 0, {0, 0, 0.5 + 0.0625 + HAIR}},
+};
+
+static const double *hard_rotation(int r, double R[9], noctQuat *q)
+{
+    /* r = 0: the identity; 1..9: a, b, c quarter turns about x, y, z; 10,
+     * 11: two composed (x then z, y then x), as quaternion products */
+    const double axes[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (r == 0) {
+        *q = (noctQuat){0, 0, 0, 1};
+    } else if (r <= 9) {
+        ck_assert_int_eq(noctQuatFromAxisAngle(axes[(r - 1) / 3], 90.0 * ((r - 1) % 3 + 1), q),
+                         NOCT_OK);
+    } else {
+        noctQuat p, s;
+        ck_assert_int_eq(noctQuatFromAxisAngle(axes[r == 10 ? 0 : 1], 90, &p), NOCT_OK);
+        ck_assert_int_eq(noctQuatFromAxisAngle(axes[r == 10 ? 2 : 0], r == 10 ? 90 : 270, &s),
+                         NOCT_OK);
+        /* s * p: p first */
+        *q = (noctQuat){s.w * p.x + s.x * p.w + s.y * p.z - s.z * p.y,
+                        s.w * p.y - s.x * p.z + s.y * p.w + s.z * p.x,
+                        s.w * p.z + s.x * p.y - s.y * p.x + s.z * p.w,
+                        s.w * p.w - s.x * p.x - s.y * p.y - s.z * p.z};
+    }
+    ck_assert_int_eq(noctQuatToMatrix(q, R, NULL), NOCT_OK);
+    return R;
+}
+
+START_TEST(quarter_turns_are_exact)
+{
+    noctMesh *mesh[3] = {make_box(0.5, 0.5, 0.5), make_ell(), make_box(0.75, 0.5, 0.0625)};
+    const size_t ncases = sizeof HARD / sizeof *HARD;
+    for (size_t c = 0; c < ncases; ++c) {
+        const hard_case *h = &HARD[c];
+        const double zero[3] = {0, 0, 0};
+        bool want;
+        ck_assert_int_eq(noctCollide(mesh[h->a], zero, mesh[h->b], h->t, NOCT_ACCURACY_EXACT,
+                                     &want, NULL),
+                         NOCT_OK);
+        for (int r = 0; r < 12; ++r) {
+            double R[9];
+            noctQuat q;
+            hard_rotation(r, R, &q);
+            for (int i = 0; i < 9; ++i)
+                ck_assert(R[i] == 0 || R[i] == 1 || R[i] == -1);
+            /* the whole case turned about a dyadic point and moved by a
+             * dyadic offset: exact */
+            const double off[3] = {3.25, -7.5, 1024};
+            noctTransform xa = {{off[0], off[1], off[2]}, q}, xb = xa;
+            double rt[3];
+            mat_vec(R, h->t, rt);
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = off[k] + rt[k];
+            bool got;
+            noctError err;
+            ck_assert_msg(noctCollideTransformed(mesh[h->a], &xa, mesh[h->b], &xb,
+                                                 NOCT_ACCURACY_EXACT, &got, NULL,
+                                                 &err) == NOCT_OK,
+                          "%s", err.message);
+            ck_assert_msg(got == want, "case %zu, rotation %d: %d, unrotated %d", c, r, got,
+                          want);
+            /* and in a world */
+            noctWorldDef wd = noctDefaultWorldDef();
+            wd.effects = NOCT_EFFECT_EVENTS;
+            noctWorld *w;
+            ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+            noctObjectDef d = noctDefaultObjectDef();
+            noctObjectId ia, ib;
+            d.mesh = mesh[h->a];
+            d.transform = xa;
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &ia, NULL), NOCT_OK);
+            d.mesh = mesh[h->b];
+            d.transform = xb;
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &ib, NULL), NOCT_OK);
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+            const noctPair *p;
+            ck_assert_msg(noctWorldColliding(w, &p) == (size_t)want,
+                          "world: case %zu, rotation %d", c, r);
+            ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+            noctWorldDestroy(w);
+        }
+    }
+    for (int i = 0; i < 3; ++i)
+        noctMeshDestroy(mesh[i]);
+}
+END_TEST
+
+/* ---- random rotated scenes against brute force ---------------------------------- */
+
+#define MAXO 48
+#define NMESH 5
+
+typedef struct model {
+    noctMesh *mesh[NMESH];
+    double radius[NMESH]; /* bounds |v| over the mesh's vertices */
+    bool alive[MAXO];
+    noctObjectId id[MAXO];
+    int mesh_of[MAXO];
+    noctTransform x[MAXO];
+    double vel[MAXO][3];
+    noctObjectType type[MAXO];
+    uint64_t cat[MAXO], mask[MAXO];
+    /* the pairs colliding after the last step, by model index */
+    int npairs;
+    noctPair pairs[MAXO * MAXO / 2];
+} model;
+
+static void random_quat(noctQuat *q)
+{
+    double c[4], l;
+    do {
+        l = 0;
+        for (int k = 0; k < 4; ++k) {
+            c[k] = 2 * uniform() - 1;
+            l += c[k] * c[k];
+        }
+    } while (l < 0.01 || l > 1);
+    l = sqrt(l);
+    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
+}
+
+static uint64_t random_bits(void)
+{
+    return uniform() < 0.6 ? NOCT_FILTER_ALL : (uint64_t)1 << (int)(3 * uniform());
+}
+
+static void random_place(noctTransform *x)
+{
+    for (int k = 0; k < 3; ++k)
+        x->p[k] = 6 * uniform();
+    if (uniform() < 0.15)
+        x->q = (noctQuat){0, 0, 0, 1};
+    else
+        random_quat(&x->q);
+}
+
+static void add_random(noctWorld *w, model *m, int i)
+{
+    noctObjectDef d = noctDefaultObjectDef();
+    m->mesh_of[i] = (int)(NMESH * uniform());
+    d.mesh = m->mesh[m->mesh_of[i]];
+    random_place(&m->x[i]);
+    d.transform = m->x[i];
+    const double u = uniform();
+    m->type[i] = u < 0.2 ? NOCT_OBJECT_STATIC : u < 0.45 ? NOCT_OBJECT_KINEMATIC
+                                                         : NOCT_OBJECT_MOVING;
+    d.type = m->type[i];
+    for (int k = 0; k < 3; ++k)
+        m->vel[i][k] = d.velocity[k] = 0.15 * (uniform() - 0.5);
+    m->cat[i] = d.category = random_bits();
+    m->mask[i] = d.mask = random_bits();
+    d.user_data = &m->alive[i];
+    noctError err;
+    ck_assert_msg(noctWorldCreateObject(w, &d, &m->id[i], &err) == NOCT_OK, "%s", err.message);
+    m->alive[i] = true;
+}
+
+static int cmp_pair(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    if (a->b.index != b->b.index)
+        return a->b.index < b->b.index ? -1 : 1;
+    return 0;
+}
+
+/* The brute force: every pair of live objects that the filters allow,
+ * tested by noctCollideTransformed() on the model's transforms (after a
+ * bounding-sphere test of the test's own), by handle, sorted. */
+static int brute_force(const model *m, noctPair *out)
+{
+    int n = 0;
+    for (int i = 0; i < MAXO; ++i)
+        for (int j = 0; j < MAXO; ++j) {
+            if (!m->alive[i] || !m->alive[j] || m->id[i].index >= m->id[j].index)
+                continue;
+            if (!(m->cat[i] & m->mask[j]) || !(m->cat[j] & m->mask[i]))
+                continue;
+            double d2 = 0;
+            for (int k = 0; k < 3; ++k)
+                d2 += (m->x[i].p[k] - m->x[j].p[k]) * (m->x[i].p[k] - m->x[j].p[k]);
+            const double r = m->radius[m->mesh_of[i]] + m->radius[m->mesh_of[j]];
+            if (d2 > r * r * 1.0001)
+                continue;
+            bool hit;
+            noctError err;
+            ck_assert_msg(noctCollideTransformed(m->mesh[m->mesh_of[i]], &m->x[i],
+                                                 m->mesh[m->mesh_of[j]], &m->x[j],
+                                                 NOCT_ACCURACY_EXACT, &hit, NULL,
+                                                 &err) == NOCT_OK,
+                          "%s", err.message);
+            if (hit)
+                out[n++] = (noctPair){m->id[i], m->id[j]};
+        }
+    qsort(out, (size_t)n, sizeof *out, cmp_pair);
+    return n;
+}
+
+static bool same_id(noctObjectId a, noctObjectId b)
+{
+    return a.index == b.index && a.generation == b.generation;
+}
+
+static bool has_pair(const noctPair *l, int n, noctPair p)
+{
+    for (int i = 0; i < n; ++i)
+        if (same_id(l[i].a, p.a) && same_id(l[i].b, p.b))
+            return true;
+    return false;
+}
+
+/* The world's list equals the expected one, in order. */
+static void lists_equal(const char *what, const noctPair *got, size_t ngot,
+                        const noctPair *want, int nwant, int step)
+{
+    ck_assert_msg(ngot == (size_t)nwant, "step %d: %zu %s pairs, brute force %d", step, ngot,
+                  what, nwant);
+    for (int i = 0; i < nwant; ++i)
+        ck_assert_msg(same_id(got[i].a, want[i].a) && same_id(got[i].b, want[i].b),
+                      "step %d: %s pair %d is (%u, %u), brute force (%u, %u)", step, what, i,
+                      got[i].a.index, got[i].b.index, want[i].a.index, want[i].b.index);
+}
+
+static int model_of(const model *m, noctObjectId id)
+{
+    for (int i = 0; i < MAXO; ++i)
+        if (m->alive[i] && same_id(m->id[i], id))
+            return i;
+    return -1;
+}
+
+/* Between steps: what a program does to its objects. */
+static void drive(noctWorld *w, model *m)
+{
+    noctError err;
+    for (int i = 0; i < MAXO; ++i) {
+        if (!m->alive[i])
+            continue;
+        const double u = uniform();
+        if (m->type[i] == NOCT_OBJECT_KINEMATIC) { /* driven every frame */
+            for (int k = 0; k < 3; ++k)
+                m->x[i].p[k] += 0.1 * (uniform() - 0.5);
+            if (uniform() < 0.3)
+                random_quat(&m->x[i].q);
+            ck_assert_msg(noctWorldSetTransform(w, m->id[i], &m->x[i], &err) == NOCT_OK, "%s",
+                          err.message);
+        } else if (u < 0.03) { /* a teleport, anywhere */
+            random_place(&m->x[i]);
+            ck_assert_msg(noctWorldSetTransform(w, m->id[i], &m->x[i], &err) == NOCT_OK, "%s",
+                          err.message);
+        } else if (u < 0.05) {
+            for (int k = 0; k < 3; ++k)
+                m->vel[i][k] = 0.15 * (uniform() - 0.5);
+            ck_assert_int_eq(noctWorldSetVelocity(w, m->id[i], m->vel[i], &err), NOCT_OK);
+        } else if (u < 0.06) {
+            m->type[i] = uniform() < 0.5 ? NOCT_OBJECT_MOVING : NOCT_OBJECT_STATIC;
+            ck_assert_int_eq(noctWorldSetType(w, m->id[i], m->type[i], &err), NOCT_OK);
+        } else if (u < 0.08) {
+            m->cat[i] = random_bits();
+            m->mask[i] = random_bits();
+            ck_assert_int_eq(noctWorldSetFilter(w, m->id[i], m->cat[i], m->mask[i], &err),
+                             NOCT_OK);
+        } else if (u < 0.09) {
+            ck_assert_int_eq(noctWorldRemove(w, m->id[i], &err), NOCT_OK);
+            m->alive[i] = false;
+        }
+    }
+    for (int i = 0; i < MAXO; ++i)
+        if (!m->alive[i] && uniform() < 0.3)
+            add_random(w, m, i);
+}
+
+START_TEST(rotated_scenes_against_brute_force)
+{
+    /* _i: 0 motion, events and response; 1 detection only (events, no
+     * motion); 2 rebuild maintenance; 3 N = 1 */
+    rng = 0x0b1ec7 + (uint64_t)_i;
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.mesh[0] = make_box(0.5, 0.5, 0.5);
+    m.mesh[1] = make_ell();
+    m.mesh[2] = make_box(0.9, 0.1, 0.3);
+    m.mesh[3] = make_box(0.125, 0.125, 0.125);
+    m.mesh[4] = make_ell();
+    for (int i = 0; i < NMESH; ++i) {
+        double lo[3], hi[3];
+        noctMeshBounds(m.mesh[i], lo, hi);
+        double r = 0;
+        for (int k = 0; k < 3; ++k)
+            r += fmax(fabs(lo[k]), fabs(hi[k])) * fmax(fabs(lo[k]), fabs(hi[k]));
+        m.radius[i] = sqrt(r);
+    }
+    noctWorldDef wd = noctDefaultWorldDef();
+    if (_i == 1)
+        wd.effects = NOCT_EFFECT_EVENTS;
+    if (_i == 2)
+        wd.maintenance = NOCT_MAINTAIN_REBUILD;
+    wd.N = _i == 3 ? 1 : 4;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    for (int i = 0; i < 30; ++i)
+        add_random(w, &m, i);
+    const bool motion = (wd.effects & NOCT_EFFECT_MOTION) != 0;
+    const bool response = (wd.effects & NOCT_EFFECT_RESPONSE) != 0;
+    static noctPair now[MAXO * MAXO / 2];
+    long total_pairs = 0, total_began = 0, total_ended = 0;
+    for (int step = 0; step < 40; ++step) {
+        if (step > 0)
+            drive(w, &m);
+        noctError err;
+        ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
+        /* the test's own motion: p += v, bit for bit */
+        if (motion)
+            for (int i = 0; i < MAXO; ++i)
+                if (m.alive[i] && m.type[i] == NOCT_OBJECT_MOVING)
+                    for (int k = 0; k < 3; ++k)
+                        m.x[i].p[k] += m.vel[i][k];
+        const int n = brute_force(&m, now);
+        const noctPair *p;
+        size_t np = noctWorldColliding(w, &p);
+        lists_equal("colliding", p, np, now, n, step);
+        /* events: the brute force's differences */
+        static noctPair began[MAXO * MAXO / 2], ended[MAXO * MAXO / 2];
+        int nb = 0, ne = 0;
+        for (int i = 0; i < n; ++i)
+            if (!has_pair(m.pairs, m.npairs, now[i]))
+                began[nb++] = now[i];
+        for (int i = 0; i < m.npairs; ++i)
+            if (!has_pair(now, n, m.pairs[i]))
+                ended[ne++] = m.pairs[i];
+        np = noctWorldBegan(w, &p);
+        lists_equal("began", p, np, began, nb, step);
+        np = noctWorldEnded(w, &p);
+        lists_equal("ended", p, np, ended, ne, step);
+        total_pairs += n;
+        total_began += nb;
+        total_ended += ne;
+        memcpy(m.pairs, now, (size_t)n * sizeof *now);
+        m.npairs = n;
+        /* the response: moving objects in a pair that began turn back */
+        if (response) {
+            bool turn[MAXO] = {false};
+            for (int i = 0; i < nb; ++i) {
+                const int a = model_of(&m, began[i].a), b = model_of(&m, began[i].b);
+                ck_assert(a >= 0 && b >= 0);
+                turn[a] = turn[b] = true;
+            }
+            for (int i = 0; i < MAXO; ++i)
+                if (turn[i] && m.type[i] == NOCT_OBJECT_MOVING)
+                    for (int k = 0; k < 3; ++k)
+                        m.vel[i][k] = -m.vel[i][k];
+        }
+        /* the world's objects are the model's */
+        for (int i = 0; i < MAXO; ++i) {
+            if (!m.alive[i])
+                continue;
+            noctTransform x;
+            double v[3];
+            ck_assert_int_eq(noctWorldGetTransform(w, m.id[i], &x), NOCT_OK);
+            ck_assert_msg(memcmp(x.p, m.x[i].p, sizeof x.p) == 0, "step %d: object %d moved", step,
+                          i);
+            ck_assert(memcmp(&x.q, &m.x[i].q, sizeof x.q) == 0);
+            ck_assert_int_eq(noctWorldGetVelocity(w, m.id[i], v), NOCT_OK);
+            ck_assert_msg(memcmp(v, m.vel[i], sizeof v) == 0, "step %d: object %d's velocity",
+                          step, i);
+            ck_assert(noctWorldGetUserData(w, m.id[i]) == &m.alive[i]);
+            ck_assert(noctWorldGetMesh(w, m.id[i]) == m.mesh[m.mesh_of[i]]);
+        }
+        ck_assert_msg(noctWorldValidate(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
+    }
+    /* the scenes are busy enough to mean something */
+    ck_assert_int_gt(total_pairs, 200);
+    ck_assert_int_gt(total_began, 40);
+    ck_assert_int_gt(total_ended, 40);
+    noctWorldDestroy(w);
+    for (int i = 0; i < NMESH; ++i)
+        noctMeshDestroy(m.mesh[i]);
+}
+END_TEST
+
+/* ---- events that follow every change ------------------------------------------ */
+
+static size_t began_n(noctWorld *w)
+{
+    const noctPair *p;
+    return noctWorldBegan(w, &p);
+}
+
+static size_t ended_n(noctWorld *w)
+{
+    const noctPair *p;
+    return noctWorldEnded(w, &p);
+}
+
+START_TEST(events_follow_changes)
+{
+    noctMesh *cube = make_box(0.5, 0.5, 0.5);
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.mesh = cube;
+    d.type = NOCT_OBJECT_KINEMATIC;
+    noctObjectId a, b, c, e;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &a, NULL), NOCT_OK);
+    d.transform.p[0] = 5;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &b, NULL), NOCT_OK);
+    d.transform.p[0] = 20;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &c, NULL), NOCT_OK);
+    d.transform.p[0] = 20.5;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &e, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(began_n(w), 1); /* (c, e) */
+    /* a teleport into contact begins */
+    noctTransform x = noctIdentityTransform();
+    x.p[0] = 1; /* faces touch */
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldBegan(w, &p), 1);
+    ck_assert(same_id(p[0].a, a) && same_id(p[0].b, b));
+    /* a rotation that turns b away: a 45 degree turn about z of the cube
+     * at x = 1.75 reaches to 1.75 - sqrt(1/2) > 1/2 */
+    const double zaxis[3] = {0, 0, 1};
+    x.p[0] = 1.75;
+    ck_assert_int_eq(noctQuatFromAxisAngle(zaxis, 45, &x.q), NOCT_OK);
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldEnded(w, &p), 1);
+    ck_assert(same_id(p[0].a, a) && same_id(p[0].b, b));
+    /* ... and a smaller offset turned brings it back into contact */
+    x.p[0] = 1.2;
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(began_n(w), 1);
+    /* filtered out: ends; allowed again: begins */
+    ck_assert_int_eq(noctWorldSetFilter(w, b, 2, 0, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(ended_n(w), 1);
+    ck_assert_uint_eq(began_n(w), 0);
+    ck_assert_int_eq(noctWorldSetFilter(w, b, 2, NOCT_FILTER_ALL, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(began_n(w), 1);
+    uint64_t cat, mask;
+    ck_assert_int_eq(noctWorldGetFilter(w, b, &cat, &mask), NOCT_OK);
+    ck_assert(cat == 2 && mask == NOCT_FILTER_ALL);
+    /* a step with no change: no events */
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(began_n(w) + ended_n(w), 0);
+    /* removing c: its pair ends at the next step; removing it clears no
+     * other list */
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK); /* no change */
+    x = noctIdentityTransform();
+    x.p[0] = 5;
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK); /* away */
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(ended_n(w), 1);
+    ck_assert_int_eq(noctWorldRemove(w, c, NULL), NOCT_OK);
+    ck_assert_uint_eq(ended_n(w), 1); /* the last step's, still */
+    ck_assert_uint_eq(noctWorldColliding(w, &p), 1);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldEnded(w, &p), 1);
+    ck_assert(same_id(p[0].a, c) && same_id(p[0].b, e));
+    ck_assert_uint_eq(noctWorldColliding(w, &p), 0);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* A leaf whose boxes were far apart at its last sweep is skipped while
+ * they cannot have closed the gap: a teleport within the leaf, or a turn
+ * that grows a box, must still be seen at the next step. */
+START_TEST(teleports_within_a_leaf)
+{
+    noctMesh *cube = make_box(0.5, 0.5, 0.5);
+    for (int turn = 0; turn < 2; ++turn) {
+        noctWorldDef wd = noctDefaultWorldDef();
+        wd.effects = NOCT_EFFECT_EVENTS;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = cube;
+        d.type = NOCT_OBJECT_KINEMATIC;
+        noctObjectId id[3];
+        for (int i = 0; i < 3; ++i) {
+            d.transform.p[0] = turn && i == 1 ? 1.2 : 3 * i;
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+        }
+        for (int s = 0; s < 6; ++s) /* the leaf is swept, then skipped */
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        noctWorldCounters c;
+        noctWorldGetCounters(w, &c);
+        ck_assert_uint_gt(c.leaves_skipped, 0);
+        const noctPair *p;
+        ck_assert_uint_eq(noctWorldColliding(w, &p), 0);
+        noctTransform x = noctIdentityTransform();
+        if (turn) { /* at 1.2, a 45 degree turn reaches to 1.2 - 0.707 */
+            const double zaxis[3] = {0, 0, 1};
+            x.p[0] = 1.2;
+            ck_assert_int_eq(noctQuatFromAxisAngle(zaxis, 45, &x.q), NOCT_OK);
+        } else {
+            x.p[0] = 1;
+        }
+        ck_assert_int_eq(noctWorldSetTransform(w, id[1], &x, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        ck_assert_msg(noctWorldColliding(w, &p) == 1, "turn %d: the teleport was missed", turn);
+        ck_assert_uint_eq(noctWorldBegan(w, &p), 1);
+        noctWorldDestroy(w);
+    }
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* ---- bad input changes nothing ------------------------------------------------- */
+
+START_TEST(bad_input_changes_nothing)
+{
+    noctMesh *cube = make_box(0.5, 0.5, 0.5);
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&(noctWorldDef){0}, &w, NULL), NOCT_ERR_INVALID);
+    noctWorldDef wd = noctDefaultWorldDef();
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.mesh = cube;
+    d.velocity[0] = 0.25;
+    noctObjectId a;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &a, NULL), NOCT_OK);
+    noctError err;
+    noctObjectId bad;
+    noctObjectDef e = d;
+    e.transform.q = (noctQuat){NAN, 0, 0, 1};
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_NONFINITE);
+    e.transform.q = (noctQuat){0, 0, 0.1, 1};
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_INVALID);
+    e = d;
+    e.transform.p[1] = INFINITY;
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_NONFINITE);
+    e = d;
+    e.transform.p[1] = 1e101;
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_TOO_LARGE);
+    e = d;
+    e.velocity[2] = NAN;
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_NONFINITE);
+    ck_assert_msg(strstr(err.message, "velocity") != NULL, "%s", err.message);
+    e = d;
+    e.category = 0;
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_INVALID);
+    e = d;
+    e.type = (noctObjectType)7;
+    ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_INVALID);
+    ck_assert(bad.index == 0 && bad.generation == 0);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 1);
+    /* the setters: a status, nothing changed */
+    noctTransform x = noctIdentityTransform();
+    x.q = (noctQuat){0, 0, 0, 2};
+    ck_assert_int_eq(noctWorldSetTransform(w, a, &x, &err), NOCT_ERR_INVALID);
+    x.q = (noctQuat){0, INFINITY, 0, 1};
+    ck_assert_int_eq(noctWorldSetTransform(w, a, &x, &err), NOCT_ERR_NONFINITE);
+    const double nanv[3] = {0, NAN, 0};
+    ck_assert_int_eq(noctWorldSetVelocity(w, a, nanv, &err), NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldSetFilter(w, a, 0, 1, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldSetType(w, a, (noctObjectType)-1, &err), NOCT_ERR_INVALID);
+    noctTransform got;
+    double v[3];
+    noctObjectType t;
+    uint64_t cat, mask;
+    ck_assert_int_eq(noctWorldGetTransform(w, a, &got), NOCT_OK);
+    ck_assert(got.p[0] == 0 && got.p[1] == 0 && got.q.w == 1 && got.q.x == 0);
+    ck_assert_int_eq(noctWorldGetVelocity(w, a, v), NOCT_OK);
+    ck_assert(v[0] == 0.25 && v[1] == 0 && v[2] == 0);
+    ck_assert_int_eq(noctWorldGetType(w, a, &t), NOCT_OK);
+    ck_assert_int_eq(t, NOCT_OBJECT_MOVING);
+    ck_assert_int_eq(noctWorldGetFilter(w, a, &cat, &mask), NOCT_OK);
+    ck_assert(cat == NOCT_FILTER_ALL && mask == NOCT_FILTER_ALL);
+    /* stale handles */
+    ck_assert_int_eq(noctWorldRemove(w, a, &err), NOCT_OK);
+    x = noctIdentityTransform();
+    ck_assert_int_eq(noctWorldSetTransform(w, a, &x, &err), NOCT_ERR_INVALID);
+    ck_assert_msg(strstr(err.message, "handle") != NULL, "%s", err.message);
+    ck_assert_int_eq(noctWorldSetVelocity(w, a, v, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldSetType(w, a, NOCT_OBJECT_STATIC, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldSetFilter(w, a, 1, 1, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldSetUserData(w, a, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldRemove(w, a, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetTransform(w, a, &got), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetVelocity(w, a, v), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetType(w, a, &t), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetFilter(w, a, &cat, &mask), NOCT_ERR_INVALID);
+    ck_assert(noctWorldGetUserData(w, a) == NULL);
+    ck_assert(noctWorldGetMesh(w, a) == NULL);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    /* the narrowphase with transforms */
+    bool hit;
+    noctTransform y = noctIdentityTransform();
+    y.q.w = 0.5;
+    ck_assert_int_eq(noctCollideTransformed(cube, &x, cube, &y, NOCT_ACCURACY_EXACT, &hit, NULL,
+                                            &err),
+                     NOCT_ERR_INVALID);
+    y = noctIdentityTransform();
+    y.p[2] = NAN;
+    ck_assert_int_eq(noctCollideTransformed(cube, &x, cube, &y, NOCT_ACCURACY_EXACT, &hit, NULL,
+                                            &err),
+                     NOCT_ERR_NONFINITE);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+/* A velocity vector is used bit for bit: after k steps the position is
+ * the k-fold sum, whatever its length. */
+START_TEST(velocity_bit_for_bit)
+{
+    noctMesh *cube = make_box(0.5, 0.5, 0.5);
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_MOTION;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.mesh = cube;
+    const double v[3] = {0.1, -1.0 / 3, 1e-7};
+    memcpy(d.velocity, v, sizeof v);
+    noctObjectId a;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &a, NULL), NOCT_OK);
+    double p[3] = {0, 0, 0};
+    for (int s = 0; s < 50; ++s) {
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        for (int k = 0; k < 3; ++k)
+            p[k] += v[k];
+    }
+    noctTransform x;
+    ck_assert_int_eq(noctWorldGetTransform(w, a, &x), NOCT_OK);
+    ck_assert(memcmp(x.p, p, sizeof p) == 0);
+    /* kinematic: the velocity is kept, not used */
+    ck_assert_int_eq(noctWorldSetType(w, a, NOCT_OBJECT_KINEMATIC, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldGetTransform(w, a, &x), NOCT_OK);
+    ck_assert(memcmp(x.p, p, sizeof p) == 0);
+    double got[3];
+    ck_assert_int_eq(noctWorldGetVelocity(w, a, got), NOCT_OK);
+    ck_assert(memcmp(got, v, sizeof v) == 0);
+    ck_assert_int_eq(noctWorldSetType(w, a, NOCT_OBJECT_MOVING, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    for (int k = 0; k < 3; ++k)
+        p[k] += v[k];
+    ck_assert_int_eq(noctWorldGetTransform(w, a, &x), NOCT_OK);
+    ck_assert(memcmp(x.p, p, sizeof p) == 0);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("objects");
+    TCase *tc = tcase_create("transforms");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, quaternions_and_matrices);
+    tcase_add_test(tc, quarter_turns_are_exact);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("driven worlds");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, rotated_scenes_against_brute_force, 0, 4);
+    tcase_add_test(tc, events_follow_changes);
+    tcase_add_test(tc, teleports_within_a_leaf);
+    tcase_add_test(tc, velocity_bit_for_bit);
+    tcase_add_test(tc, bad_input_changes_nothing);
+    suite_add_tcase(s, tc);
+    return run_suite(s);
+}
