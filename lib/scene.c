@@ -30,6 +30,11 @@ typedef struct scene_mesh {
 typedef struct scene_object {
     size_t mesh;
     double pos[3], dir[3], speed;
+    bool has_velocity;       /* a velocity vector, not dir and speed */
+    double vel[3];
+    noctQuat q;              /* from 'rotate', else the identity */
+    noctObjectType type;
+    uint64_t category, mask;
 } scene_object;
 
 typedef struct scene_family {
@@ -242,32 +247,116 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
                                            : perr(p, NOCT_ERR_NOMEM, "out of memory");
 }
 
+/* A 64-bit filter word: decimal, or hexadecimal with 0x. */
+static noctStatus bits(parser *p, const char *what, uint64_t *out)
+{
+    char *tok = next(p);
+    if (tok == NULL)
+        return perr(p, NOCT_ERR_PARSE, "missing %s", what);
+    char *end;
+    errno = 0;
+    const unsigned long long v = strtoull(tok, &end, 0);
+    if (end == tok || *end != '\0' || errno != 0 || tok[0] == '-')
+        return perr(p, NOCT_ERR_PARSE, "%s: not a 64-bit unsigned integer: '%s'", what, tok);
+    *out = (uint64_t)v;
+    return NOCT_OK;
+}
+
+#define OBJECT_SYNTAX                                                                    \
+    "expected 'object MESH X Y Z [DX DY DZ SPEED] [velocity VX VY VZ] "                \
+    "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK]'"
+
+/* The object's attributes after its position and legacy motion: each
+ * keyword once. */
+static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool legacy)
+{
+    bool seen[4] = {false, false, false, false};
+    static const char *const KW[4] = {"velocity", "rotate", "type", "filter"};
+    noctStatus st = NOCT_OK;
+    for (; tok != NULL && st == NOCT_OK; tok = next(p)) {
+        int k = 0;
+        while (k < 4 && strcmp(tok, KW[k]) != 0)
+            ++k;
+        if (k == 4)
+            return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
+        if (seen[k])
+            return perr(p, NOCT_ERR_PARSE, "'%s' given twice", tok);
+        seen[k] = true;
+        if (k == 0) {
+            if (legacy)
+                return perr(p, NOCT_ERR_PARSE,
+                            "an object has a velocity or a direction and speed, not both");
+            o->has_velocity = true;
+            st = numbers(p, "velocity", o->vel, 3);
+        } else if (k == 1) {
+            double axis[4];
+            if ((st = numbers(p, "rotation axis and angle", axis, 4)) != NOCT_OK)
+                return st;
+            if (noctQuatFromAxisAngle(axis, axis[3], &o->q) != NOCT_OK)
+                return perr(p, NOCT_ERR_INVALID, "a rotation needs a non-zero axis");
+        } else if (k == 2) {
+            char *t = next(p);
+            if (t == NULL)
+                return perr(p, NOCT_ERR_PARSE, "missing type (static, kinematic or moving)");
+            if (strcmp(t, "static") == 0)
+                o->type = NOCT_OBJECT_STATIC;
+            else if (strcmp(t, "kinematic") == 0)
+                o->type = NOCT_OBJECT_KINEMATIC;
+            else if (strcmp(t, "moving") == 0)
+                o->type = NOCT_OBJECT_MOVING;
+            else
+                return perr(p, NOCT_ERR_INVALID,
+                            "unknown type '%s' (static, kinematic or moving)", t);
+        } else {
+            if ((st = bits(p, "category", &o->category)) != NOCT_OK ||
+                (st = bits(p, "mask", &o->mask)) != NOCT_OK)
+                return st;
+            if (o->category == 0)
+                return perr(p, NOCT_ERR_INVALID, "a category of 0 could never pair");
+        }
+    }
+    return st;
+}
+
+static bool is_attribute(const char *tok)
+{
+    return strcmp(tok, "velocity") == 0 || strcmp(tok, "rotate") == 0 ||
+           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0;
+}
+
 static noctStatus parse_object(parser *p, noctScene *s)
 {
     char *name = next(p);
     if (name == NULL)
-        return perr(p, NOCT_ERR_PARSE, "expected 'object MESH X Y Z [DX DY DZ SPEED]'");
+        return perr(p, NOCT_ERR_PARSE, OBJECT_SYNTAX);
     size_t mi = s->nmeshes;
     for (size_t i = 0; i < s->nmeshes; ++i)
         if (strcmp(s->meshes[i].name, name) == 0)
             mi = i;
     if (mi == s->nmeshes)
         return perr(p, NOCT_ERR_INVALID, "unknown mesh '%s' (define it first)", name);
-    scene_object o = {mi, {0, 0, 0}, {0, 0, 0}, 0};
+    scene_object o;
+    memset(&o, 0, sizeof o);
+    o.mesh = mi;
+    o.q = (noctQuat){0, 0, 0, 1};
+    o.type = NOCT_OBJECT_MOVING;
+    o.category = o.mask = NOCT_FILTER_ALL;
     noctStatus st = numbers(p, "position", o.pos, 3);
     if (st != NOCT_OK)
         return st;
     char *tok = next(p);
-    if (tok != NULL) {
-        /* push the token back: re-parse from it */
+    bool legacy = false;
+    if (tok != NULL && !is_attribute(tok)) {
+        /* the direction's first number: re-parse from it */
+        legacy = true;
         char *end;
         o.dir[0] = strtod(tok, &end);
         if (end == tok || *end != '\0')
-            return perr(p, NOCT_ERR_PARSE, "not a number: '%s'", tok);
+            return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
         if (!isfinite(o.dir[0]))
             return perr(p, NOCT_ERR_NONFINITE, "not a finite number: '%s'", tok);
         if ((st = numbers(p, "direction", &o.dir[1], 2)) != NOCT_OK ||
-            (st = number(p, "speed", &o.speed)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            (st = number(p, "speed", &o.speed)) != NOCT_OK)
             return st;
         if (o.speed < 0)
             return perr(p, NOCT_ERR_INVALID, "negative speed");
@@ -277,7 +366,10 @@ static noctStatus parse_object(parser *p, noctScene *s)
         double unit[3];
         if (o.speed > 0 && !noct_unit_direction(o.dir, unit))
             return perr(p, NOCT_ERR_INVALID, "a moving object needs a non-zero direction");
+        tok = next(p);
     }
+    if ((st = parse_attributes(p, &o, tok, legacy)) != NOCT_OK)
+        return st;
     for (int k = 0; k < 3; ++k)
         if (fabs(o.pos[k]) > NOCT_MAX_COORDINATE)
             return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");
@@ -552,7 +644,27 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
     for (size_t i = 0; i < s->nobjects && st == NOCT_OK; ++i) {
         const scene_object *o = &s->objects[i];
         noctObjectId id;
+        if (o->has_velocity) {
+            noctObjectDef d = noctDefaultObjectDef();
+            d.mesh = s->meshes[o->mesh].mesh;
+            memcpy(d.transform.p, o->pos, sizeof d.transform.p);
+            d.transform.q = o->q;
+            memcpy(d.velocity, o->vel, sizeof d.velocity);
+            d.type = o->type;
+            d.category = o->category;
+            d.mask = o->mask;
+            st = noctWorldCreateObject(w, &d, &id, err);
+            continue;
+        }
+        /* direction and speed: the velocity as noctWorldAdd() makes it */
         st = noctWorldAdd(w, s->meshes[o->mesh].mesh, o->pos, o->dir, o->speed, &id, err);
+        const noctTransform x = {{o->pos[0], o->pos[1], o->pos[2]}, o->q};
+        if (st == NOCT_OK && (o->q.x != 0 || o->q.y != 0 || o->q.z != 0))
+            st = noctWorldSetTransform(w, id, &x, err);
+        if (st == NOCT_OK && o->type != NOCT_OBJECT_MOVING)
+            st = noctWorldSetType(w, id, o->type, err);
+        if (st == NOCT_OK && (o->category != NOCT_FILTER_ALL || o->mask != NOCT_FILTER_ALL))
+            st = noctWorldSetFilter(w, id, o->category, o->mask, err);
     }
     if (st != NOCT_OK) {
         noctWorldDestroy(w);

@@ -427,6 +427,28 @@ START_TEST(scene_limits)
         {"mesh a box 1 1 1\nobject a 0 0 0 1 0 0 1e309\n", NOCT_ERR_NONFINITE, 2,
          "not a finite number"},
         {"mesh a box 1 1 1\nobject b 0 0 0\n", NOCT_ERR_INVALID, 2, "unknown mesh 'b'"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 rotate 0 0 0 90\n", NOCT_ERR_INVALID, 2,
+         "non-zero axis"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 rotate 1 0 0 nan\n", NOCT_ERR_NONFINITE, 2,
+         "not a finite number"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 rotate 1 0 0\n", NOCT_ERR_PARSE, 2,
+         "missing rotation axis and angle"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 velocity 1 inf 0\n", NOCT_ERR_NONFINITE, 2,
+         "not a finite number"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 1 0 0 1 velocity 1 0 0\n", NOCT_ERR_PARSE, 2,
+         "not both"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 velocity 1 0 0 velocity 1 0 0\n",
+         NOCT_ERR_PARSE, 2, "given twice"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 type floating\n", NOCT_ERR_INVALID, 2,
+         "unknown type 'floating'"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 filter 0 1\n", NOCT_ERR_INVALID, 2,
+         "category of 0"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 filter 1 -1\n", NOCT_ERR_PARSE, 2,
+         "mask: not a 64-bit"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 filter 1 0x10000000000000000\n", NOCT_ERR_PARSE,
+         2, "mask: not a 64-bit"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 spin 1 0 0\n", NOCT_ERR_PARSE, 2,
+         "unexpected 'spin'"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof *bad; ++i) {
         char name[32];
@@ -434,6 +456,60 @@ START_TEST(scene_limits)
         expect_scene(name, bad[i].text, strlen(bad[i].text), bad[i].st, bad[i].line,
                      bad[i].what);
     }
+}
+END_TEST
+
+/* Rotations, velocity vectors, types and filters reach the world. */
+START_TEST(object_attributes)
+{
+    const char *path = write_text("attributes.scene",
+        "effects motion events\nmesh a box 0.5 0.25 0.125\n"
+        "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
+        "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n"
+        "object a 0 5 0 type static\n"
+        "object a 0 0 5 velocity 1e-3 0 0 type moving\n");
+    noctScene *sc;
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, &sc, &err);
+    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
+    noctWorld *w;
+    st = noctSceneBuild(sc, &w, &err);
+    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 4);
+    noctObjectId id[4];
+    for (uint32_t i = 0; i < 4; ++i)
+        id[i] = (noctObjectId){i, 1};
+    noctTransform x;
+    double v[3], lo[3], hi[3];
+    noctObjectType t;
+    uint64_t cat, mask;
+    /* a quarter turn about z: the box's x and y half-extents swap */
+    ck_assert_int_eq(noctWorldGetTransform(w, id[0], &x), NOCT_OK);
+    ck_assert(fabs(x.q.z - sqrt(0.5)) < 1e-16 && x.q.w == x.q.z && x.q.x == 0);
+    ck_assert_int_eq(noctWorldObjectBox(w, id[0], lo, hi), NOCT_OK);
+    ck_assert(lo[0] == -0.25 && hi[0] == 0.25 && lo[1] == -0.5 && hi[1] == 0.5);
+    ck_assert_int_eq(noctWorldGetVelocity(w, id[0], v), NOCT_OK);
+    ck_assert(v[0] == 0.1 && v[1] == -0.2 && v[2] == 0.3);
+    ck_assert_int_eq(noctWorldGetFilter(w, id[0], &cat, &mask), NOCT_OK);
+    ck_assert(cat == 6 && mask == 3);
+    ck_assert_int_eq(noctWorldGetType(w, id[1], &t), NOCT_OK);
+    ck_assert_int_eq(t, NOCT_OBJECT_KINEMATIC);
+    ck_assert_int_eq(noctWorldGetVelocity(w, id[1], v), NOCT_OK);
+    ck_assert(v[0] == 0.5 && v[1] == 0 && v[2] == 0); /* kept, not used */
+    ck_assert_int_eq(noctWorldGetTransform(w, id[1], &x), NOCT_OK);
+    ck_assert(fabs(x.q.w - cos(15 * 3.14159265358979323846 / 180)) < 1e-15);
+    ck_assert_int_eq(noctWorldGetType(w, id[2], &t), NOCT_OK);
+    ck_assert_int_eq(t, NOCT_OBJECT_STATIC);
+    ck_assert_int_eq(noctWorldGetType(w, id[3], &t), NOCT_OK);
+    ck_assert_int_eq(t, NOCT_OBJECT_MOVING);
+    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldGetTransform(w, id[0], &x), NOCT_OK);
+    ck_assert(x.p[0] == 0.1 && x.p[1] == -0.2 && x.p[2] == 0.3);
+    ck_assert_int_eq(noctWorldGetTransform(w, id[1], &x), NOCT_OK);
+    ck_assert(x.p[0] == 5 && x.p[1] == 0); /* kinematic: not moved */
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
 }
 END_TEST
 
@@ -655,6 +731,7 @@ static Suite *readers_suite(void)
     tcase_add_test(tc, walls_need_a_container);
     tcase_add_test(tc, scene_limits);
     tcase_add_test(tc, tiny_and_huge_directions);
+    tcase_add_test(tc, object_attributes);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("out of memory");

@@ -41,8 +41,9 @@ typedef struct noctScene noctScene;
  *                   memory is left to start reading it).
  * @pre @p path and @p scene are not NULL.
  * @post On #NOCT_OK, noctSceneBuild() fails for no reason in the file:
- *       only for want of memory, or for parameters changed through
- *       noctSceneDef(). A direction is any finite vector other than zero,
+ *       only for want of memory, for parameters changed through
+ *       noctSceneDef(), or (so unlikely that no case is known) for a
+ *       rotation whose rounded vertices make a mesh degenerate. A direction is any finite vector other than zero,
  *       however large or small its components (the world normalizes it).
  * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
  *         #NOCT_ERR_NOMEM if memory runs out, opening and reading lines
