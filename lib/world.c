@@ -113,6 +113,11 @@ void noctWorldDestroy(noctWorld *w)
     free(w->events.began.p);
     free(w->events.ended.p);
     free(w->events.held.p);
+    free(w->events.sensing.p);
+    free(w->events.sensing_prev.p);
+    free(w->events.sensor_began.p);
+    free(w->events.sensor_ended.p);
+    free(w->events.sensing_held.p);
     free(w->events.mark);
     for (size_t i = 0; i < w->nowned; ++i)
         noctMeshDestroy(w->owned[i]);
@@ -312,6 +317,8 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
         return noct_fail(err, st, -1, 0, "out of memory");
     }
     o->alive = true;
+    o->sensor = def->sensor;
+    w->nsensors += def->sensor;
     set_motion(w, slot, def->type, def->velocity);
     id->index = slot;
     id->generation = w->bp.gen[slot];
@@ -370,6 +377,9 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     set_motion(w, id.index, NOCT_OBJECT_STATIC, velocity_of(w, id.index));
     noct_bp_free_slot(&w->bp, id.index); /* cannot fail */
     o->alive = false;
+    NOCT_INVARIANT(w->nsensors >= (size_t)o->sensor);
+    w->nsensors -= o->sensor;
+    o->sensor = false;
     noctMeshDestroy(w->pose[id.index].rotated);
     w->pose[id.index].rotated = NULL;
     /* The lists stay: the colliding one holds its pairs, which the next
@@ -496,6 +506,29 @@ noctStatus noctWorldGetFilter(const noctWorld *w, noctObjectId id, uint64_t *cat
     return noctBroadphaseProxy(&w->bp, id, NULL, NULL, NULL, category, mask);
 }
 
+noctStatus noctWorldSetSensor(noctWorld *w, noctObjectId id, bool sensor, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    noct_object *o = lookup(w, id);
+    if (o == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    w->nsensors = w->nsensors - o->sensor + sensor;
+    o->sensor = sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetSensor(const noctWorld *w, noctObjectId id, bool *sensor)
+{
+    NOCT_REQUIRE(w != NULL && sensor != NULL);
+    const noct_object *o = lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    *sensor = o->sensor;
+    return NOCT_OK;
+}
+
 noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data)
 {
     NOCT_REQUIRE(w != NULL);
@@ -577,6 +610,10 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
     e->previous = e->colliding;
     e->colliding = tmp;
     e->colliding.n = 0;
+    tmp = e->sensing_prev;
+    e->sensing_prev = e->sensing;
+    e->sensing = tmp;
+    e->sensing.n = 0;
     noctStatus st = noct_bp_search(&w->bp);
     if (st == NOCT_OK && !noct_bp_sort_tested(&w->bp))
         st = NOCT_ERR_NOMEM;
@@ -585,12 +622,17 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
     *from_began = e->began.n;
     if (st == NOCT_OK)
         noct_pairs_sort_partners(&e->colliding);
+    if (st == NOCT_OK && w->nsensors > 0)
+        st = noct_world_split_sensors(e, w->obj);
     if (st == NOCT_OK && (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)))
         st = noct_world_diff_events(e, &w->c.events);
     if (st != NOCT_OK) {
         tmp = e->colliding;
         e->colliding = e->previous;
         e->previous = tmp;
+        tmp = e->sensing;
+        e->sensing = e->sensing_prev;
+        e->sensing_prev = tmp;
     }
     return st;
 }
@@ -679,11 +721,8 @@ static uint64_t substeps_for(noctWorld *w, noctError *err)
 /* Keep what a failed step of k sub-steps goes back to: the colliding list
  * (the sub-steps replace it) and the movers' velocities (responses may
  * turn them). */
-static bool hold_for_substeps(noctWorld *w, uint64_t k)
+static bool hold_list(noct_pair_list *h, const noct_pair_list *c)
 {
-    if (k < 2)
-        return true;
-    noct_pair_list *h = &w->events.held, *c = &w->events.colliding;
     if (h->cap < c->n) {
         noctPair *q = realloc(h->p, c->n * sizeof *q);
         if (q == NULL)
@@ -694,6 +733,16 @@ static bool hold_for_substeps(noctWorld *w, uint64_t k)
     if (c->n > 0)
         memcpy(h->p, c->p, c->n * sizeof *h->p);
     h->n = c->n;
+    return true;
+}
+
+static bool hold_for_substeps(noctWorld *w, uint64_t k)
+{
+    if (k < 2)
+        return true;
+    if (!hold_list(&w->events.held, &w->events.colliding) ||
+        !hold_list(&w->events.sensing_held, &w->events.sensing))
+        return false;
     if (w->def.effects & NOCT_EFFECT_MOTION)
         for (uint32_t m = 0; m < w->motion.nmovers; ++m)
             memcpy(w->motion.prevvel[m], w->obj[w->motion.movers[m]].vel,
@@ -705,6 +754,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
     w->events.began.n = w->events.ended.n = 0;
+    w->events.sensor_began.n = w->events.sensor_ended.n = 0;
     if (w->bp.tree_owed) {
         noctStatus st = noct_bp_rebuild(&w->bp, 0);
         if (st != NOCT_OK)
@@ -730,8 +780,12 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
                 noct_pair_list t = w->events.colliding;
                 w->events.colliding = w->events.held;
                 w->events.held = t;
+                t = w->events.sensing;
+                w->events.sensing = w->events.sensing_held;
+                w->events.sensing_held = t;
             }
             w->events.began.n = w->events.ended.n = 0;
+            w->events.sensor_began.n = w->events.sensor_ended.n = 0;
             return st;
         }
     }
@@ -745,6 +799,27 @@ size_t noctWorldColliding(const noctWorld *w, const noctPair **pairs)
     NOCT_REQUIRE(w != NULL && pairs != NULL);
     *pairs = w->events.colliding.p;
     return w->events.colliding.n;
+}
+
+size_t noctWorldSensing(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->events.sensing.p;
+    return w->events.sensing.n;
+}
+
+size_t noctWorldSensorBegan(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->events.sensor_began.p;
+    return w->events.sensor_began.n;
+}
+
+size_t noctWorldSensorEnded(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    *pairs = w->events.sensor_ended.p;
+    return w->events.sensor_ended.n;
 }
 
 size_t noctWorldBegan(const noctWorld *w, const noctPair **pairs)

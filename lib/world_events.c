@@ -10,11 +10,11 @@
 
 #include "world_internal.h"
 
-noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
+/* began += now - before, ended += before - now, both sorted. */
+static noctStatus diff(const noct_pair_list *now, const noct_pair_list *before,
+                       noct_pair_list *began, noct_pair_list *ended)
 {
     size_t i = 0, j = 0;
-    const noct_pair_list *now = &e->colliding, *before = &e->previous;
-    const size_t began = e->began.n, ended = e->ended.n;
     while (i < now->n || j < before->n) {
         int c = i == now->n      ? 1
                 : j == before->n ? -1
@@ -24,13 +24,42 @@ noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
             ++i;
             ++j;
         } else if (c <= 0) {
-            if (!noct_pairs_push(&e->began, now->p[i++]))
+            if (!noct_pairs_push(began, now->p[i++]))
                 return NOCT_ERR_NOMEM;
-        } else if (!noct_pairs_push(&e->ended, before->p[j++])) {
+        } else if (!noct_pairs_push(ended, before->p[j++])) {
             return NOCT_ERR_NOMEM;
         }
     }
-    *events += e->began.n - began + e->ended.n - ended;
+    return NOCT_OK;
+}
+
+noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
+{
+    const size_t began = e->began.n, ended = e->ended.n;
+    const size_t sbegan = e->sensor_began.n, sended = e->sensor_ended.n;
+    noctStatus st = diff(&e->colliding, &e->previous, &e->began, &e->ended);
+    if (st == NOCT_OK && (e->sensing.n > 0 || e->sensing_prev.n > 0))
+        st = diff(&e->sensing, &e->sensing_prev, &e->sensor_began, &e->sensor_ended);
+    if (st == NOCT_OK)
+        *events += e->began.n - began + e->ended.n - ended + e->sensor_began.n - sbegan +
+                   e->sensor_ended.n - sended;
+    return st;
+}
+
+noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj)
+{
+    noct_pair_list *c = &e->colliding;
+    size_t k = 0;
+    for (size_t i = 0; i < c->n; ++i) {
+        const noctPair q = c->p[i];
+        if (obj[q.a.index].sensor || obj[q.b.index].sensor) {
+            if (!noct_pairs_push(&e->sensing, q))
+                return NOCT_ERR_NOMEM;
+        } else {
+            c->p[k++] = q;
+        }
+    }
+    c->n = k;
     return NOCT_OK;
 }
 

@@ -33,6 +33,7 @@ typedef struct noct_object {
     double vel[3], speed;  /* vel = speed * unit direction */
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
     bool alive;
+    bool sensor;           /* reports overlaps in the sensor lists only */
 } noct_object;
 
 /* What the program set of an object and the step never reads: its
@@ -71,6 +72,8 @@ typedef struct noct_motion {
 typedef struct noct_events {
     noct_pair_list colliding, previous, began, ended;
     noct_pair_list held;   /* the colliding list before a step of sub-steps */
+    /* The same for the pairs of a sensor and an object that is not one. */
+    noct_pair_list sensing, sensing_prev, sensor_began, sensor_ended, sensing_held;
     uint64_t *mark;        /* per slot: the response's epoch stamps */
     uint64_t epoch;
 } noct_events;
@@ -90,6 +93,7 @@ struct noctWorld {
     uint32_t capslots;
     noct_motion motion;
     noct_events events;
+    size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */
     noctMesh **owned;      /* meshes the scene builders made */
@@ -136,8 +140,12 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
 /* ---- world_events.c ---------------------------------------------------------------- */
 
 /* began = colliding - previous, ended = previous - colliding (sorted),
- * appended to the lists. */
+ * appended to the lists; the same for the sensor lists. */
 noctStatus noct_world_diff_events(noct_events *e, uint64_t *events);
+
+/* Move the pairs of a sensor and an object that is not one from the
+ * colliding list to the sensing list (both stay sorted). */
+noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj);
 
 /* The response: every object in a pair that began (from the from'th on)
  * reverses its direction once. */

@@ -50,6 +50,8 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
                 }
             }
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
+        if (w->nsensors > 1 && w->obj[ia].sensor && w->obj[ib].sensor)
+            continue; /* two sensors: no pair */
         bool hit;
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];

@@ -296,9 +296,10 @@ typedef struct model {
     double vel[MAXO][3];
     noctObjectType type[MAXO];
     uint64_t cat[MAXO], mask[MAXO];
-    /* the pairs colliding after the last step, by model index */
-    int npairs;
-    noctPair pairs[MAXO * MAXO / 2];
+    bool sensor[MAXO];
+    /* the pairs colliding and sensing after the last step */
+    int npairs, nsense;
+    noctPair pairs[MAXO * MAXO / 2], sense[MAXO * MAXO / 2];
 } model;
 
 static void random_quat(noctQuat *q)
@@ -345,6 +346,7 @@ static void add_random(noctWorld *w, model *m, int i)
         m->vel[i][k] = d.velocity[k] = 0.15 * (uniform() - 0.5);
     m->cat[i] = d.category = random_bits();
     m->mask[i] = d.mask = random_bits();
+    m->sensor[i] = d.sensor = uniform() < 0.1;
     d.user_data = &m->alive[i];
     noctError err;
     ck_assert_msg(noctWorldCreateObject(w, &d, &m->id[i], &err) == NOCT_OK, "%s", err.message);
@@ -363,15 +365,20 @@ static int cmp_pair(const void *x, const void *y)
 
 /* The brute force: every pair of live objects that the filters allow,
  * tested by noctCollideTransformed() on the model's transforms (after a
- * bounding-sphere test of the test's own), by handle, sorted. */
-static int brute_force(const model *m, noctPair *out)
+ * bounding-sphere test of the test's own), by handle, sorted: the pairs
+ * of objects that are not sensors in out, those of a sensor and an
+ * object that is not one in sense (*nsense of them). */
+static int brute_force(const model *m, noctPair *out, noctPair *sense, int *nsense)
 {
     int n = 0;
+    *nsense = 0;
     for (int i = 0; i < MAXO; ++i)
         for (int j = 0; j < MAXO; ++j) {
             if (!m->alive[i] || !m->alive[j] || m->id[i].index >= m->id[j].index)
                 continue;
             if (!(m->cat[i] & m->mask[j]) || !(m->cat[j] & m->mask[i]))
+                continue;
+            if (m->sensor[i] && m->sensor[j])
                 continue;
             double d2 = 0;
             for (int k = 0; k < 3; ++k)
@@ -386,10 +393,13 @@ static int brute_force(const model *m, noctPair *out)
                                                  NOCT_ACCURACY_EXACT, &hit, NULL,
                                                  &err) == NOCT_OK,
                           "%s", err.message);
-            if (hit)
+            if (hit && (m->sensor[i] || m->sensor[j]))
+                sense[(*nsense)++] = (noctPair){m->id[i], m->id[j]};
+            else if (hit)
                 out[n++] = (noctPair){m->id[i], m->id[j]};
         }
     qsort(out, (size_t)n, sizeof *out, cmp_pair);
+    qsort(sense, (size_t)*nsense, sizeof *sense, cmp_pair);
     return n;
 }
 
@@ -460,6 +470,9 @@ static void drive(noctWorld *w, model *m)
         } else if (u < 0.09) {
             ck_assert_int_eq(noctWorldRemove(w, m->id[i], &err), NOCT_OK);
             m->alive[i] = false;
+        } else if (u < 0.10) {
+            m->sensor[i] = !m->sensor[i];
+            ck_assert_int_eq(noctWorldSetSensor(w, m->id[i], m->sensor[i], &err), NOCT_OK);
         }
     }
     for (int i = 0; i < MAXO; ++i)
@@ -499,8 +512,8 @@ START_TEST(rotated_scenes_against_brute_force)
         add_random(w, &m, i);
     const bool motion = (wd.effects & NOCT_EFFECT_MOTION) != 0;
     const bool response = (wd.effects & NOCT_EFFECT_RESPONSE) != 0;
-    static noctPair now[MAXO * MAXO / 2];
-    long total_pairs = 0, total_began = 0, total_ended = 0;
+    static noctPair now[MAXO * MAXO / 2], sensing[MAXO * MAXO / 2];
+    long total_pairs = 0, total_began = 0, total_ended = 0, total_sensed = 0;
     for (int step = 0; step < 40; ++step) {
         if (step > 0)
             drive(w, &m);
@@ -512,10 +525,30 @@ START_TEST(rotated_scenes_against_brute_force)
                 if (m.alive[i] && m.type[i] == NOCT_OBJECT_MOVING)
                     for (int k = 0; k < 3; ++k)
                         m.x[i].p[k] += m.vel[i][k];
-        const int n = brute_force(&m, now);
+        int ns;
+        const int n = brute_force(&m, now, sensing, &ns);
         const noctPair *p;
         size_t np = noctWorldColliding(w, &p);
         lists_equal("colliding", p, np, now, n, step);
+        np = noctWorldSensing(w, &p);
+        lists_equal("sensing", p, np, sensing, ns, step);
+        {
+            static noctPair sb[MAXO * MAXO / 2], se[MAXO * MAXO / 2];
+            int nsb = 0, nse = 0;
+            for (int i = 0; i < ns; ++i)
+                if (!has_pair(m.sense, m.nsense, sensing[i]))
+                    sb[nsb++] = sensing[i];
+            for (int i = 0; i < m.nsense; ++i)
+                if (!has_pair(sensing, ns, m.sense[i]))
+                    se[nse++] = m.sense[i];
+            np = noctWorldSensorBegan(w, &p);
+            lists_equal("sensor began", p, np, sb, nsb, step);
+            np = noctWorldSensorEnded(w, &p);
+            lists_equal("sensor ended", p, np, se, nse, step);
+            memcpy(m.sense, sensing, (size_t)ns * sizeof *sensing);
+            m.nsense = ns;
+            total_sensed += ns;
+        }
         /* events: the brute force's differences */
         static noctPair began[MAXO * MAXO / 2], ended[MAXO * MAXO / 2];
         int nb = 0, ne = 0;
@@ -562,6 +595,9 @@ START_TEST(rotated_scenes_against_brute_force)
                           step, i);
             ck_assert(noctWorldGetUserData(w, m.id[i]) == &m.alive[i]);
             ck_assert(noctWorldGetMesh(w, m.id[i]) == m.mesh[m.mesh_of[i]]);
+            bool sensor;
+            ck_assert_int_eq(noctWorldGetSensor(w, m.id[i], &sensor), NOCT_OK);
+            ck_assert(sensor == m.sensor[i]);
         }
         ck_assert_msg(noctWorldValidate(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
     }
@@ -569,6 +605,7 @@ START_TEST(rotated_scenes_against_brute_force)
     ck_assert_int_gt(total_pairs, 200);
     ck_assert_int_gt(total_began, 40);
     ck_assert_int_gt(total_ended, 40);
+    ck_assert_int_gt(total_sensed, 10);
     noctWorldDestroy(w);
     for (int i = 0; i < NMESH; ++i)
         noctMeshDestroy(m.mesh[i]);

@@ -214,6 +214,13 @@ typedef struct noctObjectDef {
                                   #NOCT_FILTER_ALL. */
     uint64_t mask;           /**< The categories it pairs with. Default
                                   #NOCT_FILTER_ALL. */
+    bool sensor;             /**< A sensor: its overlaps with objects that
+                                  are not sensors are decided as collisions
+                                  are, but listed apart (noctWorldSensing()
+                                  and the sensor events), never in the
+                                  colliding list, and never turn anything
+                                  back; two sensors are never paired.
+                                  Default false. */
 } noctObjectDef;
 
 /**
@@ -413,6 +420,41 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
 NOCT_API size_t noctWorldColliding(const noctWorld *world, const noctPair **pairs);
 
 /**
+ * @brief The pairs of a sensor and an object that is not one whose solids
+ *        shared a point after the last step, sorted as noctWorldColliding().
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, as for
+ *                   noctWorldColliding().
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs.
+ */
+NOCT_API size_t noctWorldSensing(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The sensor pairs that began at the last step, as noctWorldBegan()
+ *        for the sensing list.
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, as for
+ *                   noctWorldColliding().
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs; 0 without #NOCT_EFFECT_EVENTS or
+ *         #NOCT_EFFECT_RESPONSE.
+ */
+NOCT_API size_t noctWorldSensorBegan(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The sensor pairs that ended at the last step, as noctWorldEnded()
+ *        for the sensing list.
+ * @param[in]  world The world.
+ * @param[out] pairs Receives a pointer to the list, as for
+ *                   noctWorldColliding().
+ * @pre @p world and @p pairs are not NULL.
+ * @return The number of pairs; 0 without #NOCT_EFFECT_EVENTS or
+ *         #NOCT_EFFECT_RESPONSE.
+ */
+NOCT_API size_t noctWorldSensorEnded(const noctWorld *world, const noctPair **pairs);
+
+/**
  * @brief The pairs that began colliding at the last step, sorted (by
  *        sub-step, then by pair, with #NOCT_EFFECT_SUBSTEP).
  * @param[in]  world The world.
@@ -562,6 +604,32 @@ NOCT_API noctStatus noctWorldSetFilter(noctWorld *world, noctObjectId id, uint64
  */
 NOCT_API noctStatus noctWorldGetFilter(const noctWorld *world, noctObjectId id,
                                        uint64_t *category, uint64_t *mask);
+
+/**
+ * @brief Make an object a sensor, or not (see noctObjectDef::sensor).
+ *
+ * Its pairs move between the colliding and the sensing lists at the next
+ * step, with an ended event in one and a began event in the other.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[in]  sensor Whether it is a sensor.
+ * @param[out] err    Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldSetSensor(noctWorld *world, noctObjectId id, bool sensor,
+                                       noctError *err);
+
+/**
+ * @brief Tell whether an object is a sensor.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[out] sensor Receives it.
+ * @pre @p world and @p sensor are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
+                                       bool *sensor);
 
 /**
  * @brief Set the pointer a program keeps with an object.
