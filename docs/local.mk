@@ -10,6 +10,10 @@ noinst_PROGRAMS += docs/examples/broadphase-demo
 docs_examples_broadphase_demo_SOURCES = docs/examples/broadphase-demo.c
 docs_examples_broadphase_demo_LDADD = lib/libnoctree.la
 
+noinst_PROGRAMS += docs/examples/driven-arm
+docs_examples_driven_arm_SOURCES = docs/examples/driven-arm.c
+docs_examples_driven_arm_LDADD = lib/libnoctree.la -lm
+
 EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md \
 	docs/doxygen-header.html $(docs_results)
 docs_results = \

@@ -118,8 +118,10 @@ tests_check_readers_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_readers_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_readers_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
-TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh
+TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
+	tests/examples.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
+	tests/examples.sh \
 	tests/lib.sh \
 	tests/inline-client.c
 
@@ -191,6 +193,11 @@ installcheck-local:
 	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/bp-$$mod" > "$$tmp/out"; \
 	  grep -q '^pairs total 31$$' "$$tmp/out"; \
 	  grep -q '^ray: first crate A$$' "$$tmp/out"; \
+	  echo "cc driven-arm.c $$flags -lm"; \
+	  $(CC) -std=c11 $(srcdir)/docs/examples/driven-arm.c $$flags -lm \
+	    -o "$$tmp/arm-$$mod"; \
+	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/arm-$$mod" > "$$tmp/out"; \
+	  grep -q '^frame  4: contact forearm - crate$$' "$$tmp/out"; \
 	done; \
 	NM='$(NM)' top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
 	  $(SHELL) $(srcdir)/tests/exports.sh '$(DESTDIR)$(libdir)'

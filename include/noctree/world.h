@@ -8,12 +8,21 @@
  * @brief The report's collision detection system (sections 1.2, 2.2-2.4) as
  * an embeddable world.
  *
- * A world holds objects: a mesh (borrowed; it must outlive the world), a
- * position, a unit direction and a speed. noctWorldStep() runs one step:
- * 1. **motion** (effect #NOCT_EFFECT_MOTION): each object with a non-zero
- *    speed moves by its velocity, `p += v`, where `v = speed * d` was
- *    computed once when the object was added; then, with
- *    #NOCT_EFFECT_WALLS, the container's walls turn it back;
+ * A world holds objects (noctObjectDef): a mesh (borrowed; it must outlive
+ * the objects), a rigid transform (a rotation, then a translation: see
+ * transform.h for exactly how the vertices are placed), a velocity, a
+ * type (static, kinematic or moving), a collision filter, a sensor flag
+ * and a pointer for the program. A program may change any of them
+ * between steps (noctWorldSetTransform(), noctWorldSetVelocity(), ...);
+ * the next step sees the new state, and the events follow every change:
+ * a pair that a removal, a teleport, a filter or a sensor flag parted ends
+ * at the next step, and one they brought together begins there. A world
+ * without the motion effect only detects: the program places its objects
+ * and steps. noctWorldStep() runs one step:
+ * 1. **motion** (effect #NOCT_EFFECT_MOTION): each moving object with a
+ *    non-zero velocity moves by it, `p += v`, bit for bit (noctWorldAdd()
+ *    makes `v = speed * d` once); then, with #NOCT_EFFECT_WALLS, the
+ *    container's walls turn it back;
  * 2. **maintenance**: the octree is brought up to date (see below);
  * 3. **pair search**: a depth-first walk over the leaves that hold more
  *    than one object hands each pair whose boxes overlap to the
@@ -25,9 +34,10 @@
  *    pairs is skipped while its boxes' least distance apart lasts;
  * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
  *    colliding at this step;
- * 5. **response** (#NOCT_EFFECT_RESPONSE): every object in at least one
- *    pair that began colliding reverses its direction once (SCENES.md's
- *    contact-begin rule; the colliding set before step 1 is empty).
+ * 5. **response** (#NOCT_EFFECT_RESPONSE): every moving object in at
+ *    least one pair that began colliding reverses its velocity once
+ *    (SCENES.md's contact-begin rule; the colliding set before step 1 is
+ *    empty). Sensors' pairs never turn anything.
  *
  * **Layers.** The world is built on the broadphase (broadphase.h): its
  * objects are the proxies of a broadphase it owns, with the same handles,
