@@ -59,7 +59,10 @@ extern "C" {
 
 /** @brief A rotation quaternion: vector part x, y, z and scalar part w. */
 typedef struct noctQuat {
-    double x, y, z, w;
+    double x; /**< Vector part, x. */
+    double y; /**< Vector part, y. */
+    double z; /**< Vector part, z. */
+    double w; /**< Scalar part: cos(angle / 2). */
 } noctQuat;
 
 /** @brief A rigid transform: rotate by q, then translate by p. */
