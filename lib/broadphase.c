@@ -214,6 +214,15 @@ static bool reserve_slots(noctBroadphase *bp, uint32_t cap)
     return true;
 }
 
+bool noct_bp_reserve(noctBroadphase *bp, uint32_t more)
+{
+    /* room: the free slots, and the capacity past the last slot */
+    if ((uint64_t)bp->nfree + (bp->capslots - bp->nslots) >= more)
+        return true;
+    const uint64_t cap = (uint64_t)bp->nslots + (more - bp->nfree);
+    return cap <= 0x80000000u && reserve_slots(bp, (uint32_t)cap);
+}
+
 /* A slot for a new proxy (its generation advanced, nothing else set);
  * UINT32_MAX without memory or past 2^31 slots. */
 uint32_t noct_bp_new_slot(noctBroadphase *bp)

@@ -392,6 +392,10 @@ noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctEr
 /* Free what an initialised broadphase holds (not bp itself). */
 void noct_bp_fini(noctBroadphase *bp);
 
+/* Room for more proxies without growing the per-slot arrays again;
+ * false without memory or past 2^31 slots. */
+bool noct_bp_reserve(noctBroadphase *bp, uint32_t more);
+
 /* A slot for a new proxy, or UINT32_MAX (no memory, or 2^31 slots). */
 uint32_t noct_bp_new_slot(noctBroadphase *bp);
 

@@ -742,16 +742,17 @@ static float float_above(double x)
     return (double)f < x ? nextafterf(f, INFINITY) : f;
 }
 
-static void compute_box_form(noctMesh *m)
+/* The box form of 8 vertices v (and its dual, if every one of the nt
+ * triangles tri lies on a face of the ideal box), given three unit edge
+ * directions d: see box_form and box_dual. */
+static void box_form_of(const double *v, const double *const d[3], const uint32_t *tri,
+                        size_t nt, box_form *b, bool *has_box, box_dual *x, bool *has_dual)
 {
-    m->has_box = false;
-    if (m->nv != 8 || m->nsat_faces != 3 || m->nsat_edges != 3)
-        return;
-    const double *d[3] = {m->axis[3].u, m->axis[4].u, m->axis[5].u};
+    *has_box = *has_dual = false;
     double c[3] = {0, 0, 0};
     for (size_t i = 0; i < 8; ++i)
         for (int k = 0; k < 3; ++k)
-            c[k] += m->v[3 * i + k] / 8;
+            c[k] += v[3 * i + k] / 8;
     double dual[3][3]; /* dual[i].d[j] = (i == j) * det */
     cross3(d[1], d[2], dual[0]);
     cross3(d[2], d[0], dual[1]);
@@ -763,7 +764,7 @@ static void compute_box_form(noctMesh *m)
     unsigned seen = 0;
     for (size_t i = 0; i < 8; ++i) {
         double r[3];
-        sub3(&m->v[3 * i], c, r);
+        sub3(&v[3 * i], c, r);
         unsigned pattern = 0;
         for (int j = 0; j < 3; ++j) {
             coef[i][j] = dot3(r, dual[j]) / det;
@@ -776,7 +777,6 @@ static void compute_box_form(noctMesh *m)
     }
     if (seen != 0xffu)
         return; /* not one vertex at each corner */
-    box_form *b = &m->box;
     memcpy(b->c, c, sizeof c);
     for (int j = 0; j < 3; ++j)
         for (int k = 0; k < 3; ++k)
@@ -789,9 +789,9 @@ static void compute_box_form(noctMesh *m)
                 corner += coef[i][j] > 0 ? b->e[j][k] : -b->e[j][k];
                 mag += fabs(b->e[j][k]);
             }
-            dev = fmax(dev, fabs(m->v[3 * i + k] - corner));
+            dev = fmax(dev, fabs(v[3 * i + k] - corner));
             S = fmax(S, mag);
-            V = fmax(V, fabs(m->v[3 * i + k]));
+            V = fmax(V, fabs(v[3 * i + k]));
         }
     dev = dev * (1 + 0x1p-50) + 8 * 0x1p-53 * (S + V);
     if (!(dev <= 1e-9 * fmax(h[0], fmax(h[1], h[2]))))
@@ -801,16 +801,15 @@ static void compute_box_form(noctMesh *m)
     for (int i = 0; i < 3; ++i)
         b->own[i] = float_above(fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
                                 fabs(dot3(b->e[i], b->e[2])));
-    m->has_box = true;
+    *has_box = true;
 
     /* The dual, for the witness: every triangle on a face of the ideal box
      * (its three corners agree in one sign), and a well-conditioned box. */
-    m->has_dual = false;
-    for (size_t t = 0; t < m->nt; ++t) {
+    for (size_t t = 0; t < nt; ++t) {
         unsigned agree = 7;
         for (int corner = 1; corner < 3; ++corner) {
-            const double *q = coef[m->tri[3 * t + corner]];
-            const double *q0 = coef[m->tri[3 * t]];
+            const double *q = coef[tri[3 * t + corner]];
+            const double *q0 = coef[tri[3 * t]];
             for (int j = 0; j < 3; ++j)
                 if ((q[j] > 0) != (q0[j] > 0))
                     agree &= ~(1u << j);
@@ -818,7 +817,6 @@ static void compute_box_form(noctMesh *m)
         if (agree == 0)
             return;
     }
-    box_dual *x = &m->dual;
     double eta = 0, mag = 0, gmax = 0;
     for (int i = 0; i < 3; ++i) {
         for (int k = 0; k < 3; ++k)
@@ -837,7 +835,16 @@ static void compute_box_form(noctMesh *m)
     x->eta = eta;
     x->gmax = gmax * (1 + 0x1p-50);
     x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
-    m->has_dual = true;
+    *has_dual = true;
+}
+
+static void compute_box_form(noctMesh *m)
+{
+    m->has_box = m->has_dual = false;
+    if (m->nv != 8 || m->nsat_faces != 3 || m->nsat_edges != 3)
+        return;
+    const double *const d[3] = {m->axis[3].u, m->axis[4].u, m->axis[5].u};
+    box_form_of(m->v, d, m->tri, m->nt, &m->box, &m->has_box, &m->dual, &m->has_dual);
 }
 
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s)
@@ -850,6 +857,94 @@ void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s)
     s->dev = b->dev;
     s->shrink = m->has_dual ? m->dual.shrink : INFINITY;
     s->has_box = m->has_box;
+}
+
+/* A box's 8 corners, bit 2: +x, bit 1: +y, bit 0: +z, and its 12
+ * triangles, outward. */
+static const uint32_t BOX_TRIANGLES[36] = {
+    0, 1, 3, 0, 3, 2, /* -x */ 4, 6, 7, 4, 7, 5, /* +x */
+    0, 4, 5, 0, 5, 1, /* -y */ 2, 3, 7, 2, 7, 6, /* +y */
+    0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
+};
+
+void noct_box_corners(const double half[3], const double R[9], double v[24])
+{
+    for (int i = 0; i < 8; ++i) {
+        const double local[3] = {(i & 4) ? half[0] : -half[0], (i & 2) ? half[1] : -half[1],
+                                 (i & 1) ? half[2] : -half[2]};
+        noct_rotate(R, local, &v[3 * i]);
+    }
+}
+
+void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot *s,
+                          double lo[3], double hi[3])
+{
+    double v[24];
+    noct_box_corners(half, R, v);
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = hi[k] = v[k];
+        for (int i = 1; i < 8; ++i) {
+            lo[k] = noct_min(lo[k], v[3 * i + k]);
+            hi[k] = noct_max(hi[k], v[3 * i + k]);
+        }
+    }
+    /* the edge directions: R's columns, made unit */
+    double u[3][3];
+    for (int j = 0; j < 3; ++j) {
+        const double col[3] = {R[j], R[3 + j], R[6 + j]};
+        unit3(col, u[j]);
+    }
+    const double *const d[3] = {u[0], u[1], u[2]};
+    box_form b;
+    box_dual x;
+    bool has_box, has_dual;
+    box_form_of(v, d, BOX_TRIANGLES, 12, &b, &has_box, &x, &has_dual);
+    memcpy(s->c, b.c, sizeof s->c);
+    memcpy(s->e, b.e, sizeof s->e);
+    s->size = b.size;
+    memcpy(s->own, b.own, sizeof s->own);
+    s->dev = b.dev;
+    s->shrink = has_dual ? x.shrink : INFINITY;
+    s->has_box = has_box;
+}
+
+noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
+                            noctError *err)
+{
+    double v[24];
+    noct_box_corners(half, R, v);
+    static const uint32_t sizes[12] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
+    return noctMeshCreate(v, 8, sizes, 12, BOX_TRIANGLES, mesh, err);
+}
+
+noctStatus noct_check_box_half(const double half[3], noctError *err)
+{
+    for (int i = 0; i < 3; ++i)
+        if (!isfinite(half[i]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "box half-extents (%g, %g, %g) are not finite", half[0], half[1],
+                             half[2]);
+    double hmax = fmax(half[0], fmax(half[1], half[2]));
+    double hmin = fmin(half[0], fmin(half[1], half[2]));
+    /* Below the normal doubles, the rotated corners would lose their
+     * precision: a corner is rounded to within 2^-1074 at best. */
+    if (!(hmin >= DBL_MIN))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "box half-extents (%g, %g, %g) must be positive and at least %g",
+                         half[0], half[1], half[2], DBL_MIN);
+    /* A corner has a coordinate of at least hmax / sqrt(3): past this,
+     * beyond the limit. */
+    if (hmax > 2 * NOCT_MAX_COORDINATE)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "box half-extents (%g, %g, %g) put its corners beyond the "
+                         "coordinate limit of %g",
+                         half[0], half[1], half[2], NOCT_MAX_COORDINATE);
+    if (hmin / BOX_MIN_RATIO < hmax)
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "box half-extents (%g, %g, %g): too thin, the least is under 2^-29 "
+                         "of the largest",
+                         half[0], half[1], half[2]);
+    return NOCT_OK;
 }
 
 _Static_assert(sizeof(noct_box_slot) == 128, "a box slot is two cache lines");
@@ -1090,38 +1185,19 @@ noctStatus noctMeshCreateOrientedBox(const double half[3],
     NOCT_REQUIRE(half != NULL && rotation != NULL && mesh != NULL);
     *mesh = NULL;
     for (int i = 0; i < 9; ++i)
-        if (!isfinite(rotation[i]) || (i < 3 && !isfinite(half[i])))
+        if (!isfinite(rotation[i]))
             return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
-                             "oriented box: a half-extent or rotation entry "
-                             "is not finite");
-    double hmax = fmax(half[0], fmax(half[1], half[2]));
-    double hmin = fmin(half[0], fmin(half[1], half[2]));
-    /* Below the normal doubles, the rotated corners would lose their
-     * precision: a corner is rounded to within 2^-1074 at best. */
-    if (!(hmin >= DBL_MIN))
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "oriented box: half-extents (%g, %g, %g) must be "
-                         "positive and at least %g", half[0], half[1], half[2],
-                         DBL_MIN);
-    /* A corner has a coordinate of at least hmax / sqrt(3): past this,
-     * beyond the limit. */
-    if (hmax > 2 * NOCT_MAX_COORDINATE)
-        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
-                         "oriented box: half-extents (%g, %g, %g) put its "
-                         "corners beyond the coordinate limit of %g", half[0],
-                         half[1], half[2], NOCT_MAX_COORDINATE);
-    if (hmin / BOX_MIN_RATIO < hmax)
-        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
-                         "oriented box: half-extents (%g, %g, %g): too thin, the "
-                         "least is under 2^-29 of the largest", half[0], half[1],
-                         half[2]);
+                             "oriented box: a rotation entry is not finite");
+    noctStatus st = noct_check_box_half(half, err);
+    if (st != NOCT_OK)
+        return st;
     /* R^T R = I and det R = +1, within 1e-9. */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            double s = 0;
+            double sum = 0;
             for (int k = 0; k < 3; ++k)
-                s += rotation[3 * k + i] * rotation[3 * k + j];
-            if (fabs(s - (i == j)) > 1e-9)
+                sum += rotation[3 * k + i] * rotation[3 * k + j];
+            if (fabs(sum - (i == j)) > 1e-9)
                 return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                                  "oriented box: the rotation is not "
                                  "orthonormal");
@@ -1133,20 +1209,5 @@ noctStatus noctMeshCreateOrientedBox(const double half[3],
     if (det < 0)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "oriented box: the rotation is a reflection");
-    double v[24];
-    for (int i = 0; i < 8; ++i) {
-        double local[3] = {(i & 4) ? half[0] : -half[0],
-                           (i & 2) ? half[1] : -half[1],
-                           (i & 1) ? half[2] : -half[2]};
-        for (int k = 0; k < 3; ++k)
-            v[3 * i + k] = r[3 * k] * local[0] + r[3 * k + 1] * local[1] +
-                           r[3 * k + 2] * local[2];
-    }
-    static const uint32_t sizes[12] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
-    static const uint32_t tris[36] = {
-        0, 1, 3, 0, 3, 2, /* -x */ 4, 6, 7, 4, 7, 5, /* +x */
-        0, 4, 5, 0, 5, 1, /* -y */ 2, 3, 7, 2, 7, 6, /* +y */
-        0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
-    };
-    return noctMeshCreate(v, 8, sizes, 12, tris, mesh, err);
+    return noct_mesh_of_box(half, rotation, mesh, err);
 }

@@ -151,6 +151,26 @@ noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const
                                     const double tb[3], noctAccuracy accuracy,
                                     bool *colliding, noctNarrowStats *stats);
 
+/* ---- box primitives (mesh.c) ---- */
+
+/* The corners fl(R v) of the box with these half-extents (bit 2 of the
+ * corner's index: +x, bit 1: +y, bit 0: +z). */
+void noct_box_corners(const double half[3], const double R[9], double v[24]);
+
+/* A box form of that box's corners, as a slot (sound as the one of the
+ * mesh noct_mesh_of_box() makes, though its numbers may differ), and
+ * their bounding box. */
+void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot *s,
+                          double lo[3], double hi[3]);
+
+/* The mesh of that box: its corners and 12 triangles. */
+noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
+                            noctError *err);
+
+/* Half-extents a rotated box accepts: finite, normal, within the
+ * coordinate limit, the least at least 2^-29 of the largest. */
+noctStatus noct_check_box_half(const double half[3], noctError *err);
+
 /* ---- transform.c ---- */
 
 /* Is R the identity matrix? */

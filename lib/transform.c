@@ -97,7 +97,7 @@ noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err)
                          "rotation quaternion (%g, %g, %g, %g) has squared length %g; "
                          "it must be within %g of 1",
                          x, y, z, w, n, NOCT_QUAT_TOLERANCE);
-    if (n != 1) {
+    if (!(fabs(n - 1) <= NOCT_QUAT_UNIT)) {
         const double l = sqrt(n);
         x /= l;
         y /= l;

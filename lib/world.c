@@ -165,6 +165,23 @@ static bool reserve_slots(noctWorld *w)
     return true;
 }
 
+noctStatus noctWorldReserve(noctWorld *w, size_t more, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (more > 0x80000000u)
+        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                         "room for %zu more objects: a world holds at most 2^31", more);
+    if (!noct_bp_reserve(&w->bp, (uint32_t)more))
+        return (uint64_t)w->bp.nslots - w->bp.nfree + more > 0x80000000u
+                   ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                               "room for %zu more objects: a world holds at most 2^31",
+                               more)
+                   : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    if (!reserve_slots(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    return NOCT_OK;
+}
+
 noctObjectDef noctDefaultObjectDef(void)
 {
     noctObjectDef d;
@@ -206,8 +223,8 @@ static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMes
                                noctError *err)
 {
     *rotated = NULL;
-    if (noct_is_identity(R))
-        return NOCT_OK;
+    if (shape == NULL || noct_is_identity(R))
+        return NOCT_OK; /* a box primitive's mesh is made when needed */
     noctStatus st = noct_mesh_rotated(shape, R, rotated, err);
     if (st != NOCT_OK && err != NULL) {
         char why[NOCT_ERROR_MESSAGE_SIZE];
@@ -217,11 +234,34 @@ static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMes
     return st;
 }
 
-/* An object's placed mesh, its box form and local box, from its pose. */
+/* The local box of a pose's shape turned by R: of the mesh (rotated, or
+ * the shape), or of a box primitive's corners. */
+static void local_box(const noct_pose *p, const noctMesh *rotated, const double R[9],
+                      double lo[3], double hi[3])
+{
+    if (p->shape == NULL) {
+        noct_box_slot slot;
+        noct_box_slot_of_box(p->half, R, &slot, lo, hi);
+        return;
+    }
+    const noctMesh *m = rotated != NULL ? rotated : p->shape;
+    memcpy(lo, m->lo, 3 * sizeof *lo);
+    memcpy(hi, m->hi, 3 * sizeof *hi);
+}
+
+/* An object's placed mesh (a box primitive's, once made: NULL before),
+ * its box form and local box, from its pose. */
 static void place_mesh(noctWorld *w, uint32_t s)
 {
     const noct_pose *p = &w->pose[s];
     noct_object *o = &w->obj[s];
+    if (p->shape == NULL) {
+        o->mesh = w->mesh[s] = p->rotated;
+        double R[9];
+        noctQuatToMatrix(&p->q, R, NULL);
+        noct_box_slot_of_box(p->half, R, &w->slot[s], o->mlo, o->mhi);
+        return;
+    }
     const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape;
     o->mesh = w->mesh[s] = m;
     memcpy(o->mlo, m->lo, sizeof o->mlo);
@@ -230,6 +270,22 @@ static void place_mesh(noctWorld *w, uint32_t s)
         noct_box_slot_fill(m, &w->slot[s]);
     else
         w->slot[s].has_box = 0;
+}
+
+const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s)
+{
+    if (w->mesh[s] != NULL)
+        return w->mesh[s];
+    noct_pose *p = &w->pose[s];
+    NOCT_INVARIANT(p->shape == NULL && p->rotated == NULL);
+    /* the corners were checked when the object was made or turned, so
+     * only memory can be missing */
+    double R[9];
+    noctQuatToMatrix(&p->q, R, NULL);
+    if (noct_mesh_of_box(p->half, R, &p->rotated, NULL) != NOCT_OK)
+        return NULL;
+    w->obj[s].mesh = w->mesh[s] = p->rotated;
+    return p->rotated;
 }
 
 /* Make object o moving at velocity v, or not moving (v kept in its pose). */
@@ -263,9 +319,16 @@ static const double *velocity_of(const noctWorld *w, uint32_t s)
 noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObjectId *id,
                                  noctError *err)
 {
-    NOCT_REQUIRE(w != NULL && def != NULL && def->mesh != NULL && id != NULL);
+    NOCT_REQUIRE(w != NULL && def != NULL && id != NULL);
     id->index = id->generation = 0;
     noctStatus st = noctTransformCheck(&def->transform, err);
+    if (st == NOCT_OK && def->mesh == NULL) {
+        if (def->half_extents[0] == 0 && def->half_extents[1] == 0 &&
+            def->half_extents[2] == 0)
+            return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                             "an object needs a mesh or a box's half-extents");
+        st = noct_check_box_half(def->half_extents, err);
+    }
     if (st == NOCT_OK)
         st = check_velocity(def->velocity, err);
     if (st != NOCT_OK)
@@ -304,9 +367,9 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     noct_pose *p = &w->pose[slot];
     memset(p, 0, sizeof *p);
     p->shape = def->mesh;
+    memcpy(p->half, def->half_extents, sizeof p->half);
     p->rotated = rotated;
     p->q = def->transform.q;
-    memcpy(p->R, R, sizeof R);
     place_mesh(w, slot);
     memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
     w->events.mark[slot] = 0;
@@ -402,21 +465,29 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     noct_pose *p = &w->pose[s];
     double R[9];
     noctQuatToMatrix(&x->q, R, NULL); /* checked above */
-    const bool turned = memcmp(R, p->R, sizeof R) != 0;
+    double was[9];
+    noctQuatToMatrix(&p->q, was, NULL);
+    const bool turned = memcmp(R, was, sizeof R) != 0;
     noctMesh *rotated = p->rotated;
     if (turned && (st = rotate_shape(p->shape, R, &rotated, err)) != NOCT_OK)
         return st;
-    const noctMesh *m = rotated != NULL ? rotated : p->shape;
-    st = noct_bp_move_to(&w->bp, s, m->lo, m->hi, x->p);
+    double lo[3], hi[3];
+    if (turned) {
+        local_box(p, rotated, R, lo, hi);
+    } else {
+        memcpy(lo, w->obj[s].mlo, sizeof lo);
+        memcpy(hi, w->obj[s].mhi, sizeof hi);
+    }
+    st = noct_bp_move_to(&w->bp, s, lo, hi, x->p);
     if (st != NOCT_OK) {
-        if (turned)
+        if (turned && rotated != p->rotated)
             noctMeshDestroy(rotated);
         return noct_fail(err, st, (long)s, 0, "moving object %u: out of memory", s);
     }
     if (turned) {
         noctMeshDestroy(p->rotated);
         p->rotated = rotated;
-        memcpy(p->R, R, sizeof R);
+        p->q = x->q;
         place_mesh(w, s);
     }
     p->q = x->q;
@@ -548,6 +619,15 @@ const noctMesh *noctWorldGetMesh(const noctWorld *w, noctObjectId id)
 {
     NOCT_REQUIRE(w != NULL);
     return lookup(w, id) != NULL ? w->pose[id.index].shape : NULL;
+}
+
+noctStatus noctWorldGetHalfExtents(const noctWorld *w, noctObjectId id, double half[3])
+{
+    NOCT_REQUIRE(w != NULL && half != NULL);
+    if (lookup(w, id) == NULL || w->pose[id.index].shape != NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(half, w->pose[id.index].half, sizeof w->pose[id.index].half);
+    return NOCT_OK;
 }
 
 /* ---- the step ------------------------------------------------------------------------ */
@@ -935,7 +1015,9 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u's placed mesh is not its shape or its rotated copy",
                              i);
-        if ((p->rotated == NULL) != noct_is_identity(p->R))
+        double R[9];
+        noctQuatToMatrix(&p->q, R, NULL);
+        if (p->shape != NULL && (p->rotated == NULL) != noct_is_identity(R))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u has %s rotated copy", i,
                              p->rotated == NULL ? "no" : "a needless");

@@ -40,11 +40,12 @@ typedef struct noct_object {
  * shape, its rotation, its type, and the velocity of an object that is
  * not moving (a moving object's is obj[i].vel, which the response turns). */
 typedef struct noct_pose {
-    const noctMesh *shape;  /* the mesh it was made with */
+    const noctMesh *shape;  /* the mesh it was made with; NULL for a box */
+    double half[3];         /* a box primitive's half-extents */
     noctMesh *rotated;      /* shape with its vertices rotated by R, owned;
-                               NULL when R is the identity */
-    noctQuat q;             /* as given */
-    double R[9];            /* noctQuatToMatrix(q) */
+                               NULL when R is the identity; for a box, its
+                               mesh once an exact test needed it */
+    noctQuat q;             /* as given; its matrix is noctQuatToMatrix(q) */
     double vel[3];          /* the velocity of a static or kinematic object */
     noctObjectType type;
 } noct_pose;
@@ -105,6 +106,10 @@ struct noctWorld {
 /* ---- world.c -------------------------------------------------------------------- */
 
 double noct_seconds(void);
+
+/* Object s's placed mesh, made now for a box primitive that has none
+ * (kept while its rotation lasts); NULL without memory. */
+const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
 

@@ -205,9 +205,8 @@ double noct_world_step_ratio(const noctWorld *w, uint32_t *which)
         const noct_object *o = &w->obj[i];
         if (!o->alive || o->speed == 0)
             continue;
-        const noctMesh *m = o->mesh;
-        double extent = noct_min(noct_min(m->hi[0] - m->lo[0], m->hi[1] - m->lo[1]),
-                                 m->hi[2] - m->lo[2]);
+        double extent = noct_min(noct_min(o->mhi[0] - o->mlo[0], o->mhi[1] - o->mlo[1]),
+                                 o->mhi[2] - o->mlo[2]);
         double r = o->speed / extent;
         if (r > worst) {
             worst = r;

@@ -43,7 +43,7 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         if (i + 8 < n)
             for (int s = 0; s < 2; ++s) {
                 uint32_t k = s ? p[i + 8].b.index : p[i + 8].a.index;
-                if (!exact || !slot[k].has_box) {
+                if ((!exact || !slot[k].has_box) && w->mesh[k] != NULL) {
                     const char *m = (const char *)w->mesh[k];
                     for (int line = 0; line < 10; ++line)
                         NOCT_PREFETCH(m + 64 * line);
@@ -63,6 +63,15 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
                 ++*(d < 0 ? &w->c.narrow.sat_rejects : &w->c.narrow.witnesses);
         }
         const noctMesh *ma = w->mesh[ia], *mb = w->mesh[ib];
+        if (d == 0 && level != NOCT_ACCURACY_BOX && (ma == NULL || mb == NULL)) {
+            /* a box primitive's mesh, made once for the exact triangles */
+            ma = noct_world_mesh(w, ia);
+            mb = noct_world_mesh(w, ib);
+            if (ma == NULL || mb == NULL) {
+                st = NOCT_ERR_NOMEM;
+                break;
+            }
+        }
         if (d != 0)
             hit = d > 0;
         else if (boxes)

@@ -260,12 +260,23 @@ START_TEST(quarter_turns_are_exact)
             wd.effects = NOCT_EFFECT_EVENTS;
             noctWorld *w;
             ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+            /* the boxes as box primitives in every other rotation */
+            static const double HALF[3][3] = {{0.5, 0.5, 0.5}, {0, 0, 0}, {0.75, 0.5, 0.0625}};
             noctObjectDef d = noctDefaultObjectDef();
             noctObjectId ia, ib;
             d.mesh = mesh[h->a];
+            if (r % 2 && h->a != 1) {
+                d.mesh = NULL;
+                memcpy(d.half_extents, HALF[h->a], sizeof d.half_extents);
+            }
             d.transform = xa;
             ck_assert_int_eq(noctWorldCreateObject(w, &d, &ia, NULL), NOCT_OK);
+            d = noctDefaultObjectDef();
             d.mesh = mesh[h->b];
+            if (r % 2 && h->b != 1) {
+                d.mesh = NULL;
+                memcpy(d.half_extents, HALF[h->b], sizeof d.half_extents);
+            }
             d.transform = xb;
             ck_assert_int_eq(noctWorldCreateObject(w, &d, &ib, NULL), NOCT_OK);
             ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
@@ -281,14 +292,69 @@ START_TEST(quarter_turns_are_exact)
 }
 END_TEST
 
+/* ---- the gas family as box primitives ---------------------------------------- */
+
+static uint64_t gas_state;
+static double gas_draw(void) /* SCENES.md: splitmix64, then 53 bits */
+{
+    uint64_t z = (gas_state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+}
+
+/* gas is built of box primitives turned by its quaternions: their
+ * matrices must be SCENES.md's, bit for bit (the formula, with no
+ * normalisation or snapping), and the boxes its boxes. The test draws
+ * the scene itself, as SCENES.md defines it. */
+START_TEST(gas_boxes_are_the_scenes)
+{
+    const size_t n = 100000;
+    noctWorldDef wd = noctDefaultWorldDef();
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldAddGas(w, n, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldObjectCount(w), n);
+    const double pi = 3.141592653589793, lb = noctGasContainerSize(n);
+    gas_state = 42;
+    for (uint32_t i = 0; i < n; ++i) {
+        double half[3], centre[3];
+        for (int k = 0; k < 3; ++k)
+            half[k] = 0.25 + 0.5 * gas_draw();
+        const double u1 = gas_draw(), u2 = gas_draw(), u3 = gas_draw();
+        const double x = sqrt(1 - u1) * sin(2 * pi * u2), y = sqrt(1 - u1) * cos(2 * pi * u2);
+        const double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
+        const double r[9] = {
+            1 - 2 * (y * y + z * z), 2 * (x * y - z * qw), 2 * (x * z + y * qw),
+            2 * (x * y + z * qw), 1 - 2 * (x * x + z * z), 2 * (y * z - x * qw),
+            2 * (x * z - y * qw), 2 * (y * z + x * qw), 1 - 2 * (x * x + y * y)};
+        for (int k = 0; k < 3; ++k)
+            centre[k] = lb * gas_draw();
+        gas_draw(); /* the direction's two draws */
+        gas_draw();
+        const noctObjectId id = {i, 1};
+        noctTransform t;
+        double h[3], R[9];
+        ck_assert_int_eq(noctWorldGetTransform(w, id, &t), NOCT_OK);
+        ck_assert(memcmp(t.p, centre, sizeof centre) == 0);
+        ck_assert_int_eq(noctQuatToMatrix(&t.q, R, NULL), NOCT_OK);
+        ck_assert_msg(memcmp(R, r, sizeof R) == 0, "gas box %u: not SCENES.md's matrix", i);
+        ck_assert_int_eq(noctWorldGetHalfExtents(w, id, h), NOCT_OK);
+        ck_assert(memcmp(h, half, sizeof half) == 0);
+    }
+    noctWorldDestroy(w);
+}
+END_TEST
+
 /* ---- random rotated scenes against brute force ---------------------------------- */
 
 #define MAXO 48
 #define NMESH 5
 
 typedef struct model {
-    noctMesh *mesh[NMESH];
-    double radius[NMESH]; /* bounds |v| over the mesh's vertices */
+    noctMesh *mesh[NMESH + MAXO]; /* the shared meshes, then each box
+                                     primitive's own, for the brute force */
+    double radius[NMESH + MAXO]; /* bounds |v| over the mesh's vertices */
     bool alive[MAXO];
     noctObjectId id[MAXO];
     int mesh_of[MAXO];
@@ -336,6 +402,19 @@ static void add_random(noctWorld *w, model *m, int i)
     noctObjectDef d = noctDefaultObjectDef();
     m->mesh_of[i] = (int)(NMESH * uniform());
     d.mesh = m->mesh[m->mesh_of[i]];
+    if (uniform() < 0.3) { /* a box primitive, and the test's mesh of it */
+        for (int k = 0; k < 3; ++k)
+            d.half_extents[k] = 0.1 + 0.6 * uniform();
+        d.mesh = NULL;
+        m->mesh_of[i] = NMESH + i;
+        noctMeshDestroy(m->mesh[NMESH + i]);
+        ck_assert_int_eq(noctMeshCreateBox(d.half_extents[0], d.half_extents[1],
+                                           d.half_extents[2], &m->mesh[NMESH + i], NULL),
+                         NOCT_OK);
+        m->radius[NMESH + i] = sqrt(d.half_extents[0] * d.half_extents[0] +
+                                    d.half_extents[1] * d.half_extents[1] +
+                                    d.half_extents[2] * d.half_extents[2]);
+    }
     random_place(&m->x[i]);
     d.transform = m->x[i];
     const double u = uniform();
@@ -594,7 +673,15 @@ START_TEST(rotated_scenes_against_brute_force)
             ck_assert_msg(memcmp(v, m.vel[i], sizeof v) == 0, "step %d: object %d's velocity",
                           step, i);
             ck_assert(noctWorldGetUserData(w, m.id[i]) == &m.alive[i]);
-            ck_assert(noctWorldGetMesh(w, m.id[i]) == m.mesh[m.mesh_of[i]]);
+            if (m.mesh_of[i] < NMESH) {
+                ck_assert(noctWorldGetMesh(w, m.id[i]) == m.mesh[m.mesh_of[i]]);
+            } else {
+                double half[3], lo[3], hi[3];
+                ck_assert(noctWorldGetMesh(w, m.id[i]) == NULL);
+                ck_assert_int_eq(noctWorldGetHalfExtents(w, m.id[i], half), NOCT_OK);
+                noctMeshBounds(m.mesh[m.mesh_of[i]], lo, hi);
+                ck_assert(half[0] == hi[0] && half[1] == hi[1] && half[2] == hi[2]);
+            }
             bool sensor;
             ck_assert_int_eq(noctWorldGetSensor(w, m.id[i], &sensor), NOCT_OK);
             ck_assert(sensor == m.sensor[i]);
@@ -607,7 +694,7 @@ START_TEST(rotated_scenes_against_brute_force)
     ck_assert_int_gt(total_ended, 40);
     ck_assert_int_gt(total_sensed, 10);
     noctWorldDestroy(w);
-    for (int i = 0; i < NMESH; ++i)
+    for (int i = 0; i < NMESH + MAXO; ++i)
         noctMeshDestroy(m.mesh[i]);
 }
 END_TEST
@@ -893,6 +980,12 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, quaternions_and_matrices);
     tcase_add_test(tc, quarter_turns_are_exact);
+    suite_add_tcase(s, tc);
+    /* slow under valgrind, where it is left out (tests/local.mk) */
+    tc = tcase_create("gas");
+    tcase_set_tags(tc, "slow");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, gas_boxes_are_the_scenes);
     suite_add_tcase(s, tc);
     tc = tcase_create("driven worlds");
     tcase_set_timeout(tc, 300);

@@ -12,9 +12,11 @@
  * w the scalar part; q and -q are the same rotation. A quaternion whose
  * squared length n = ((x x + y y) + z z) + w w (evaluated in that order)
  * differs from 1 by more than #NOCT_QUAT_TOLERANCE is refused
- * (#NOCT_ERR_INVALID); one within it is normalised by dividing each
- * component by fl(sqrt(n)) (not at all when n is exactly 1). The matrix
- * is then, with every product and sum rounded as written:
+ * (#NOCT_ERR_INVALID); one within it but farther than #NOCT_QUAT_UNIT
+ * is normalised by dividing each component by fl(sqrt(n)), and one within
+ * #NOCT_QUAT_UNIT (a unit quaternion as computed in double precision) is
+ * used as given. The matrix is then, with every product and sum rounded
+ * as written:
  *
  *     R = | 1 - 2(yy + zz)   2(xy - zw)       2(xz + yw)     |
  *         | 2(xy + zw)       1 - 2(xx + zz)   2(yz - xw)     |
@@ -53,6 +55,10 @@ extern "C" {
 
 /** Largest accepted |squared length - 1| of a rotation quaternion. */
 #define NOCT_QUAT_TOLERANCE 1e-6
+
+/** A quaternion whose squared length is within this of 1 is used as
+ *  given, without normalising: 4 units in the last place of 1. */
+#define NOCT_QUAT_UNIT 0x1p-50
 
 /** Matrix entries within this of 0, 1 or -1 are set to it. */
 #define NOCT_ROTATION_SNAP 0x1p-44

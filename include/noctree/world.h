@@ -209,7 +209,20 @@ typedef enum noctObjectType {
 typedef struct noctObjectDef {
     const noctMesh *mesh;    /**< Its shape, borrowed: it must outlive the
                                   object; any number of objects may share
-                                  it. Required. */
+                                  it. A convex mesh is a convex polytope:
+                                  the narrowphase uses its convexity. NULL
+                                  for a box primitive (half_extents). */
+    double half_extents[3];  /**< With no mesh, the object is a box
+                                  primitive with these half-extents,
+                                  centred on its position: a few dozen
+                                  bytes, no mesh (one is made, and kept
+                                  while the rotation lasts, only for the
+                                  rare pairs whose exact test needs its
+                                  triangles). Its placed corners are those
+                                  of transform.h, so it collides exactly as
+                                  noctMeshCreateBox()'s mesh would.
+                                  Finite, at least DBL_MIN, the least at
+                                  least 2^-29 of the largest. Default 0. */
     noctTransform transform; /**< Where it is: rotation, then translation
                                   (transform.h). Default the identity. */
     double velocity[3];      /**< Distance per step, as a vector, used bit
@@ -345,6 +358,23 @@ NOCT_API noctStatus noctWorldAdd(noctWorld *world, const noctMesh *mesh,
                                  noctObjectId *id, noctError *err);
 
 /**
+ * @brief Make room for more objects at once.
+ *
+ * The per-object arrays otherwise grow by doubling as objects come, and
+ * may hold up to twice the room the objects need; a program that knows
+ * how many objects it will add saves that memory and the copying.
+ * @param[in]  world The world.
+ * @param[in]  more  How many objects will be added beyond those there.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK, adding @p more objects grows no per-object array.
+ *       On failure the world is as it was, with perhaps more room.
+ * @return #NOCT_OK; #NOCT_ERR_TOO_LARGE past 2^31 objects;
+ *         #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldReserve(noctWorld *world, size_t more, noctError *err);
+
+/**
  * @brief Return the default object definition.
  * @return No mesh (one must be set), the identity transform, zero
  *         velocity, #NOCT_OBJECT_MOVING, no user data, every category and
@@ -363,11 +393,15 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  * @param[in]  def   The object.
  * @param[out] id    Receives the new object's handle; {0, 0} on failure.
  * @param[out] err   Receives the details of a failure, or NULL.
- * @pre @p world, @p def, @p def->mesh and @p id are not NULL.
+ * @pre @p world, @p def and @p id are not NULL.
  * @post On #NOCT_OK the object is in the octree; it takes part in the
  *       next step. On failure no object was added.
  * @return #NOCT_OK; the failures of noctTransformCheck(); a mesh status
- *         if rotating the mesh's vertices made it degenerate;
+ *         if rotating the mesh's vertices made it degenerate; for a box
+ *         primitive, #NOCT_ERR_INVALID for no mesh and zero half-extents
+ *         or half-extents below DBL_MIN, #NOCT_ERR_NONFINITE,
+ *         #NOCT_ERR_TOO_LARGE beyond twice #NOCT_MAX_COORDINATE,
+ *         #NOCT_ERR_DEGENERATE for the least under 2^-29 of the largest;
  *         #NOCT_ERR_NONFINITE for a velocity that is not finite;
  *         #NOCT_ERR_TOO_LARGE for more than 2^31 objects (a velocity that
  *         would carry an object beyond #NOCT_MAX_COORDINATE fails the
@@ -665,9 +699,21 @@ NOCT_API void *noctWorldGetUserData(const noctWorld *world, noctObjectId id);
  * @param[in] world The world.
  * @param[in] id    The object.
  * @pre @p world is not NULL.
- * @return The mesh, or NULL for a stale handle.
+ * @return The mesh, or NULL for a box primitive or a stale handle.
  */
 NOCT_API const noctMesh *noctWorldGetMesh(const noctWorld *world, noctObjectId id);
+
+/**
+ * @brief A box primitive's half-extents.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] half  Receives them.
+ * @pre @p world and @p half are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle or an object
+ *         with a mesh.
+ */
+NOCT_API noctStatus noctWorldGetHalfExtents(const noctWorld *world, noctObjectId id,
+                                            double half[3]);
 
 /**
  * @brief Return the number of objects.
