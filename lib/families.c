@@ -125,10 +125,9 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
             return fam_unbuild(w, ids, i, owned_before, NOCT_ERR_NUMERIC);
         for (int k = 0; k < 3; ++k)
             d.velocity[k] = 0.05 * unit[k];
-        noctStatus st = noctWorldCreateObject(w, &d, &ids[i], err);
+        noctStatus st = noct_world_add_object(w, &d, 0.05, &ids[i], err);
         if (st != NOCT_OK)
             return fam_unbuild(w, ids, i, owned_before, st);
-        w->obj[ids[i].index].speed = 0.05; /* as noctWorldAdd() keeps it */
     }
     free(ids);
     return NOCT_OK;

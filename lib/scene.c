@@ -21,10 +21,12 @@
 
 #include "internal.h"
 #include "mesh_internal.h"
+#include "world_internal.h"
 
 typedef struct scene_mesh {
     char *name;
-    noctMesh *mesh;
+    noctMesh *mesh;  /* NULL for a box primitive */
+    double half[3];  /* a box primitive's half-extents */
 } scene_mesh;
 
 typedef struct scene_object {
@@ -35,6 +37,7 @@ typedef struct scene_object {
     noctQuat q;              /* from 'rotate', else the identity */
     noctObjectType type;
     uint64_t category, mask;
+    bool sensor;
 } scene_object;
 
 typedef struct scene_family {
@@ -209,11 +212,16 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
     noctMesh *m = NULL;
     noctError inner = {0};
     noctStatus st;
+    double h[3] = {0, 0, 0};
     if (strcmp(kind, "box") == 0) {
-        double h[3];
         if ((st = numbers(p, "half-extent", h, 3)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
             return st;
-        st = noctMeshCreateBox(h[0], h[1], h[2], &m, &inner);
+        /* a box primitive (world.h) when its half-extents suit one, which
+         * collides exactly as the mesh would; else the mesh, or its
+         * constructor's complaint */
+        const bool primitive = noct_check_box_half(h, NULL) == NOCT_OK &&
+                               fmax(h[0], fmax(h[1], h[2])) <= NOCT_MAX_COORDINATE;
+        st = primitive ? NOCT_OK : noctMeshCreateBox(h[0], h[1], h[2], &m, &inner);
     } else if (strcmp(kind, "file") == 0) {
         char *file = next(p);
         if (file == NULL)
@@ -242,6 +250,7 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
         s->capmeshes = cap;
     }
     s->meshes[s->nmeshes].name = strdup(name);
+    memcpy(s->meshes[s->nmeshes].half, h, sizeof h);
     s->meshes[s->nmeshes++].mesh = m;
     return s->meshes[s->nmeshes - 1].name ? NOCT_OK
                                            : perr(p, NOCT_ERR_NOMEM, "out of memory");
@@ -264,20 +273,21 @@ static noctStatus bits(parser *p, const char *what, uint64_t *out)
 
 #define OBJECT_SYNTAX                                                                    \
     "expected 'object MESH X Y Z [DX DY DZ SPEED] [velocity VX VY VZ] "                \
-    "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK]'"
+    "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK] "     \
+    "[sensor]'"
 
 /* The object's attributes after its position and legacy motion: each
  * keyword once. */
 static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool legacy)
 {
-    bool seen[4] = {false, false, false, false};
-    static const char *const KW[4] = {"velocity", "rotate", "type", "filter"};
+    bool seen[5] = {false, false, false, false, false};
+    static const char *const KW[5] = {"velocity", "rotate", "type", "filter", "sensor"};
     noctStatus st = NOCT_OK;
     for (; tok != NULL && st == NOCT_OK; tok = next(p)) {
         int k = 0;
-        while (k < 4 && strcmp(tok, KW[k]) != 0)
+        while (k < 5 && strcmp(tok, KW[k]) != 0)
             ++k;
-        if (k == 4)
+        if (k == 5)
             return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
         if (seen[k])
             return perr(p, NOCT_ERR_PARSE, "'%s' given twice", tok);
@@ -307,6 +317,8 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
             else
                 return perr(p, NOCT_ERR_INVALID,
                             "unknown type '%s' (static, kinematic or moving)", t);
+        } else if (k == 4) {
+            o->sensor = true;
         } else {
             if ((st = bits(p, "category", &o->category)) != NOCT_OK ||
                 (st = bits(p, "mask", &o->mask)) != NOCT_OK)
@@ -321,7 +333,7 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
 static bool is_attribute(const char *tok)
 {
     return strcmp(tok, "velocity") == 0 || strcmp(tok, "rotate") == 0 ||
-           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0;
+           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0 || strcmp(tok, "sensor") == 0;
 }
 
 static noctStatus parse_object(parser *p, noctScene *s)
@@ -641,30 +653,33 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
                 st = noctWorldAddPlanes(w, (int)s->families[i].size, s->unit_cube, err);
         }
     }
+    if (st == NOCT_OK && s->nobjects > 0)
+        st = noctWorldReserve(w, s->nobjects, err);
     for (size_t i = 0; i < s->nobjects && st == NOCT_OK; ++i) {
         const scene_object *o = &s->objects[i];
-        noctObjectId id;
+        const scene_mesh *sm = &s->meshes[o->mesh];
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = sm->mesh;
+        memcpy(d.half_extents, sm->half, sizeof d.half_extents);
+        memcpy(d.transform.p, o->pos, sizeof d.transform.p);
+        d.transform.q = o->q;
+        d.type = o->type;
+        d.category = o->category;
+        d.mask = o->mask;
+        d.sensor = o->sensor;
+        double speed = 0;
         if (o->has_velocity) {
-            noctObjectDef d = noctDefaultObjectDef();
-            d.mesh = s->meshes[o->mesh].mesh;
-            memcpy(d.transform.p, o->pos, sizeof d.transform.p);
-            d.transform.q = o->q;
             memcpy(d.velocity, o->vel, sizeof d.velocity);
-            d.type = o->type;
-            d.category = o->category;
-            d.mask = o->mask;
-            st = noctWorldCreateObject(w, &d, &id, err);
-            continue;
+        } else if (o->speed > 0) {
+            /* direction and speed: the velocity as noctWorldAdd() makes it */
+            double unit[3];
+            noct_unit_direction(o->dir, unit); /* checked when read */
+            for (int k = 0; k < 3; ++k)
+                d.velocity[k] = o->speed * unit[k];
+            speed = o->speed;
         }
-        /* direction and speed: the velocity as noctWorldAdd() makes it */
-        st = noctWorldAdd(w, s->meshes[o->mesh].mesh, o->pos, o->dir, o->speed, &id, err);
-        const noctTransform x = {{o->pos[0], o->pos[1], o->pos[2]}, o->q};
-        if (st == NOCT_OK && (o->q.x != 0 || o->q.y != 0 || o->q.z != 0))
-            st = noctWorldSetTransform(w, id, &x, err);
-        if (st == NOCT_OK && o->type != NOCT_OBJECT_MOVING)
-            st = noctWorldSetType(w, id, o->type, err);
-        if (st == NOCT_OK && (o->category != NOCT_FILTER_ALL || o->mask != NOCT_FILTER_ALL))
-            st = noctWorldSetFilter(w, id, o->category, o->mask, err);
+        noctObjectId id;
+        st = noct_world_add_object(w, &d, speed, &id, err);
     }
     if (st != NOCT_OK) {
         noctWorldDestroy(w);

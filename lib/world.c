@@ -423,8 +423,14 @@ noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double positio
     memcpy(def.transform.p, position, sizeof def.transform.p);
     for (int k = 0; k < 3; ++k)
         def.velocity[k] = speed * unit[k];
-    noctStatus st = noctWorldCreateObject(w, &def, id, err);
-    if (st == NOCT_OK && w->obj[id->index].speed > 0)
+    return noct_world_add_object(w, &def, speed, id, err);
+}
+
+noctStatus noct_world_add_object(noctWorld *w, const noctObjectDef *def, double speed,
+                                 noctObjectId *id, noctError *err)
+{
+    noctStatus st = noctWorldCreateObject(w, def, id, err);
+    if (st == NOCT_OK && speed > 0 && w->obj[id->index].speed > 0)
         w->obj[id->index].speed = speed; /* as given: |velocity| within 1e-9 */
     return st;
 }

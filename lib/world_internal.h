@@ -107,6 +107,12 @@ struct noctWorld {
 
 double noct_seconds(void);
 
+/* noctWorldCreateObject() for a velocity that is speed * d for a unit d
+ * (noctWorldAdd(), the families, scene files): the speed is kept as given,
+ * so that the motion's bounds are those of the scenes' definitions. */
+noctStatus noct_world_add_object(noctWorld *w, const noctObjectDef *def, double speed,
+                                 noctObjectId *id, noctError *err);
+
 /* Object s's placed mesh, made now for a box primitive that has none
  * (kept while its rotation lasts); NULL without memory. */
 const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s);

@@ -449,6 +449,8 @@ START_TEST(scene_limits)
          2, "mask: not a 64-bit"},
         {"mesh a box 1 1 1\nobject a 0 0 0 spin 1 0 0\n", NOCT_ERR_PARSE, 2,
          "unexpected 'spin'"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 sensor sensor\n", NOCT_ERR_PARSE, 2,
+         "'sensor' given twice"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof *bad; ++i) {
         char name[32];
@@ -467,7 +469,7 @@ START_TEST(object_attributes)
         "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
         "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n"
         "object a 0 5 0 type static\n"
-        "object a 0 0 5 velocity 1e-3 0 0 type moving\n");
+        "object a 0 0 5 velocity 1e-3 0 0 type moving sensor\n");
     noctScene *sc;
     noctError err = {0};
     noctStatus st = noctSceneRead(path, &sc, &err);
@@ -502,6 +504,15 @@ START_TEST(object_attributes)
     ck_assert_int_eq(t, NOCT_OBJECT_STATIC);
     ck_assert_int_eq(noctWorldGetType(w, id[3], &t), NOCT_OK);
     ck_assert_int_eq(t, NOCT_OBJECT_MOVING);
+    bool sensor;
+    ck_assert_int_eq(noctWorldGetSensor(w, id[3], &sensor), NOCT_OK);
+    ck_assert(sensor);
+    ck_assert_int_eq(noctWorldGetSensor(w, id[2], &sensor), NOCT_OK);
+    ck_assert(!sensor);
+    /* 'mesh a box' is a box primitive */
+    ck_assert(noctWorldGetMesh(w, id[0]) == NULL);
+    ck_assert_int_eq(noctWorldGetHalfExtents(w, id[0], v), NOCT_OK);
+    ck_assert(v[0] == 0.5 && v[1] == 0.25 && v[2] == 0.125);
     ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
     ck_assert_int_eq(noctWorldGetTransform(w, id[0], &x), NOCT_OK);
     ck_assert(x.p[0] == 0.1 && x.p[1] == -0.2 && x.p[2] == 0.3);

@@ -44,6 +44,18 @@ SCENE
 expect_run 0 '^contact begins 1$' --quiet "$tmp/two.scene"
 expect_run 0 '^objects 3$' --quiet "$tmp/two.scene"
 
+# A cube passing through a sensor: its faces meet the sensor's at step 40
+# (0.5 + 0.05 s = 2.5) and part after step 80 (0.05 s - 0.5 = 3.5).
+cat > "$tmp/sensor.scene" <<'SCENE'
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0 velocity 0.05 0 0
+object cube 3 0 0 type static sensor
+SCENE
+expect_run 0 '^40 sensor-begin 0 1$' --events --quiet --steps 100 "$tmp/sensor.scene"
+expect_run 0 '^81 sensor-end 0 1$' --events --quiet --steps 100 "$tmp/sensor.scene"
+expect_run 0 '^contact begins 0$' --quiet --steps 100 "$tmp/sensor.scene"
+expect_run 0 '^sensor events 2$' --quiet --steps 100 "$tmp/sensor.scene"
+
 # Bad scene files: exit 2 and file:line: problem.
 bad_scene() { # NAME LINE-PATTERN CONTENT
     printf '%s\n' "$3" > "$tmp/$1"

@@ -27,6 +27,7 @@ static const char usage[] =
     "  --steps S             number of steps\n"
     "  --substep             split steps so fast objects cannot pass through others\n"
     "  --events              print every contact event: STEP begin|end A B\n"
+    "                        (and sensor-begin|sensor-end for sensors)\n"
     "  --quiet               no progress bar\n"
     "  --help                this text\n"
     "  --version             the version\n"
@@ -104,7 +105,7 @@ int main(int argc, char **argv)
                 "size per step; objects can pass through each other unseen (the "
                 "report's fidelity constraint): use --substep", ratio);
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
-    size_t begins = 0, ends = 0;
+    size_t begins = 0, ends = 0, sensor_events = 0;
     int status = 0;
     for (int s = 1; s <= nsteps; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
@@ -121,6 +122,14 @@ int main(int argc, char **argv)
         ends += ne;
         for (size_t i = 0; events && i < ne; ++i)
             printf("%d end %u %u\n", s, p[i].a.index, p[i].b.index);
+        nb = noctWorldSensorBegan(w, &p);
+        sensor_events += nb;
+        for (size_t i = 0; events && i < nb; ++i)
+            printf("%d sensor-begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        ne = noctWorldSensorEnded(w, &p);
+        sensor_events += ne;
+        for (size_t i = 0; events && i < ne; ++i)
+            printf("%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
         if (s % 5 == 0 || s == nsteps) {
             char label[48];
             snprintf(label, sizeof label, "step %d/%d", s, nsteps);
@@ -138,6 +147,9 @@ int main(int argc, char **argv)
                def->N == NOCT_N_EXHAUSTIVE ? 0 : def->N, noctAccuracyName(def->accuracy));
         printf("contact begins %zu\ncontact ends %zu\ncolliding at the end %zu\n", begins,
                ends, noctWorldColliding(w, &p));
+        if (sensor_events > 0 || noctWorldSensing(w, &p) > 0)
+            printf("sensor events %zu\nsensing at the end %zu\n", sensor_events,
+                   noctWorldSensing(w, &p));
         double levels = c.narrow.seconds_convex + c.narrow.seconds_exact;
         printf("time per step %.3f ms (motion %.3f, maintenance %.3f, pair search and "
                "box tests %.3f, convex level %.3f, exact level %.3f, events and "
