@@ -606,11 +606,14 @@ noctStatus noctWorldGetSensor(const noctWorld *w, noctObjectId id, bool *sensor)
     return NOCT_OK;
 }
 
-noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data)
+noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data,
+                                noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
     if (lookup(w, id) == NULL)
-        return NOCT_ERR_INVALID;
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
     w->bp.proxy[id.index].user = user_data;
     return NOCT_OK;
 }

@@ -903,7 +903,7 @@ START_TEST(bad_input_changes_nothing)
     ck_assert_int_eq(noctWorldSetVelocity(w, a, v, &err), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldSetType(w, a, NOCT_OBJECT_STATIC, &err), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldSetFilter(w, a, 1, 1, &err), NOCT_ERR_INVALID);
-    ck_assert_int_eq(noctWorldSetUserData(w, a, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldSetUserData(w, a, &err, &err), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldRemove(w, a, &err), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldGetTransform(w, a, &got), NOCT_ERR_INVALID);
     ck_assert_int_eq(noctWorldGetVelocity(w, a, v), NOCT_ERR_INVALID);

@@ -677,13 +677,15 @@ NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
 
 /**
  * @brief Set the pointer a program keeps with an object.
- * @param[in] world     The world.
- * @param[in] id        The object.
- * @param[in] user_data Any pointer; the world never reads it.
+ * @param[in]  world     The world.
+ * @param[in]  id        The object.
+ * @param[in]  user_data Any pointer; the world never reads it.
+ * @param[out] err       Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
  * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
  */
-NOCT_API noctStatus noctWorldSetUserData(noctWorld *world, noctObjectId id, void *user_data);
+NOCT_API noctStatus noctWorldSetUserData(noctWorld *world, noctObjectId id, void *user_data,
+                                         noctError *err);
 
 /**
  * @brief Read the pointer a program keeps with an object.
