@@ -226,6 +226,86 @@ START_TEST(splitting_steps)
 }
 END_TEST
 
+/* A detection-only world that the program drives: gas's boxes, made
+ * kinematic, each placed every frame with noctWorldSetTransform() along
+ * the path the world's own motion would give it (p += v, turned back at
+ * the container's walls and, by the program, at contact begins). Once
+ * sizes settle, placing and stepping allocate nothing. */
+START_TEST(driven_frames)
+{
+    const size_t n = 2000;
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS;
+    noctWorld *src, *w;
+    noctError err;
+    ck_assert_int_eq(noctWorldCreate(&wd, &src, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldAddGas(src, n, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_OK);
+    static noctTransform x[2000];
+    static double v[2000][3];
+    static noctObjectId id[2000];
+    static int turned[2000];
+    for (uint32_t i = 0; i < n; ++i) {
+        const noctObjectId s = {i, 1};
+        noctObjectDef d = noctDefaultObjectDef();
+        ck_assert_int_eq(noctWorldGetHalfExtents(src, s, d.half_extents), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetTransform(src, s, &x[i]), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetVelocity(src, s, v[i]), NOCT_OK);
+        d.transform = x[i];
+        d.type = NOCT_OBJECT_KINEMATIC;
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], &err), NOCT_OK);
+    }
+    noctWorldDestroy(src);
+    const double L = noctGasContainerSize(n);
+    noctWorldCounters before, after;
+    unsigned long allocs = 0;
+    noctStatus st = NOCT_OK;
+    for (int f = 0; f < WARM_UP + COUNTED && st == NOCT_OK; ++f) {
+        if (f == WARM_UP) {
+            noctWorldGetCounters(w, &before);
+            counting_on();
+        }
+        for (uint32_t i = 0; i < n && st == NOCT_OK; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                x[i].p[k] += v[i][k];
+                if ((x[i].p[k] < 0 && v[i][k] < 0) || (x[i].p[k] > L && v[i][k] > 0))
+                    v[i][k] = -v[i][k];
+            }
+            st = noctWorldSetTransform(w, id[i], &x[i], &err);
+        }
+        if (st == NOCT_OK)
+            st = noctWorldStep(w, &err);
+        /* the response, the program's: each box in a pair that began
+         * turns back once */
+        const noctPair *p;
+        const size_t nb = noctWorldBegan(w, &p);
+        for (size_t b = 0; b < nb; ++b)
+            for (int side = 0; side < 2; ++side) {
+                const uint32_t i = side ? p[b].b.index : p[b].a.index;
+                if (turned[i] == f + 1)
+                    continue;
+                turned[i] = f + 1;
+                for (int k = 0; k < 3; ++k)
+                    v[i][k] = -v[i][k];
+            }
+    }
+    allocs = counting_off("driven");
+    ck_assert_msg(st == NOCT_OK, "%s", err.message);
+    noctWorldGetCounters(w, &after);
+    printf("driven gas:2000: %d frames, %lu allocations; %llu leaves entered, %llu colliding "
+           "pairs\n",
+           COUNTED, allocs, (unsigned long long)(after.leaves_entered - before.leaves_entered),
+           (unsigned long long)(after.colliding_pairs - before.colliding_pairs));
+    /* the same boxes on the same paths as gas_steps' world: the same
+     * colliding pairs, step by step, as its motion and response give */
+    ck_assert_uint_eq(after.colliding_pairs - before.colliding_pairs, 12831);
+    ck_assert_uint_gt(after.leaves_entered, before.leaves_entered);
+    ck_assert_uint_eq(allocs, 0);
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 static uint64_t rng = 0x9e3779b97f4a7c15u;
 static double uniform(void)
 {
@@ -339,6 +419,7 @@ int main(void)
     tcase_add_test(tc, gas_steps);
     tcase_add_test(tc, splitting_steps);
     tcase_add_test(tc, broadphase_frames);
+    tcase_add_test(tc, driven_frames);
     suite_add_tcase(s, tc);
     return run_suite(s);
 #endif
