@@ -149,12 +149,17 @@ typedef struct ray_hit {
     uint32_t id;
 } ray_hit;
 
+/* Hits gather in a buffer on the stack (a ray through a few leaves meets
+ * a few dozen boxes), then on the heap. */
+#define RAY_LOCAL_HITS 64
+
 typedef struct ray_query {
     const noctBroadphase *bp;
     double o[3], d[3];
     noctQueryFilter filter;
-    ray_hit *hit;
+    ray_hit *hit; /* local, or from the heap */
     size_t n, cap;
+    ray_hit local[RAY_LOCAL_HITS];
 } ray_query;
 
 static int cmp_hit(const void *x, const void *y)
@@ -196,10 +201,13 @@ static bool ray_list(ray_query *rq, const uint32_t *ids, uint32_t n)
         if (t < 0 || !passes(&bp->proxy[id], rq->filter))
             continue;
         if (rq->n == rq->cap) {
-            const size_t cap = rq->cap ? 2 * rq->cap : 64;
-            ray_hit *q = realloc(rq->hit, cap * sizeof *q);
+            const size_t cap = 2 * rq->cap;
+            ray_hit *q = rq->hit == rq->local ? malloc(cap * sizeof *q)
+                                              : realloc(rq->hit, cap * sizeof *q);
             if (q == NULL)
                 return false;
+            if (rq->hit == rq->local)
+                memcpy(q, rq->local, sizeof rq->local);
             rq->hit = q;
             rq->cap = cap;
         }
@@ -223,11 +231,18 @@ noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3
     for (int k = 0; k < 3; ++k)
         if (!isfinite(origin[k]) || !isfinite(translation[k]))
             return NOCT_ERR_NONFINITE;
-    ray_query rq = {bp, {origin[0], origin[1], origin[2]},
-                    {translation[0], translation[1], translation[2]}, filter, NULL, 0, 0};
+    ray_query rq;
+    rq.bp = bp;
+    memcpy(rq.o, origin, sizeof rq.o);
+    memcpy(rq.d, translation, sizeof rq.d);
+    rq.filter = filter;
+    rq.hit = rq.local;
+    rq.n = 0;
+    rq.cap = RAY_LOCAL_HITS;
     /* without a tree (a failure tore it down), every proxy is asked */
     if (!(bp->root != NULL ? ray_node(&rq, bp->root) : ray_list(&rq, NULL, bp->nslots))) {
-        free(rq.hit);
+        if (rq.hit != rq.local)
+            free(rq.hit);
         return NOCT_ERR_NOMEM;
     }
     if (rq.n > 1)
@@ -245,6 +260,7 @@ noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3
             break; /* 0 (or NaN) stops */
         max = noct_min(max, r);
     }
-    free(rq.hit);
+    if (rq.hit != rq.local)
+        free(rq.hit);
     return NOCT_OK;
 }

@@ -315,8 +315,17 @@ static double uniform(void)
     return (double)(rng >> 11) * 0x1p-53;
 }
 
+static double count_ray(void *ctx, noctProxyId id, void *user, double t)
+{
+    (void)id;
+    (void)user;
+    (void)t;
+    ++*(size_t *)ctx;
+    return 1; /* every box along the segment */
+}
+
 /* The public broadphase: boxes bouncing in a cube, moved and searched each
- * frame, some growing and shrinking. */
+ * frame, some growing and shrinking, and a ray cast across it. */
 START_TEST(broadphase_frames)
 {
     enum { n = 1500 };
@@ -340,7 +349,7 @@ START_TEST(broadphase_frames)
                          NOCT_OK);
     }
     noctBroadphaseCounters before, after;
-    size_t pairs = 0;
+    size_t pairs = 0, rays = 0;
     unsigned long allocs = 0;
     int failures = 0;
     for (int f = 0; f < WARM_UP + COUNTED; ++f) {
@@ -364,6 +373,11 @@ START_TEST(broadphase_frames)
         const noctProxyPair *p;
         if (f >= WARM_UP)
             pairs += noctBroadphasePairs(bp, &p);
+        /* a ray across the cube, meeting a few dozen boxes: the query
+         * allocates nothing either */
+        const double o[3] = {0, side / 2 + f % 7, side / 2}, dir[3] = {side, 0, 0};
+        failures += noctBroadphaseRayCast(bp, o, dir, noctDefaultQueryFilter(), count_ray,
+                                          &rays) != NOCT_OK;
     }
     allocs = counting_off("broadphase");
     ck_assert_int_eq(failures, 0);
@@ -375,6 +389,7 @@ START_TEST(broadphase_frames)
     ck_assert_uint_gt(after.splits, before.splits);
     ck_assert_uint_gt(after.merges, before.merges);
     ck_assert_uint_gt(pairs, 0);
+    ck_assert_uint_gt(rays, 0);
     ck_assert_uint_eq(allocs, 0);
     ck_assert_int_eq(noctBroadphaseValidate(bp, &err), NOCT_OK);
     noctBroadphaseDestroy(bp);
