@@ -303,6 +303,110 @@ Result run_noctree(const char *spec, const Options &o)
     return r;
 }
 
+/*
+ * libnoctree's world driven by the program (--driven): a detection-only
+ * world (events only: no motion, no walls, no response) with the same
+ * objects as noctSceneFamily()'s, each made with noctWorldCreateObject()
+ * as a kinematic object. The program keeps every position and velocity
+ * itself (the Body array, from make_scene(), bit for bit the family's)
+ * and each step moves and bounces them as Dynamics::move does (as the
+ * world's motion effect does), teleports every object with
+ * noctWorldSetTransform(), steps the world, and reverses the objects of
+ * the pairs noctWorldBegan() reports: the same trajectories, so the same
+ * contact begins, as the built-in motion's. The step time covers all of
+ * it, as the built-in motion's covers its motion and response.
+ */
+Result run_driven(const char *spec, Scene &s, bool gas, const Options &o)
+{
+    Result r = {};
+    const double t0 = now();
+    noctError err;
+    noctScene *sc;
+    // The world's parameters are the family's (depth, accuracy, N as run).
+    if (noctSceneFamily(spec, &sc, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return r;
+    }
+    noctWorldDef def = *noctSceneDef(sc);
+    noctSceneDestroy(sc);
+    def.N = o.N;
+    def.effects = NOCT_EFFECT_EVENTS;
+    noctWorld *w;
+    if (noctWorldCreate(&def, &w, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return r;
+    }
+    // The family's meshes: a box of the gas's own rotation per object
+    // (noctWorldAddGas()), one unit cube for the planes.
+    std::vector<noctMesh *> mesh;
+    std::vector<noctObjectId> id(s.body.size());
+    noctStatus st = NOCT_OK;
+    for (size_t i = 0; i < s.body.size() && st == NOCT_OK; ++i) {
+        const Body &b = s.body[i];
+        noctMesh *m = nullptr;
+        if (gas || mesh.empty()) {
+            st = gas ? noctMeshCreateOrientedBox(b.h, b.r, &m, &err)
+                     : noctMeshCreateBox(0.5, 0.5, 0.5, &m, &err);
+            if (st != NOCT_OK)
+                break;
+            mesh.push_back(m);
+        }
+        noctObjectDef od = noctDefaultObjectDef();
+        od.mesh = mesh.back();
+        std::memcpy(od.transform.p, b.c, sizeof od.transform.p);
+        od.type = NOCT_OBJECT_KINEMATIC;
+        st = noctWorldCreateObject(w, &od, &id[i], &err);
+    }
+    // Began pairs name slots: the body of each slot.
+    uint32_t slots = 0;
+    for (const noctObjectId &d : id)
+        slots = std::max(slots, d.index + 1);
+    std::vector<uint32_t> body_of(slots, UINT32_MAX);
+    for (size_t i = 0; i < id.size(); ++i)
+        body_of[id[i].index] = static_cast<uint32_t>(i);
+    Dynamics dyn(s.body, s);
+    std::vector<unsigned char> &flip = dyn.flip;
+    r.setup = now() - t0;
+    r.objects = s.body.size();
+    std::vector<double> t;
+    const double start = now();
+    for (int step = 0; st == NOCT_OK && step < o.steps && now() - start < o.budget; ++step) {
+        const double a = now();
+        dyn.move();
+        noctTransform x = noctIdentityTransform();
+        for (size_t i = 0; i < s.body.size() && st == NOCT_OK; ++i) {
+            std::memcpy(x.p, s.body[i].c, sizeof x.p);
+            st = noctWorldSetTransform(w, id[i], &x, &err);
+        }
+        if (st == NOCT_OK)
+            st = noctWorldStep(w, &err);
+        if (st != NOCT_OK)
+            break;
+        // The contact-begin reversal: each object of a begun pair once.
+        const noctPair *p;
+        const size_t nb = noctWorldBegan(w, &p);
+        r.begins += nb;
+        for (size_t k = 0; k < nb; ++k)
+            flip[body_of[p[k].a.index]] = flip[body_of[p[k].b.index]] = 1;
+        for (size_t k = 0; k < nb; ++k)
+            for (uint32_t i : {body_of[p[k].a.index], body_of[p[k].b.index]})
+                if (flip[i]) {
+                    flip[i] = 0;
+                    for (int c = 0; c < 3; ++c)
+                        s.body[i].v[c] = -s.body[i].v[c];
+                }
+        t.push_back(now() - a);
+    }
+    if (st != NOCT_OK)
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+    else
+        summarize(t, r);
+    noctWorldDestroy(w);
+    for (noctMesh *m : mesh)
+        noctMeshDestroy(m);
+    return r;
+}
+
 struct FclContext {
     std::vector<uint64_t> *pairs;
 };
@@ -577,8 +681,11 @@ Result run_bp_ode(Scene &s, const Options &o, bool sap, bool gas)
     return r;
 }
 
-const char *const LIBS[] = {"libnoctree", "fcl-dtree", "ode-sap", "ode-hash"};
-const int NLIBS = 4;
+// The runs, in the order they take turns and are printed: libnoctree's
+// built-in motion first (every x is over it), the driven world next to it.
+enum { NOCTREE, DRIVEN, FCL_DTREE, ODE_SAP, ODE_HASH, NLIBS };
+const char *const LIBS[NLIBS] = {"libnoctree", "noct-driven", "fcl-dtree", "ode-sap",
+                                 "ode-hash"};
 
 Result run_one(const char *spec, int lib, const Options &o)
 {
@@ -588,18 +695,20 @@ Result run_one(const char *spec, int lib, const Options &o)
         return Result{};
     if (o.broadphase) {
         Scene s = make_scene(gas, size);
-        if (lib == 0)
+        if (lib == NOCTREE)
             return run_bp_noctree(s, o);
-        if (lib == 1)
+        if (lib == FCL_DTREE)
             return run_bp_fcl(s, o);
-        return run_bp_ode(s, o, lib == 2, gas);
+        return run_bp_ode(s, o, lib == ODE_SAP, gas);
     }
-    if (lib == 0)
+    if (lib == NOCTREE)
         return run_noctree(spec, o);
     Scene s = make_scene(gas, size);
-    if (lib == 1)
+    if (lib == DRIVEN)
+        return run_driven(spec, s, gas, o);
+    if (lib == FCL_DTREE)
         return run_fcl(s, o);
-    return run_ode(s, o, lib == 2, gas);
+    return run_ode(s, o, lib == ODE_SAP, gas);
 }
 
 // Runs one configuration in a child process; peak is its peak memory in KiB.
@@ -673,8 +782,8 @@ int main(int argc, char **argv)
 {
     Options o;
     std::vector<const char *> scenes;
-    bool use[NLIBS] = {true, true, true, false};
-    bool quick = false;
+    bool use[NLIBS] = {true, false, true, true, false};
+    bool quick = false, driven = false;
     const char *csv_path = nullptr;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -684,6 +793,8 @@ int main(int argc, char **argv)
             quick = true;
         } else if (std::strcmp(a, "--broadphase") == 0) {
             o.broadphase = true;
+        } else if (std::strcmp(a, "--driven") == 0) {
+            driven = true;
         } else if (std::strcmp(a, "--help") == 0) {
             usage(stdout);
             return 0;
@@ -736,6 +847,14 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    if (driven)
+        use[DRIVEN] = true;
+    if (o.broadphase && use[DRIVEN]) {
+        std::fprintf(stderr, "bench-peers: noct-driven (--driven) is a world; --broadphase "
+                             "runs broadphases\n");
+        usage(stderr);
+        return 2;
+    }
     if (quick) {
         o.repeats = 1;
         if (scenes.empty())
@@ -764,11 +883,15 @@ int main(int argc, char **argv)
                     "(dynamic AABB tree)\nand ODE %s (sweep and prune; hash), each with its own "
                     "box-box test; one thread\n",
                     NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+    if (use[DRIVEN])
+        std::printf("noct-driven: libnoctree's world without its motion effect, every object "
+                    "moved by the program\nwith noctWorldSetTransform() each step, the response "
+                    "from noctWorldBegan() (x: over the\nbuilt-in motion's time)\n");
     std::printf("per-step wall time of the whole step, %d steps: median over %d interleaved "
                 "runs of each run's\nmedian (+-: half the range, %% of the median); x: this "
                 "library's median over libnoctree's\n\n",
                 o.steps, o.repeats);
-    std::printf("%-11s %8s  %-10s %10s %6s %10s %9s %7s %8s %8s %7s\n", "scene", "objects",
+    std::printf("%-11s %8s  %-11s %10s %6s %10s %9s %7s %8s %8s %7s\n", "scene", "objects",
                 "library", "median ms", "+-", "p90 ms", "ns/obj", "setup s",
                 o.broadphase ? "pairs" : "begins",
                 "peak MiB", "x");
@@ -807,7 +930,7 @@ int main(int argc, char **argv)
                     if (first == SIZE_MAX)
                         first = r.begins;
                     if (r.begins != first || (has_known && r.begins != known)) {
-                        std::printf("%-11s %8zu  %-10s %s %zu, but %s %zu\n", spec,
+                        std::printf("%-11s %8zu  %-11s %s %zu, but %s %zu\n", spec,
                                     r.objects, LIBS[l],
                                     o.broadphase ? "overlapping pairs" : "contact begins",
                                     r.begins,
@@ -839,13 +962,34 @@ int main(int argc, char **argv)
             if (l > 0 && base > 0)
                 std::snprintf(x, sizeof x, "%.2f", m / base);
             const Result &r0 = res[l][0];
-            std::printf("%-11s %8zu  %-10s %10.4g %5.0f%% %10.4g %9.0f %7.2f %8zu %8.1f %7s", spec,
+            std::printf("%-11s %8zu  %-11s %10.4g %5.0f%% %10.4g %9.0f %7.2f %8zu %8.1f %7s", spec,
                         r0.objects, LIBS[l], 1e3 * m, m > 0 ? 50 * (hi - lo) / m : 0.0,
                         1e3 * median_of(p90), 1e9 * m / static_cast<double>(r0.objects),
                         median_of(setup), r0.begins, static_cast<double>(pk) / 1024, x);
             if (steps < o.steps)
                 std::printf("  (budget: first %d steps)", steps);
             std::putchar('\n');
+        }
+        // The driven world against the built-in motion: the same events in
+        // every repeat where both did the same steps, and their times.
+        if (!res[NOCTREE].empty() && !res[DRIVEN].empty()) {
+            bool same = true;
+            for (size_t i = 0; i < std::min(res[NOCTREE].size(), res[DRIVEN].size()); ++i)
+                if (res[NOCTREE][i].steps == res[DRIVEN][i].steps &&
+                    res[NOCTREE][i].begins != res[DRIVEN][i].begins)
+                    same = false;
+            std::vector<double> mb, md;
+            for (const Result &r : res[NOCTREE])
+                mb.push_back(r.median);
+            for (const Result &r : res[DRIVEN])
+                md.push_back(r.median);
+            const double b = median_of(mb), d = median_of(md);
+            std::printf("%-11s driven/built-in: %.4g ms / %.4g ms = %.2f; contact begins %zu and "
+                        "%zu, %s\n",
+                        spec, 1e3 * d, 1e3 * b, b > 0 ? d / b : 0.0, res[DRIVEN][0].begins,
+                        res[NOCTREE][0].begins, same ? "the same" : "DIFFERENT");
+            if (!same)
+                all_ok = false;
         }
     }
     if (csv != nullptr)
