@@ -30,8 +30,26 @@
  * the overlapping pairs, with no narrowphase and no response. Their pair
  * totals must agree.
  *
- * Usage: bench-peers [--quick] [--broadphase] [--steps S] [--repeats R] [--N N]
- *                    [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]
+ * With --driven libnoctree runs twice on every scene, its runs taking
+ * turns with the others: as always, with the world's built-in motion
+ * effect (row libnoctree), and as a detection-only world that the program
+ * drives (row noct-driven; also selectable with --libs): a world created
+ * with the events effect only, whose objects are made with
+ * noctWorldCreateObject() (the same meshes and positions as the family's),
+ * while the program keeps every position and velocity itself, moves them
+ * each step as the motion effect would (p += v, the container's walls
+ * negating velocity components as SCENES.md says), teleports every object
+ * with noctWorldSetTransform(), calls noctWorldStep(), and reverses the
+ * objects of the pairs noctWorldBegan() reports. The positions are the
+ * built-in motion's bit for bit, so the contact begins must be the same:
+ * a line under the scene's rows gives the driven step time over the
+ * built-in one and both counts, and the tool fails if the counts differ.
+ * The driven step time covers the program's moves, the teleports, the
+ * step and the response, as the built-in one covers the motion and the
+ * response.
+ *
+ * Usage: bench-peers [--quick] [--broadphase | --driven] [--steps S] [--repeats R]
+ *                    [--N N] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
@@ -763,16 +781,24 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 
 void usage(FILE *f)
 {
-    std::fputs("usage: bench-peers [--quick] [--broadphase] [--steps S] [--repeats R] [--N N]\n"
-               "                   [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
+    std::fputs("usage: bench-peers [--quick] [--broadphase | --driven] [--steps S] [--repeats R]\n"
+               "                   [--N N] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
-               "libnoctree,fcl-dtree,ode-sap,ode-hash (default all but ode-hash,\n"
-               "which takes seconds a step on the large planes).\n"
+               "libnoctree,noct-driven,fcl-dtree,ode-sap,ode-hash (default\n"
+               "libnoctree,fcl-dtree,ode-sap: ode-hash takes seconds a step on the\n"
+               "large planes).\n"
                "--quick: planes:3 gas:1000, 1 repeat, 200 steps.\n"
                "--broadphase: the bare broadphases on the scenes' boxes, pairs of\n"
                "overlapping boxes only (no narrowphase, no response); the pairs\n"
-               "column is their total over the steps, and must agree.\n",
+               "column is their total over the steps, and must agree.\n"
+               "--driven: also run noct-driven, libnoctree's world without its motion\n"
+               "effect, driven by the program: it moves every object each step with\n"
+               "noctWorldSetTransform() to the positions the built-in motion gives,\n"
+               "steps the world and reverses the objects of the pairs noctWorldBegan()\n"
+               "reports; a line per scene gives its step time over the built-in\n"
+               "motion's (row libnoctree) and both contact-begin counts, which must be\n"
+               "the same.\n",
                f);
 }
 
@@ -850,8 +876,8 @@ int main(int argc, char **argv)
     if (driven)
         use[DRIVEN] = true;
     if (o.broadphase && use[DRIVEN]) {
-        std::fprintf(stderr, "bench-peers: noct-driven (--driven) is a world; --broadphase "
-                             "runs broadphases\n");
+        std::fprintf(stderr, "bench-peers: --broadphase runs no world, so no "
+                             "noct-driven (--driven)\n");
         usage(stderr);
         return 2;
     }
@@ -984,7 +1010,7 @@ int main(int argc, char **argv)
             for (const Result &r : res[DRIVEN])
                 md.push_back(r.median);
             const double b = median_of(mb), d = median_of(md);
-            std::printf("%-11s driven/built-in: %.4g ms / %.4g ms = %.2f; contact begins %zu and "
+            std::printf("driven/built-in %s: %.4g ms / %.4g ms = %.2f; contact begins %zu and "
                         "%zu, %s\n",
                         spec, 1e3 * d, 1e3 * b, b > 0 ? d / b : 0.0, res[DRIVEN][0].begins,
                         res[NOCTREE][0].begins, same ? "the same" : "DIFFERENT");
