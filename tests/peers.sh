@@ -3,7 +3,8 @@
 # bench-peers end to end: every library finds the scenes' known numbers of
 # contact-begin events (SCENES.md: (2R + 1)^2 on the planes, where R is the
 # last ring whose facing pair met, at step 51 + 2R; 6 212 on gas 1 000 in
-# 200 steps), one CSV row per run, and exit status 2 for bad usage.
+# 200 steps), the world driven by the program (--driven) the same as the
+# built-in motion, one CSV row per run, and exit status 2 for bad usage.
 set -u
 . "${srcdir:-.}/lib.sh"
 peers="$top_builddir/tools/bench-peers"
@@ -42,7 +43,27 @@ check "bench-peers --broadphase: planes:3, 3 libraries, 980 pairs each" \
 check "bench-peers --broadphase: gas:1000, 3 libraries, 248650 pairs each" \
     begins_are "$tmp/b.txt" gas:1000 248650 3
 
+# The world driven by the program (--driven): the same events as the
+# built-in motion, one row and one CSV row more per scene, and the line
+# that compares the two.
+"$peers" --quick --driven --libs libnoctree --csv "$tmp/d.csv" > "$tmp/d.txt" 2> "$tmp/d.err"
+check "bench-peers --driven --quick exits 0" [ $? -eq 0 ]
+check "bench-peers --driven: nothing on stderr" [ ! -s "$tmp/d.err" ]
+check "bench-peers --driven: planes:3, built-in and driven, 49 begins each" \
+    begins_are "$tmp/d.txt" planes:3 49 2
+check "bench-peers --driven: gas:1000, built-in and driven, 6212 begins each" \
+    begins_are "$tmp/d.txt" gas:1000 6212 2
+check "bench-peers --driven: a noct-driven row for gas:1000" \
+    grep -q '^gas:1000  *1000  *noct-driven ' "$tmp/d.txt"
+check "bench-peers --driven: the same events on gas:1000" \
+    grep -q '^driven/built-in gas:1000: .* = [0-9.]*; contact begins 6212 and 6212, the same$' \
+    "$tmp/d.txt"
+check "bench-peers --driven: a header and 4 CSV rows" [ "$(wc -l < "$tmp/d.csv")" -eq 5 ]
+check "bench-peers --driven: noct-driven in the CSV" \
+    grep -q '^gas:1000,1000,noct-driven,0,200,' "$tmp/d.csv"
+
 expect_prog "$peers" 0 '^usage' --help
+expect_prog "$peers" 2 'no noct-driven' --broadphase --driven planes:1
 expect_prog "$peers" 2 "'planes:x': a scene is planes:K" planes:x
 expect_prog "$peers" 2 "'gas:0': a scene is" gas:0
 expect_prog "$peers" 2 "unknown library 'bullet'" --libs fcl-dtree,bullet
