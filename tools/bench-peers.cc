@@ -95,6 +95,7 @@ struct Body {
     double r[9];  // rotation, row-major; its columns are the box's axes
     double h[3];  // half-extents
     double v[3];  // velocity: direction times speed
+    double q[4];  // the rotation r as SCENES.md's quaternion (x, y, z, w)
 };
 
 struct Scene {
@@ -168,7 +169,8 @@ Scene make_scene(bool gas, long size)
                                2.0 * static_cast<double>(i), 2.0 * static_cast<double>(j)},
                               {1, 0, 0, 0, 1, 0, 0, 0, 1},
                               {0.5, 0.5, 0.5},
-                              {-sign * 0.05, 0, 0}};
+                              {-sign * 0.05, 0, 0},
+                              {0, 0, 0, 1}};
                     s.body.push_back(b);
                 }
         return s;
@@ -191,6 +193,8 @@ Scene make_scene(bool gas, long size)
                              2 * (x * y + z * w),     1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
                              2 * (x * z - y * w),     2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
         std::memcpy(b.r, r, sizeof r);
+        const double q[4] = {x, y, z, w};
+        std::memcpy(b.q, q, sizeof q);
         for (int a = 0; a < 3; ++a)
             b.c[a] = s.lb * draw(st);
         const double dz = 2 * draw(st) - 1, phi = 2 * pi * draw(st);
@@ -325,14 +329,17 @@ Result run_noctree(const char *spec, const Options &o)
  * libnoctree's world driven by the program (--driven): a detection-only
  * world (events only: no motion, no walls, no response) with the same
  * objects as noctSceneFamily()'s, each made with noctWorldCreateObject()
- * as a kinematic object. The program keeps every position and velocity
- * itself (the Body array, from make_scene(), bit for bit the family's)
- * and each step moves and bounces them as Dynamics::move does (as the
- * world's motion effect does), teleports every object with
- * noctWorldSetTransform(), steps the world, and reverses the objects of
- * the pairs noctWorldBegan() reports: the same trajectories, so the same
- * contact begins, as the built-in motion's. The step time covers all of
- * it, as the built-in motion's covers its motion and response.
+ * as a kinematic object: for gas a box primitive of the box's
+ * half-extents turned by its quaternion (as noctWorldAddGas() makes it),
+ * for the planes the unit cube mesh. The program keeps every position and
+ * velocity itself (the Body array, from make_scene(), bit for bit the
+ * family's) and each step moves and bounces them as Dynamics::move does
+ * (as the world's motion effect does), teleports every object with
+ * noctWorldSetTransform() (its position and its unchanged rotation),
+ * steps the world, and reverses the objects of the pairs noctWorldBegan()
+ * reports: the same trajectories, so the same contact begins, as the
+ * built-in motion's. The step time covers all of it, as the built-in
+ * motion's covers its motion and response.
  */
 Result run_driven(const char *spec, Scene &s, bool gas, const Options &o)
 {
@@ -354,24 +361,21 @@ Result run_driven(const char *spec, Scene &s, bool gas, const Options &o)
         std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
         return r;
     }
-    // The family's meshes: a box of the gas's own rotation per object
-    // (noctWorldAddGas()), one unit cube for the planes.
-    std::vector<noctMesh *> mesh;
+    // The family's shapes: box primitives for the gas, one unit cube
+    // mesh for the planes (noctWorldAddPlanes()).
+    noctMesh *cube = nullptr;
     std::vector<noctObjectId> id(s.body.size());
-    noctStatus st = NOCT_OK;
+    noctStatus st = noctWorldReserve(w, s.body.size(), &err);
+    if (st == NOCT_OK && !gas)
+        st = noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err);
     for (size_t i = 0; i < s.body.size() && st == NOCT_OK; ++i) {
         const Body &b = s.body[i];
-        noctMesh *m = nullptr;
-        if (gas || mesh.empty()) {
-            st = gas ? noctMeshCreateOrientedBox(b.h, b.r, &m, &err)
-                     : noctMeshCreateBox(0.5, 0.5, 0.5, &m, &err);
-            if (st != NOCT_OK)
-                break;
-            mesh.push_back(m);
-        }
         noctObjectDef od = noctDefaultObjectDef();
-        od.mesh = mesh.back();
+        od.mesh = cube;
+        if (gas)
+            std::memcpy(od.half_extents, b.h, sizeof od.half_extents);
         std::memcpy(od.transform.p, b.c, sizeof od.transform.p);
+        od.transform.q = noctQuat{b.q[0], b.q[1], b.q[2], b.q[3]};
         od.type = NOCT_OBJECT_KINEMATIC;
         st = noctWorldCreateObject(w, &od, &id[i], &err);
     }
@@ -391,9 +395,10 @@ Result run_driven(const char *spec, Scene &s, bool gas, const Options &o)
     for (int step = 0; st == NOCT_OK && step < o.steps && now() - start < o.budget; ++step) {
         const double a = now();
         dyn.move();
-        noctTransform x = noctIdentityTransform();
         for (size_t i = 0; i < s.body.size() && st == NOCT_OK; ++i) {
-            std::memcpy(x.p, s.body[i].c, sizeof x.p);
+            const Body &b = s.body[i];
+            const noctTransform x = {{b.c[0], b.c[1], b.c[2]},
+                                     {b.q[0], b.q[1], b.q[2], b.q[3]}};
             st = noctWorldSetTransform(w, id[i], &x, &err);
         }
         if (st == NOCT_OK)
@@ -420,8 +425,7 @@ Result run_driven(const char *spec, Scene &s, bool gas, const Options &o)
     else
         summarize(t, r);
     noctWorldDestroy(w);
-    for (noctMesh *m : mesh)
-        noctMeshDestroy(m);
+    noctMeshDestroy(cube);
     return r;
 }
 
