@@ -410,6 +410,33 @@ noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], cons
 noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo[3],
                            const double mhi[3], const double pos[3]);
 
+/* A world object's move to position pos with its local box unchanged,
+ * when the fast test settles it (pos inside its home: its leaves stay
+ * the same): the box placed, the travel counted; false, with nothing
+ * changed, when the move needs noct_bp_move_to(). */
+static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const double pos[3])
+{
+    noct_proxy *o = &bp->proxy[s];
+    if (o->boxed || bp->root == NULL || !noct_inside_home(pos, &bp->home[s]))
+        return false; /* (no home: lo is +inf, and no position is inside) */
+    noct_aabb nb;
+    noct_place_box(o->mlo, o->mhi, pos, &nb);
+    const noct_aabb *old = &bp->box[s];
+    double d = 0;
+    for (int k = 0; k < 3; ++k)
+        d = noct_max(d, noct_max(fabs(nb.lo[k] - old->lo[k]), fabs(nb.hi[k] - old->hi[k])));
+    if (o->travel_epoch != bp->search_epoch) {
+        o->travel = 0;
+        o->travel_epoch = bp->search_epoch;
+    }
+    o->travel += d;
+    bp->pending_reach = noct_max(bp->pending_reach, o->travel);
+    bp->box[s] = nb;
+    ++bp->c.moves;
+    ++bp->c.inside_fast;
+    return true;
+}
+
 /* Take live proxy s out of the tree and free its slot; cannot fail. */
 void noct_bp_free_slot(noctBroadphase *bp, uint32_t s);
 

@@ -203,6 +203,21 @@ static noctStatus check_velocity(const double v[3], noctError *err)
     return NOCT_OK;
 }
 
+/* A translation as noctTransformCheck() checks it. */
+static noctStatus check_position(const double p[3], noctError *err)
+{
+    for (int k = 0; k < 3; ++k) {
+        if (!isfinite(p[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "translation (%g, %g, %g) is not finite", p[0], p[1], p[2]);
+        if (fabs(p[k]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "translation (%g, %g, %g) lies beyond %g", p[0], p[1], p[2],
+                             NOCT_MAX_COORDINATE);
+    }
+    return NOCT_OK;
+}
+
 static bool known_type(noctObjectType t)
 {
     return t == NOCT_OBJECT_STATIC || t == NOCT_OBJECT_KINEMATIC || t == NOCT_OBJECT_MOVING;
@@ -464,16 +479,26 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
         return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
                          "stale or unknown object handle (%u, %u)", id.index,
                          id.generation);
-    noctStatus st = noctTransformCheck(x, err);
-    if (st != NOCT_OK)
-        return st;
     const uint32_t s = id.index;
     noct_pose *p = &w->pose[s];
-    double R[9];
-    noctQuatToMatrix(&x->q, R, NULL); /* checked above */
-    double was[9];
-    noctQuatToMatrix(&p->q, was, NULL);
-    const bool turned = memcmp(R, was, sizeof R) != 0;
+    /* The same quaternion, bit for bit (a program that only moves the
+     * object): it was checked when it was set, the object keeps its
+     * rotated shape, and the fast test may settle the move at once. */
+    const bool same = memcmp(&x->q, &p->q, sizeof x->q) == 0;
+    noctStatus st = same ? check_position(x->p, err) : noctTransformCheck(x, err);
+    if (st != NOCT_OK)
+        return st;
+    if (same && !w->bp.tree_owed && noct_bp_move_fast(&w->bp, s, x->p)) {
+        memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+        return NOCT_OK;
+    }
+    double R[9], was[9];
+    bool turned = false;
+    if (!same) {
+        noctQuatToMatrix(&x->q, R, NULL); /* checked above */
+        noctQuatToMatrix(&p->q, was, NULL);
+        turned = memcmp(R, was, sizeof R) != 0;
+    }
     noctMesh *rotated = p->rotated;
     if (turned && (st = rotate_shape(p->shape, R, &rotated, err)) != NOCT_OK)
         return st;
