@@ -30,7 +30,10 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
     const double t0 = level != NOCT_ACCURACY_BOX ? noct_seconds() : 0;
     noctStatus st = NOCT_OK;
     const noct_box_slot *slot = w->slot;
+    const noct_object *obj = w->obj;
+    const noctMesh *const *mesh = w->mesh;
     const bool exact = level == NOCT_ACCURACY_EXACT;
+    const bool sensors = w->nsensors > 1; /* two sensors never pair */
     for (size_t i = 0; i < n; ++i) {
         if (i + 16 < n)
             for (int s = 0; s < 2; ++s) {
@@ -43,15 +46,15 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         if (i + 8 < n)
             for (int s = 0; s < 2; ++s) {
                 uint32_t k = s ? p[i + 8].b.index : p[i + 8].a.index;
-                if ((!exact || !slot[k].has_box) && w->mesh[k] != NULL) {
-                    const char *m = (const char *)w->mesh[k];
+                if ((!exact || !slot[k].has_box) && mesh[k] != NULL) {
+                    const char *m = (const char *)mesh[k];
                     for (int line = 0; line < 10; ++line)
                         NOCT_PREFETCH(m + 64 * line);
                 }
             }
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
-        if (w->nsensors > 1 && w->obj[ia].sensor && w->obj[ib].sensor)
-            continue; /* two sensors: no pair */
+        if (sensors && obj[ia].sensor && obj[ib].sensor)
+            continue;
         bool hit;
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];
@@ -62,7 +65,7 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
             if (d != 0)
                 ++*(d < 0 ? &w->c.narrow.sat_rejects : &w->c.narrow.witnesses);
         }
-        const noctMesh *ma = w->mesh[ia], *mb = w->mesh[ib];
+        const noctMesh *ma = mesh[ia], *mb = mesh[ib];
         if (d == 0 && level != NOCT_ACCURACY_BOX && (ma == NULL || mb == NULL)) {
             /* a box primitive's mesh, made once for the exact triangles */
             ma = noct_world_mesh(w, ia);
