@@ -929,6 +929,53 @@ START_TEST(bad_input_changes_nothing)
 }
 END_TEST
 
+/* A box primitive whose half-extents the world accepts (finite, at most
+ * twice NOCT_MAX_COORDINATE) but whose corners, as turned, lie beyond
+ * NOCT_MAX_COORDINATE: no mesh can be made of it (noctMeshCreate() refuses
+ * such vertices), yet its exact tests may need one. The world must either
+ * refuse the object when it is made or turned, or test it: not fail every
+ * step for want of memory that is there. */
+START_TEST(box_corners_beyond_the_limit)
+{
+    const double zaxis[3] = {0, 0, 1};
+    for (int turn = 0; turn < 2; ++turn) {
+        noctWorldDef wd = noctDefaultWorldDef();
+        wd.effects = NOCT_EFFECT_EVENTS;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectDef d = noctDefaultObjectDef();
+        d.type = NOCT_OBJECT_STATIC;
+        /* turn 0: half-extents 1.5e100, corners at 1.5e100; turn 1:
+         * half-extents 1e100 turned 45 degrees about z, corners at 1.41e100 */
+        const double h = turn ? 1e100 : 1.5e100;
+        d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = h;
+        if (turn)
+            ck_assert_int_eq(noctQuatFromAxisAngle(zaxis, 45, &d.transform.q), NOCT_OK);
+        noctObjectId big, small;
+        noctError err;
+        const noctStatus st = noctWorldCreateObject(w, &d, &big, &err);
+        if (st != NOCT_OK) { /* refused: as the mesh would be */
+            ck_assert_int_eq(st, NOCT_ERR_TOO_LARGE);
+            noctWorldDestroy(w);
+            continue;
+        }
+        /* a unit cube inside it: the step asks for the big box's mesh
+         * (its box form decides nothing at this size) */
+        d = noctDefaultObjectDef();
+        d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 0.5;
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &small, &err), NOCT_OK);
+        for (int s = 0; s < 2; ++s) {
+            const noctStatus ss = noctWorldStep(w, &err);
+            ck_assert_msg(ss == NOCT_OK, "turn %d, step %d: %s: %s", turn, s,
+                          noctStatusString(ss), err.message);
+        }
+        const noctPair *p;
+        ck_assert_uint_eq(noctWorldColliding(w, &p), 1);
+        noctWorldDestroy(w);
+    }
+}
+END_TEST
+
 /* A velocity vector is used bit for bit: after k steps the position is
  * the k-fold sum, whatever its length. */
 START_TEST(velocity_bit_for_bit)
@@ -994,6 +1041,7 @@ int main(void)
     tcase_add_test(tc, teleports_within_a_leaf);
     tcase_add_test(tc, velocity_bit_for_bit);
     tcase_add_test(tc, bad_input_changes_nothing);
+    tcase_add_test(tc, box_corners_beyond_the_limit);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

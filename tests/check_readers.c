@@ -524,6 +524,27 @@ START_TEST(object_attributes)
 }
 END_TEST
 
+/* noctree-scene(5): a filter word is "decimal, or hexadecimal with 0x":
+ * a leading zero is not octal. */
+START_TEST(filter_words_are_decimal)
+{
+    const char *path = write_text("decimal.scene",
+                                  "mesh a box 0.5 0.5 0.5\nobject a 0 0 0 filter 010 08\n");
+    noctScene *sc;
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, &sc, &err);
+    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
+    noctWorld *w;
+    ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+    uint64_t cat, mask;
+    ck_assert_int_eq(noctWorldGetFilter(w, (noctObjectId){0, 1}, &cat, &mask), NOCT_OK);
+    ck_assert_msg(cat == 10 && mask == 8, "filter 010 08 read as %llu %llu",
+                  (unsigned long long)cat, (unsigned long long)mask);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+}
+END_TEST
+
 /* Directions are compared with the largest component taken out first:
  * (1e-200, 0, 0) is not zero, nor is (1e200, 0, 0) infinite. */
 START_TEST(tiny_and_huge_directions)
@@ -743,6 +764,7 @@ static Suite *readers_suite(void)
     tcase_add_test(tc, scene_limits);
     tcase_add_test(tc, tiny_and_huge_directions);
     tcase_add_test(tc, object_attributes);
+    tcase_add_test(tc, filter_words_are_decimal);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("out of memory");
