@@ -20,13 +20,11 @@
 #include "world_internal.h"
 
 /* Undo a scene builder's additions after a failure: remove the n objects
- * it added (removal cannot fail) and destroy the meshes it made. */
-static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, size_t owned_before,
-                          noctStatus st)
+ * it added (removal cannot fail). */
+static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, noctStatus st)
 {
     for (size_t i = 0; i < n; ++i)
         noctWorldRemove(w, ids[i], NULL);
-    noct_world_destroy_meshes_from(w, owned_before);
     free(ids);
     return st;
 }
@@ -52,7 +50,7 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                 double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
                 noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
                 if (st != NOCT_OK)
-                    return fam_unbuild(w, ids, n, noct_world_owned_meshes(w), st);
+                    return fam_unbuild(w, ids, n, st);
                 ++n;
             }
     }
@@ -92,7 +90,6 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
     noctObjectId *ids = malloc(n * sizeof *ids);
     if (ids == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    const size_t owned_before = noct_world_owned_meshes(w);
     const double pi = 3.141592653589793;
     const double lb = noctGasContainerSize(n);
     uint64_t state = 42;
@@ -122,12 +119,14 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
         d.transform.q = (noctQuat){x, y, z, qw};
         double unit[3];
         if (!noct_unit_direction(dir, unit))
-            return fam_unbuild(w, ids, i, owned_before, NOCT_ERR_NUMERIC);
+            return fam_unbuild(w, ids, i,
+                               noct_fail(err, NOCT_ERR_NUMERIC, (long)i, 0,
+                                         "gas: box %zu has no direction", i));
         for (int k = 0; k < 3; ++k)
             d.velocity[k] = 0.05 * unit[k];
         noctStatus st = noct_world_add_object(w, &d, 0.05, &ids[i], err);
         if (st != NOCT_OK)
-            return fam_unbuild(w, ids, i, owned_before, st);
+            return fam_unbuild(w, ids, i, st);
     }
     free(ids);
     return NOCT_OK;

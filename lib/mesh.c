@@ -917,6 +917,19 @@ noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **
     return noctMeshCreate(v, 8, sizes, 12, BOX_TRIANGLES, mesh, err);
 }
 
+noctStatus noct_check_box_corners(const double half[3], const double R[9], noctError *err)
+{
+    double v[24];
+    noct_box_corners(half, R, v);
+    for (int i = 0; i < 24; ++i)
+        if (!(fabs(v[i]) <= NOCT_MAX_COORDINATE))
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "box half-extents (%g, %g, %g) as turned put a corner beyond the "
+                             "coordinate limit of %g",
+                             half[0], half[1], half[2], NOCT_MAX_COORDINATE);
+    return NOCT_OK;
+}
+
 noctStatus noct_check_box_half(const double half[3], noctError *err)
 {
     for (int i = 0; i < 3; ++i)

@@ -167,6 +167,10 @@ void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot
 noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
                             noctError *err);
 
+/* Are the corners of that box turned by R within the coordinate limit
+ * (as noctMeshCreate() requires of vertices)? TOO_LARGE if not. */
+noctStatus noct_check_box_corners(const double half[3], const double R[9], noctError *err);
+
 /* Half-extents a rotated box accepts: finite, normal, within the
  * coordinate limit, the least at least 2^-29 of the largest. */
 noctStatus noct_check_box_half(const double half[3], noctError *err);

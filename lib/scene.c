@@ -264,7 +264,9 @@ static noctStatus bits(parser *p, const char *what, uint64_t *out)
         return perr(p, NOCT_ERR_PARSE, "missing %s", what);
     char *end;
     errno = 0;
-    const unsigned long long v = strtoull(tok, &end, 0);
+    /* decimal, or hexadecimal with 0x: a leading zero is not octal */
+    const bool hex = tok[0] == '0' && (tok[1] == 'x' || tok[1] == 'X');
+    const unsigned long long v = strtoull(tok, &end, hex ? 16 : 10);
     if (end == tok || *end != '\0' || errno != 0 || tok[0] == '-')
         return perr(p, NOCT_ERR_PARSE, "%s: not a 64-bit unsigned integer: '%s'", what, tok);
     *out = (uint64_t)v;
@@ -382,6 +384,13 @@ static noctStatus parse_object(parser *p, noctScene *s)
     }
     if ((st = parse_attributes(p, &o, tok, legacy)) != NOCT_OK)
         return st;
+    if (s->meshes[mi].mesh == NULL) { /* a box primitive: its corners as turned */
+        double R[9];
+        noctQuatToMatrix(&o.q, R, NULL);
+        if (noct_check_box_corners(s->meshes[mi].half, R, NULL) != NOCT_OK)
+            return perr(p, NOCT_ERR_TOO_LARGE,
+                        "box '%s' as turned puts a corner beyond the coordinate limit", name);
+    }
     for (int k = 0; k < 3; ++k)
         if (fabs(o.pos[k]) > NOCT_MAX_COORDINATE)
             return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");

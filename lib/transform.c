@@ -69,6 +69,21 @@ noctStatus noctQuatFromAxisAngle(const double axis[3], double degrees, noctQuat 
     return NOCT_OK;
 }
 
+/* Products and sums rounded one at a time: a volatile result cannot be
+ * fused into a multiply-add, whatever -ffp-contract the library is built
+ * with (GNU C's default would fuse across statements). */
+static double mul(double a, double b)
+{
+    volatile double r = a * b;
+    return r;
+}
+
+static double add(double a, double b)
+{
+    volatile double r = a + b;
+    return r;
+}
+
 static double snap(double x)
 {
     if (fabs(x) <= NOCT_ROTATION_SNAP)
@@ -88,10 +103,7 @@ noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err)
     if (!isfinite(x) || !isfinite(y) || !isfinite(z) || !isfinite(w))
         return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
                          "rotation quaternion (%g, %g, %g, %g) is not finite", x, y, z, w);
-    /* one operation a statement: no compiler may fuse them */
-    const double x2 = x * x, y2 = y * y, z2 = z * z, w2 = w * w;
-    const double s1 = x2 + y2, s2 = s1 + z2;
-    const double n = s2 + w2;
+    const double n = add(add(add(mul(x, x), mul(y, y)), mul(z, z)), mul(w, w));
     if (!(fabs(n - 1) <= NOCT_QUAT_TOLERANCE))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "rotation quaternion (%g, %g, %g, %g) has squared length %g; "
@@ -104,18 +116,19 @@ noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err)
         z /= l;
         w /= l;
     }
-    const double xx = x * x, yy = y * y, zz = z * z;
-    const double xy = x * y, xz = x * z, yz = y * z;
-    const double xw = x * w, yw = y * w, zw = z * w;
-    R[0] = snap(1 - 2 * (yy + zz));
-    R[1] = snap(2 * (xy - zw));
-    R[2] = snap(2 * (xz + yw));
-    R[3] = snap(2 * (xy + zw));
-    R[4] = snap(1 - 2 * (xx + zz));
-    R[5] = snap(2 * (yz - xw));
-    R[6] = snap(2 * (xz - yw));
-    R[7] = snap(2 * (yz + xw));
-    R[8] = snap(1 - 2 * (xx + yy));
+    const double xx = mul(x, x), yy = mul(y, y), zz = mul(z, z);
+    const double xy = mul(x, y), xz = mul(x, z), yz = mul(y, z);
+    const double xw = mul(x, w), yw = mul(y, w), zw = mul(z, w);
+    /* (2 a is exact, so 1 - 2 a fused or not is the same) */
+    R[0] = snap(1 - 2 * add(yy, zz));
+    R[1] = snap(2 * add(xy, -zw));
+    R[2] = snap(2 * add(xz, yw));
+    R[3] = snap(2 * add(xy, zw));
+    R[4] = snap(1 - 2 * add(xx, zz));
+    R[5] = snap(2 * add(yz, -xw));
+    R[6] = snap(2 * add(xz, -yw));
+    R[7] = snap(2 * add(yz, xw));
+    R[8] = snap(1 - 2 * add(xx, yy));
     return NOCT_OK;
 }
 

@@ -119,9 +119,6 @@ void noctWorldDestroy(noctWorld *w)
     free(w->events.sensor_ended.p);
     free(w->events.sensing_held.p);
     free(w->events.mark);
-    for (size_t i = 0; i < w->nowned; ++i)
-        noctMeshDestroy(w->owned[i]);
-    free(w->owned);
     free(w);
 }
 
@@ -287,17 +284,18 @@ static void place_mesh(noctWorld *w, uint32_t s)
         w->slot[s].has_box = 0;
 }
 
-const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s)
+const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st)
 {
     if (w->mesh[s] != NULL)
         return w->mesh[s];
     noct_pose *p = &w->pose[s];
     NOCT_INVARIANT(p->shape == NULL && p->rotated == NULL);
-    /* the corners were checked when the object was made or turned, so
-     * only memory can be missing */
+    /* the corners were checked (noct_check_box_corners) when the object
+     * was made or turned */
     double R[9];
     noctQuatToMatrix(&p->q, R, NULL);
-    if (noct_mesh_of_box(p->half, R, &p->rotated, NULL) != NOCT_OK)
+    *st = noct_mesh_of_box(p->half, R, &p->rotated, NULL);
+    if (*st != NOCT_OK)
         return NULL;
     w->obj[s].mesh = w->mesh[s] = p->rotated;
     return p->rotated;
@@ -356,6 +354,8 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
                          "an object's category is 0: it could never pair");
     double R[9];
     noctQuatToMatrix(&def->transform.q, R, NULL); /* checked above */
+    if (def->mesh == NULL && (st = noct_check_box_corners(def->half_extents, R, err)) != NOCT_OK)
+        return st;
     noctMesh *rotated;
     st = rotate_shape(def->mesh, R, &rotated, err);
     if (st != NOCT_OK)
@@ -500,6 +500,8 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
         turned = memcmp(R, was, sizeof R) != 0;
     }
     noctMesh *rotated = p->rotated;
+    if (turned && p->shape == NULL && (st = noct_check_box_corners(p->half, R, err)) != NOCT_OK)
+        return st;
     if (turned && (st = rotate_shape(p->shape, R, &rotated, err)) != NOCT_OK)
         return st;
     double lo[3], hi[3];
@@ -1067,36 +1069,4 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                              "object %u's box is not its proxy's", i);
     }
     return noctBroadphaseValidate(&w->bp, err);
-}
-
-/* ---- meshes the scene families make (families.c) ------------------------- */
-
-bool noct_world_reserve_meshes(noctWorld *w, size_t more)
-{
-    if (w->nowned + more <= w->capowned)
-        return true;
-    const size_t cap = w->nowned + more;
-    noctMesh **q = realloc(w->owned, cap * sizeof *q);
-    if (q == NULL)
-        return false;
-    w->owned = q;
-    w->capowned = cap;
-    return true;
-}
-
-void noct_world_own_mesh(noctWorld *w, noctMesh *mesh)
-{
-    NOCT_INVARIANT(w->nowned < w->capowned);
-    w->owned[w->nowned++] = mesh;
-}
-
-size_t noct_world_owned_meshes(const noctWorld *w)
-{
-    return w->nowned;
-}
-
-void noct_world_destroy_meshes_from(noctWorld *w, size_t from)
-{
-    while (w->nowned > from)
-        noctMeshDestroy(w->owned[--w->nowned]);
 }

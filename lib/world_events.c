@@ -72,8 +72,9 @@ void noct_world_respond(noct_events *e, noct_object *obj, size_t from, uint64_t 
             if (e->mark[ids[s]] == e->epoch)
                 continue;
             e->mark[ids[s]] = e->epoch;
-            for (int k = 0; k < 3; ++k)
-                obj[ids[s]].vel[k] = -obj[ids[s]].vel[k];
+            if (obj[ids[s]].speed > 0) /* (not moving: nothing to turn, not even 0's sign) */
+                for (int k = 0; k < 3; ++k)
+                    obj[ids[s]].vel[k] = -obj[ids[s]].vel[k];
             ++*reversals;
         }
     }

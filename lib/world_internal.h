@@ -97,8 +97,6 @@ struct noctWorld {
     size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */
-    noctMesh **owned;      /* meshes the scene builders made */
-    size_t nowned, capowned;
     noctWorldCounters c;   /* the world's own stages'; the broadphase's
                               are added when they are read */
 };
@@ -114,8 +112,8 @@ noctStatus noct_world_add_object(noctWorld *w, const noctObjectDef *def, double 
                                  noctObjectId *id, noctError *err);
 
 /* Object s's placed mesh, made now for a box primitive that has none
- * (kept while its rotation lasts); NULL without memory. */
-const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s);
+ * (kept while its rotation lasts); NULL, with *st, if that failed. */
+const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
 
@@ -161,20 +159,5 @@ noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj);
 /* The response: every object in a pair that began (from the from'th on)
  * reverses its direction once. */
 void noct_world_respond(noct_events *e, noct_object *obj, size_t from, uint64_t *reversals);
-
-/* ---- meshes the scene families make (families.c) ------------------------------ */
-
-/* Room for more meshes the world will own; false without memory. */
-bool noct_world_reserve_meshes(noctWorld *w, size_t more);
-
-/* The world owns mesh from now on (destroys it with itself); room for it
- * was reserved. */
-void noct_world_own_mesh(noctWorld *w, noctMesh *mesh);
-
-/* How many meshes the world owns. */
-size_t noct_world_owned_meshes(const noctWorld *w);
-
-/* Destroy the meshes owned since there were `from` of them. */
-void noct_world_destroy_meshes_from(noctWorld *w, size_t from);
 
 #endif /* NOCT_LIB_WORLD_INTERNAL_H */

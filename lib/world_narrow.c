@@ -68,12 +68,10 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         const noctMesh *ma = mesh[ia], *mb = mesh[ib];
         if (d == 0 && level != NOCT_ACCURACY_BOX && (ma == NULL || mb == NULL)) {
             /* a box primitive's mesh, made once for the exact triangles */
-            ma = noct_world_mesh(w, ia);
-            mb = noct_world_mesh(w, ib);
-            if (ma == NULL || mb == NULL) {
-                st = NOCT_ERR_NOMEM;
+            ma = noct_world_mesh(w, ia, &st);
+            mb = ma != NULL ? noct_world_mesh(w, ib, &st) : NULL;
+            if (ma == NULL || mb == NULL)
                 break;
-            }
         }
         if (d != 0)
             hit = d > 0;

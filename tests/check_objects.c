@@ -836,6 +836,9 @@ END_TEST
 
 /* ---- bad input changes nothing ------------------------------------------------- */
 
+/* (a marker for the table below: refused only when turned) */
+#define NOCT_ERR_OK_IF_UNTURNED NOCT_STATUS_COUNT
+
 START_TEST(bad_input_changes_nothing)
 {
     noctMesh *cube = make_box(0.5, 0.5, 0.5);
@@ -871,6 +874,29 @@ START_TEST(bad_input_changes_nothing)
     e = d;
     e.type = (noctObjectType)7;
     ck_assert_int_eq(noctWorldCreateObject(w, &e, &bad, &err), NOCT_ERR_INVALID);
+    /* box primitives: no mesh and no half-extents, or bad ones */
+    static const struct {
+        double h[3];
+        noctStatus st;
+    } boxes[] = {
+        {{0, 0, 0}, NOCT_ERR_INVALID},         {{NAN, 1, 1}, NOCT_ERR_NONFINITE},
+        {{1, INFINITY, 1}, NOCT_ERR_NONFINITE}, {{-1, 1, 1}, NOCT_ERR_INVALID},
+        {{1, 1, 1e-310}, NOCT_ERR_INVALID},    {{1, 1, 1e-10}, NOCT_ERR_DEGENERATE},
+        {{3e100, 1, 3e100}, NOCT_ERR_TOO_LARGE}, {{1e100, 1e100, 1e100}, NOCT_ERR_OK_IF_UNTURNED},
+    };
+    for (size_t i = 0; i < sizeof boxes / sizeof *boxes; ++i) {
+        e = d;
+        e.mesh = NULL;
+        memcpy(e.half_extents, boxes[i].h, sizeof e.half_extents);
+        /* the last, turned by 45 degrees, puts corners beyond the limit */
+        const double z[3] = {0, 0, 1};
+        if (boxes[i].st == NOCT_ERR_OK_IF_UNTURNED)
+            ck_assert_int_eq(noctQuatFromAxisAngle(z, 45, &e.transform.q), NOCT_OK);
+        const noctStatus want =
+            boxes[i].st == NOCT_ERR_OK_IF_UNTURNED ? NOCT_ERR_TOO_LARGE : boxes[i].st;
+        ck_assert_msg(noctWorldCreateObject(w, &e, &bad, &err) == want, "box %zu: %s", i,
+                      err.message);
+    }
     ck_assert(bad.index == 0 && bad.generation == 0);
     ck_assert_uint_eq(noctWorldObjectCount(w), 1);
     /* the setters: a status, nothing changed */

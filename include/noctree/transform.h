@@ -105,9 +105,9 @@ NOCT_API noctStatus noctQuatFromAxisAngle(const double axis[3], double degrees, 
  * @param R receives the matrix, row by row (R[3 i + j] is row i, column j).
  * @param err receives the details of a failure, or NULL.
  * @pre q != NULL && R != NULL
- * @post On #NOCT_OK, R is the normalised quaternion's matrix with its
- *       entries snapped; the same q always gives the same R. On failure R
- *       is the identity.
+ * @post On #NOCT_OK, R is the matrix of q (normalised if it is farther
+ *       than #NOCT_QUAT_UNIT from unit length) with its entries snapped;
+ *       the same q always gives the same R. On failure R is the identity.
  * @return #NOCT_OK; #NOCT_ERR_NONFINITE for a component that is not
  *         finite; #NOCT_ERR_INVALID for a squared length farther than
  *         #NOCT_QUAT_TOLERANCE from 1.

@@ -218,11 +218,15 @@ typedef struct noctObjectDef {
                                   bytes, no mesh (one is made, and kept
                                   while the rotation lasts, only for the
                                   rare pairs whose exact test needs its
-                                  triangles). Its placed corners are those
+                                  triangles; at the convex level, for
+                                  every pair it tests, since GJK reads the
+                                  vertices). Its placed corners are those
                                   of transform.h, so it collides exactly as
-                                  noctMeshCreateBox()'s mesh would.
-                                  Finite, at least DBL_MIN, the least at
-                                  least 2^-29 of the largest. Default 0. */
+                                  the mesh of its corners would. Finite,
+                                  at least DBL_MIN, the least at least
+                                  2^-29 of the largest, and its corners as
+                                  turned within #NOCT_MAX_COORDINATE.
+                                  Default 0. */
     noctTransform transform; /**< Where it is: rotation, then translation
                                   (transform.h). Default the identity. */
     double velocity[3];      /**< Distance per step, as a vector, used bit
@@ -282,8 +286,10 @@ typedef struct noctWorldCounters {
     uint64_t candidate_pairs;  /**< Pair search: pairs in a swept leaf,
                                     and near pairs tested. */
     uint64_t tested_pairs;     /**< Pairs handed to the narrowphase. */
-    uint64_t colliding_pairs;  /**< Pairs found colliding. */
-    uint64_t events;           /**< Contact-begin plus contact-end events. */
+    uint64_t colliding_pairs;  /**< Pairs found colliding (not a sensor's
+                                    pairs). */
+    uint64_t events;           /**< Contact-begin plus contact-end events,
+                                    and sensor events. */
     uint64_t reversals;        /**< Response: direction reversals. */
     noctNarrowStats narrow;    /**< The narrowphase's own counters; its
                                     time is the world's whole loop over
@@ -376,9 +382,9 @@ NOCT_API noctStatus noctWorldReserve(noctWorld *world, size_t more, noctError *e
 
 /**
  * @brief Return the default object definition.
- * @return No mesh (one must be set), the identity transform, zero
- *         velocity, #NOCT_OBJECT_MOVING, no user data, every category and
- *         mask bit set.
+ * @return No mesh and zero half-extents (one or the other must be set),
+ *         the identity transform, zero velocity, #NOCT_OBJECT_MOVING, no
+ *         user data, every category and mask bit set, not a sensor.
  */
 NOCT_API noctObjectDef noctDefaultObjectDef(void);
 
@@ -400,7 +406,8 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  *         if rotating the mesh's vertices made it degenerate; for a box
  *         primitive, #NOCT_ERR_INVALID for no mesh and zero half-extents
  *         or half-extents below DBL_MIN, #NOCT_ERR_NONFINITE,
- *         #NOCT_ERR_TOO_LARGE beyond twice #NOCT_MAX_COORDINATE,
+ *         #NOCT_ERR_TOO_LARGE for a corner, as turned, beyond
+ *         #NOCT_MAX_COORDINATE,
  *         #NOCT_ERR_DEGENERATE for the least under 2^-29 of the largest;
  *         #NOCT_ERR_NONFINITE for a velocity that is not finite;
  *         #NOCT_ERR_TOO_LARGE for more than 2^31 objects (a velocity that
@@ -422,9 +429,9 @@ NOCT_API noctStatus noctWorldCreateObject(noctWorld *world, const noctObjectDef 
  * it removes the object whole, or (for a bad handle) changes nothing.
  * @post On #NOCT_OK the object is gone from the tree; its handle is
  *       stale. The lists of the last step are left as they were: the
- *       colliding list still holds the object's pairs, with its now stale
- *       handle, until the next step, whose ended list reports them (with
- *       the events effect). Leaf siblings left with N or fewer objects
+ *       colliding and sensing lists still hold the object's pairs, with
+ *       its now stale handle, until the next step, whose ended lists
+ *       report them (with the events effect). Leaf siblings left with N or fewer objects
  *       merge (if a merge finds no memory, they stay split until the next
  *       step merges them).
  * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale or unknown handle
@@ -653,7 +660,8 @@ NOCT_API noctStatus noctWorldGetFilter(const noctWorld *world, noctObjectId id,
  * @brief Make an object a sensor, or not (see noctObjectDef::sensor).
  *
  * Its pairs move between the colliding and the sensing lists at the next
- * step, with an ended event in one and a began event in the other.
+ * step, with an ended event in one and a began event in the other; a
+ * pair with another sensor just ends (two sensors never pair).
  * @param[in]  world  The world.
  * @param[in]  id     The object.
  * @param[in]  sensor Whether it is a sensor.
@@ -877,17 +885,21 @@ NOCT_API double noctGasContainerSize(size_t n);
  * @brief Add the scene gas_n (SCENES.md, "Gas"): n oriented boxes with
  *        seeded random sizes, orientations, positions and directions.
  *
- * The world owns the n box meshes it creates. For the scene as defined,
- * create the world with #NOCT_EFFECT_WALLS and the container
+ * The boxes are box primitives (noctObjectDef::half_extents) turned by
+ * the scene's quaternions, whose matrices are SCENES.md's bit for bit
+ * (noctQuatToMatrix() computes that formula and, for these quaternions,
+ * neither normalises nor snaps: all 10 000 000 were checked); room for
+ * them is reserved at once (noctWorldReserve()). For the scene as
+ * defined, create the world with #NOCT_EFFECT_WALLS and the container
  * `[0, noctGasContainerSize(n)]` on every axis.
  * @param[in]  world The world.
  * @param[in]  n     Number of boxes, 1 to 10 000 000.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p world is not NULL.
  * @post On #NOCT_OK the world holds n more objects, in the scene's order;
- *       on failure, none of them and none of their meshes.
+ *       on failure, none of them.
  * @return #NOCT_OK; #NOCT_ERR_INVALID for n out of range; #NOCT_ERR_NOMEM;
- *         any status of noctMeshCreateOrientedBox() or noctWorldAdd().
+ *         #NOCT_ERR_TOO_LARGE past 2^31 objects.
  */
 NOCT_API noctStatus noctWorldAddGas(noctWorld *world, size_t n, noctError *err);
 
