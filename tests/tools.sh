@@ -108,4 +108,21 @@ expect_prog "$bench" 2 "unknown option" --frobnicate
 : > "$tmp/file"
 expect_prog "$bench" 2 "is not a folder" --quick --out "$tmp/file"
 
+# ---- octprint on a scene with turned box primitives, velocities, types,
+# filters and a sensor (noctree-scene(5)) ----------------------------------
+
+cat > "$tmp/turned.scene" <<'SCENE'
+N 2
+mesh cube box 0.5 0.5 0.5
+mesh bar box 1 0.1 0.1
+object cube 0 0 0 1 0 0 0.05
+object cube 4 0 0 -1 0 0 0.05
+object bar 2 2 0 rotate 0 0 1 30 velocity 0 -0.05 0 filter 1 0xff
+object cube 2 -2 0 type static filter 2 1 sensor
+SCENE
+"$octprint" --step 10 "$tmp/turned.scene" > "$tmp/turned.txt" 2> "$tmp/err"
+check "octprint on a turned scene exits 0" [ $? -eq 0 ]
+check "octprint: the turned scene's 4 objects at step 10" \
+    grep -q 'turned.scene, N = 2, step 10: 4 objects' "$tmp/turned.txt"
+
 finish tools
