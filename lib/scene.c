@@ -38,6 +38,7 @@ typedef struct scene_object {
     noctObjectType type;
     uint64_t category, mask;
     bool sensor;
+    noctQuat spin;           /* from 'spin', else the identity */
 } scene_object;
 
 typedef struct scene_family {
@@ -276,20 +277,20 @@ static noctStatus bits(parser *p, const char *what, uint64_t *out)
 #define OBJECT_SYNTAX                                                                    \
     "expected 'object MESH X Y Z [DX DY DZ SPEED] [velocity VX VY VZ] "                \
     "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK] "     \
-    "[sensor]'"
+    "[sensor] [spin AX AY AZ DEGREES]'"
 
 /* The object's attributes after its position and legacy motion: each
  * keyword once. */
 static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool legacy)
 {
-    bool seen[5] = {false, false, false, false, false};
-    static const char *const KW[5] = {"velocity", "rotate", "type", "filter", "sensor"};
+    bool seen[6] = {false, false, false, false, false, false};
+    static const char *const KW[6] = {"velocity", "rotate", "type", "filter", "sensor", "spin"};
     noctStatus st = NOCT_OK;
     for (; tok != NULL && st == NOCT_OK; tok = next(p)) {
         int k = 0;
-        while (k < 5 && strcmp(tok, KW[k]) != 0)
+        while (k < 6 && strcmp(tok, KW[k]) != 0)
             ++k;
-        if (k == 5)
+        if (k == 6)
             return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
         if (seen[k])
             return perr(p, NOCT_ERR_PARSE, "'%s' given twice", tok);
@@ -321,6 +322,12 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
                             "unknown type '%s' (static, kinematic or moving)", t);
         } else if (k == 4) {
             o->sensor = true;
+        } else if (k == 5) {
+            double axis[4];
+            if ((st = numbers(p, "spin axis and angle", axis, 4)) != NOCT_OK)
+                return st;
+            if (noctQuatFromAxisAngle(axis, axis[3], &o->spin) != NOCT_OK)
+                return perr(p, NOCT_ERR_INVALID, "a spin needs a non-zero axis");
         } else {
             if ((st = bits(p, "category", &o->category)) != NOCT_OK ||
                 (st = bits(p, "mask", &o->mask)) != NOCT_OK)
@@ -335,7 +342,8 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
 static bool is_attribute(const char *tok)
 {
     return strcmp(tok, "velocity") == 0 || strcmp(tok, "rotate") == 0 ||
-           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0 || strcmp(tok, "sensor") == 0;
+           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0 ||
+           strcmp(tok, "sensor") == 0 || strcmp(tok, "spin") == 0;
 }
 
 static noctStatus parse_object(parser *p, noctScene *s)
@@ -352,7 +360,7 @@ static noctStatus parse_object(parser *p, noctScene *s)
     scene_object o;
     memset(&o, 0, sizeof o);
     o.mesh = mi;
-    o.q = (noctQuat){0, 0, 0, 1};
+    o.q = o.spin = (noctQuat){0, 0, 0, 1};
     o.type = NOCT_OBJECT_MOVING;
     o.category = o.mask = NOCT_FILTER_ALL;
     noctStatus st = numbers(p, "position", o.pos, 3);
@@ -484,10 +492,12 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
                 e |= NOCT_EFFECT_WALLS;
             else if (strcmp(tok, "substep") == 0)
                 e |= NOCT_EFFECT_SUBSTEP;
+            else if (strcmp(tok, "spin") == 0)
+                e |= NOCT_EFFECT_SPIN;
             else if (strcmp(tok, "none") != 0)
                 return perr(p, NOCT_ERR_INVALID,
                             "unknown effect '%s' (motion, events, response, walls, "
-                            "substep, none)",
+                            "substep, spin, none)",
                             tok);
         }
         s->def.effects = e;
@@ -676,6 +686,7 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
         d.category = o->category;
         d.mask = o->mask;
         d.sensor = o->sensor;
+        d.angular_velocity = o->spin;
         double speed = 0;
         if (o->has_velocity) {
             memcpy(d.velocity, o->vel, sizeof d.velocity);

@@ -132,6 +132,26 @@ noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err)
     return NOCT_OK;
 }
 
+noctQuat noctQuatCompose(const noctQuat *a, const noctQuat *b)
+{
+    NOCT_REQUIRE(a != NULL && b != NULL);
+    noctQuat q = {
+        add(add(add(mul(a->w, b->x), mul(a->x, b->w)), mul(a->y, b->z)), -mul(a->z, b->y)),
+        add(add(add(mul(a->w, b->y), -mul(a->x, b->z)), mul(a->y, b->w)), mul(a->z, b->x)),
+        add(add(add(mul(a->w, b->z), mul(a->x, b->y)), -mul(a->y, b->x)), mul(a->z, b->w)),
+        add(add(add(mul(a->w, b->w), -mul(a->x, b->x)), -mul(a->y, b->y)), -mul(a->z, b->z)),
+    };
+    const double n = add(add(add(mul(q.x, q.x), mul(q.y, q.y)), mul(q.z, q.z)), mul(q.w, q.w));
+    if (isfinite(n) && n > 0 && !(fabs(n - 1) <= NOCT_QUAT_UNIT)) {
+        const double l = sqrt(n);
+        q.x /= l;
+        q.y /= l;
+        q.z /= l;
+        q.w /= l;
+    }
+    return q;
+}
+
 noctStatus noctTransformCheck(const noctTransform *x, noctError *err)
 {
     NOCT_REQUIRE(x != NULL);

@@ -58,7 +58,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
                          (int)def->accuracy);
     if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
                                    NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS |
-                                   NOCT_EFFECT_SUBSTEP))
+                                   NOCT_EFFECT_SUBSTEP | NOCT_EFFECT_SPIN))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown effect bits 0x%x",
                          def->effects);
     if (def->maintenance != NOCT_MAINTAIN_INCREMENTAL &&
@@ -118,6 +118,10 @@ void noctWorldDestroy(noctWorld *w)
     free(w->events.sensor_began.p);
     free(w->events.sensor_ended.p);
     free(w->events.sensing_held.p);
+    free(w->spin.w);
+    free(w->spin.spinners);
+    free(w->spin.old_q);
+    free(w->spin.old_mesh);
     free(w->events.mark);
     free(w);
 }
@@ -149,6 +153,8 @@ static bool reserve_slots(noctWorld *w)
     GROW(mesh);
     GROW(pose);
     GROW(events.mark);
+    if (w->spin.w != NULL)
+        GROW(spin.w);
 #undef GROW
     /* aligned, so not realloc */
     noct_box_slot *slots = aligned_alloc(64, cap * sizeof *slots);
@@ -188,6 +194,7 @@ noctObjectDef noctDefaultObjectDef(void)
     d.type = NOCT_OBJECT_MOVING;
     d.user_data = NULL;
     d.category = d.mask = NOCT_FILTER_ALL;
+    d.angular_velocity = (noctQuat){0, 0, 0, 1};
     return d;
 }
 
@@ -321,12 +328,54 @@ static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const doub
     w->motion.moving = w->motion.moving - was + is;
     /* the movers list and its greatest speed are made again */
     w->motion.stale = w->motion.stale || was || is;
+    w->spin.stale = true;
 }
 
 /* An object's velocity: the moving one's, or the one its pose keeps. */
 static const double *velocity_of(const noctWorld *w, uint32_t s)
 {
     return w->pose[s].type == NOCT_OBJECT_MOVING ? w->obj[s].vel : w->pose[s].vel;
+}
+
+static bool is_identity_quat(const noctQuat *q)
+{
+    return q->x == 0 && q->y == 0 && q->z == 0 && q->w == 1;
+}
+
+/* Give slot s the angular velocity q (checked), making the per-slot array
+ * when the first one that is not the identity comes; false without
+ * memory (then nothing changed). */
+static bool set_spin(noctWorld *w, uint32_t s, const noctQuat *q, bool was_live)
+{
+    const bool none = is_identity_quat(q);
+    if (w->spin.w == NULL) {
+        if (none)
+            return true;
+        noctQuat *a = malloc(w->capslots * sizeof *a);
+        if (a == NULL)
+            return false;
+        for (uint32_t i = 0; i < w->capslots; ++i)
+            a[i] = (noctQuat){0, 0, 0, 1};
+        w->spin.w = a;
+    }
+    const bool had = was_live && !is_identity_quat(&w->spin.w[s]);
+    w->spin.w[s] = *q;
+    w->spin.count = w->spin.count - had + !none;
+    w->spin.stale = true;
+    return true;
+}
+
+/* An angular velocity as noctQuatToMatrix() checks a rotation. */
+static noctStatus check_spin(const noctQuat *q, noctError *err)
+{
+    double R[9];
+    noctStatus st = noctQuatToMatrix(q, R, err);
+    if (st != NOCT_OK && err != NULL) {
+        char why[NOCT_ERROR_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        noct_fail(err, st, -1, 0, "angular velocity: %s", why);
+    }
+    return st;
 }
 
 noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObjectId *id,
@@ -344,6 +393,8 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     }
     if (st == NOCT_OK)
         st = check_velocity(def->velocity, err);
+    if (st == NOCT_OK)
+        st = check_spin(&def->angular_velocity, err);
     if (st != NOCT_OK)
         return st;
     if (!known_type(def->type))
@@ -388,9 +439,16 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     place_mesh(w, slot);
     memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
     w->events.mark[slot] = 0;
-    st = noct_bp_add(&w->bp, slot, o->mlo, o->mhi, w->pos[slot], def->user_data,
-                     def->category, def->mask);
+    if (!set_spin(w, slot, &def->angular_velocity, false))
+        st = NOCT_ERR_NOMEM;
+    else
+        st = noct_bp_add(&w->bp, slot, o->mlo, o->mhi, w->pos[slot], def->user_data,
+                         def->category, def->mask);
     if (st != NOCT_OK) {
+        if (w->spin.w != NULL && !is_identity_quat(&w->spin.w[slot])) {
+            w->spin.w[slot] = (noctQuat){0, 0, 0, 1};
+            --w->spin.count;
+        }
         noctMeshDestroy(rotated);
         return noct_fail(err, st, -1, 0, "out of memory");
     }
@@ -464,6 +522,11 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     NOCT_INVARIANT(w->nsensors >= (size_t)o->sensor);
     w->nsensors -= o->sensor;
     o->sensor = false;
+    if (w->spin.w != NULL) {
+        w->spin.count -= !is_identity_quat(&w->spin.w[id.index]);
+        w->spin.w[id.index] = (noctQuat){0, 0, 0, 1};
+        w->spin.stale = true;
+    }
     noctMeshDestroy(w->pose[id.index].rotated);
     w->pose[id.index].rotated = NULL;
     /* The lists stay: the colliding one holds its pairs, which the next
@@ -630,6 +693,31 @@ noctStatus noctWorldGetSensor(const noctWorld *w, noctObjectId id, bool *sensor)
     if (o == NULL)
         return NOCT_ERR_INVALID;
     *sensor = o->sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetAngularVelocity(noctWorld *w, noctObjectId id, const noctQuat *q,
+                                       noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && q != NULL);
+    if (lookup(w, id) == NULL)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "stale or unknown object handle (%u, %u)", id.index,
+                         id.generation);
+    noctStatus st = check_spin(q, err);
+    if (st != NOCT_OK)
+        return st;
+    if (!set_spin(w, id.index, q, true))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetAngularVelocity(const noctWorld *w, noctObjectId id, noctQuat *q)
+{
+    NOCT_REQUIRE(w != NULL && q != NULL);
+    if (lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    *q = w->spin.w != NULL ? w->spin.w[id.index] : (noctQuat){0, 0, 0, 1};
     return NOCT_OK;
 }
 
@@ -834,6 +922,114 @@ static uint64_t substeps_for(noctWorld *w, noctError *err)
     return k;
 }
 
+/* ---- spin (#NOCT_EFFECT_SPIN) ------------------------------------------------------ */
+
+/* The spinners (live moving objects whose angular velocity is not the
+ * identity) and room for what a failed step gives back; false without
+ * memory. */
+static bool update_spinners(noctWorld *w)
+{
+    noct_spin *sp = &w->spin;
+    if (!sp->stale)
+        return true;
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+        n += w->obj[i].alive && w->pose[i].type == NOCT_OBJECT_MOVING &&
+             !is_identity_quat(&sp->w[i]);
+    if (n > sp->cap) {
+        uint32_t *a = realloc(sp->spinners, n * sizeof *a);
+        if (a != NULL)
+            sp->spinners = a;
+        noctQuat *q = a != NULL ? realloc(sp->old_q, n * sizeof *q) : NULL;
+        if (q != NULL)
+            sp->old_q = q;
+        noctMesh **m = q != NULL ? realloc(sp->old_mesh, n * sizeof *m) : NULL;
+        if (m == NULL)
+            return false;
+        sp->old_mesh = m;
+        sp->cap = n;
+    }
+    sp->nspinners = 0;
+    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+        if (w->obj[i].alive && w->pose[i].type == NOCT_OBJECT_MOVING &&
+            !is_identity_quat(&sp->w[i]))
+            sp->spinners[sp->nspinners++] = i;
+    sp->stale = false;
+    return true;
+}
+
+/* Give back the rotations this step made so far (a failed step): the old
+ * quaternions and meshes, the boxes they place; the tree, which saw the
+ * new boxes, is torn down for the next step to build again. */
+static void unspin(noctWorld *w)
+{
+    noct_spin *sp = &w->spin;
+    for (uint32_t k = sp->nspun; k-- > 0;) {
+        const uint32_t s = sp->spinners[k];
+        noct_pose *p = &w->pose[s];
+        noctMeshDestroy(p->rotated);
+        p->rotated = sp->old_mesh[k];
+        p->q = sp->old_q[k];
+        place_mesh(w, s);
+        noct_proxy *o = &w->bp.proxy[s];
+        memcpy(o->mlo, w->obj[s].mlo, sizeof o->mlo);
+        memcpy(o->mhi, w->obj[s].mhi, sizeof o->mhi);
+        noct_place_box(o->mlo, o->mhi, w->pos[s], &w->bp.box[s]);
+        noct_forget_home(&w->bp, s);
+    }
+    if (sp->nspun > 0 && w->bp.root != NULL)
+        noct_bp_drop_tree(&w->bp);
+    sp->nspun = 0;
+}
+
+/* A step that succeeded keeps its rotations: the old meshes go. */
+static void spin_done(noctWorld *w)
+{
+    for (uint32_t k = 0; k < w->spin.nspun; ++k)
+        noctMeshDestroy(w->spin.old_mesh[k]);
+    w->spin.nspun = 0;
+}
+
+/* Turn each spinner by its angular velocity, q <- noctQuatCompose(w, q),
+ * through the set-transform path; on failure give them all back. */
+static noctStatus stage_spin(noctWorld *w, noctError *err)
+{
+    noct_spin *sp = &w->spin;
+    sp->nspun = 0;
+    for (uint32_t k = 0; k < sp->nspinners; ++k) {
+        const uint32_t s = sp->spinners[k];
+        noct_pose *p = &w->pose[s];
+        const noctQuat q = noctQuatCompose(&sp->w[s], &p->q);
+        double R[9];
+        noctStatus st = noctQuatToMatrix(&q, R, err);
+        if (st == NOCT_OK && p->shape == NULL)
+            st = noct_check_box_corners(p->half, R, err);
+        noctMesh *rotated = NULL;
+        if (st == NOCT_OK)
+            st = rotate_shape(p->shape, R, &rotated, err);
+        if (st == NOCT_OK) {
+            double lo[3], hi[3];
+            local_box(p, rotated, R, lo, hi);
+            st = noct_bp_move_to(&w->bp, s, lo, hi, w->pos[s]);
+            if (st != NOCT_OK) {
+                noctMeshDestroy(rotated);
+                noct_fail(err, st, (long)s, 0, "turning object %u: out of memory", s);
+            }
+        }
+        if (st != NOCT_OK) {
+            unspin(w);
+            return st;
+        }
+        sp->old_q[k] = p->q;
+        sp->old_mesh[k] = p->rotated;
+        ++sp->nspun;
+        p->rotated = rotated;
+        p->q = q;
+        place_mesh(w, s);
+    }
+    return NOCT_OK;
+}
+
 /* Keep what a failed step of k sub-steps goes back to: the colliding list
  * (the sub-steps replace it) and the movers' velocities (responses may
  * turn them). */
@@ -885,13 +1081,22 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (!hold_for_substeps(w, k))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const bool spin = (w->def.effects & NOCT_EFFECT_SPIN) && w->spin.count > 0;
+    if (spin && !update_spinners(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     w->substeps = k;
     ++w->c.steps;
     w->moved = w->touched = false;
+    if (spin) {
+        noctStatus st = stage_spin(w, err);
+        if (st != NOCT_OK)
+            return st;
+    }
     for (uint64_t i = 0; i < k; ++i) {
         noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, err);
         if (st != NOCT_OK) {
             noct_world_roll_back(w, w->moved, w->touched);
+            unspin(w);
             if (k > 1) {
                 noct_pair_list t = w->events.colliding;
                 w->events.colliding = w->events.held;
@@ -905,6 +1110,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             return st;
         }
     }
+    spin_done(w);
     return NOCT_OK;
 }
 

@@ -79,6 +79,22 @@ typedef struct noct_events {
     uint64_t epoch;
 } noct_events;
 
+/* Angular velocity (#NOCT_EFFECT_SPIN): each moving object's rotation per
+ * step, per slot, made when the first object gets one (NULL before, so a
+ * world without spin keeps none); the spinners, made again when objects,
+ * types or angular velocities change; and what a failed step gives back:
+ * each spun object's quaternion and rotated mesh from before the step. */
+typedef struct noct_spin {
+    noctQuat *w;           /* per slot; NULL: every one the identity */
+    size_t count;          /* live objects with one not the identity */
+    uint32_t *spinners;    /* live moving objects with one, by slot */
+    uint32_t nspinners, cap;
+    bool stale;
+    noctQuat *old_q;       /* per spinner, while a step runs */
+    noctMesh **old_mesh;
+    uint32_t nspun;        /* spinners turned so far this step */
+} noct_spin;
+
 struct noctWorld {
     noctWorldDef def;
     noctBroadphase bp;     /* the world's objects are its proxies */
@@ -94,6 +110,7 @@ struct noctWorld {
     uint32_t capslots;
     noct_motion motion;
     noct_events events;
+    noct_spin spin;
     size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */

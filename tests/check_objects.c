@@ -360,6 +360,7 @@ typedef struct model {
     int mesh_of[MAXO];
     noctTransform x[MAXO];
     double vel[MAXO][3];
+    noctQuat spin[MAXO];
     noctObjectType type[MAXO];
     uint64_t cat[MAXO], mask[MAXO];
     bool sensor[MAXO];
@@ -426,6 +427,12 @@ static void add_random(noctWorld *w, model *m, int i)
     m->cat[i] = d.category = random_bits();
     m->mask[i] = d.mask = random_bits();
     m->sensor[i] = d.sensor = uniform() < 0.1;
+    m->spin[i] = (noctQuat){0, 0, 0, 1};
+    if (uniform() < 0.2) { /* a turn of up to 20 degrees a step */
+        const double axis[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+        ck_assert_int_eq(noctQuatFromAxisAngle(axis, 20 * uniform(), &m->spin[i]), NOCT_OK);
+    }
+    d.angular_velocity = m->spin[i];
     d.user_data = &m->alive[i];
     noctError err;
     ck_assert_msg(noctWorldCreateObject(w, &d, &m->id[i], &err) == NOCT_OK, "%s", err.message);
@@ -580,6 +587,8 @@ START_TEST(rotated_scenes_against_brute_force)
         m.radius[i] = sqrt(r);
     }
     noctWorldDef wd = noctDefaultWorldDef();
+    if (_i == 0)
+        wd.effects |= NOCT_EFFECT_SPIN;
     if (_i == 1)
         wd.effects = NOCT_EFFECT_EVENTS;
     if (_i == 2)
@@ -598,7 +607,13 @@ START_TEST(rotated_scenes_against_brute_force)
             drive(w, &m);
         noctError err;
         ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
-        /* the test's own motion: p += v, bit for bit */
+        /* the test's own spin, then motion: q <- w q, p += v */
+        if (wd.effects & NOCT_EFFECT_SPIN)
+            for (int i = 0; i < MAXO; ++i)
+                if (m.alive[i] && m.type[i] == NOCT_OBJECT_MOVING &&
+                    !(m.spin[i].x == 0 && m.spin[i].y == 0 && m.spin[i].z == 0 &&
+                      m.spin[i].w == 1))
+                    m.x[i].q = noctQuatCompose(&m.spin[i], &m.x[i].q);
         if (motion)
             for (int i = 0; i < MAXO; ++i)
                 if (m.alive[i] && m.type[i] == NOCT_OBJECT_MOVING)
@@ -834,6 +849,155 @@ START_TEST(teleports_within_a_leaf)
 }
 END_TEST
 
+/* ---- angular velocity ------------------------------------------------------ */
+
+/* Composition against the matrices: R(a b) = R(a) R(b) within rounding,
+ * and composing unit quaternions stays unit length. */
+START_TEST(quaternions_compose)
+{
+    rng = 991;
+    for (int n = 0; n < 500; ++n) {
+        noctQuat a, b;
+        double u[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5}, v[3];
+        ck_assert_int_eq(noctQuatFromAxisAngle(u, 360 * uniform(), &a), NOCT_OK);
+        for (int k = 0; k < 3; ++k)
+            v[k] = uniform() - 0.5;
+        ck_assert_int_eq(noctQuatFromAxisAngle(v, 360 * uniform(), &b), NOCT_OK);
+        const noctQuat c = noctQuatCompose(&a, &b);
+        double Ra[9], Rb[9], Rc[9];
+        ck_assert_int_eq(noctQuatToMatrix(&a, Ra, NULL), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&b, Rb, NULL), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&c, Rc, NULL), NOCT_OK);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                double e = 0;
+                for (int k = 0; k < 3; ++k)
+                    e += Ra[3 * i + k] * Rb[3 * k + j];
+                ck_assert_msg(fabs(Rc[3 * i + j] - e) < 1e-14, "entry %d %d", i, j);
+            }
+    }
+    /* a thousand small turns in a row stay a unit quaternion */
+    noctQuat q = {0, 0, 0, 1}, w;
+    const double axis[3] = {1, 2, 3};
+    ck_assert_int_eq(noctQuatFromAxisAngle(axis, 1.7, &w), NOCT_OK);
+    for (int n = 0; n < 1000; ++n)
+        q = noctQuatCompose(&w, &q);
+    const double len = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+    ck_assert_msg(fabs(len - 1) < 1e-14, "squared length %.17g", len);
+}
+END_TEST
+
+/* A bar turning a quarter turn a step about z: its matrix is exactly the
+ * k-th quarter turn, its box alternates, it meets a crate on the x axis
+ * every other step (begin, end, ...), and after four steps it is back
+ * where it began, bit for bit; an L mesh turning along does the same. */
+START_TEST(spin_quarter_turns)
+{
+    noctMesh *ell = make_ell();
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    const double z[3] = {0, 0, 1};
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = 1;
+    d.half_extents[1] = 0.5;
+    d.half_extents[2] = 0.25;
+    ck_assert_int_eq(noctQuatFromAxisAngle(z, 90, &d.angular_velocity), NOCT_OK);
+    noctObjectId bar, crate, l;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &bar, NULL), NOCT_OK);
+    d.mesh = ell;
+    d.transform.p[0] = 10;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &l, NULL), NOCT_OK);
+    d = noctDefaultObjectDef();
+    d.type = NOCT_OBJECT_STATIC;
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 0.25;
+    d.transform.p[0] = 1.2; /* 0.95 to 1.45: within the bar along x, not along y */
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &crate, NULL), NOCT_OK);
+    double lo0[3], hi0[3], llo0[3], lhi0[3];
+    ck_assert_int_eq(noctWorldObjectBox(w, bar, lo0, hi0), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectBox(w, l, llo0, lhi0), NOCT_OK);
+    const noctPair *p;
+    for (int k = 1; k <= 8; ++k) {
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        noctTransform x;
+        double R[9], lo[3], hi[3];
+        ck_assert_int_eq(noctWorldGetTransform(w, bar, &x), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&x.q, R, NULL), NOCT_OK);
+        const double c[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
+        const double want[9] = {c[k % 4], -sn[k % 4], 0, sn[k % 4], c[k % 4], 0, 0, 0, 1};
+        for (int i = 0; i < 9; ++i)
+            ck_assert_msg(R[i] == want[i], "step %d: entry %d is %.17g", k, i, R[i]);
+        ck_assert_int_eq(noctWorldObjectBox(w, bar, lo, hi), NOCT_OK);
+        const bool along_x = k % 2 == 0;
+        ck_assert(hi[0] == (along_x ? 1 : 0.5) && hi[1] == (along_x ? 0.5 : 1));
+        /* the crate: touching every other step */
+        ck_assert_uint_eq(noctWorldColliding(w, &p), along_x ? 1 : 0);
+        if (k > 1) /* (before step 1 nothing was colliding yet) */
+            ck_assert_uint_eq(along_x ? noctWorldBegan(w, &p) : noctWorldEnded(w, &p), 1);
+        if (k % 4 == 0) { /* back where they began */
+            ck_assert(memcmp(lo, lo0, sizeof lo) == 0 && memcmp(hi, hi0, sizeof hi) == 0);
+            ck_assert_int_eq(noctWorldObjectBox(w, l, lo, hi), NOCT_OK);
+            ck_assert(memcmp(lo, llo0, sizeof lo) == 0 && memcmp(hi, lhi0, sizeof hi) == 0);
+        }
+        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    }
+    /* without the effect, the angular velocity is kept and unused */
+    noctQuat q;
+    ck_assert_int_eq(noctWorldGetAngularVelocity(w, bar, &q), NOCT_OK);
+    ck_assert(fabs(q.z - sqrt(0.5)) < 1e-16);
+    ck_assert_int_eq(noctWorldGetAngularVelocity(w, crate, &q), NOCT_OK);
+    ck_assert(q.x == 0 && q.y == 0 && q.z == 0 && q.w == 1);
+    /* bad angular velocities, a status and nothing changed */
+    noctError err;
+    const noctQuat nan = {NAN, 0, 0, 1}, longer = {0, 0, 0, 1.5};
+    ck_assert_int_eq(noctWorldSetAngularVelocity(w, bar, &nan, &err), NOCT_ERR_NONFINITE);
+    ck_assert_msg(strstr(err.message, "angular velocity") != NULL, "%s", err.message);
+    ck_assert_int_eq(noctWorldSetAngularVelocity(w, bar, &longer, &err), NOCT_ERR_INVALID);
+    d = noctDefaultObjectDef();
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 1;
+    d.angular_velocity = longer;
+    noctObjectId bad;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &bad, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetAngularVelocity(w, bar, &q), NOCT_OK);
+    ck_assert(fabs(q.z - sqrt(0.5)) < 1e-16);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 3);
+    /* a step that fails after the spin gives the turn back */
+    d = noctDefaultObjectDef();
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 1;
+    d.transform.p[0] = 1e100 - 1e90;
+    d.velocity[0] = 1e91; /* beyond the coordinate limit in one step */
+    noctObjectId runaway;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &runaway, NULL), NOCT_OK);
+    noctTransform held;
+    double hlo[3], hhi[3], lo[3], hi[3];
+    ck_assert_int_eq(noctWorldGetTransform(w, bar, &held), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectBox(w, bar, hlo, hhi), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_ERR_TOO_LARGE);
+    noctTransform now;
+    ck_assert_int_eq(noctWorldGetTransform(w, bar, &now), NOCT_OK);
+    ck_assert(memcmp(&now, &held, sizeof now) == 0);
+    ck_assert_int_eq(noctWorldObjectBox(w, bar, lo, hi), NOCT_OK);
+    ck_assert(memcmp(lo, hlo, sizeof lo) == 0 && memcmp(hi, hhi, sizeof hi) == 0);
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldRemove(w, runaway, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK); /* and now it turns */
+    ck_assert_int_eq(noctWorldGetTransform(w, bar, &now), NOCT_OK);
+    ck_assert(memcmp(&now.q, &held.q, sizeof now.q) != 0);
+    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    /* stopped: it stays where it is */
+    const noctQuat none = {0, 0, 0, 1};
+    ck_assert_int_eq(noctWorldSetAngularVelocity(w, bar, &none, &err), NOCT_OK);
+    noctTransform before, after;
+    ck_assert_int_eq(noctWorldGetTransform(w, bar, &before), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldGetTransform(w, bar, &after), NOCT_OK);
+    ck_assert(memcmp(&before, &after, sizeof before) == 0);
+    noctWorldDestroy(w);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
 /* ---- bad input changes nothing ------------------------------------------------- */
 
 /* (a marker for the table below: refused only when turned) */
@@ -1064,6 +1228,8 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, rotated_scenes_against_brute_force, 0, 4);
     tcase_add_test(tc, events_follow_changes);
+    tcase_add_test(tc, quaternions_compose);
+    tcase_add_test(tc, spin_quarter_turns);
     tcase_add_test(tc, teleports_within_a_leaf);
     tcase_add_test(tc, velocity_bit_for_bit);
     tcase_add_test(tc, bad_input_changes_nothing);

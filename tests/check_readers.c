@@ -447,8 +447,12 @@ START_TEST(scene_limits)
          "mask: not a 64-bit"},
         {"mesh a box 1 1 1\nobject a 0 0 0 filter 1 0x10000000000000000\n", NOCT_ERR_PARSE,
          2, "mask: not a 64-bit"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 twirl 1 0 0\n", NOCT_ERR_PARSE, 2,
+         "unexpected 'twirl'"},
         {"mesh a box 1 1 1\nobject a 0 0 0 spin 1 0 0\n", NOCT_ERR_PARSE, 2,
-         "unexpected 'spin'"},
+         "missing spin axis and angle"},
+        {"mesh a box 1 1 1\nobject a 0 0 0 spin 0 0 0 10\n", NOCT_ERR_INVALID, 2,
+         "a spin needs a non-zero axis"},
         {"mesh a box 1 1 1\nobject a 0 0 0 sensor sensor\n", NOCT_ERR_PARSE, 2,
          "'sensor' given twice"},
     };
@@ -465,11 +469,11 @@ END_TEST
 START_TEST(object_attributes)
 {
     const char *path = write_text("attributes.scene",
-        "effects motion events\nmesh a box 0.5 0.25 0.125\n"
+        "effects motion events spin\nmesh a box 0.5 0.25 0.125\n"
         "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
         "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n"
         "object a 0 5 0 type static\n"
-        "object a 0 0 5 velocity 1e-3 0 0 type moving sensor\n");
+        "object a 0 0 5 velocity 1e-3 0 0 type moving sensor spin 0 0 1 90\n");
     noctScene *sc;
     noctError err = {0};
     noctStatus st = noctSceneRead(path, &sc, &err);
@@ -509,6 +513,10 @@ START_TEST(object_attributes)
     ck_assert(sensor);
     ck_assert_int_eq(noctWorldGetSensor(w, id[2], &sensor), NOCT_OK);
     ck_assert(!sensor);
+    /* a quarter turn a step about z: after one step, x and y swap */
+    noctQuat spin;
+    ck_assert_int_eq(noctWorldGetAngularVelocity(w, id[3], &spin), NOCT_OK);
+    ck_assert(fabs(spin.z - sqrt(0.5)) < 1e-16 && spin.x == 0);
     /* 'mesh a box' is a box primitive */
     ck_assert(noctWorldGetMesh(w, id[0]) == NULL);
     ck_assert_int_eq(noctWorldGetHalfExtents(w, id[0], v), NOCT_OK);
@@ -518,6 +526,8 @@ START_TEST(object_attributes)
     ck_assert(x.p[0] == 0.1 && x.p[1] == -0.2 && x.p[2] == 0.3);
     ck_assert_int_eq(noctWorldGetTransform(w, id[1], &x), NOCT_OK);
     ck_assert(x.p[0] == 5 && x.p[1] == 0); /* kinematic: not moved */
+    ck_assert_int_eq(noctWorldObjectBox(w, id[3], lo, hi), NOCT_OK);
+    ck_assert(hi[0] - lo[0] == 0.5 && hi[1] - lo[1] == 1); /* turned */
     ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
     noctWorldDestroy(w);
     noctSceneDestroy(sc);

@@ -115,6 +115,29 @@ NOCT_API noctStatus noctQuatFromAxisAngle(const double axis[3], double degrees, 
 NOCT_API noctStatus noctQuatToMatrix(const noctQuat *q, double R[9], noctError *err);
 
 /**
+ * @brief The rotation b, then a: the quaternion product a b.
+ *
+ * Evaluated, with every product and sum rounded once and in this order
+ * (no fused multiply-add):
+ *
+ *     x = ((a.w b.x + a.x b.w) + a.y b.z) - a.z b.y
+ *     y = ((a.w b.y - a.x b.z) + a.y b.w) + a.z b.x
+ *     z = ((a.w b.z + a.x b.y) - a.y b.x) + a.z b.w
+ *     w = ((a.w b.w - a.x b.x) - a.y b.y) - a.z b.z
+ *
+ * then, if its squared length (as noctQuatToMatrix() computes it) is
+ * farther than #NOCT_QUAT_UNIT from 1, divided by fl(sqrt) of it; so
+ * composing a rotation with itself step after step stays unit length
+ * without drifting. The world's angular velocity (#NOCT_EFFECT_SPIN)
+ * turns an object's q into noctQuatCompose(angular_velocity, q).
+ * @param a the rotation applied second.
+ * @param b the rotation applied first.
+ * @pre a != NULL && b != NULL
+ * @return the product, normalised as above (for unit a and b).
+ */
+NOCT_API noctQuat noctQuatCompose(const noctQuat *a, const noctQuat *b);
+
+/**
  * @brief Check a transform as the world and noctCollideTransformed() do.
  * @param x the transform.
  * @param err receives the details of a failure, or NULL.

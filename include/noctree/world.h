@@ -155,7 +155,7 @@ enum noctEffect {
                                          is outside the container on an axis
                                          and still moving outward has that
                                          velocity component negated. */
-    NOCT_EFFECT_SUBSTEP = 1u << 4   /**< Split a step into k sub-steps of
+    NOCT_EFFECT_SUBSTEP = 1u << 4,  /**< Split a step into k sub-steps of
                                          velocity / k, k chosen so that no
                                          object moves more than half its
                                          smallest size per sub-step (see
@@ -164,6 +164,17 @@ enum noctEffect {
                                          sub-step. For scenes whose objects
                                          may otherwise pass through each
                                          other between steps. */
+    NOCT_EFFECT_SPIN = 1u << 5      /**< Moving objects turn by their angular
+                                         velocity: once a step, before the
+                                         motion (before the first sub-step),
+                                         q becomes noctQuatCompose(angular
+                                         velocity, q), and the object is
+                                         placed as by noctWorldSetTransform()
+                                         (a mesh shape is rotated anew each
+                                         step; a box primitive costs a few
+                                         hundred instructions). Without it,
+                                         angular velocities are kept but
+                                         cost nothing. */
 };
 
 /** @brief How the octree follows the objects. */
@@ -241,6 +252,10 @@ typedef struct noctObjectDef {
                                   #NOCT_FILTER_ALL. */
     uint64_t mask;           /**< The categories it pairs with. Default
                                   #NOCT_FILTER_ALL. */
+    noctQuat angular_velocity; /**< Its rotation per step, applied with
+                                  #NOCT_EFFECT_SPIN to a moving object.
+                                  Checked as a transform's quaternion.
+                                  Default the identity (0, 0, 0, 1). */
     bool sensor;             /**< A sensor: its overlaps with objects that
                                   are not sensors are decided as collisions
                                   are, but listed apart (noctWorldSensing()
@@ -383,8 +398,9 @@ NOCT_API noctStatus noctWorldReserve(noctWorld *world, size_t more, noctError *e
 /**
  * @brief Return the default object definition.
  * @return No mesh and zero half-extents (one or the other must be set),
- *         the identity transform, zero velocity, #NOCT_OBJECT_MOVING, no
- *         user data, every category and mask bit set, not a sensor.
+ *         the identity transform, zero velocity, no angular velocity
+ *         (the identity), #NOCT_OBJECT_MOVING, no user data, every category
+ *         and mask bit set, not a sensor.
  */
 NOCT_API noctObjectDef noctDefaultObjectDef(void);
 
@@ -409,7 +425,8 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  *         #NOCT_ERR_TOO_LARGE for a corner, as turned, beyond
  *         #NOCT_MAX_COORDINATE,
  *         #NOCT_ERR_DEGENERATE for the least under 2^-29 of the largest;
- *         #NOCT_ERR_NONFINITE for a velocity that is not finite;
+ *         #NOCT_ERR_NONFINITE for a velocity that is not finite; the
+ *         failures of noctQuatToMatrix() for the angular velocity;
  *         #NOCT_ERR_TOO_LARGE for more than 2^31 objects (a velocity that
  *         would carry an object beyond #NOCT_MAX_COORDINATE fails the
  *         step that would);
@@ -682,6 +699,33 @@ NOCT_API noctStatus noctWorldSetSensor(noctWorld *world, noctObjectId id, bool s
  */
 NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
                                        bool *sensor);
+
+/**
+ * @brief Set an object's angular velocity (see #NOCT_EFFECT_SPIN).
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[in]  q     Its rotation per step; the identity for none.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world and @p q are not NULL.
+ * @post On #NOCT_OK a moving object turns by @p q each step of a world
+ *       with #NOCT_EFFECT_SPIN. On failure nothing changed.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle; the failures of
+ *         noctQuatToMatrix(); #NOCT_ERR_NOMEM (the first angular velocity
+ *         of a world makes a per-object array).
+ */
+NOCT_API noctStatus noctWorldSetAngularVelocity(noctWorld *world, noctObjectId id,
+                                                const noctQuat *q, noctError *err);
+
+/**
+ * @brief Read an object's angular velocity.
+ * @param[in]  world The world.
+ * @param[in]  id    The object.
+ * @param[out] q     Receives it (the identity for none).
+ * @pre @p world and @p q are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetAngularVelocity(const noctWorld *world, noctObjectId id,
+                                                noctQuat *q);
 
 /**
  * @brief Set the pointer a program keeps with an object.
