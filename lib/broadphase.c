@@ -41,10 +41,10 @@ void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
     *cap = p->base << k;
     if (p->cls[k].n > 0)
         return p->cls[k].free[--p->cls[k].n];
-    /* None free: make a quarter as many again as there are (at least
-     * two), so that a little more demand than ever before does not
-     * allocate at once. */
-    const size_t more = p->cls[k].made / 4 > 2 ? p->cls[k].made / 4 : 2;
+    /* None free: make an eighth as many again as there are (at least
+     * two), in one slab, so that a little more demand than ever before
+     * does not allocate at once, and arrays carry no allocator header. */
+    const size_t more = p->cls[k].made / 8 > 2 ? p->cls[k].made / 8 : 2;
     if (p->cls[k].made + more > p->cls[k].cap) {
         size_t c = p->cls[k].cap ? 2 * p->cls[k].cap : 16;
         while (c < p->cls[k].made + more)
@@ -55,14 +55,23 @@ void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
         p->cls[k].free = q;
         p->cls[k].cap = c;
     }
-    for (size_t i = 0; i < more; ++i) {
-        void *a = malloc((size_t)*cap * p->elem);
-        if (a == NULL)
-            break;
-        ++p->cls[k].made;
-        p->cls[k].free[p->cls[k].n++] = a;
+    if (p->nslabs == p->capslabs) {
+        const size_t c = p->capslabs ? 2 * p->capslabs : 16;
+        void **q = realloc(p->slabs, c * sizeof *q);
+        if (q == NULL)
+            return NULL;
+        p->slabs = q;
+        p->capslabs = c;
     }
-    return p->cls[k].n > 0 ? p->cls[k].free[--p->cls[k].n] : NULL;
+    const size_t bytes = (size_t)*cap * p->elem;
+    char *slab = malloc(more * bytes);
+    if (slab == NULL)
+        return NULL;
+    p->slabs[p->nslabs++] = slab;
+    for (size_t i = 0; i < more; ++i)
+        p->cls[k].free[p->cls[k].n++] = slab + i * bytes;
+    p->cls[k].made += more;
+    return p->cls[k].free[--p->cls[k].n];
 }
 
 void *noct_apool_take_free(noct_apool *p, uint32_t cap)
@@ -86,9 +95,12 @@ void noct_apool_give(noct_apool *p, void *a, uint32_t cap)
 
 void noct_apool_free(noct_apool *p)
 {
+    for (size_t i = 0; i < p->nslabs; ++i)
+        free(p->slabs[i]);
+    free(p->slabs);
+    p->slabs = NULL;
+    p->nslabs = p->capslabs = 0;
     for (unsigned k = 0; k < NOCT_APOOL_CLASSES; ++k) {
-        for (size_t i = 0; i < p->cls[k].n; ++i)
-            free(p->cls[k].free[i]);
         free(p->cls[k].free);
         p->cls[k].free = NULL;
         p->cls[k].n = p->cls[k].cap = p->cls[k].made = 0;
@@ -134,7 +146,7 @@ noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctEr
     bp->near_pool.elem = sizeof(uint32_t);
     bp->near_pool.base = 8;
     bp->spans_pool.elem = sizeof(noct_span);
-    bp->spans_pool.base = 8; /* most proxies are in 8 leaves or fewer */
+    bp->spans_pool.base = 4; /* most proxies are in 4 leaves or fewer */
     bp->N = def->N;
     bp->max_depth = def->max_depth;
     bp->hint = hint;
@@ -146,8 +158,7 @@ noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctEr
 void noct_bp_fini(noctBroadphase *bp)
 {
     noct_bp_free_tree(bp);
-    for (uint32_t i = 0; i < bp->nslots; ++i)
-        free(bp->proxy[i].spans);
+    /* (the proxies' spans are the spans pool's, freed with its slabs) */
     free(bp->proxy);
     free(bp->box);
     free(bp->home);

@@ -136,6 +136,8 @@ typedef struct noct_apool {
         void **free;
         size_t n, cap, made;
     } cls[NOCT_APOOL_CLASSES];
+    void **slabs;          /* the arrays are made several to a slab */
+    size_t nslabs, capslabs;
 } noct_apool;
 
 /* An array of at least need elements, its capacity into *cap; NULL

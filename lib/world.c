@@ -313,16 +313,13 @@ static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const doub
 {
     noct_object *o = &w->obj[s];
     const bool was = o->speed > 0;
-    w->pose[s].type = type;
-    if (type == NOCT_OBJECT_MOVING) {
-        memcpy(o->vel, v, sizeof o->vel);
-        o->speed = v[0] != 0 || v[1] != 0 || v[2] != 0 ? speed_of(v) : 0;
-        memset(w->pose[s].vel, 0, sizeof w->pose[s].vel);
-    } else {
-        memcpy(w->pose[s].vel, v, sizeof w->pose[s].vel);
-        memset(o->vel, 0, sizeof o->vel);
-        o->speed = 0;
-    }
+    o->type = (uint8_t)type;
+    /* a static or kinematic object keeps its velocity here too, but with
+     * speed 0 neither the motion nor the response reads it */
+    memcpy(o->vel, v, sizeof o->vel);
+    o->speed = type == NOCT_OBJECT_MOVING && (v[0] != 0 || v[1] != 0 || v[2] != 0)
+                   ? speed_of(v)
+                   : 0;
     const bool is = o->speed > 0;
     NOCT_INVARIANT(w->motion.moving >= (size_t)was);
     w->motion.moving = w->motion.moving - was + is;
@@ -334,7 +331,7 @@ static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const doub
 /* An object's velocity: the moving one's, or the one its pose keeps. */
 static const double *velocity_of(const noctWorld *w, uint32_t s)
 {
-    return w->pose[s].type == NOCT_OBJECT_MOVING ? w->obj[s].vel : w->pose[s].vel;
+    return w->obj[s].vel;
 }
 
 static bool is_identity_quat(const noctQuat *q)
@@ -612,7 +609,7 @@ noctStatus noctWorldSetVelocity(noctWorld *w, noctObjectId id, const double velo
     noctStatus st = check_velocity(velocity, err);
     if (st != NOCT_OK)
         return st;
-    set_motion(w, id.index, w->pose[id.index].type, velocity);
+    set_motion(w, id.index, (noctObjectType)w->obj[id.index].type, velocity);
     return NOCT_OK;
 }
 
@@ -646,7 +643,7 @@ noctStatus noctWorldGetType(const noctWorld *w, noctObjectId id, noctObjectType 
     NOCT_REQUIRE(w != NULL && type != NULL);
     if (lookup(w, id) == NULL)
         return NOCT_ERR_INVALID;
-    *type = w->pose[id.index].type;
+    *type = (noctObjectType)w->obj[id.index].type;
     return NOCT_OK;
 }
 
@@ -934,7 +931,7 @@ static bool update_spinners(noctWorld *w)
         return true;
     uint32_t n = 0;
     for (uint32_t i = 0; i < w->bp.nslots; ++i)
-        n += w->obj[i].alive && w->pose[i].type == NOCT_OBJECT_MOVING &&
+        n += w->obj[i].alive && w->obj[i].type == NOCT_OBJECT_MOVING &&
              !is_identity_quat(&sp->w[i]);
     if (n > sp->cap) {
         uint32_t *a = realloc(sp->spinners, n * sizeof *a);
@@ -951,7 +948,7 @@ static bool update_spinners(noctWorld *w)
     }
     sp->nspinners = 0;
     for (uint32_t i = 0; i < w->bp.nslots; ++i)
-        if (w->obj[i].alive && w->pose[i].type == NOCT_OBJECT_MOVING &&
+        if (w->obj[i].alive && w->obj[i].type == NOCT_OBJECT_MOVING &&
             !is_identity_quat(&sp->w[i]))
             sp->spinners[sp->nspinners++] = i;
     sp->stale = false;
@@ -1263,7 +1260,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u has %s rotated copy", i,
                              p->rotated == NULL ? "no" : "a needless");
-        if ((w->obj[i].speed > 0) != (p->type == NOCT_OBJECT_MOVING &&
+        if ((w->obj[i].speed > 0) != (w->obj[i].type == NOCT_OBJECT_MOVING &&
                                       (w->obj[i].vel[0] != 0 || w->obj[i].vel[1] != 0 ||
                                        w->obj[i].vel[2] != 0)))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,

@@ -34,11 +34,11 @@ typedef struct noct_object {
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
     bool alive;
     bool sensor;           /* reports overlaps in the sensor lists only */
+    uint8_t type;          /* noctObjectType */
 } noct_object;
 
 /* What the program set of an object and the step never reads: its
- * shape, its rotation, its type, and the velocity of an object that is
- * not moving (a moving object's is obj[i].vel, which the response turns). */
+ * shape and its rotation. */
 typedef struct noct_pose {
     const noctMesh *shape;  /* the mesh it was made with; NULL for a box */
     double half[3];         /* a box primitive's half-extents */
@@ -46,8 +46,6 @@ typedef struct noct_pose {
                                NULL when R is the identity; for a box, its
                                mesh once an exact test needed it */
     noctQuat q;             /* as given; its matrix is noctQuatToMatrix(q) */
-    double vel[3];          /* the velocity of a static or kinematic object */
-    noctObjectType type;
 } noct_pose;
 
 /* Motion: the movers and what a failed step restores. */
