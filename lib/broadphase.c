@@ -445,9 +445,9 @@ noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo_new[
     double d = 0;
     for (int k = 0; k < 3; ++k)
         d = noct_max(d, noct_max(fabs(nb.lo[k] - old.lo[k]), fabs(nb.hi[k] - old.hi[k])));
-    if (o->travel_epoch != bp->search_epoch) {
+    if (o->travel_epoch != (uint32_t)bp->search_epoch) {
         o->travel = 0;
-        o->travel_epoch = bp->search_epoch;
+        o->travel_epoch = (uint32_t)bp->search_epoch;
     }
     o->travel += d;
     bp->pending_reach = noct_max(bp->pending_reach, o->travel);

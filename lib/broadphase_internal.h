@@ -99,12 +99,15 @@ typedef struct noct_proxy {
     bool boxed;           /* a public proxy: home holds its block in box
                              space (noct_bp_block_of), of cells of size
                              block, while it is finite */
+    /* The search that travel counts from, its low 32 bits: after 2^32
+     * searches a stale count may be taken for this one's, which only
+     * makes the search's reach larger (safe), never smaller. */
+    uint32_t travel_epoch;
     double block;
     uint64_t category, mask;
     void *user;
     double travel;        /* how far its box moved since the last pair
-                             search, on an axis (public moves) */
-    uint64_t travel_epoch;
+                             search, on an axis (public moves, teleports) */
 } noct_proxy;
 
 /* A list of pairs of proxies. */
@@ -427,9 +430,9 @@ static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const doubl
     double d = 0;
     for (int k = 0; k < 3; ++k)
         d = noct_max(d, noct_max(fabs(nb.lo[k] - old->lo[k]), fabs(nb.hi[k] - old->hi[k])));
-    if (o->travel_epoch != bp->search_epoch) {
+    if (o->travel_epoch != (uint32_t)bp->search_epoch) {
         o->travel = 0;
-        o->travel_epoch = bp->search_epoch;
+        o->travel_epoch = (uint32_t)bp->search_epoch;
     }
     o->travel += d;
     bp->pending_reach = noct_max(bp->pending_reach, o->travel);

@@ -108,6 +108,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->motion.prev);
     free(w->motion.prevvel);
     free(w->motion.flips);
+    free(w->motion.flip_axes);
     free(w->events.colliding.p);
     free(w->events.previous.p);
     free(w->events.began.p);
@@ -122,7 +123,6 @@ void noctWorldDestroy(noctWorld *w)
     free(w->spin.spinners);
     free(w->spin.old_q);
     free(w->spin.old_mesh);
-    free(w->events.mark);
     free(w);
 }
 
@@ -152,7 +152,6 @@ static bool reserve_slots(noctWorld *w)
     GROW(pos);
     GROW(mesh);
     GROW(pose);
-    GROW(events.mark);
     if (w->spin.w != NULL)
         GROW(spin.w);
 #undef GROW
@@ -275,14 +274,14 @@ static void place_mesh(noctWorld *w, uint32_t s)
     const noct_pose *p = &w->pose[s];
     noct_object *o = &w->obj[s];
     if (p->shape == NULL) {
-        o->mesh = w->mesh[s] = p->rotated;
+        w->mesh[s] = p->rotated;
         double R[9];
         noctQuatToMatrix(&p->q, R, NULL);
         noct_box_slot_of_box(p->half, R, &w->slot[s], o->mlo, o->mhi);
         return;
     }
     const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape;
-    o->mesh = w->mesh[s] = m;
+    w->mesh[s] = m;
     memcpy(o->mlo, m->lo, sizeof o->mlo);
     memcpy(o->mhi, m->hi, sizeof o->mhi);
     if (m->has_box)
@@ -304,7 +303,7 @@ const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st)
     *st = noct_mesh_of_box(p->half, R, &p->rotated, NULL);
     if (*st != NOCT_OK)
         return NULL;
-    w->obj[s].mesh = w->mesh[s] = p->rotated;
+    w->mesh[s] = p->rotated;
     return p->rotated;
 }
 
@@ -435,7 +434,6 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     p->q = def->transform.q;
     place_mesh(w, slot);
     memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
-    w->events.mark[slot] = 0;
     if (!set_spin(w, slot, &def->angular_velocity, false))
         st = NOCT_ERR_NOMEM;
     else
@@ -889,7 +887,8 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
     w->c.seconds_pairs += t3 - t2;
     if (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)) {
         if (w->def.effects & NOCT_EFFECT_RESPONSE)
-            noct_world_respond(&w->events, w->obj, from_began, &w->c.reversals);
+            noct_world_respond(&w->events, w->obj, w->bp.mark, &w->bp.epoch, from_began,
+                               &w->c.reversals);
         w->c.seconds_response += noct_seconds() - t3;
     }
     return NOCT_OK;
@@ -1249,8 +1248,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
         if (!w->obj[i].alive)
             continue;
         const noct_pose *p = &w->pose[i];
-        if (w->obj[i].mesh != (p->rotated != NULL ? p->rotated : p->shape) ||
-            w->mesh[i] != w->obj[i].mesh)
+        if (w->mesh[i] != (p->rotated != NULL ? p->rotated : p->shape))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u's placed mesh is not its shape or its rotated copy",
                              i);

@@ -63,15 +63,16 @@ noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj)
     return NOCT_OK;
 }
 
-void noct_world_respond(noct_events *e, noct_object *obj, size_t from, uint64_t *reversals)
+void noct_world_respond(noct_events *e, noct_object *obj, uint64_t *mark, uint64_t *epoch,
+                        size_t from, uint64_t *reversals)
 {
-    ++e->epoch;
+    const uint64_t now = ++*epoch;
     for (size_t i = from; i < e->began.n; ++i) {
         const uint32_t ids[2] = {e->began.p[i].a.index, e->began.p[i].b.index};
         for (int s = 0; s < 2; ++s) {
-            if (e->mark[ids[s]] == e->epoch)
+            if (mark[ids[s]] == now)
                 continue;
-            e->mark[ids[s]] = e->epoch;
+            mark[ids[s]] = now;
             if (obj[ids[s]].speed > 0) /* (not moving: nothing to turn, not even 0's sign) */
                 for (int k = 0; k < 3; ++k)
                     obj[ids[s]].vel[k] = -obj[ids[s]].vel[k];

@@ -28,8 +28,6 @@
 
 /* What the motion loop reads of an object: one record. */
 typedef struct noct_object {
-    const noctMesh *mesh;  /* the mesh as placed: the shape, or its rotated
-                              copy (noct_pose) */
     double vel[3], speed;  /* vel = speed * unit direction */
     double mlo[3], mhi[3]; /* the mesh's box, copied here for the motion loop */
     bool alive;
@@ -60,10 +58,11 @@ typedef struct noct_motion {
     /* What roll_back restores: per mover, its position before the step,
      * as the bits the motion loop streams out (noct_keep_position), and,
      * for a step of sub-steps, its velocity; and which velocity
-     * components the walls turned (mover * 3 + axis). */
+     * components the walls turned (the mover, and a bit an axis). */
     int64_t (*prev)[3];
     double (*prevvel)[3];
-    uint64_t *flips;
+    uint32_t *flips;       /* movers the walls turned, and which axes */
+    uint8_t *flip_axes;
     uint32_t capprev, nflips;
 } noct_motion;
 
@@ -73,8 +72,6 @@ typedef struct noct_events {
     noct_pair_list held;   /* the colliding list before a step of sub-steps */
     /* The same for the pairs of a sensor and an object that is not one. */
     noct_pair_list sensing, sensing_prev, sensor_began, sensor_ended, sensing_held;
-    uint64_t *mark;        /* per slot: the response's epoch stamps */
-    uint64_t epoch;
 } noct_events;
 
 /* Angular velocity (#NOCT_EFFECT_SPIN): each moving object's rotation per
@@ -99,8 +96,9 @@ struct noctWorld {
     /* Per slot, with the broadphase's capacity. */
     noct_object *obj;
     double (*pos)[3];      /* the position (translation) */
-    const noctMesh **mesh; /* obj[i].mesh again: the narrowphase's prefetch
-                              reads it without touching the objects */
+    const noctMesh **mesh; /* the mesh as placed: the shape, or its rotated
+                              copy (noct_pose); NULL for a box primitive
+                              until its exact test needs one */
     noct_pose *pose;       /* what the program set (not read by the step) */
     noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
                               all the exact level reads of most pairs of
@@ -172,7 +170,9 @@ noctStatus noct_world_diff_events(noct_events *e, uint64_t *events);
 noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj);
 
 /* The response: every object in a pair that began (from the from'th on)
- * reverses its direction once. */
-void noct_world_respond(noct_events *e, noct_object *obj, size_t from, uint64_t *reversals);
+ * reverses its direction once (marked with a new epoch in mark: the
+ * broadphase's stamps, which every use starts with a new epoch). */
+void noct_world_respond(noct_events *e, noct_object *obj, uint64_t *mark, uint64_t *epoch,
+                        size_t from, uint64_t *reversals);
 
 #endif /* NOCT_LIB_WORLD_INTERNAL_H */

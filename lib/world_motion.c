@@ -38,11 +38,15 @@ bool noct_world_update_movers(noctWorld *w)
         double(*v)[3] = p && sub ? realloc(w->motion.prevvel, w->motion.moving * sizeof *v) : NULL;
         if (v != NULL)
             w->motion.prevvel = v;
-        uint64_t *f = p && (!sub || v) && walls
-                          ? realloc(w->motion.flips, 3 * w->motion.moving * sizeof *f) : NULL;
+        uint32_t *f = p && (!sub || v) && walls
+                          ? realloc(w->motion.flips, w->motion.moving * sizeof *f) : NULL;
         if (f != NULL)
             w->motion.flips = f;
-        if (p == NULL || (sub && v == NULL) || (walls && f == NULL))
+        uint8_t *a = f != NULL ? realloc(w->motion.flip_axes, w->motion.moving * sizeof *a)
+                               : NULL;
+        if (a != NULL)
+            w->motion.flip_axes = a;
+        if (p == NULL || (sub && v == NULL) || (walls && (f == NULL || a == NULL)))
             return false;
         w->motion.capprev = (uint32_t)w->motion.moving;
     }
@@ -105,7 +109,8 @@ static NOCT_ALWAYS_INLINE uint32_t move_all(noctWorld *w, double fraction, bool 
     noct_proxy *proxy = w->bp.proxy;
     double(*pos)[3] = w->pos;
     int64_t(*prev)[3] = w->motion.prev;
-    uint64_t *flips = w->motion.flips;
+    uint32_t *flips = w->motion.flips;
+    uint8_t *flip_axes = w->motion.flip_axes;
     uint32_t nflips = 0;
     const uint32_t *movers = w->motion.movers;
     uint32_t *slow = w->motion.slow;
@@ -123,13 +128,18 @@ static NOCT_ALWAYS_INLINE uint32_t move_all(noctWorld *w, double fraction, bool 
         p[0] = x;
         p[1] = y;
         p[2] = z;
-        if (walls)
+        if (walls) {
+            unsigned turned = 0;
             for (int k = 0; k < 3; ++k)
                 if ((p[k] < wlo[k] && o->vel[k] < 0) || (p[k] > whi[k] && o->vel[k] > 0)) {
                     o->vel[k] = -o->vel[k];
-                    if (save)
-                        flips[nflips++] = 3 * (uint64_t)m + (uint64_t)k;
+                    turned |= 1u << k;
                 }
+            if (save && turned != 0) {
+                flips[nflips] = m;
+                flip_axes[nflips++] = (uint8_t)turned;
+            }
+        }
         if (!fast)
             beyond |= (fabs(x) > NOCT_MAX_COORDINATE) | (fabs(y) > NOCT_MAX_COORDINATE) |
                       (fabs(z) > NOCT_MAX_COORDINATE);
@@ -179,8 +189,10 @@ void noct_world_roll_back(noctWorld *w, bool moved, bool tree_touched)
          * turned. */
         const bool kept = w->substeps > 1;
         for (uint32_t f = 0; f < w->motion.nflips && !kept; ++f) {
-            double *v = w->obj[w->motion.movers[w->motion.flips[f] / 3]].vel;
-            v[w->motion.flips[f] % 3] = -v[w->motion.flips[f] % 3];
+            double *v = w->obj[w->motion.movers[w->motion.flips[f]]].vel;
+            for (int k = 0; k < 3; ++k)
+                if (w->motion.flip_axes[f] & (1u << k))
+                    v[k] = -v[k];
         }
         for (uint32_t m = 0; m < w->motion.nmovers; ++m) {
             const uint32_t i = w->motion.movers[m];
