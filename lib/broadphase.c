@@ -41,10 +41,10 @@ void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
     *cap = p->base << k;
     if (p->cls[k].n > 0)
         return p->cls[k].free[--p->cls[k].n];
-    /* None free: make an eighth as many again as there are (at least
+    /* None free: make a sixteenth as many again as there are (at least
      * two), in one slab, so that a little more demand than ever before
      * does not allocate at once, and arrays carry no allocator header. */
-    const size_t more = p->cls[k].made / 8 > 2 ? p->cls[k].made / 8 : 2;
+    const size_t more = p->cls[k].made / 16 > 2 ? p->cls[k].made / 16 : 2;
     if (p->cls[k].made + more > p->cls[k].cap) {
         size_t c = p->cls[k].cap ? 2 * p->cls[k].cap : 16;
         while (c < p->cls[k].made + more)

@@ -195,8 +195,9 @@ struct noctBroadphase {
     noct_aabb *box;
     noct_home *home;
     uint32_t *gen;            /* per slot: its handles' generation */
-    uint64_t *mark;           /* per slot: epoch stamp for distinct counts */
-    uint64_t epoch;
+    uint32_t *mark;           /* per slot: epoch stamp for distinct counts
+                                 (noct_bp_new_epoch) */
+    uint32_t epoch;
     uint32_t nslots, capslots;
     uint32_t *free_slots;     /* room for capslots: removal cannot fail */
     uint32_t nfree;
@@ -440,6 +441,17 @@ static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const doubl
     ++bp->c.moves;
     ++bp->c.inside_fast;
     return true;
+}
+
+/* A new epoch for the per-slot stamps in bp->mark, that no stamp holds:
+ * when the count wraps (once in 2^32 uses) every stamp goes back to 0. */
+static inline uint32_t noct_bp_new_epoch(noctBroadphase *bp)
+{
+    if (++bp->epoch == 0) {
+        memset(bp->mark, 0, bp->nslots * sizeof *bp->mark);
+        bp->epoch = 1;
+    }
+    return bp->epoch;
 }
 
 /* Take live proxy s out of the tree and free its slot; cannot fail. */

@@ -315,7 +315,7 @@ static void try_merge(noctBroadphase *bp, octNode *p, bool up)
         if (pc->distinct > (uint32_t)bp->N)
             return;
         uint32_t distinct = 0;
-        ++bp->epoch;
+        noct_bp_new_epoch(bp);
         for (int i = 0; i < 8; ++i) {
             octNode *k = NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i));
             if (NOCT_NODE_IS_SPLIT(k))
@@ -340,7 +340,7 @@ static void try_merge(noctBroadphase *bp, octNode *p, bool up)
         pc->nnear = 0;
         pc->fresh = 0;
         pc->budget = 0;
-        ++bp->epoch;
+        noct_bp_new_epoch(bp);
         for (int i = 0; i < 8; ++i) {
             noct_cell *c = noct_cell_of(NOCT_NODE_CHILD(p, (octDirection)(OCT_LDB + i)));
             for (uint32_t j = 0; j < c->count; ++j) {

@@ -252,17 +252,23 @@ static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMes
     return st;
 }
 
-/* The local box of a pose's shape turned by R: of the mesh (rotated, or
- * the shape), or of a box primitive's corners. */
-static void local_box(const noct_pose *p, const noctMesh *rotated, const double R[9],
-                      double lo[3], double hi[3])
+/* Object s's mesh as made (NULL for a box primitive). */
+static const noctMesh *shape_of(const noctWorld *w, uint32_t s)
 {
-    if (p->shape == NULL) {
+    return w->obj[s].box ? NULL : w->pose[s].shape.mesh;
+}
+
+/* The local box of object s's shape turned by R: of the mesh (rotated,
+ * or the shape), or of a box primitive's corners. */
+static void local_box(const noctWorld *w, uint32_t s, const noctMesh *rotated,
+                      const double R[9], double lo[3], double hi[3])
+{
+    if (w->obj[s].box) {
         noct_box_slot slot;
-        noct_box_slot_of_box(p->half, R, &slot, lo, hi);
+        noct_box_slot_of_box(w->pose[s].shape.half, R, &slot, lo, hi);
         return;
     }
-    const noctMesh *m = rotated != NULL ? rotated : p->shape;
+    const noctMesh *m = rotated != NULL ? rotated : w->pose[s].shape.mesh;
     memcpy(lo, m->lo, 3 * sizeof *lo);
     memcpy(hi, m->hi, 3 * sizeof *hi);
 }
@@ -273,14 +279,14 @@ static void place_mesh(noctWorld *w, uint32_t s)
 {
     const noct_pose *p = &w->pose[s];
     noct_object *o = &w->obj[s];
-    if (p->shape == NULL) {
+    if (o->box) {
         w->mesh[s] = p->rotated;
         double R[9];
         noctQuatToMatrix(&p->q, R, NULL);
-        noct_box_slot_of_box(p->half, R, &w->slot[s], o->mlo, o->mhi);
+        noct_box_slot_of_box(p->shape.half, R, &w->slot[s], o->mlo, o->mhi);
         return;
     }
-    const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape;
+    const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape.mesh;
     w->mesh[s] = m;
     memcpy(o->mlo, m->lo, sizeof o->mlo);
     memcpy(o->mhi, m->hi, sizeof o->mhi);
@@ -295,12 +301,12 @@ const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st)
     if (w->mesh[s] != NULL)
         return w->mesh[s];
     noct_pose *p = &w->pose[s];
-    NOCT_INVARIANT(p->shape == NULL && p->rotated == NULL);
+    NOCT_INVARIANT(w->obj[s].box && p->rotated == NULL);
     /* the corners were checked (noct_check_box_corners) when the object
      * was made or turned */
     double R[9];
     noctQuatToMatrix(&p->q, R, NULL);
-    *st = noct_mesh_of_box(p->half, R, &p->rotated, NULL);
+    *st = noct_mesh_of_box(p->shape.half, R, &p->rotated, NULL);
     if (*st != NOCT_OK)
         return NULL;
     w->mesh[s] = p->rotated;
@@ -428,8 +434,11 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     memset(o, 0, sizeof *o);
     noct_pose *p = &w->pose[slot];
     memset(p, 0, sizeof *p);
-    p->shape = def->mesh;
-    memcpy(p->half, def->half_extents, sizeof p->half);
+    o->box = def->mesh == NULL;
+    if (o->box)
+        memcpy(p->shape.half, def->half_extents, sizeof p->shape.half);
+    else
+        p->shape.mesh = def->mesh;
     p->rotated = rotated;
     p->q = def->transform.q;
     place_mesh(w, slot);
@@ -558,13 +567,14 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
         turned = memcmp(R, was, sizeof R) != 0;
     }
     noctMesh *rotated = p->rotated;
-    if (turned && p->shape == NULL && (st = noct_check_box_corners(p->half, R, err)) != NOCT_OK)
+    if (turned && w->obj[s].box &&
+        (st = noct_check_box_corners(p->shape.half, R, err)) != NOCT_OK)
         return st;
-    if (turned && (st = rotate_shape(p->shape, R, &rotated, err)) != NOCT_OK)
+    if (turned && (st = rotate_shape(shape_of(w, s), R, &rotated, err)) != NOCT_OK)
         return st;
     double lo[3], hi[3];
     if (turned) {
-        local_box(p, rotated, R, lo, hi);
+        local_box(w, s, rotated, R, lo, hi);
     } else {
         memcpy(lo, w->obj[s].mlo, sizeof lo);
         memcpy(hi, w->obj[s].mhi, sizeof hi);
@@ -737,15 +747,15 @@ void *noctWorldGetUserData(const noctWorld *w, noctObjectId id)
 const noctMesh *noctWorldGetMesh(const noctWorld *w, noctObjectId id)
 {
     NOCT_REQUIRE(w != NULL);
-    return lookup(w, id) != NULL ? w->pose[id.index].shape : NULL;
+    return lookup(w, id) != NULL ? shape_of(w, id.index) : NULL;
 }
 
 noctStatus noctWorldGetHalfExtents(const noctWorld *w, noctObjectId id, double half[3])
 {
     NOCT_REQUIRE(w != NULL && half != NULL);
-    if (lookup(w, id) == NULL || w->pose[id.index].shape != NULL)
+    if (lookup(w, id) == NULL || !w->obj[id.index].box)
         return NOCT_ERR_INVALID;
-    memcpy(half, w->pose[id.index].half, sizeof w->pose[id.index].half);
+    memcpy(half, w->pose[id.index].shape.half, sizeof w->pose[id.index].shape.half);
     return NOCT_OK;
 }
 
@@ -887,8 +897,7 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
     w->c.seconds_pairs += t3 - t2;
     if (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)) {
         if (w->def.effects & NOCT_EFFECT_RESPONSE)
-            noct_world_respond(&w->events, w->obj, w->bp.mark, &w->bp.epoch, from_began,
-                               &w->c.reversals);
+            noct_world_respond(&w->events, w->obj, &w->bp, from_began, &w->c.reversals);
         w->c.seconds_response += noct_seconds() - t3;
     }
     return NOCT_OK;
@@ -998,14 +1007,14 @@ static noctStatus stage_spin(noctWorld *w, noctError *err)
         const noctQuat q = noctQuatCompose(&sp->w[s], &p->q);
         double R[9];
         noctStatus st = noctQuatToMatrix(&q, R, err);
-        if (st == NOCT_OK && p->shape == NULL)
-            st = noct_check_box_corners(p->half, R, err);
+        if (st == NOCT_OK && w->obj[s].box)
+            st = noct_check_box_corners(p->shape.half, R, err);
         noctMesh *rotated = NULL;
         if (st == NOCT_OK)
-            st = rotate_shape(p->shape, R, &rotated, err);
+            st = rotate_shape(shape_of(w, s), R, &rotated, err);
         if (st == NOCT_OK) {
             double lo[3], hi[3];
-            local_box(p, rotated, R, lo, hi);
+            local_box(w, s, rotated, R, lo, hi);
             st = noct_bp_move_to(&w->bp, s, lo, hi, w->pos[s]);
             if (st != NOCT_OK) {
                 noctMeshDestroy(rotated);
@@ -1248,13 +1257,13 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
         if (!w->obj[i].alive)
             continue;
         const noct_pose *p = &w->pose[i];
-        if (w->mesh[i] != (p->rotated != NULL ? p->rotated : p->shape))
+        if (w->mesh[i] != (p->rotated != NULL ? p->rotated : shape_of(w, i)))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u's placed mesh is not its shape or its rotated copy",
                              i);
         double R[9];
         noctQuatToMatrix(&p->q, R, NULL);
-        if (p->shape != NULL && (p->rotated == NULL) != noct_is_identity(R))
+        if (!w->obj[i].box && (p->rotated == NULL) != noct_is_identity(R))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u has %s rotated copy", i,
                              p->rotated == NULL ? "no" : "a needless");

@@ -63,10 +63,11 @@ noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj)
     return NOCT_OK;
 }
 
-void noct_world_respond(noct_events *e, noct_object *obj, uint64_t *mark, uint64_t *epoch,
-                        size_t from, uint64_t *reversals)
+void noct_world_respond(noct_events *e, noct_object *obj, noctBroadphase *bp, size_t from,
+                        uint64_t *reversals)
 {
-    const uint64_t now = ++*epoch;
+    const uint32_t now = noct_bp_new_epoch(bp);
+    uint32_t *mark = bp->mark;
     for (size_t i = from; i < e->began.n; ++i) {
         const uint32_t ids[2] = {e->began.p[i].a.index, e->began.p[i].b.index};
         for (int s = 0; s < 2; ++s) {

@@ -33,13 +33,17 @@ typedef struct noct_object {
     bool alive;
     bool sensor;           /* reports overlaps in the sensor lists only */
     uint8_t type;          /* noctObjectType */
+    bool box;              /* a box primitive (its pose holds half-extents) */
 } noct_object;
 
 /* What the program set of an object and the step never reads: its
  * shape and its rotation. */
 typedef struct noct_pose {
-    const noctMesh *shape;  /* the mesh it was made with; NULL for a box */
-    double half[3];         /* a box primitive's half-extents */
+    union {
+        const noctMesh *mesh; /* the mesh it was made with ... */
+        double half[3];       /* ... or a box primitive's half-extents
+                                 (noct_object.box says which) */
+    } shape;
     noctMesh *rotated;      /* shape with its vertices rotated by R, owned;
                                NULL when R is the identity; for a box, its
                                mesh once an exact test needed it */
@@ -172,7 +176,7 @@ noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj);
 /* The response: every object in a pair that began (from the from'th on)
  * reverses its direction once (marked with a new epoch in mark: the
  * broadphase's stamps, which every use starts with a new epoch). */
-void noct_world_respond(noct_events *e, noct_object *obj, uint64_t *mark, uint64_t *epoch,
-                        size_t from, uint64_t *reversals);
+void noct_world_respond(noct_events *e, noct_object *obj, noctBroadphase *bp, size_t from,
+                        uint64_t *reversals);
 
 #endif /* NOCT_LIB_WORLD_INTERNAL_H */
