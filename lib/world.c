@@ -221,6 +221,13 @@ static noctStatus check_position(const double p[3], noctError *err)
     return NOCT_OK;
 }
 
+/* The failure of a handle that names no live object. */
+static noctStatus stale(noctObjectId id, noctError *err)
+{
+    return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                     "stale or unknown object handle (%u, %u)", id.index, id.generation);
+}
+
 static bool known_type(noctObjectType t)
 {
     return t == NOCT_OBJECT_STATIC || t == NOCT_OBJECT_KINEMATIC || t == NOCT_OBJECT_MOVING;
@@ -517,9 +524,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     NOCT_REQUIRE(w != NULL);
     noct_object *o = lookup(w, id);
     if (o == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     set_motion(w, id.index, NOCT_OBJECT_STATIC, velocity_of(w, id.index));
     noct_bp_free_slot(&w->bp, id.index); /* cannot fail */
     o->alive = false;
@@ -543,9 +548,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
 {
     NOCT_REQUIRE(w != NULL && x != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     const uint32_t s = id.index;
     noct_pose *p = &w->pose[s];
     /* The same quaternion, bit for bit (a program that only moves the
@@ -611,9 +614,7 @@ noctStatus noctWorldSetVelocity(noctWorld *w, noctObjectId id, const double velo
 {
     NOCT_REQUIRE(w != NULL && velocity != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     noctStatus st = check_velocity(velocity, err);
     if (st != NOCT_OK)
         return st;
@@ -635,9 +636,7 @@ noctStatus noctWorldSetType(noctWorld *w, noctObjectId id, noctObjectType type,
 {
     NOCT_REQUIRE(w != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     if (!known_type(type))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d", (int)type);
     double v[3];
@@ -660,9 +659,7 @@ noctStatus noctWorldSetFilter(noctWorld *w, noctObjectId id, uint64_t category, 
 {
     NOCT_REQUIRE(w != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     if (category == 0)
         return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
                          "an object's category is 0: it could never pair");
@@ -683,9 +680,7 @@ noctStatus noctWorldSetSensor(noctWorld *w, noctObjectId id, bool sensor, noctEr
     NOCT_REQUIRE(w != NULL);
     noct_object *o = lookup(w, id);
     if (o == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     w->nsensors = w->nsensors - o->sensor + sensor;
     o->sensor = sensor;
     return NOCT_OK;
@@ -706,9 +701,7 @@ noctStatus noctWorldSetAngularVelocity(noctWorld *w, noctObjectId id, const noct
 {
     NOCT_REQUIRE(w != NULL && q != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     noctStatus st = check_spin(q, err);
     if (st != NOCT_OK)
         return st;
@@ -731,9 +724,7 @@ noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data,
 {
     NOCT_REQUIRE(w != NULL);
     if (lookup(w, id) == NULL)
-        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
-                         "stale or unknown object handle (%u, %u)", id.index,
-                         id.generation);
+        return stale(id, err);
     w->bp.proxy[id.index].user = user_data;
     return NOCT_OK;
 }
@@ -1121,46 +1112,47 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
 
 /* ---- what the world tells ---------------------------------------------------------- */
 
+/* A pair list for the program: its pairs and their number. */
+static size_t list_of(const noct_pair_list *l, const noctPair **pairs)
+{
+    *pairs = l->p;
+    return l->n;
+}
+
 size_t noctWorldColliding(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.colliding.p;
-    return w->events.colliding.n;
+    return list_of(&w->events.colliding, pairs);
 }
 
 size_t noctWorldSensing(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.sensing.p;
-    return w->events.sensing.n;
+    return list_of(&w->events.sensing, pairs);
 }
 
 size_t noctWorldSensorBegan(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.sensor_began.p;
-    return w->events.sensor_began.n;
+    return list_of(&w->events.sensor_began, pairs);
 }
 
 size_t noctWorldSensorEnded(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.sensor_ended.p;
-    return w->events.sensor_ended.n;
+    return list_of(&w->events.sensor_ended, pairs);
 }
 
 size_t noctWorldBegan(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.began.p;
-    return w->events.began.n;
+    return list_of(&w->events.began, pairs);
 }
 
 size_t noctWorldEnded(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    *pairs = w->events.ended.p;
-    return w->events.ended.n;
+    return list_of(&w->events.ended, pairs);
 }
 
 noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[3],

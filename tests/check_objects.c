@@ -73,6 +73,16 @@ static noctMesh *make_box(double hx, double hy, double hz)
     return m;
 }
 
+/* A world with the default parameters but these effects. */
+static noctWorld *world_with(unsigned effects)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = effects;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    return w;
+}
+
 /* ---- rotations ------------------------------------------------------------------ */
 
 static void mat_vec(const double R[9], const double v[3], double out[3])
@@ -256,10 +266,7 @@ START_TEST(quarter_turns_are_exact)
             ck_assert_msg(got == want, "case %zu, rotation %d: %d, unrotated %d", c, r, got,
                           want);
             /* and in a world */
-            noctWorldDef wd = noctDefaultWorldDef();
-            wd.effects = NOCT_EFFECT_EVENTS;
-            noctWorld *w;
-            ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+            noctWorld *w = world_with(NOCT_EFFECT_EVENTS);
             /* the boxes as box primitives in every other rotation */
             static const double HALF[3][3] = {{0.5, 0.5, 0.5}, {0, 0, 0}, {0.75, 0.5, 0.0625}};
             noctObjectDef d = noctDefaultObjectDef();
@@ -566,6 +573,42 @@ static void drive(noctWorld *w, model *m)
             add_random(w, m, i);
 }
 
+/* How many pairs the last check_events() found ended. */
+static int last_ended;
+
+typedef size_t list_fcn(const noctWorld *, const noctPair **);
+
+/* The world's began and ended lists (from began_fn, ended_fn) against the
+ * differences between the brute force's pairs now and before; the began
+ * ones into began_out (if not NULL), their number into *nb. */
+static void check_events(const noctWorld *w, const char *what, list_fcn *began_fn,
+                         list_fcn *ended_fn, const noctPair *now, int n,
+                         const noctPair *before, int nbefore, int step, noctPair *began_out,
+                         int *nb)
+{
+    static noctPair began[MAXO * MAXO / 2], ended[MAXO * MAXO / 2];
+    int b = 0, e = 0;
+    for (int i = 0; i < n; ++i)
+        if (!has_pair(before, nbefore, now[i]))
+            began[b++] = now[i];
+    for (int i = 0; i < nbefore; ++i)
+        if (!has_pair(now, n, before[i]))
+            ended[e++] = before[i];
+    char name[32];
+    const noctPair *p;
+    snprintf(name, sizeof name, "%s began", what);
+    size_t np = began_fn(w, &p);
+    lists_equal(name, p, np, began, b, step);
+    snprintf(name, sizeof name, "%s ended", what);
+    np = ended_fn(w, &p);
+    lists_equal(name, p, np, ended, e, step);
+    if (began_out != NULL)
+        memcpy(began_out, began, (size_t)b * sizeof *began);
+    if (nb != NULL)
+        *nb = b;
+    last_ended = e;
+}
+
 START_TEST(rotated_scenes_against_brute_force)
 {
     /* _i: 0 motion, events and response; 1 detection only (events, no
@@ -626,36 +669,17 @@ START_TEST(rotated_scenes_against_brute_force)
         lists_equal("colliding", p, np, now, n, step);
         np = noctWorldSensing(w, &p);
         lists_equal("sensing", p, np, sensing, ns, step);
-        {
-            static noctPair sb[MAXO * MAXO / 2], se[MAXO * MAXO / 2];
-            int nsb = 0, nse = 0;
-            for (int i = 0; i < ns; ++i)
-                if (!has_pair(m.sense, m.nsense, sensing[i]))
-                    sb[nsb++] = sensing[i];
-            for (int i = 0; i < m.nsense; ++i)
-                if (!has_pair(sensing, ns, m.sense[i]))
-                    se[nse++] = m.sense[i];
-            np = noctWorldSensorBegan(w, &p);
-            lists_equal("sensor began", p, np, sb, nsb, step);
-            np = noctWorldSensorEnded(w, &p);
-            lists_equal("sensor ended", p, np, se, nse, step);
-            memcpy(m.sense, sensing, (size_t)ns * sizeof *sensing);
-            m.nsense = ns;
-            total_sensed += ns;
-        }
+        total_sensed += ns;
+        check_events(w, "sensor", noctWorldSensorBegan, noctWorldSensorEnded, sensing, ns,
+                     m.sense, m.nsense, step, NULL, NULL);
+        memcpy(m.sense, sensing, (size_t)ns * sizeof *sensing);
+        m.nsense = ns;
         /* events: the brute force's differences */
-        static noctPair began[MAXO * MAXO / 2], ended[MAXO * MAXO / 2];
-        int nb = 0, ne = 0;
-        for (int i = 0; i < n; ++i)
-            if (!has_pair(m.pairs, m.npairs, now[i]))
-                began[nb++] = now[i];
-        for (int i = 0; i < m.npairs; ++i)
-            if (!has_pair(now, n, m.pairs[i]))
-                ended[ne++] = m.pairs[i];
-        np = noctWorldBegan(w, &p);
-        lists_equal("began", p, np, began, nb, step);
-        np = noctWorldEnded(w, &p);
-        lists_equal("ended", p, np, ended, ne, step);
+        static noctPair began[MAXO * MAXO / 2];
+        int nb;
+        check_events(w, "contact", noctWorldBegan, noctWorldEnded, now, n, m.pairs, m.npairs,
+                     step, began, &nb);
+        const int ne = last_ended;
         total_pairs += n;
         total_began += nb;
         total_ended += ne;
@@ -731,10 +755,7 @@ static size_t ended_n(noctWorld *w)
 START_TEST(events_follow_changes)
 {
     noctMesh *cube = make_box(0.5, 0.5, 0.5);
-    noctWorldDef wd = noctDefaultWorldDef();
-    wd.effects = NOCT_EFFECT_EVENTS;
-    noctWorld *w;
-    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctWorld *w = world_with(NOCT_EFFECT_EVENTS);
     noctObjectDef d = noctDefaultObjectDef();
     d.mesh = cube;
     d.type = NOCT_OBJECT_KINEMATIC;
@@ -812,10 +833,7 @@ START_TEST(teleports_within_a_leaf)
 {
     noctMesh *cube = make_box(0.5, 0.5, 0.5);
     for (int turn = 0; turn < 2; ++turn) {
-        noctWorldDef wd = noctDefaultWorldDef();
-        wd.effects = NOCT_EFFECT_EVENTS;
-        noctWorld *w;
-        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctWorld *w = world_with(NOCT_EFFECT_EVENTS);
         noctObjectDef d = noctDefaultObjectDef();
         d.mesh = cube;
         d.type = NOCT_OBJECT_KINEMATIC;
@@ -894,10 +912,7 @@ END_TEST
 START_TEST(spin_quarter_turns)
 {
     noctMesh *ell = make_ell();
-    noctWorldDef wd = noctDefaultWorldDef();
-    wd.effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN;
-    noctWorld *w;
-    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctWorld *w = world_with(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN);
     const double z[3] = {0, 0, 1};
     noctObjectDef d = noctDefaultObjectDef();
     d.half_extents[0] = 1;
@@ -1129,10 +1144,7 @@ START_TEST(box_corners_beyond_the_limit)
 {
     const double zaxis[3] = {0, 0, 1};
     for (int turn = 0; turn < 2; ++turn) {
-        noctWorldDef wd = noctDefaultWorldDef();
-        wd.effects = NOCT_EFFECT_EVENTS;
-        noctWorld *w;
-        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctWorld *w = world_with(NOCT_EFFECT_EVENTS);
         noctObjectDef d = noctDefaultObjectDef();
         d.type = NOCT_OBJECT_STATIC;
         /* turn 0: half-extents 1.5e100, corners at 1.5e100; turn 1:
@@ -1171,10 +1183,7 @@ END_TEST
 START_TEST(velocity_bit_for_bit)
 {
     noctMesh *cube = make_box(0.5, 0.5, 0.5);
-    noctWorldDef wd = noctDefaultWorldDef();
-    wd.effects = NOCT_EFFECT_MOTION;
-    noctWorld *w;
-    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctWorld *w = world_with(NOCT_EFFECT_MOTION);
     noctObjectDef d = noctDefaultObjectDef();
     d.mesh = cube;
     const double v[3] = {0.1, -1.0 / 3, 1e-7};
