@@ -91,23 +91,25 @@ typedef struct noct_proxy {
      * [fl(mlo + p), fl(mhi + p)]. The world's proxies keep their mesh's
      * box here and move by position; the public API's have position 0. */
     double mlo[3], mhi[3];
-    noct_aabb old;        /* the placed box before the last move */
-    noct_span *spans;     /* leaves it is in */
-    uint32_t nspans, capspans;
+    /* Next to them, what a move reads and writes, so that a move the
+     * fast test settles touches the proxy at one place. */
+    double travel;        /* how far its box moved since the last pair
+                             search, on an axis (public moves, teleports) */
+    /* The search that travel counts from, its low 32 bits: after 2^32
+     * searches a stale count may be taken for this one's, which only
+     * makes the search's reach larger (safe), never smaller. */
+    uint32_t travel_epoch;
     bool alive;
     bool entering;        /* maintenance: needs the enter phase */
     bool boxed;           /* a public proxy: home holds its block in box
                              space (noct_bp_block_of), of cells of size
                              block, while it is finite */
-    /* The search that travel counts from, its low 32 bits: after 2^32
-     * searches a stale count may be taken for this one's, which only
-     * makes the search's reach larger (safe), never smaller. */
-    uint32_t travel_epoch;
+    noct_aabb old;        /* the placed box before the last move */
+    noct_span *spans;     /* leaves it is in */
+    uint32_t nspans, capspans;
     double block;
     uint64_t category, mask;
     void *user;
-    double travel;        /* how far its box moved since the last pair
-                             search, on an axis (public moves, teleports) */
 } noct_proxy;
 
 /* A list of pairs of proxies. */
@@ -416,17 +418,20 @@ noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], cons
 noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo[3],
                            const double mhi[3], const double pos[3]);
 
-/* A world object's move to position pos with its local box unchanged,
- * when the fast test settles it (pos inside its home: its leaves stay
- * the same): the box placed, the travel counted; false, with nothing
- * changed, when the move needs noct_bp_move_to(). */
-static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const double pos[3])
+/* A world object's move to position pos with its local box, mlo and mhi
+ * (the proxy's own, which the caller has at hand), unchanged, when the
+ * fast test settles it (pos inside its home, which is in position space
+ * for world objects only: its leaves stay the same): the box placed, the
+ * travel counted; false, with nothing changed, when the move needs
+ * noct_bp_move_to(). */
+static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const double mlo[3],
+                                     const double mhi[3], const double pos[3])
 {
     noct_proxy *o = &bp->proxy[s];
-    if (o->boxed || bp->root == NULL || !noct_inside_home(pos, &bp->home[s]))
+    if (bp->root == NULL || !noct_inside_home(pos, &bp->home[s]))
         return false; /* (no home: lo is +inf, and no position is inside) */
     noct_aabb nb;
-    noct_place_box(o->mlo, o->mhi, pos, &nb);
+    noct_place_box(mlo, mhi, pos, &nb);
     const noct_aabb *old = &bp->box[s];
     double d = 0;
     for (int k = 0; k < 3; ++k)

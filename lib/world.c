@@ -126,6 +126,8 @@ void noctWorldDestroy(noctWorld *w)
     free(w);
 }
 
+_Static_assert(sizeof(noct_pose) == 64, "a pose is one cache line");
+
 static noct_object *lookup(const noctWorld *w, noctObjectId id)
 {
     if (id.index >= w->bp.nslots || !w->obj[id.index].alive ||
@@ -151,11 +153,17 @@ static bool reserve_slots(noctWorld *w)
     GROW(obj);
     GROW(pos);
     GROW(mesh);
-    GROW(pose);
     if (w->spin.w != NULL)
         GROW(spin.w);
 #undef GROW
-    /* aligned, so not realloc */
+    /* aligned, so not realloc: a pose is one cache line */
+    noct_pose *poses = aligned_alloc(64, cap * sizeof *poses);
+    if (poses == NULL)
+        return false;
+    if (w->capslots > 0)
+        memcpy(poses, w->pose, w->capslots * sizeof *poses);
+    free(w->pose);
+    w->pose = poses;
     noct_box_slot *slots = aligned_alloc(64, cap * sizeof *slots);
     if (slots == NULL)
         return false;
@@ -558,7 +566,8 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     noctStatus st = same ? check_position(x->p, err) : noctTransformCheck(x, err);
     if (st != NOCT_OK)
         return st;
-    if (same && !w->bp.tree_owed && noct_bp_move_fast(&w->bp, s, x->p)) {
+    if (same && !w->bp.tree_owed &&
+        noct_bp_move_fast(&w->bp, s, w->obj[s].mlo, w->obj[s].mhi, x->p)) {
         memcpy(w->pos[s], x->p, sizeof w->pos[s]);
         return NOCT_OK;
     }
