@@ -55,14 +55,8 @@ void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
         p->cls[k].free = q;
         p->cls[k].cap = c;
     }
-    if (p->nslabs == p->capslabs) {
-        const size_t c = p->capslabs ? 2 * p->capslabs : 16;
-        void **q = realloc(p->slabs, c * sizeof *q);
-        if (q == NULL)
-            return NULL;
-        p->slabs = q;
-        p->capslabs = c;
-    }
+    if (!noct_grow_array((void **)&p->slabs, &p->capslabs, p->nslabs + 1, sizeof *p->slabs))
+        return NULL;
     const size_t bytes = (size_t)*cap * p->elem;
     char *slab = malloc(more * bytes);
     if (slab == NULL)

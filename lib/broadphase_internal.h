@@ -142,7 +142,7 @@ typedef struct noct_apool {
         size_t n, cap, made;
     } cls[NOCT_APOOL_CLASSES];
     void **slabs;          /* the arrays are made several to a slab */
-    size_t nslabs, capslabs;
+    uint32_t nslabs, capslabs;
 } noct_apool;
 
 /* An array of at least need elements, its capacity into *cap; NULL

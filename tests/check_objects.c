@@ -232,6 +232,23 @@ static const double *hard_rotation(int r, double R[9], noctQuat *q)
     return R;
 }
 
+/* Add hard-case shape k (HARD's numbering) at x to a world: its mesh, or,
+ * for the boxes when primitive, a box primitive of the same corners. */
+static void add_hard_object(noctWorld *w, noctMesh *const mesh[3], int k, bool primitive,
+                            const noctTransform *x)
+{
+    static const double HALF[3][3] = {{0.5, 0.5, 0.5}, {0, 0, 0}, {0.75, 0.5, 0.0625}};
+    noctObjectDef d = noctDefaultObjectDef();
+    d.mesh = mesh[k];
+    if (primitive && k != 1) {
+        d.mesh = NULL;
+        memcpy(d.half_extents, HALF[k], sizeof d.half_extents);
+    }
+    d.transform = *x;
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, NULL), NOCT_OK);
+}
+
 START_TEST(quarter_turns_are_exact)
 {
     noctMesh *mesh[3] = {make_box(0.5, 0.5, 0.5), make_ell(), make_box(0.75, 0.5, 0.0625)};
@@ -268,24 +285,8 @@ START_TEST(quarter_turns_are_exact)
             /* and in a world */
             noctWorld *w = world_with(NOCT_EFFECT_EVENTS);
             /* the boxes as box primitives in every other rotation */
-            static const double HALF[3][3] = {{0.5, 0.5, 0.5}, {0, 0, 0}, {0.75, 0.5, 0.0625}};
-            noctObjectDef d = noctDefaultObjectDef();
-            noctObjectId ia, ib;
-            d.mesh = mesh[h->a];
-            if (r % 2 && h->a != 1) {
-                d.mesh = NULL;
-                memcpy(d.half_extents, HALF[h->a], sizeof d.half_extents);
-            }
-            d.transform = xa;
-            ck_assert_int_eq(noctWorldCreateObject(w, &d, &ia, NULL), NOCT_OK);
-            d = noctDefaultObjectDef();
-            d.mesh = mesh[h->b];
-            if (r % 2 && h->b != 1) {
-                d.mesh = NULL;
-                memcpy(d.half_extents, HALF[h->b], sizeof d.half_extents);
-            }
-            d.transform = xb;
-            ck_assert_int_eq(noctWorldCreateObject(w, &d, &ib, NULL), NOCT_OK);
+            add_hard_object(w, mesh, h->a, r % 2 != 0, &xa);
+            add_hard_object(w, mesh, h->b, r % 2 != 0, &xb);
             ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
             const noctPair *p;
             ck_assert_msg(noctWorldColliding(w, &p) == (size_t)want,
