@@ -418,20 +418,19 @@ noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], cons
 noctStatus noct_bp_move_to(noctBroadphase *bp, uint32_t s, const double mlo[3],
                            const double mhi[3], const double pos[3]);
 
-/* A world object's move to position pos with its local box, mlo and mhi
- * (the proxy's own, which the caller has at hand), unchanged, when the
- * fast test settles it (pos inside its home, which is in position space
- * for world objects only: its leaves stay the same): the box placed, the
- * travel counted; false, with nothing changed, when the move needs
- * noct_bp_move_to(). */
-static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const double mlo[3],
-                                     const double mhi[3], const double pos[3])
+/* A world object's move to position pos with its local box unchanged,
+ * when the fast test settles it (pos inside its home, which is in
+ * position space for world objects only: its leaves stay the same): the
+ * box placed, the travel counted; false, with nothing changed, when the
+ * move needs noct_bp_move_to(). It reads the proxy's first line (its
+ * local box and travel) and its home and box, nothing else. */
+static inline bool noct_bp_move_fast(noctBroadphase *bp, uint32_t s, const double pos[3])
 {
     noct_proxy *o = &bp->proxy[s];
     if (bp->root == NULL || !noct_inside_home(pos, &bp->home[s]))
         return false; /* (no home: lo is +inf, and no position is inside) */
     noct_aabb nb;
-    noct_place_box(mlo, mhi, pos, &nb);
+    noct_place_box(o->mlo, o->mhi, pos, &nb);
     const noct_aabb *old = &bp->box[s];
     double d = 0;
     for (int k = 0; k < 3; ++k)

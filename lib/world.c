@@ -555,9 +555,11 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
                                  noctError *err)
 {
     NOCT_REQUIRE(w != NULL && x != NULL);
-    if (lookup(w, id) == NULL)
-        return stale(id, err);
+    /* lookup() through the proxy, whose line the fast test reads anyway
+     * (a world object is alive when its proxy is: noctWorldValidate()) */
     const uint32_t s = id.index;
+    if (s >= w->bp.nslots || !w->bp.proxy[s].alive || w->bp.gen[s] != id.generation)
+        return stale(id, err);
     noct_pose *p = &w->pose[s];
     /* The same quaternion, bit for bit (a program that only moves the
      * object): it was checked when it was set, the object keeps its
@@ -567,7 +569,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     if (st != NOCT_OK)
         return st;
     if (same && !w->bp.tree_owed &&
-        noct_bp_move_fast(&w->bp, s, w->obj[s].mlo, w->obj[s].mhi, x->p)) {
+        noct_bp_move_fast(&w->bp, s, x->p)) {
         memcpy(w->pos[s], x->p, sizeof w->pos[s]);
         return NOCT_OK;
     }
