@@ -15,6 +15,7 @@
 #include <noctree/narrowphase.h>
 #include <noctree/broadphase.h>
 #include <noctree/world.h>
+#include <noctree/query.h>
 #include <noctree/scene.h>
 
 #endif /* NOCTREE_H */

@@ -26,7 +26,8 @@ noctree_sources = \
 	lib/world_events.c \
 	lib/world_internal.h \
 	lib/world_motion.c \
-	lib/world_narrow.c
+	lib/world_narrow.c \
+	lib/world_query.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
 
@@ -63,6 +64,7 @@ noctreeinclude_HEADERS = \
 	include/noctree/neighbor.h \
 	include/noctree/octree.h \
 	include/noctree/octree_inline.h \
+	include/noctree/query.h \
 	include/noctree/scene.h \
 	include/noctree/status.h \
 	include/noctree/transform.h \

@@ -917,6 +917,34 @@ noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **
     return noctMeshCreate(v, 8, sizes, 12, BOX_TRIANGLES, mesh, err);
 }
 
+void noct_box_view(const double v[24], noctMesh *view, bvh_node *leaf)
+{
+    static const uint32_t HULL[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+    memset(view, 0, sizeof *view);
+    memset(leaf, 0, sizeof *leaf);
+    view->nv = 8;
+    view->v = (double *)v;                /* read only, as the view's contract */
+    view->nt = 12;
+    view->tri = (uint32_t *)BOX_TRIANGLES; /* the same */
+    view->nhull = 8;
+    view->hull = (uint32_t *)HULL;
+    for (int k = 0; k < 3; ++k) {
+        view->lo[k] = view->hi[k] = v[k];
+        double sum = 0;
+        for (int i = 0; i < 8; ++i) {
+            view->lo[k] = noct_min(view->lo[k], v[3 * i + k]);
+            view->hi[k] = noct_max(view->hi[k], v[3 * i + k]);
+            sum += v[3 * i + k];
+        }
+        view->centre[k] = sum / 8;
+        leaf->lo[k] = view->lo[k];
+        leaf->hi[k] = view->hi[k];
+    }
+    leaf->count = 12;
+    view->nnodes = 1;
+    view->nodes = leaf;
+}
+
 noctStatus noct_check_box_corners(const double half[3], const double R[9], noctError *err)
 {
     double v[24];

@@ -151,6 +151,24 @@ noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const
                                     const double tb[3], noctAccuracy accuracy,
                                     bool *colliding, noctNarrowStats *stats);
 
+/* ---- the world's queries (narrowphase.c) ---- */
+
+/* Does the closed solid of m placed at t contain point p? Decided exactly
+ * (on its boundary counts); NUMERIC only if 64 tries of the containment
+ * count were all ambiguous. */
+noctStatus noct_point_in_solid(const noctMesh *m, const double t[3], const double p[3],
+                               bool *inside);
+
+/* Does the closed segment pq meet the closed solid of m placed at t?
+ * Decided exactly. When it does, *fraction is where along pq it first
+ * does, in floating point in [0, 1]: 0 when p is in the solid (then
+ * *triangle is UINT32_MAX and normal is 0), else where it enters
+ * *triangle (the least fraction, ties to the lowest triangle), whose
+ * unit outward normal, in floating point, is normal. */
+noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
+                            const double q[3], bool *hit, double *fraction,
+                            uint32_t *triangle, double normal[3]);
+
 /* ---- box primitives (mesh.c) ---- */
 
 /* The corners fl(R v) of the box with these half-extents (bit 2 of the
@@ -166,6 +184,15 @@ void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot
 /* The mesh of that box: its corners and 12 triangles. */
 noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
                             noctError *err);
+
+/* A read-only view of the solid with these box corners (as
+ * noct_box_corners() gives them; degenerate boxes too) as a mesh: its 12
+ * triangles, outward, in the order noct_mesh_of_box() gives them to
+ * noctMeshCreate(), one BVH leaf (*leaf), the corners as its hull, no box
+ * form and no filter; it lives as long as v and leaf. For the exact and
+ * convex levels and the queries, which read nothing else; never
+ * noctMeshDestroy() it. */
+void noct_box_view(const double v[24], noctMesh *view, bvh_node *leaf);
 
 /* Are the corners of that box turned by R within the coordinate limit
  * (as noctMeshCreate() requires of vertices)? TOO_LARGE if not. */

@@ -916,6 +916,170 @@ noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
     return exact_collide(&A, &B, true, colliding, stats);
 }
 
+/* ---- the world's queries (world_query.c) ------------------------------------ */
+
+/* Is p on a triangle of B (closed)? Through the BVH, on the nodes' placed
+ * boxes, which hold their placed triangles exactly. */
+static bool on_boundary(const placed *B, const double p[3], const exact_ctx *x)
+{
+    const noctMesh *m = B->m;
+    uint32_t stack[64];
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const bvh_node *n = &m->nodes[stack[--top]];
+        if (!boxes_overlap(n->lo, n->hi, B->t, p, p, (const double[3]){0, 0, 0}))
+            continue;
+        if (n->count == 0) {
+            if (top + 2 > sizeof stack / sizeof *stack)
+                return true; /* unreachable: BVHs are far shallower */
+            stack[top++] = n->first;
+            stack[top++] = n->first + 1;
+            continue;
+        }
+        for (uint32_t i = n->first; i < n->first + n->count; ++i) {
+            double a[3], b[3], c[3];
+            place(B, m->tri[3 * i], a);
+            place(B, m->tri[3 * i + 1], b);
+            place(B, m->tri[3 * i + 2], c);
+            if (o3(x, a, b, c, p) == 0 && seg_tri(x, p, p, 0, 0, a, b, c))
+                return true;
+        }
+    }
+    return false;
+}
+
+noctStatus noct_point_in_solid(const noctMesh *m, const double t[3], const double p[3],
+                               bool *inside)
+{
+    const placed B = {m, {t[0], t[1], t[2]}};
+    const exact_ctx x = {NULL};
+    *inside = false;
+    if (!boxes_overlap(m->lo, m->hi, t, p, p, (const double[3]){0, 0, 0}))
+        return NOCT_OK;
+    if (on_boundary(&B, p, &x)) {
+        *inside = true;
+        return NOCT_OK;
+    }
+    return contains(&B, p, &x, inside);
+}
+
+/* Where segment pq, known to meet closed triangle abc and not to start on
+ * it, meets it first: the fraction along pq, in floating point, in
+ * [0, 1]. Crossing its plane: where the plane's function changes sign.
+ * In its plane: the least fraction at which pq meets an edge, in the
+ * projection that keeps the triangle's area. */
+static double entry_fraction(const double p[3], const double q[3], const double a[3],
+                             const double b[3], const double c[3], const double n[3], bool flat)
+{
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+        d[k] = q[k] - p[k];
+    if (!flat) {
+        double fp = 0, fq = 0;
+        for (int k = 0; k < 3; ++k) {
+            fp += n[k] * (p[k] - a[k]);
+            fq += n[k] * (q[k] - a[k]);
+        }
+        const double f = fp != fq ? fp / (fp - fq) : 0;
+        return f > 0 ? (f < 1 ? f : 1) : 0;
+    }
+    int drop = 0;
+    for (int k = 1; k < 3; ++k)
+        if (fabs(n[k]) > fabs(n[drop]))
+            drop = k;
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const double *const v[3] = {a, b, c};
+    double best = 1;
+    for (int e = 0; e < 3; ++e) {
+        const double *u = v[e], *w = v[(e + 1) % 3];
+        const double ex = w[i] - u[i], ey = w[j] - u[j];
+        const double den = d[i] * ey - d[j] * ex;
+        if (den == 0)
+            continue;
+        const double rx = u[i] - p[i], ry = u[j] - p[j];
+        const double s = (rx * ey - ry * ex) / den;  /* along pq */
+        const double r = (rx * d[j] - ry * d[i]) / den; /* along the edge */
+        if (s >= 0 && s < best && r >= -1e-12 && r <= 1 + 1e-12)
+            best = s;
+    }
+    return best;
+}
+
+noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
+                            const double q[3], bool *hit, double *fraction,
+                            uint32_t *triangle, double normal[3])
+{
+    const placed B = {m, {t[0], t[1], t[2]}};
+    const exact_ctx x = {NULL};
+    *hit = false;
+    *triangle = UINT32_MAX;
+    normal[0] = normal[1] = normal[2] = 0;
+    double slo[3], shi[3];
+    for (int k = 0; k < 3; ++k) {
+        slo[k] = noct_min(p[k], q[k]);
+        shi[k] = noct_max(p[k], q[k]);
+    }
+    static const double zero[3] = {0, 0, 0};
+    if (!boxes_overlap(m->lo, m->hi, t, slo, shi, zero))
+        return NOCT_OK;
+    bool inside;
+    noctStatus st = noct_point_in_solid(m, t, p, &inside);
+    if (st != NOCT_OK)
+        return st;
+    if (inside) {
+        *hit = true;
+        *fraction = 0;
+        return NOCT_OK;
+    }
+    uint32_t stack[64];
+    size_t top = 0;
+    stack[top++] = 0;
+    double best = INFINITY;
+    while (top > 0) {
+        const bvh_node *n = &m->nodes[stack[--top]];
+        if (!boxes_overlap(n->lo, n->hi, t, slo, shi, zero))
+            continue;
+        if (n->count == 0) {
+            if (top + 2 > sizeof stack / sizeof *stack)
+                return NOCT_ERR_NUMERIC; /* unreachable: BVHs are far shallower */
+            stack[top++] = n->first;
+            stack[top++] = n->first + 1;
+            continue;
+        }
+        for (uint32_t i = n->first; i < n->first + n->count; ++i) {
+            double a[3], b[3], c[3];
+            place(&B, m->tri[3 * i], a);
+            place(&B, m->tri[3 * i + 1], b);
+            place(&B, m->tri[3 * i + 2], c);
+            const int s1 = o3(&x, a, b, c, p), s2 = o3(&x, a, b, c, q);
+            if (!seg_tri(&x, p, q, s1, s2, a, b, c))
+                continue;
+            double u[3], v[3], nn[3];
+            for (int k = 0; k < 3; ++k) {
+                u[k] = b[k] - a[k];
+                v[k] = c[k] - a[k];
+            }
+            nn[0] = u[1] * v[2] - u[2] * v[1];
+            nn[1] = u[2] * v[0] - u[0] * v[2];
+            nn[2] = u[0] * v[1] - u[1] * v[0];
+            const double f = entry_fraction(p, q, a, b, c, nn, s1 == 0 && s2 == 0);
+            if (f < best || (f == best && i < *triangle)) {
+                best = f;
+                *triangle = i;
+                const double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+                for (int k = 0; k < 3; ++k)
+                    normal[k] = len > 0 ? nn[k] / len : 0;
+            }
+        }
+    }
+    if (*triangle != UINT32_MAX) {
+        *hit = true;
+        *fraction = best;
+    }
+    return NOCT_OK;
+}
+
 noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
                        const double tb[3], noctAccuracy accuracy, bool *colliding,
                        noctNarrowStats *stats)

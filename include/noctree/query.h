@@ -1,0 +1,286 @@
+/* SPDX-License-Identifier: MIT */
+/**
+ * @file noctree/query.h
+ * @brief Questions a program asks a world between steps: which objects
+ * meet a box, contain a point, meet a shape, and where a segment hits.
+ *
+ * @defgroup noctree_query World queries
+ * @brief Box, point, shape and ray queries over a world's objects, exact.
+ *
+ * Each query looks up candidates in the world's octree (the boxes of
+ * noctBroadphaseQueryBox() and noctBroadphaseRayCast()) and decides each
+ * on the object's placed shape, as the world's pair test would (its
+ * placed vertices are fl(fl(R v) + t), transform.h):
+ * - noctWorldQueryPoint(): the objects whose closed solids contain a
+ *   point, decided exactly (a point on a face, an edge or a vertex is
+ *   inside);
+ * - noctWorldQueryBox(): the objects whose placed shapes meet a closed
+ *   axis-aligned box, at the world's accuracy (noctWorldDef::accuracy:
+ *   at the box level, those whose boxes meet it);
+ * - noctWorldQueryShape(): the objects that collide with a shape (a mesh
+ *   or a box primitive) at a transform, exactly, without adding it to the
+ *   world (a planner's "would the arm collide here?");
+ * - noctWorldRayCast() and noctWorldRayCastClosest(): the objects a
+ *   closed segment meets. Whether it meets a solid is decided exactly;
+ *   where (the fraction along it, the point, the normal) is computed in
+ *   floating point. A segment that starts in a solid hits it at fraction
+ *   0, with no triangle and a zero normal.
+ *
+ * **Filters.** Every query takes a noctQueryFilter (broadphase.h): an
+ * object is reported when `(object category & filter.mask) != 0 &&
+ * (filter.category & object mask) != 0`; noctDefaultQueryFilter() lets
+ * every object through. Sensors are objects like the others here.
+ *
+ * **Order.** Overlap queries report objects in order of their index; a
+ * ray cast, in order of fraction, ties in order of index. The results
+ * depend only on the world's objects, never on its history or its tree.
+ *
+ * **Results.** A query calls a function for each object, which may stop
+ * it by returning false. To get an array instead, pass
+ * noctCollectObjects() or noctCollectRayHits() with a buffer as the
+ * context: it holds the first objects up to its capacity and counts them
+ * all.
+ *
+ * **Threads.** Queries only read the world: any number of threads may
+ * query one world at once while no thread changes or steps it. A query
+ * may allocate (scratch for its candidates, a rotated copy of a query
+ * mesh); it frees it before it returns.
+ *
+ * **Limits.** Query boxes, points and segments must be finite and within
+ * #NOCT_MAX_COORDINATE of the origin (#NOCT_ERR_NONFINITE,
+ * #NOCT_ERR_TOO_LARGE); nothing is called then.
+ * @{
+ */
+#ifndef NOCTREE_QUERY_H
+#define NOCTREE_QUERY_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/broadphase.h>
+#include <noctree/export.h>
+#include <noctree/mesh.h>
+#include <noctree/status.h>
+#include <noctree/transform.h>
+#include <noctree/world.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/**
+ * @brief A function called for an object a query found.
+ * @param context the query's context.
+ * @param id the object.
+ * @param user_data the object's user data.
+ * @return false to stop the query.
+ */
+typedef bool noctObjectFcn(void *context, noctObjectId id, void *user_data);
+
+/** @brief noctRayHit::triangle's corners when the segment starts in the
+ *  solid. */
+#define NOCT_NO_VERTEX UINT32_MAX
+
+/** @brief Where a segment meets an object. */
+typedef struct noctRayHit {
+    noctObjectId id;    /**< The object. */
+    void *user_data;    /**< Its user data. */
+    double fraction;    /**< Where along the segment it first meets the
+                             object's solid, in [0, 1]: 0 when it starts
+                             inside. */
+    double point[3];    /**< origin + fraction * translation. */
+    double normal[3];   /**< The unit outward normal of the triangle it
+                             enters through; 0 when it starts inside. */
+    uint32_t triangle[3]; /**< That triangle's corners, counter-clockwise
+                             seen from outside: for a mesh shape, indices
+                             of its vertices as given to noctMeshCreate()
+                             (or read from its file); for a box primitive,
+                             its corner numbers, corner k having the +x
+                             half-extent when bit 2 of k is set (else -x),
+                             +y when bit 1 is, +z when bit 0 is. All
+                             #NOCT_NO_VERTEX when it starts inside. */
+} noctRayHit;
+
+/**
+ * @brief A function called for each object a segment meets.
+ * @param context the ray cast's context.
+ * @param hit where the segment meets it (valid during the call).
+ * @return false to stop the ray cast.
+ */
+typedef bool noctRayHitFcn(void *context, const noctRayHit *hit);
+
+/**
+ * @brief Visit the objects whose closed solids contain point p, exactly.
+ * @pre world != NULL && p != NULL && fcn != NULL; fcn does not change the
+ *      world.
+ * @post fcn was called for each object the filter lets through whose
+ *       placed solid contains p (on its boundary counts), in order of
+ *       index, until it returned false; nothing else changed.
+ * @param world the world.
+ * @param p the point.
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_TOO_LARGE for a
+ *         point that is not finite or beyond #NOCT_MAX_COORDINATE (no
+ *         call made); #NOCT_ERR_NOMEM; #NOCT_ERR_NUMERIC if a containment
+ *         count stayed ambiguous (never seen).
+ */
+NOCT_API noctStatus noctWorldQueryPoint(const noctWorld *world, const double p[3],
+                                        noctQueryFilter filter, noctObjectFcn *fcn,
+                                        void *context, noctError *err);
+
+/**
+ * @brief Visit the objects whose placed shapes meet the closed box
+ * [lo, hi], at the world's accuracy.
+ * @pre world != NULL && lo != NULL && hi != NULL && fcn != NULL; fcn does
+ *      not change the world.
+ * @post fcn was called for each object the filter lets through that meets
+ *       the box, in order of index, until it returned false: exactly
+ *       (their closed solids share a point) at the exact level, on the
+ *       convex hulls at the convex level, on the placed boxes at the box
+ *       level. A box may be flat or a point (lo == hi on some axes).
+ * @param world the world.
+ * @param lo the box's low corner.
+ * @param hi the box's high corner.
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE, #NOCT_ERR_TOO_LARGE or
+ *         #NOCT_ERR_INVALID (lo > hi on an axis) with no call made;
+ *         #NOCT_ERR_NOMEM; #NOCT_ERR_NUMERIC.
+ */
+NOCT_API noctStatus noctWorldQueryBox(const noctWorld *world, const double lo[3],
+                                      const double hi[3], noctQueryFilter filter,
+                                      noctObjectFcn *fcn, void *context, noctError *err);
+
+/**
+ * @brief Visit the objects that collide with a shape placed at x,
+ * exactly, as if it were an object of the world.
+ * @pre world != NULL && x != NULL && fcn != NULL && (mesh != NULL ||
+ *      half_extents != NULL); fcn does not change the world.
+ * @post fcn was called for each object the filter lets through whose
+ *       closed solid shares a point with the shape's (mesh, or the box
+ *       primitive of half_extents when mesh is NULL) placed by x as
+ *       noctWorldSetTransform() would place it, in order of index, until
+ *       it returned false. The test is exact whatever the world's
+ *       accuracy.
+ * @param world the world.
+ * @param mesh the shape, or NULL for a box primitive.
+ * @param half_extents the box primitive's half-extents when mesh is NULL
+ *        (as noctObjectDef::half_extents); ignored otherwise.
+ * @param x where the shape is: its rotation, then its translation.
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; what noctWorldCreateObject() returns for a bad
+ *         transform or half-extents (#NOCT_ERR_NONFINITE,
+ *         #NOCT_ERR_INVALID, #NOCT_ERR_TOO_LARGE), with no call made;
+ *         #NOCT_ERR_NOMEM; #NOCT_ERR_NUMERIC.
+ */
+NOCT_API noctStatus noctWorldQueryShape(const noctWorld *world, const noctMesh *mesh,
+                                        const double half_extents[3], const noctTransform *x,
+                                        noctQueryFilter filter, noctObjectFcn *fcn,
+                                        void *context, noctError *err);
+
+/**
+ * @brief Visit the objects the closed segment from origin to
+ * fl(origin + translation) meets, in order along it.
+ * @pre world != NULL && origin != NULL && translation != NULL &&
+ *      fcn != NULL; fcn does not change the world.
+ * @post fcn was called once for each object the filter lets through that
+ *       the segment meets (decided exactly), with where it first meets
+ *       it, in order of fraction, ties in order of index, until it
+ *       returned false. A zero translation is a point: the objects that
+ *       contain it, at fraction 0.
+ * @param world the world.
+ * @param origin where the segment starts.
+ * @param translation the segment, from origin to its end.
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE or #NOCT_ERR_TOO_LARGE (an end
+ *         beyond #NOCT_MAX_COORDINATE) with no call made; #NOCT_ERR_NOMEM;
+ *         #NOCT_ERR_NUMERIC.
+ */
+NOCT_API noctStatus noctWorldRayCast(const noctWorld *world, const double origin[3],
+                                     const double translation[3], noctQueryFilter filter,
+                                     noctRayHitFcn *fcn, void *context, noctError *err);
+
+/**
+ * @brief The first object the closed segment from origin to
+ * fl(origin + translation) meets.
+ * @pre world != NULL && origin != NULL && translation != NULL && hit !=
+ *      NULL && found != NULL
+ * @post *found tells whether the segment meets an object the filter lets
+ *       through; if so, *hit is the first of noctWorldRayCast()'s hits
+ *       (the least fraction, ties to the least index). It visits only the
+ *       objects whose boxes the segment enters before that hit (within
+ *       rounding), so a long ray through a crowd costs little more than
+ *       a short one.
+ * @param world the world.
+ * @param origin where the segment starts.
+ * @param translation the segment, from origin to its end.
+ * @param filter which objects to report.
+ * @param hit receives the first hit.
+ * @param found receives whether there is one.
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldRayCast().
+ */
+NOCT_API noctStatus noctWorldRayCastClosest(const noctWorld *world, const double origin[3],
+                                            const double translation[3],
+                                            noctQueryFilter filter, noctRayHit *hit,
+                                            bool *found, noctError *err);
+
+/** @brief An array for a query's objects: pass noctCollectObjects() as the
+ *  function and a pointer to this as its context. */
+typedef struct noctObjectBuffer {
+    noctObjectId *ids;  /**< Room for capacity handles (NULL if 0). */
+    size_t capacity;    /**< How many ids holds. */
+    size_t count;       /**< Objects found: set it to 0 first; when more
+                             than capacity, only the first capacity are in
+                             ids (query again with a larger array). */
+} noctObjectBuffer;
+
+/**
+ * @brief A #noctObjectFcn that appends to a noctObjectBuffer.
+ * @pre buffer != NULL, a noctObjectBuffer
+ * @post ++count; id stored at ids[count - 1] if that is within capacity.
+ * @param buffer the noctObjectBuffer.
+ * @param id the object.
+ * @param user_data ignored.
+ * @return true: the query goes on.
+ */
+NOCT_API bool noctCollectObjects(void *buffer, noctObjectId id, void *user_data);
+
+/** @brief An array for a ray cast's hits: pass noctCollectRayHits() as the
+ *  function and a pointer to this as its context. */
+typedef struct noctRayHitBuffer {
+    noctRayHit *hits;   /**< Room for capacity hits (NULL if 0). */
+    size_t capacity;    /**< How many hits holds. */
+    size_t count;       /**< Hits found: set it to 0 first; as
+                             noctObjectBuffer::count. */
+} noctRayHitBuffer;
+
+/**
+ * @brief A #noctRayHitFcn that appends to a noctRayHitBuffer.
+ * @pre buffer != NULL, a noctRayHitBuffer; hit != NULL
+ * @post ++count; *hit stored at hits[count - 1] if within capacity.
+ * @param buffer the noctRayHitBuffer.
+ * @param hit the hit.
+ * @return true: the ray cast goes on.
+ */
+NOCT_API bool noctCollectRayHits(void *buffer, const noctRayHit *hit);
+
+#ifdef __cplusplus
+}
+#endif
+
+/** @} */
+
+#endif /* NOCTREE_QUERY_H */

@@ -1,0 +1,994 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The world's queries (query.h) against a brute force of the test's own:
+ * - random rotated scenes of box primitives, box meshes and non-convex L
+ *   meshes with filters: every point, box, shape and ray query against
+ *   the ideal geometry (the rotated boxes the shapes are made of, in long
+ *   double), skipping what lies within a margin of a boundary, where the
+ *   rounding of the placed vertices decides; and the box and shape
+ *   queries against the public narrowphase on every object;
+ * - axis-aligned dyadic boxes, where everything is exact: points on
+ *   faces, edges and corners, rays along faces and through edges and
+ *   corners, zero-length segments, against interval arithmetic;
+ * - the same answers from worlds of different N (the tree does not show);
+ * - bad input: a status and no call.
+ */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree.h>
+
+#include "testutil.h"
+
+static uint64_t rng = 0x51ed2701u;
+
+static double uniform(void)
+{
+    return (double)(test_rand(&rng) >> 11) * 0x1p-53;
+}
+
+/* ---- the scenes' ideal geometry ---------------------------------------------- */
+
+/* An object is a union of at most two boxes of its own frame (centre c,
+ * half-extents h), rotated by R (the quaternion's matrix, in long double)
+ * and translated by t. */
+typedef struct piece {
+    long double c[3], h[3];
+} piece;
+
+typedef struct ideal {
+    int npieces;
+    piece pc[2];
+    long double R[9]; /* rows: world = R local + t */
+    long double t[3];
+} ideal;
+
+#define MAXO 48
+#define MARGIN 1e-9L
+
+typedef struct scene {
+    noctWorld *w;
+    int n;
+    noctObjectId id[MAXO];
+    ideal g[MAXO];
+    int kind[MAXO];           /* 0: box primitive, 1: box mesh, 2: L mesh */
+    noctMesh *mesh[MAXO];     /* the object's mesh (kinds 1 and 2); the
+                                 test's mesh of a box primitive (kind 0) */
+    noctTransform x[MAXO];
+    uint64_t cat[MAXO], mask[MAXO];
+} scene;
+
+static void quat_matrix(const noctQuat *q, long double R[9])
+{
+    const long double x = q->x, y = q->y, z = q->z, w = q->w;
+    const long double n = sqrtl(x * x + y * y + z * z + w * w);
+    const long double a = x / n, b = y / n, c = z / n, d = w / n;
+    R[0] = 1 - 2 * (b * b + c * c);
+    R[1] = 2 * (a * b - c * d);
+    R[2] = 2 * (a * c + b * d);
+    R[3] = 2 * (a * b + c * d);
+    R[4] = 1 - 2 * (a * a + c * c);
+    R[5] = 2 * (b * c - a * d);
+    R[6] = 2 * (a * c - b * d);
+    R[7] = 2 * (b * c + a * d);
+    R[8] = 1 - 2 * (a * a + b * b);
+}
+
+static void random_quat(noctQuat *q)
+{
+    double c[4], l;
+    do {
+        l = 0;
+        for (int k = 0; k < 4; ++k) {
+            c[k] = 2 * uniform() - 1;
+            l += c[k] * c[k];
+        }
+    } while (l < 0.01 || l > 1);
+    l = sqrt(l);
+    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
+}
+
+/* p in the object's frame: R^T (p - t). */
+static void to_local(const ideal *g, const long double p[3], long double out[3])
+{
+    for (int k = 0; k < 3; ++k)
+        out[k] = g->R[k] * (p[0] - g->t[0]) + g->R[3 + k] * (p[1] - g->t[1]) +
+                 g->R[6 + k] * (p[2] - g->t[2]);
+}
+
+static void dir_to_local(const ideal *g, const long double d[3], long double out[3])
+{
+    for (int k = 0; k < 3; ++k)
+        out[k] = g->R[k] * d[0] + g->R[3 + k] * d[1] + g->R[6 + k] * d[2];
+}
+
+/* 1: certainly in the closed solid, 0: certainly out, -1: within the
+ * margin of its boundary. */
+static int ideal_contains(const ideal *g, const double p[3])
+{
+    const long double pl[3] = {p[0], p[1], p[2]};
+    long double l[3];
+    to_local(g, pl, l);
+    int verdict = 0;
+    for (int j = 0; j < g->npieces; ++j) {
+        long double depth = INFINITY;
+        for (int k = 0; k < 3; ++k)
+            depth = fminl(depth, g->pc[j].h[k] - fabsl(l[k] - g->pc[j].c[k]));
+        if (depth > MARGIN)
+            return 1;
+        if (depth >= -MARGIN)
+            verdict = -1;
+    }
+    return verdict;
+}
+
+/* A world box of a piece: its 3 axes (R's columns), centre, half-extents. */
+typedef struct obb {
+    long double c[3], u[3][3], h[3];
+} obb;
+
+static obb piece_box(const ideal *g, int j)
+{
+    obb b;
+    for (int k = 0; k < 3; ++k) {
+        b.c[k] = g->t[k];
+        for (int i = 0; i < 3; ++i)
+            b.c[k] += g->R[3 * k + i] * g->pc[j].c[i];
+        b.h[k] = g->pc[j].h[k];
+        for (int i = 0; i < 3; ++i)
+            b.u[k][i] = g->R[3 * i + k]; /* column k */
+    }
+    return b;
+}
+
+/* Separating-axis test of two boxes: 1 they certainly overlap (by more
+ * than the margin on every axis), 0 certainly apart, -1 within it. */
+static int obb_meet(const obb *a, const obb *b)
+{
+    long double axes[15][3];
+    int n = 0;
+    for (int i = 0; i < 3; ++i) {
+        memcpy(axes[n++], a->u[i], sizeof axes[0]);
+        memcpy(axes[n++], b->u[i], sizeof axes[0]);
+    }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const long double *x = a->u[i], *y = b->u[j];
+            long double c[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                                x[0] * y[1] - x[1] * y[0]};
+            long double l = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+            if (l < 1e-6L)
+                continue; /* parallel edges: the face axes cover it */
+            for (int k = 0; k < 3; ++k)
+                axes[n][k] = c[k] / l;
+            ++n;
+        }
+    long double least = INFINITY;
+    for (int m = 0; m < n; ++m) {
+        const long double *u = axes[m];
+        long double ra = 0, rb = 0, d = 0;
+        for (int i = 0; i < 3; ++i) {
+            ra += a->h[i] * fabsl(a->u[i][0] * u[0] + a->u[i][1] * u[1] + a->u[i][2] * u[2]);
+            rb += b->h[i] * fabsl(b->u[i][0] * u[0] + b->u[i][1] * u[1] + b->u[i][2] * u[2]);
+        }
+        for (int k = 0; k < 3; ++k)
+            d += (b->c[k] - a->c[k]) * u[k];
+        least = fminl(least, ra + rb - fabsl(d));
+    }
+    return least > MARGIN ? 1 : least < -MARGIN ? 0 : -1;
+}
+
+static int union_meet(const ideal *a, const ideal *b)
+{
+    int verdict = 0;
+    for (int i = 0; i < a->npieces; ++i)
+        for (int j = 0; j < b->npieces; ++j) {
+            obb x = piece_box(a, i), y = piece_box(b, j);
+            int v = obb_meet(&x, &y);
+            if (v == 1)
+                return 1;
+            if (v < 0)
+                verdict = -1;
+        }
+    return verdict;
+}
+
+/* The segment p + s d, s in [0, 1], against the object: -1 within the
+ * margin, else whether it meets the solid and, if so, the least s and
+ * the world normal of the face it enters (0 when it starts inside);
+ * *sharp: that face is certain (the entry is not near an edge). */
+static int ideal_ray(const ideal *g, const double p[3], const double d[3], long double *s,
+                     long double normal[3], bool *sharp)
+{
+    const long double pw[3] = {p[0], p[1], p[2]}, dw[3] = {d[0], d[1], d[2]};
+    long double pl[3], dl[3];
+    to_local(g, pw, pl);
+    dir_to_local(g, dw, dl);
+    const long double len = sqrtl(dw[0] * dw[0] + dw[1] * dw[1] + dw[2] * dw[2]);
+    int verdict = 0;
+    long double best = INFINITY;
+    for (int j = 0; j < g->npieces; ++j) {
+        long double lo = 0, hi = 1, second = -INFINITY;
+        int axis = -1, sign = 0;
+        bool uncertain = false;
+        for (int k = 0; k < 3 && hi >= lo; ++k) {
+            const long double a = g->pc[j].c[k] - g->pc[j].h[k] - pl[k];
+            const long double b = g->pc[j].c[k] + g->pc[j].h[k] - pl[k];
+            if (fabsl(dl[k]) < 1e-300L) {
+                if (a > MARGIN || b < -MARGIN) {
+                    hi = -1;
+                } else if (a > -MARGIN || b < MARGIN) {
+                    uncertain = true;
+                }
+                continue;
+            }
+            long double s0 = a / dl[k], s1 = b / dl[k];
+            int sg = -1;
+            if (s0 > s1) {
+                long double tmp = s0;
+                s0 = s1;
+                s1 = tmp;
+                sg = 1;
+            }
+            if (s0 > lo) {
+                second = fmaxl(second, lo);
+                lo = s0;
+                axis = k;
+                sign = sg;
+            } else {
+                second = fmaxl(second, s0);
+            }
+            hi = fminl(hi, s1);
+        }
+        const long double gap = (hi - lo) * len;
+        if (uncertain || fabsl(gap) <= MARGIN || (lo > 0 && lo * len <= MARGIN) ||
+            (hi < 1 && fabsl(1 - lo) * len <= MARGIN)) {
+            verdict = -1;
+            continue;
+        }
+        if (gap < 0)
+            continue;
+        if (lo < best) {
+            best = lo;
+            for (int k = 0; k < 3; ++k)
+                normal[k] = axis < 0 ? 0 : sign * g->R[3 * k + axis];
+            *sharp = axis < 0 || (lo - second) * len > 1e-6L;
+        }
+    }
+    if (verdict < 0)
+        return -1;
+    if (isinf(best))
+        return 0;
+    *s = best;
+    return 1;
+}
+
+/* ---- building scenes --------------------------------------------------------------- */
+
+static noctMesh *make_ell(void)
+{
+    static const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+    double v[36];
+    for (int i = 0; i < 12; ++i) {
+        v[3 * i] = P[i % 6][0] - 1;
+        v[3 * i + 1] = P[i % 6][1] - 1;
+        v[3 * i + 2] = i < 6 ? -0.5 : 0.5;
+    }
+    uint32_t sizes[10], idx[40];
+    size_t n = 0, k = 0;
+    const uint32_t faces[4][4] = {{6, 7, 8, 9}, {6, 9, 10, 11}, {0, 3, 2, 1}, {0, 5, 4, 3}};
+    for (int f = 0; f < 4; ++f) {
+        sizes[n++] = 4;
+        for (int c = 0; c < 4; ++c)
+            idx[k++] = faces[f][c];
+    }
+    for (uint32_t i = 0; i < 6; ++i) {
+        const uint32_t j = (i + 1) % 6;
+        sizes[n++] = 4;
+        idx[k++] = i;
+        idx[k++] = j;
+        idx[k++] = j + 6;
+        idx[k++] = i + 6;
+    }
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 12, sizes, n, idx, &m, NULL), NOCT_OK);
+    return m;
+}
+
+static noctWorld *new_world(int N, noctAccuracy accuracy)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS;
+    wd.N = N;
+    wd.accuracy = accuracy;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    return w;
+}
+
+static uint64_t random_bits(void)
+{
+    return uniform() < 0.6 ? NOCT_FILTER_ALL : (uint64_t)1 << (int)(3 * uniform());
+}
+
+/* n random objects in [0, 6]^3 (the same for the same seed). */
+static void random_scene(scene *s, int n, int N, noctAccuracy accuracy, noctMesh *ell)
+{
+    memset(s, 0, sizeof *s);
+    s->w = new_world(N, accuracy);
+    s->n = n;
+    for (int i = 0; i < n; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        ideal *g = &s->g[i];
+        s->kind[i] = (int)(3 * uniform());
+        double h[3];
+        for (int k = 0; k < 3; ++k)
+            h[k] = 0.15 + 0.6 * uniform();
+        for (int k = 0; k < 3; ++k)
+            d.transform.p[k] = 6 * uniform();
+        if (uniform() < 0.15)
+            d.transform.q = (noctQuat){0, 0, 0, 1};
+        else
+            random_quat(&d.transform.q);
+        if (s->kind[i] == 2) {
+            d.mesh = ell;
+            g->npieces = 2;
+            g->pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
+            g->pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
+        } else {
+            ck_assert_int_eq(noctMeshCreateBox(h[0], h[1], h[2], &s->mesh[i], NULL), NOCT_OK);
+            if (s->kind[i] == 0)
+                memcpy(d.half_extents, h, sizeof h);
+            else
+                d.mesh = s->mesh[i];
+            g->npieces = 1;
+            g->pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+        }
+        quat_matrix(&d.transform.q, g->R);
+        for (int k = 0; k < 3; ++k)
+            g->t[k] = d.transform.p[k];
+        d.category = s->cat[i] = random_bits();
+        d.mask = s->mask[i] = random_bits();
+        d.sensor = uniform() < 0.1;
+        d.user_data = &s->id[i];
+        s->x[i] = d.transform;
+        ck_assert_int_eq(noctWorldCreateObject(s->w, &d, &s->id[i], NULL), NOCT_OK);
+    }
+}
+
+static void free_scene(scene *s)
+{
+    noctWorldDestroy(s->w);
+    for (int i = 0; i < s->n; ++i)
+        noctMeshDestroy(s->mesh[i]);
+}
+
+static bool passes(const scene *s, int i, noctQueryFilter f)
+{
+    return (s->cat[i] & f.mask) != 0 && (f.category & s->mask[i]) != 0;
+}
+
+static noctQueryFilter random_filter(void)
+{
+    noctQueryFilter f = noctDefaultQueryFilter();
+    if (uniform() < 0.4) {
+        f.category = random_bits();
+        f.mask = random_bits();
+    }
+    return f;
+}
+
+/* The object's mesh as the test places it (for the narrowphase brute
+ * force): its own mesh, or the test's mesh of its box primitive. */
+static const noctMesh *mesh_of(const scene *s, int i, const noctMesh *ell)
+{
+    return s->kind[i] == 2 ? ell : s->mesh[i];
+}
+
+/* ---- collecting ------------------------------------------------------------------ */
+
+typedef struct found {
+    int n;
+    noctObjectId id[MAXO];
+} found;
+
+static bool collect(void *context, noctObjectId id, void *user)
+{
+    found *f = context;
+    ck_assert(user != NULL && ((noctObjectId *)user)->index == id.index);
+    ck_assert_int_lt(f->n, MAXO);
+    f->id[f->n++] = id;
+    return true;
+}
+
+static bool in_found(const found *f, const scene *s, int i)
+{
+    for (int k = 0; k < f->n; ++k)
+        if (f->id[k].index == s->id[i].index) {
+            ck_assert_uint_eq(f->id[k].generation, s->id[i].generation);
+            return true;
+        }
+    return false;
+}
+
+static void expect_index_order(const found *f)
+{
+    for (int k = 1; k < f->n; ++k)
+        ck_assert_uint_lt(f->id[k - 1].index, f->id[k].index);
+}
+
+/* ---- random scenes against the ideal geometry ----------------------------------------- */
+
+START_TEST(points_against_geometry)
+{
+    noctMesh *ell = make_ell();
+    int checked = 0, inside = 0;
+    for (int round = 0; round < 12; ++round) {
+        scene s;
+        random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
+        for (int q = 0; q < 300; ++q) {
+            double p[3];
+            for (int k = 0; k < 3; ++k)
+                p[k] = -1 + 8 * uniform();
+            /* one point in ten is a placed vertex: on the boundary */
+            int vertex_of = -1;
+            if (q % 10 == 0) {
+                vertex_of = (int)(s.n * uniform());
+                /* the corner fl(fl(R v) + t) of its box or of the L, in
+                 * transform.h's order */
+                noctTransform x = s.x[vertex_of];
+                double R[9];
+                ck_assert_int_eq(noctQuatToMatrix(&x.q, R, NULL), NOCT_OK);
+                double local[3];
+                if (s.kind[vertex_of] == 2) {
+                    local[0] = -1;
+                    local[1] = 1;
+                    local[2] = 0.5;
+                } else {
+                    for (int k = 0; k < 3; ++k)
+                        local[k] = (double)s.g[vertex_of].pc[0].h[k];
+                }
+                double r[3];
+                for (int k = 0; k < 3; ++k) {
+                    volatile double a = R[3 * k] * local[0], b = R[3 * k + 1] * local[1];
+                    volatile double c = R[3 * k + 2] * local[2];
+                    volatile double ab = a + b;
+                    r[k] = ab + c;
+                }
+                for (int k = 0; k < 3; ++k)
+                    p[k] = r[k] + x.p[k];
+            }
+            noctQueryFilter f = random_filter();
+            found got = {0};
+            ck_assert_int_eq(noctWorldQueryPoint(s.w, p, f, collect, &got, NULL), NOCT_OK);
+            expect_index_order(&got);
+            for (int i = 0; i < s.n; ++i) {
+                const bool in = in_found(&got, &s, i);
+                if (!passes(&s, i, f)) {
+                    ck_assert(!in);
+                    continue;
+                }
+                if (i == vertex_of) {
+                    ck_assert_msg(in, "a placed vertex is in its closed solid");
+                    ++checked;
+                    continue;
+                }
+                const int v = ideal_contains(&s.g[i], p);
+                if (v >= 0) {
+                    ck_assert_msg(in == (v == 1), "point (%g %g %g) object %d: %d, ideal %d",
+                                  p[0], p[1], p[2], i, in, v);
+                    ++checked;
+                    inside += v;
+                }
+            }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(checked, 10000);
+    ck_assert_int_gt(inside, 150);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+/* The box and shape queries against the ideal geometry and against the
+ * public narrowphase on every object (a brute force without the tree). */
+START_TEST(boxes_and_shapes_against_brute_force)
+{
+    noctMesh *ell = make_ell();
+    int checked = 0, met = 0;
+    for (int round = 0; round < 10; ++round) {
+        scene s;
+        random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
+        for (int q = 0; q < 60; ++q) {
+            noctQueryFilter f = random_filter();
+            /* a box */
+            double lo[3], hi[3];
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = -1 + 7 * uniform();
+                hi[k] = lo[k] + (q % 7 == 0 ? 0 : 1.5 * uniform()); /* some flat */
+            }
+            found got = {0};
+            ck_assert_int_eq(noctWorldQueryBox(s.w, lo, hi, f, collect, &got, NULL), NOCT_OK);
+            expect_index_order(&got);
+            ideal box = {1, {{{0}, {0}}}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0}};
+            for (int k = 0; k < 3; ++k) {
+                box.pc[0].c[k] = ((long double)lo[k] + hi[k]) / 2;
+                box.pc[0].h[k] = ((long double)hi[k] - lo[k]) / 2;
+            }
+            for (int i = 0; i < s.n; ++i) {
+                const bool in = in_found(&got, &s, i);
+                if (!passes(&s, i, f)) {
+                    ck_assert(!in);
+                    continue;
+                }
+                const int v = union_meet(&box, &s.g[i]);
+                if (v >= 0) {
+                    ck_assert_msg(in == (v == 1), "box query, object %d: %d, ideal %d", i, in, v);
+                    ++checked;
+                    met += v;
+                }
+            }
+            /* a shape: a box primitive or the L, turned */
+            noctTransform x;
+            for (int k = 0; k < 3; ++k)
+                x.p[k] = 6 * uniform();
+            random_quat(&x.q);
+            const bool is_ell = uniform() < 0.4;
+            double h[3];
+            for (int k = 0; k < 3; ++k)
+                h[k] = 0.1 + 0.8 * uniform();
+            noctMesh *hm;
+            ck_assert_int_eq(noctMeshCreateBox(h[0], h[1], h[2], &hm, NULL), NOCT_OK);
+            got.n = 0;
+            ck_assert_int_eq(noctWorldQueryShape(s.w, is_ell ? ell : NULL, h, &x, f, collect,
+                                                 &got, NULL),
+                             NOCT_OK);
+            expect_index_order(&got);
+            ideal sh = {0};
+            quat_matrix(&x.q, sh.R);
+            for (int k = 0; k < 3; ++k)
+                sh.t[k] = x.p[k];
+            if (is_ell) {
+                sh.npieces = 2;
+                sh.pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
+                sh.pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
+            } else {
+                sh.npieces = 1;
+                sh.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+            }
+            for (int i = 0; i < s.n; ++i) {
+                const bool in = in_found(&got, &s, i);
+                if (!passes(&s, i, f)) {
+                    ck_assert(!in);
+                    continue;
+                }
+                /* the narrowphase, exact, on the same placed shapes */
+                bool hit;
+                ck_assert_int_eq(noctCollideTransformed(is_ell ? ell : hm, &x,
+                                                        mesh_of(&s, i, ell), &s.x[i],
+                                                        NOCT_ACCURACY_EXACT, &hit, NULL, NULL),
+                                 NOCT_OK);
+                ck_assert_msg(in == hit, "shape query, object %d: %d, narrowphase %d", i, in,
+                              hit);
+                const int v = union_meet(&sh, &s.g[i]);
+                if (v >= 0) {
+                    ck_assert_msg(in == (v == 1), "shape query, object %d: %d, ideal %d", i,
+                                  in, v);
+                    ++checked;
+                    met += v;
+                }
+            }
+            noctMeshDestroy(hm);
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(checked, 5000);
+    ck_assert_int_gt(met, 500);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+typedef struct hits {
+    int n;
+    noctRayHit h[MAXO];
+} hits;
+
+static bool collect_hit(void *context, const noctRayHit *h)
+{
+    hits *r = context;
+    ck_assert_int_lt(r->n, MAXO);
+    r->h[r->n++] = *h;
+    return true;
+}
+
+START_TEST(rays_against_geometry)
+{
+    noctMesh *ell = make_ell();
+    int checked = 0, hit = 0, normals = 0;
+    for (int round = 0; round < 12; ++round) {
+        scene s;
+        random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
+        for (int q = 0; q < 200; ++q) {
+            double o[3], d[3];
+            for (int k = 0; k < 3; ++k) {
+                o[k] = -1 + 8 * uniform();
+                d[k] = q % 11 == 0 ? 0 : (uniform() - 0.5) * 12;
+            }
+            noctQueryFilter f = random_filter();
+            hits got = {0};
+            ck_assert_int_eq(noctWorldRayCast(s.w, o, d, f, collect_hit, &got, NULL), NOCT_OK);
+            for (int k = 1; k < got.n; ++k)
+                ck_assert(got.h[k - 1].fraction < got.h[k].fraction ||
+                          (got.h[k - 1].fraction == got.h[k].fraction &&
+                           got.h[k - 1].id.index < got.h[k].id.index));
+            /* the closest is the first */
+            noctRayHit first;
+            bool any;
+            ck_assert_int_eq(noctWorldRayCastClosest(s.w, o, d, f, &first, &any, NULL),
+                             NOCT_OK);
+            ck_assert(any == (got.n > 0));
+            if (any) {
+                ck_assert_uint_eq(first.id.index, got.h[0].id.index);
+                ck_assert(first.fraction == got.h[0].fraction);
+            }
+            const double q_end[3] = {o[0] + d[0], o[1] + d[1], o[2] + d[2]};
+            const double dd[3] = {q_end[0] - o[0], q_end[1] - o[1], q_end[2] - o[2]};
+            for (int i = 0; i < s.n; ++i) {
+                const noctRayHit *h = NULL;
+                for (int k = 0; k < got.n; ++k)
+                    if (got.h[k].id.index == s.id[i].index)
+                        h = &got.h[k];
+                if (!passes(&s, i, f)) {
+                    ck_assert(h == NULL);
+                    continue;
+                }
+                long double sfrac = 0, n[3];
+                bool sharp = false;
+                const int v = ideal_ray(&s.g[i], o, dd, &sfrac, n, &sharp);
+                if (v < 0)
+                    continue;
+                ++checked;
+                ck_assert_msg((h != NULL) == (v == 1), "ray, object %d: %d, ideal %d", i,
+                              h != NULL, v);
+                if (v == 0)
+                    continue;
+                ++hit;
+                ck_assert(h->user_data == &s.id[i]);
+                ck_assert_msg(fabsl(h->fraction - sfrac) < 1e-9L, "fraction %.17g, ideal %.17Lg",
+                              h->fraction, sfrac);
+                for (int k = 0; k < 3; ++k)
+                    ck_assert(fabs(h->point[k] - (o[k] + h->fraction * dd[k])) <= 1e-12);
+                if (sfrac == 0) {
+                    ck_assert(h->fraction == 0 && h->triangle[0] == NOCT_NO_VERTEX);
+                    ck_assert(h->normal[0] == 0 && h->normal[1] == 0 && h->normal[2] == 0);
+                } else if (sharp) {
+                    for (int k = 0; k < 3; ++k)
+                        ck_assert_msg(fabsl(h->normal[k] - n[k]) < 1e-9L,
+                                      "normal %g %g %g, ideal %Lg %Lg %Lg", h->normal[0],
+                                      h->normal[1], h->normal[2], n[0], n[1], n[2]);
+                    ++normals;
+                    if (s.kind[i] == 0) {
+                        /* a box primitive's corners: the face's bit, shared */
+                        unsigned both = 7, any_set = 0;
+                        for (int c = 0; c < 3; ++c) {
+                            ck_assert_uint_lt(h->triangle[c], 8);
+                            both &= h->triangle[c];
+                            any_set |= h->triangle[c];
+                        }
+                        ck_assert(both != 0 || any_set != 7);
+                    }
+                }
+            }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(checked, 5000);
+    ck_assert_int_gt(hit, 300);
+    ck_assert_int_gt(normals, 200);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+/* The same queries on worlds of different N and accuracy give the same
+ * answers: the tree never shows. */
+START_TEST(answers_do_not_depend_on_the_tree)
+{
+    noctMesh *ell = make_ell();
+    const uint64_t seed = rng;
+    scene a, b;
+    random_scene(&a, 40, 1, NOCT_ACCURACY_EXACT, ell);
+    rng = seed;
+    random_scene(&b, 40, NOCT_N_EXHAUSTIVE, NOCT_ACCURACY_EXACT, ell);
+    for (int q = 0; q < 200; ++q) {
+        double o[3], d[3], lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            o[k] = -1 + 8 * uniform();
+            d[k] = (uniform() - 0.5) * 12;
+            lo[k] = -1 + 7 * uniform();
+            hi[k] = lo[k] + uniform();
+        }
+        hits ha = {0}, hb = {0};
+        ck_assert_int_eq(noctWorldRayCast(a.w, o, d, noctDefaultQueryFilter(), collect_hit,
+                                          &ha, NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(noctWorldRayCast(b.w, o, d, noctDefaultQueryFilter(), collect_hit,
+                                          &hb, NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(ha.n, hb.n);
+        for (int k = 0; k < ha.n; ++k) {
+            ck_assert(ha.h[k].fraction == hb.h[k].fraction);
+            ck_assert(memcmp(ha.h[k].normal, hb.h[k].normal, sizeof ha.h[k].normal) == 0);
+            ck_assert(memcmp(ha.h[k].triangle, hb.h[k].triangle, sizeof ha.h[k].triangle) == 0);
+            ck_assert_uint_eq(ha.h[k].id.index, hb.h[k].id.index);
+        }
+        found fa = {0}, fb = {0};
+        ck_assert_int_eq(noctWorldQueryBox(a.w, lo, hi, noctDefaultQueryFilter(), collect, &fa,
+                                           NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(noctWorldQueryBox(b.w, lo, hi, noctDefaultQueryFilter(), collect, &fb,
+                                           NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(fa.n, fb.n);
+        for (int k = 0; k < fa.n; ++k)
+            ck_assert_uint_eq(fa.id[k].index, fb.id[k].index);
+    }
+    free_scene(&a);
+    free_scene(&b);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+/* ---- exact cases on dyadic axis-aligned boxes ---------------------------------------- */
+
+/* Boxes [c - h, c + h] with dyadic c and h; the test's intervals are exact. */
+#define NB 6
+static const double BOXC[NB][3] = {{0, 0, 0},   {1, 0, 0},     {0.5, 1.25, 0},
+                                   {3, 3, 3},   {3, 3, 3.75},  {-2, 0.5, 0.5}};
+static const double BOXH[NB][3] = {{0.5, 0.5, 0.5}, {0.5, 0.25, 0.5}, {0.25, 0.25, 0.25},
+                                   {1, 1, 0.5},     {0.5, 0.5, 0.25}, {0.125, 0.5, 1}};
+
+static noctWorld *dyadic_world(noctObjectId *id, noctMesh **mesh)
+{
+    noctWorld *w = new_world(2, NOCT_ACCURACY_EXACT);
+    for (int i = 0; i < NB; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        memcpy(d.transform.p, BOXC[i], sizeof d.transform.p);
+        mesh[i] = NULL;
+        if (i % 2) { /* meshes and primitives alike */
+            ck_assert_int_eq(noctMeshCreateBox(BOXH[i][0], BOXH[i][1], BOXH[i][2], &mesh[i],
+                                               NULL),
+                             NOCT_OK);
+            d.mesh = mesh[i];
+        } else {
+            memcpy(d.half_extents, BOXH[i], sizeof d.half_extents);
+        }
+        d.user_data = &id[i];
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+    }
+    return w;
+}
+
+static bool dyadic_contains(int i, const double p[3])
+{
+    for (int k = 0; k < 3; ++k)
+        if (p[k] < BOXC[i][k] - BOXH[i][k] || p[k] > BOXC[i][k] + BOXH[i][k])
+            return false;
+    return true;
+}
+
+/* The segment p + s d against box i, exactly (its numbers dyadic): the
+ * least s in [0, 1], or -1. */
+static double dyadic_ray(int i, const double p[3], const double d[3])
+{
+    double lo = 0, hi = 1;
+    for (int k = 0; k < 3; ++k) {
+        const double a = BOXC[i][k] - BOXH[i][k] - p[k], b = BOXC[i][k] + BOXH[i][k] - p[k];
+        if (d[k] == 0) {
+            if (a > 0 || b < 0)
+                return -1;
+            continue;
+        }
+        double s0 = a / d[k], s1 = b / d[k];
+        if (s0 > s1) {
+            double t = s0;
+            s0 = s1;
+            s1 = t;
+        }
+        lo = fmax(lo, s0);
+        hi = fmin(hi, s1);
+    }
+    return lo <= hi ? lo : -1;
+}
+
+START_TEST(exact_points_on_faces_edges_and_corners)
+{
+    noctObjectId id[NB];
+    noctMesh *mesh[NB];
+    noctWorld *w = dyadic_world(id, mesh);
+    int on = 0;
+    for (int i = 0; i < NB; ++i)
+        for (int code = 0; code < 27; ++code) { /* -1, 0, +1 on each axis */
+            for (int out = 0; out < 2; ++out) {
+                double p[3];
+                int c = code;
+                for (int k = 0; k < 3; ++k, c /= 3) {
+                    const int sgn = c % 3 - 1;
+                    p[k] = BOXC[i][k] + sgn * BOXH[i][k];
+                    if (out && sgn != 0)
+                        p[k] += sgn * 0x1p-30; /* just outside */
+                }
+                found got = {0};
+                ck_assert_int_eq(noctWorldQueryPoint(w, p, noctDefaultQueryFilter(), collect,
+                                                     &got, NULL),
+                                 NOCT_OK);
+                for (int j = 0; j < NB; ++j) {
+                    bool in = false;
+                    for (int k = 0; k < got.n; ++k)
+                        in = in || got.id[k].index == id[j].index;
+                    ck_assert_msg(in == dyadic_contains(j, p),
+                                  "point (%a %a %a), box %d: %d", p[0], p[1], p[2], j, in);
+                    on += in;
+                }
+                /* a zero-length segment is the same point */
+                hits hz = {0};
+                ck_assert_int_eq(noctWorldRayCast(w, p, (double[3]){0, 0, 0},
+                                                  noctDefaultQueryFilter(), collect_hit, &hz,
+                                                  NULL),
+                                 NOCT_OK);
+                ck_assert_int_eq(hz.n, got.n);
+                for (int k = 0; k < hz.n; ++k)
+                    ck_assert(hz.h[k].fraction == 0 && hz.h[k].triangle[0] == NOCT_NO_VERTEX);
+            }
+        }
+    ck_assert_int_gt(on, 6 * 27);
+    noctWorldDestroy(w);
+    for (int i = 0; i < NB; ++i)
+        noctMeshDestroy(mesh[i]);
+}
+END_TEST
+
+START_TEST(exact_rays_along_faces_and_through_edges)
+{
+    noctObjectId id[NB];
+    noctMesh *mesh[NB];
+    noctWorld *w = dyadic_world(id, mesh);
+    int hitting = 0, cases = 0;
+    /* From points on a dyadic grid around each box, in directions along
+     * the axes and the diagonals: they run along faces, graze edges and
+     * pass through corners exactly. */
+    for (int i = 0; i < NB; ++i)
+        for (int code = 0; code < 27; ++code)
+            for (int dir = 0; dir < 26; ++dir) {
+                double p[3], d[3];
+                int c = code, e = dir < 13 ? dir : dir + 1;
+                for (int k = 0; k < 3; ++k, c /= 3, e /= 3) {
+                    p[k] = BOXC[i][k] + (c % 3 - 1) * BOXH[i][k] * 2;
+                    d[k] = (e % 3 - 1) * BOXH[i][k] * 4;
+                }
+                hits got = {0};
+                ck_assert_int_eq(noctWorldRayCast(w, p, d, noctDefaultQueryFilter(),
+                                                  collect_hit, &got, NULL),
+                                 NOCT_OK);
+                ++cases;
+                for (int j = 0; j < NB; ++j) {
+                    const noctRayHit *h = NULL;
+                    for (int k = 0; k < got.n; ++k)
+                        if (got.h[k].id.index == id[j].index)
+                            h = &got.h[k];
+                    const double s = dyadic_ray(j, p, d);
+                    ck_assert_msg((h != NULL) == (s >= 0),
+                                  "ray (%a %a %a) + s (%a %a %a), box %d: %d, exact %g", p[0],
+                                  p[1], p[2], d[0], d[1], d[2], j, h != NULL, s);
+                    if (h != NULL) {
+                        ++hitting;
+                        ck_assert_msg(fabs(h->fraction - s) <= 1e-15, "fraction %a, exact %a",
+                                      h->fraction, s);
+                    }
+                }
+            }
+    ck_assert_int_gt(hitting, cases / 4);
+    noctWorldDestroy(w);
+    for (int i = 0; i < NB; ++i)
+        noctMeshDestroy(mesh[i]);
+}
+END_TEST
+
+/* ---- arrays, stopping, bad input ------------------------------------------------------- */
+
+static bool stop_at_first(void *context, noctObjectId id, void *user)
+{
+    (void)id;
+    (void)user;
+    ++*(int *)context;
+    return false;
+}
+
+START_TEST(buffers_stopping_and_bad_input)
+{
+    noctObjectId id[NB];
+    noctMesh *mesh[NB];
+    noctWorld *w = dyadic_world(id, mesh);
+    const double lo[3] = {-10, -10, -10}, hi[3] = {10, 10, 10};
+    noctObjectId ids[3];
+    noctObjectBuffer buf = {ids, 3, 0};
+    ck_assert_int_eq(noctWorldQueryBox(w, lo, hi, noctDefaultQueryFilter(), noctCollectObjects,
+                                       &buf, NULL),
+                     NOCT_OK);
+    ck_assert_uint_eq(buf.count, NB);
+    for (int k = 0; k < 3; ++k)
+        ck_assert_uint_eq(ids[k].index, id[k].index);
+    int calls = 0;
+    ck_assert_int_eq(noctWorldQueryBox(w, lo, hi, noctDefaultQueryFilter(), stop_at_first,
+                                       &calls, NULL),
+                     NOCT_OK);
+    ck_assert_int_eq(calls, 1);
+    noctRayHit hb[2];
+    noctRayHitBuffer rb = {hb, 2, 0};
+    ck_assert_int_eq(noctWorldRayCast(w, (double[3]){-5, 0.125, 0.125}, (double[3]){10, 0, 0},
+                                      noctDefaultQueryFilter(), noctCollectRayHits, &rb, NULL),
+                     NOCT_OK);
+    ck_assert_uint_eq(rb.count, 3); /* boxes 5, 0, 1 along y = z = 1/8 */
+    ck_assert_uint_eq(hb[0].id.index, id[5].index);
+    ck_assert(hb[0].fraction == (-2.125 + 5) / 10);
+    ck_assert_msg(hb[0].normal[0] == -1 && hb[0].normal[1] == 0 && hb[0].normal[2] == 0,
+                  "normal %g %g %g, triangle %u %u %u", hb[0].normal[0], hb[0].normal[1],
+                  hb[0].normal[2], hb[0].triangle[0], hb[0].triangle[1], hb[0].triangle[2]);
+    ck_assert_uint_eq(hb[1].id.index, id[0].index);
+    /* bad input: a status, an error naming it, no call */
+    noctError err;
+    calls = 0;
+    const double nan3[3] = {NAN, 0, 0}, far3[3] = {2e100, 0, 0};
+    ck_assert_int_eq(noctWorldQueryPoint(w, nan3, noctDefaultQueryFilter(), stop_at_first,
+                                         &calls, &err),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_ptr_nonnull(strstr(err.message, "not finite"));
+    ck_assert_int_eq(noctWorldQueryPoint(w, far3, noctDefaultQueryFilter(), stop_at_first,
+                                         &calls, &err),
+                     NOCT_ERR_TOO_LARGE);
+    ck_assert_int_eq(noctWorldQueryBox(w, hi, lo, noctDefaultQueryFilter(), stop_at_first,
+                                       &calls, &err),
+                     NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldRayCast(w, lo, (double[3]){INFINITY, 0, 0},
+                                      noctDefaultQueryFilter(), collect_hit, &calls, &err),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldRayCast(w, (double[3]){9e99, 0, 0}, (double[3]){9e99, 0, 0},
+                                      noctDefaultQueryFilter(), collect_hit, &calls, &err),
+                     NOCT_ERR_TOO_LARGE);
+    noctTransform x = noctIdentityTransform();
+    x.q.w = 2; /* far from unit length */
+    ck_assert_int_eq(noctWorldQueryShape(w, NULL, (double[3]){1, 1, 1}, &x,
+                                         noctDefaultQueryFilter(), stop_at_first, &calls, &err),
+                     NOCT_ERR_INVALID);
+    x = noctIdentityTransform();
+    ck_assert_int_eq(noctWorldQueryShape(w, NULL, (double[3]){-1, 1, 1}, &x,
+                                         noctDefaultQueryFilter(), stop_at_first, &calls, &err),
+                     NOCT_ERR_INVALID);
+    ck_assert_int_eq(calls, 0);
+    noctWorldDestroy(w);
+    for (int i = 0; i < NB; ++i)
+        noctMeshDestroy(mesh[i]);
+}
+END_TEST
+
+static Suite *queries_suite(void)
+{
+    Suite *s = suite_create("queries");
+    TCase *tc = tcase_create("queries");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, points_against_geometry);
+    tcase_add_test(tc, boxes_and_shapes_against_brute_force);
+    tcase_add_test(tc, rays_against_geometry);
+    tcase_add_test(tc, answers_do_not_depend_on_the_tree);
+    tcase_add_test(tc, exact_points_on_faces_edges_and_corners);
+    tcase_add_test(tc, exact_rays_along_faces_and_through_edges);
+    tcase_add_test(tc, buffers_stopping_and_bad_input);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(queries_suite());
+}
