@@ -881,6 +881,12 @@ void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot
 {
     double v[24];
     noct_box_corners(half, R, v);
+    noct_box_slot_of_corners(v, R, s, lo, hi);
+}
+
+void noct_box_slot_of_corners(const double v[24], const double R[9], noct_box_slot *s,
+                              double lo[3], double hi[3])
+{
     for (int k = 0; k < 3; ++k) {
         lo[k] = hi[k] = v[k];
         for (int i = 1; i < 8; ++i) {

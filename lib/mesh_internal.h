@@ -181,6 +181,12 @@ void noct_box_corners(const double half[3], const double R[9], double v[24]);
 void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot *s,
                           double lo[3], double hi[3]);
 
+/* The same for 8 corners numbered as noct_box_corners() numbers them,
+ * near a box whose edges run along R's columns (a query's box: its own
+ * corners, R the identity); has_box is 0 when they are too far from one. */
+void noct_box_slot_of_corners(const double v[24], const double R[9], noct_box_slot *s,
+                              double lo[3], double hi[3]);
+
 /* The mesh of that box: its corners and 12 triangles. */
 noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
                             noctError *err);

@@ -159,10 +159,19 @@ noctStatus noctWorldQueryPoint(const noctWorld *w, const double p[3], noctQueryF
 /* ---- box and shape ------------------------------------------------------------------ */
 
 /* Does the query's shape q (placed at tq) meet object s, at level? Their
- * placed boxes overlap (the broadphase found s). */
+ * placed boxes overlap (the broadphase found s). A box shape's slot (qs,
+ * or NULL) decides most pairs with a box object at the exact level, as
+ * the world's pair test does. */
 static noctStatus meets(const noctWorld *w, uint32_t s, const noctMesh *q, const double tq[3],
-                        noctAccuracy level, bool *hit)
+                        const noct_box_slot *qs, noctAccuracy level, bool *hit)
 {
+    if (qs != NULL && level == NOCT_ACCURACY_EXACT && w->slot[s].has_box) {
+        const int d = noct_box_decide(qs, tq, &w->slot[s], w->pos[s]);
+        if (d != 0) {
+            *hit = d > 0;
+            return NOCT_OK;
+        }
+    }
     shape sh;
     const noctMesh *m = shape_of_object(w, s, &sh);
     return noct_collide_overlapping(q, tq, m, w->pos[s], level, hit, NULL);
@@ -170,7 +179,8 @@ static noctStatus meets(const noctWorld *w, uint32_t s, const noctMesh *q, const
 
 /* Report the candidates that meet q placed at tq, in order. */
 static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const double tq[3],
-                                 noctAccuracy level, noctQueryFilter filter,
+                                 const noct_box_slot *qs, noctAccuracy level,
+                                 noctQueryFilter filter,
                                  noctObjectFcn *fcn, void *context, noctError *err)
 {
     double lo[3], hi[3];
@@ -184,7 +194,7 @@ static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const do
     for (size_t i = 0; i < c.n && st == NOCT_OK; ++i) {
         const uint32_t s = c.s[i];
         bool hit;
-        st = meets(w, s, q, tq, level, &hit);
+        st = meets(w, s, q, tq, qs, level, &hit);
         if (st != NOCT_OK)
             st = noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
         else if (hit && !fcn(context, handle(w, s), w->bp.proxy[s].user))
@@ -219,7 +229,16 @@ noctStatus noctWorldQueryBox(const noctWorld *w, const double lo[3], const doubl
     bvh_node leaf;
     noct_box_view(v, &view, &leaf);
     static const double origin[3] = {0, 0, 0};
-    return report_meeting(w, &view, origin, w->def.accuracy, filter, fcn, context, err);
+    static const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    noct_box_slot slot;
+    double blo[3], bhi[3];
+    bool solid = true;
+    for (int k = 0; k < 3; ++k)
+        solid = solid && lo[k] < hi[k];
+    if (solid)
+        noct_box_slot_of_corners(v, identity, &slot, blo, bhi);
+    return report_meeting(w, &view, origin, solid && slot.has_box ? &slot : NULL,
+                          w->def.accuracy, filter, fcn, context, err);
 }
 
 noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
@@ -243,14 +262,21 @@ noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
         noctMesh view;
         bvh_node leaf;
         noct_box_view(v, &view, &leaf);
-        return report_meeting(w, &view, x->p, NOCT_ACCURACY_EXACT, filter, fcn, context,
-                              err);
+        noct_box_slot slot;
+        double blo[3], bhi[3];
+        noct_box_slot_of_corners(v, R, &slot, blo, bhi);
+        return report_meeting(w, &view, x->p, slot.has_box ? &slot : NULL,
+                              NOCT_ACCURACY_EXACT, filter, fcn, context, err);
     }
     noctMesh *rotated = NULL;
     if (!noct_is_identity(R) && (st = noct_mesh_rotated(mesh, R, &rotated, err)) != NOCT_OK)
         return st;
-    st = report_meeting(w, rotated != NULL ? rotated : mesh, x->p, NOCT_ACCURACY_EXACT,
-                        filter, fcn, context, err);
+    const noctMesh *m = rotated != NULL ? rotated : mesh;
+    noct_box_slot slot;
+    if (m->has_box)
+        noct_box_slot_fill(m, &slot);
+    st = report_meeting(w, m, x->p, m->has_box ? &slot : NULL, NOCT_ACCURACY_EXACT, filter,
+                        fcn, context, err);
     noctMeshDestroy(rotated);
     return st;
 }

@@ -48,8 +48,20 @@
  * step and the response, as the built-in one covers the motion and the
  * response.
  *
- * Usage: bench-peers [--quick] [--broadphase | --driven] [--steps S] [--repeats R]
- *                    [--N N] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]
+ * With --queries (gas scenes only) it times queries on the scene as it
+ * is set up, no steps: Q random boxes (a cube of twice the largest
+ * half-extent), points and segments (a tenth of the container long) in the
+ * container, the same for every library. libnoctree answers them exactly
+ * on the placed shapes (noctWorldQueryBox(), noctWorldQueryPoint(),
+ * noctWorldRayCast() for all hits and noctWorldRayCastClosest()); FCL's
+ * dynamic AABB tree answers the boxes (its collide() of a box object
+ * against the manager, each candidate through fcl::collide), and has no
+ * point or segment query; the lines give queries a second and the objects
+ * found, which must agree where both answer.
+ *
+ * Usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]] [--steps S]
+ *                    [--repeats R] [--N N] [--budget SEC] [--libs LIST] [--csv FILE]
+ *                    [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
@@ -71,12 +83,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <noctree/scene.h>
 #include <noctree/version.h>
+#include <noctree/query.h>
 #include <noctree/world.h>
 
 namespace {
@@ -802,7 +816,8 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 
 void usage(FILE *f)
 {
-    std::fputs("usage: bench-peers [--quick] [--broadphase | --driven] [--steps S] [--repeats R]\n"
+    std::fputs("usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]]\n"
+               "                   [--steps S] [--repeats R]\n"
                "                   [--N N] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
@@ -819,8 +834,164 @@ void usage(FILE *f)
                "steps the world and reverses the objects of the pairs noctWorldBegan()\n"
                "reports; a line per scene gives its step time over the built-in\n"
                "motion's (row libnoctree) and both contact-begin counts, which must be\n"
-               "the same.\n",
+               "the same.\n"
+               "--queries [Q]: no steps; Q (default 10000) random box, point and\n"
+               "segment queries on each gas scene (default gas:10000 gas:100000) as\n"
+               "set up, queries a second; FCL answers the boxes, and the objects both\n"
+               "find must agree.\n",
                f);
+}
+
+// ---- queries (--queries) --------------------------------------------------------
+
+struct QuerySet {
+    std::vector<std::array<double, 6>> box; // lo, hi
+    std::vector<std::array<double, 3>> point;
+    std::vector<std::array<double, 6>> ray; // origin, translation
+};
+
+QuerySet make_queries(const Scene &s, long q)
+{
+    QuerySet qs;
+    uint64_t st = 7;
+    const double side = 2 * 0.75, len = s.lb / 10;
+    for (long i = 0; i < q; ++i) {
+        std::array<double, 6> b, r;
+        std::array<double, 3> p;
+        for (int a = 0; a < 3; ++a) {
+            b[a] = s.lb * draw(st);
+            b[a + 3] = b[a] + side;
+            p[a] = s.lb * draw(st);
+            r[a] = s.lb * draw(st);
+        }
+        const double dz = 2 * draw(st) - 1, phi = 2 * 3.141592653589793 * draw(st);
+        r[3] = len * std::sqrt(1 - dz * dz) * std::cos(phi);
+        r[4] = len * std::sqrt(1 - dz * dz) * std::sin(phi);
+        r[5] = len * dz;
+        qs.box.push_back(b);
+        qs.point.push_back(p);
+        qs.ray.push_back(r);
+    }
+    return qs;
+}
+
+bool count_object(void *context, noctObjectId, void *)
+{
+    ++*static_cast<size_t *>(context);
+    return true;
+}
+
+bool count_hit(void *context, const noctRayHit *)
+{
+    ++*static_cast<size_t *>(context);
+    return true;
+}
+
+struct FclQuery {
+    fcl::CollisionObjectd *q;
+    size_t found;
+};
+
+bool fcl_query(fcl::CollisionObjectd *a, fcl::CollisionObjectd *b, void *data)
+{
+    FclQuery *c = static_cast<FclQuery *>(data);
+    fcl::CollisionRequestd req;
+    fcl::CollisionResultd res;
+    fcl::collide(a, b, req, res);
+    c->found += res.isCollision();
+    return false;
+}
+
+void print_query_row(const char *scene, const char *lib, const char *kind, long q, double sec,
+                     size_t found)
+{
+    std::printf("%-12s %-12s %-16s %8ld %12.0f %10.2f %10zu\n", scene, lib, kind, q,
+                static_cast<double>(q) / sec, 1e6 * sec / static_cast<double>(q), found);
+}
+
+// Returns false when a library failed or the two disagree.
+bool run_queries(const char *spec, long q, const Options &o)
+{
+    bool gas;
+    long size;
+    if (!parse_scene(spec, &gas, &size) || !gas) {
+        std::fprintf(stderr, "bench-peers: --queries runs on gas scenes only: %s\n", spec);
+        return false;
+    }
+    Scene s = make_scene(gas, size);
+    QuerySet qs = make_queries(s, q);
+    noctError err;
+    noctScene *sc;
+    noctWorld *w = nullptr;
+    if (noctSceneFamily(spec, &sc, &err) != NOCT_OK ||
+        (noctSceneDef(sc)->N = o.N, noctSceneBuild(sc, &w, &err)) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return false;
+    }
+    noctSceneDestroy(sc);
+    const noctQueryFilter all = noctDefaultQueryFilter();
+    bool ok = true;
+    size_t boxes = 0, points = 0, rays = 0, closest = 0;
+    double t = now();
+    for (const auto &b : qs.box)
+        ok = ok && noctWorldQueryBox(w, &b[0], &b[3], all, count_object, &boxes, &err) == NOCT_OK;
+    const double t_box = now() - t;
+    t = now();
+    for (const auto &p : qs.point)
+        ok = ok && noctWorldQueryPoint(w, &p[0], all, count_object, &points, &err) == NOCT_OK;
+    const double t_point = now() - t;
+    t = now();
+    for (const auto &r : qs.ray)
+        ok = ok && noctWorldRayCast(w, &r[0], &r[3], all, count_hit, &rays, &err) == NOCT_OK;
+    const double t_ray = now() - t;
+    t = now();
+    for (const auto &r : qs.ray) {
+        noctRayHit h;
+        bool found;
+        ok = ok && noctWorldRayCastClosest(w, &r[0], &r[3], all, &h, &found, &err) == NOCT_OK;
+        closest += found;
+    }
+    const double t_closest = now() - t;
+    noctWorldDestroy(w);
+    if (!ok) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return false;
+    }
+    print_query_row(spec, "libnoctree", "box", q, t_box, boxes);
+    print_query_row(spec, "libnoctree", "point", q, t_point, points);
+    print_query_row(spec, "libnoctree", "segment, all", q, t_ray, rays);
+    print_query_row(spec, "libnoctree", "segment, first", q, t_closest, closest);
+    // FCL: the same boxes as box objects against its manager.
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
+    std::vector<fcl::CollisionObjectd *> raw;
+    for (const Body &b : s.body) {
+        auto box = std::make_shared<fcl::Boxd>(2 * b.h[0], 2 * b.h[1], 2 * b.h[2]);
+        fcl::Matrix3d rot;
+        rot << b.r[0], b.r[1], b.r[2], b.r[3], b.r[4], b.r[5], b.r[6], b.r[7], b.r[8];
+        obj.emplace_back(new fcl::CollisionObjectd(box, rot, fcl::Vector3d(b.c[0], b.c[1], b.c[2])));
+        raw.push_back(obj.back().get());
+    }
+    fcl::DynamicAABBTreeCollisionManagerd mgr;
+    mgr.registerObjects(raw);
+    mgr.setup();
+    size_t fcl_boxes = 0;
+    t = now();
+    for (const auto &b : qs.box) {
+        auto shape = std::make_shared<fcl::Boxd>(b[3] - b[0], b[4] - b[1], b[5] - b[2]);
+        fcl::CollisionObjectd qo(shape, fcl::Matrix3d::Identity(),
+                                 fcl::Vector3d((b[0] + b[3]) / 2, (b[1] + b[4]) / 2,
+                                               (b[2] + b[5]) / 2));
+        FclQuery c = {&qo, 0};
+        mgr.collide(&qo, &c, fcl_query);
+        fcl_boxes += c.found;
+    }
+    print_query_row(spec, "fcl-dtree", "box", q, now() - t, fcl_boxes);
+    if (fcl_boxes != boxes) {
+        std::printf("%s: box queries found %zu objects in libnoctree and %zu in FCL\n", spec,
+                    boxes, fcl_boxes);
+        return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -831,6 +1002,7 @@ int main(int argc, char **argv)
     std::vector<const char *> scenes;
     bool use[NLIBS] = {true, false, true, true, false};
     bool quick = false, driven = false;
+    long queries = 0;
     const char *csv_path = nullptr;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -842,6 +1014,12 @@ int main(int argc, char **argv)
             o.broadphase = true;
         } else if (std::strcmp(a, "--driven") == 0) {
             driven = true;
+        } else if (std::strcmp(a, "--queries") == 0) {
+            queries = 10000;
+            if (has && parse_int(argv[i + 1], 1, 100000000, &v)) {
+                queries = v;
+                ++i;
+            }
         } else if (std::strcmp(a, "--help") == 0) {
             usage(stdout);
             return 0;
@@ -893,6 +1071,20 @@ int main(int argc, char **argv)
             usage(stderr);
             return 2;
         }
+    }
+    if (queries > 0) {
+        if (scenes.empty())
+            scenes = {"gas:10000", "gas:100000"};
+        std::printf("bench-peers --queries: libnoctree %s (efficient build, N = %d, exact) "
+                    "against FCL %s (dynamic AABB tree), %ld queries of each kind on each "
+                    "scene as set up; one thread\n",
+                    NOCT_VERSION_STRING, o.N, FCL_VERSION, queries);
+        std::printf("%-12s %-12s %-16s %8s %12s %10s %10s\n", "scene", "library", "query",
+                    "queries", "per second", "us each", "found");
+        bool all = true;
+        for (const char *spec : scenes)
+            all = run_queries(spec, queries, o) && all;
+        return all ? 0 : 1;
     }
     if (driven)
         use[DRIVEN] = true;
