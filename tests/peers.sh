@@ -4,7 +4,8 @@
 # contact-begin events (SCENES.md: (2R + 1)^2 on the planes, where R is the
 # last ring whose facing pair met, at step 51 + 2R; 6 212 on gas 1 000 in
 # 200 steps), the world driven by the program (--driven) the same as the
-# built-in motion, one CSV row per run, and exit status 2 for bad usage.
+# built-in motion, the queries (--queries) the same as FCL's where both
+# answer, one CSV row per run, and exit status 2 for bad usage.
 set -u
 . "${srcdir:-.}/lib.sh"
 peers="$top_builddir/tools/bench-peers"
@@ -61,6 +62,20 @@ check "bench-peers --driven: the same events on gas:1000" \
 check "bench-peers --driven: a header and 4 CSV rows" [ "$(wc -l < "$tmp/d.csv")" -eq 5 ]
 check "bench-peers --driven: noct-driven in the CSV" \
     grep -q '^gas:1000,1000,noct-driven,0,200,' "$tmp/d.csv"
+
+# Queries (--queries): libnoctree's and FCL's box queries find the same
+# objects (the tool fails otherwise); every kind finds some.
+"$peers" --queries 2000 gas:1000 > "$tmp/qq.txt" 2> "$tmp/qq.err"
+check "bench-peers --queries exits 0" [ $? -eq 0 ]
+check "bench-peers --queries: nothing on stderr" [ ! -s "$tmp/qq.err" ]
+check "bench-peers --queries: 5 rows, each found something" \
+    awk '$1 == "gas:1000" { r++; if ($NF + 0 <= 0) bad = 1 } END { exit bad || r != 5 }' \
+    "$tmp/qq.txt"
+check "bench-peers --queries: libnoctree and FCL find the same objects in boxes" \
+    awk '$1 == "gas:1000" && $3 == "box" { n[$2] = $NF }
+        END { exit !(n["libnoctree"] > 0 && n["libnoctree"] == n["fcl-dtree"]) }' \
+    "$tmp/qq.txt"
+expect_prog "$peers" 1 'runs on gas scenes only' --queries 10 planes:1
 
 expect_prog "$peers" 0 '^usage' --help
 expect_prog "$peers" 2 'no noct-driven' --broadphase --driven planes:1
