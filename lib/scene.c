@@ -39,6 +39,8 @@ typedef struct scene_object {
     uint64_t category, mask;
     bool sensor;
     noctQuat spin;           /* from 'spin', else the identity */
+    bool has_type;           /* 'type' given */
+    size_t first_key, nkeys; /* its keyframes in noctScene.keys */
 } scene_object;
 
 typedef struct scene_family {
@@ -53,6 +55,8 @@ struct noctScene {
     size_t nmeshes, capmeshes;
     scene_object *objects;
     size_t nobjects, capobjects;
+    noctKeyframe *keys;      /* the objects' tracks, each object's in a row */
+    size_t nkeys, capkeys;
     scene_family families[16];
     size_t nfamilies;
     noctMesh *unit_cube; /* for planes families */
@@ -68,6 +72,7 @@ void noctSceneDestroy(noctScene *s)
     }
     free(s->meshes);
     free(s->objects);
+    free(s->keys);
     noctMeshDestroy(s->unit_cube);
     free(s);
 }
@@ -320,6 +325,7 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
             else
                 return perr(p, NOCT_ERR_INVALID,
                             "unknown type '%s' (static, kinematic or moving)", t);
+            o->has_type = true;
         } else if (k == 4) {
             o->sensor = true;
         } else if (k == 5) {
@@ -416,6 +422,69 @@ static noctStatus parse_object(parser *p, noctScene *s)
     return NOCT_OK;
 }
 
+/* 'key TICK X Y Z [rotate AX AY AZ DEGREES]': a keyframe of the last
+ * object line's track. */
+static noctStatus parse_key(parser *p, noctScene *s)
+{
+    if (s->nobjects == 0)
+        return perr(p, NOCT_ERR_INVALID, "a key needs an object line above it");
+    scene_object *o = &s->objects[s->nobjects - 1];
+    if (o->has_velocity || o->speed > 0)
+        return perr(p, NOCT_ERR_INVALID,
+                    "an object that follows a track has no velocity (nor direction and speed)");
+    if (o->has_type && o->type != NOCT_OBJECT_KINEMATIC)
+        return perr(p, NOCT_ERR_INVALID, "an object that follows a track is kinematic");
+    long tick;
+    noctKeyframe k;
+    noctStatus st = integer(p, "key tick", 0, 9007199254740992L, &tick);
+    if (st != NOCT_OK || (st = numbers(p, "key position", k.x.p, 3)) != NOCT_OK)
+        return st;
+    k.tick = (uint64_t)tick;
+    k.x.q = (noctQuat){0, 0, 0, 1};
+    char *tok = next(p);
+    if (tok != NULL) {
+        if (strcmp(tok, "rotate") != 0)
+            return perr(p, NOCT_ERR_PARSE,
+                        "unexpected '%s'; expected 'key TICK X Y Z [rotate AX AY AZ DEGREES]'",
+                        tok);
+        double axis[4];
+        if ((st = numbers(p, "rotation axis and angle", axis, 4)) != NOCT_OK ||
+            (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        if (noctQuatFromAxisAngle(axis, axis[3], &k.x.q) != NOCT_OK)
+            return perr(p, NOCT_ERR_INVALID, "a rotation needs a non-zero axis");
+    }
+    if (o->nkeys > 0 && !(k.tick > s->keys[s->nkeys - 1].tick))
+        return perr(p, NOCT_ERR_INVALID, "key tick %llu is not after the previous key's %llu",
+                    (unsigned long long)k.tick,
+                    (unsigned long long)s->keys[s->nkeys - 1].tick);
+    for (int c = 0; c < 3; ++c)
+        if (fabs(k.x.p[c]) > NOCT_MAX_COORDINATE)
+            return perr(p, NOCT_ERR_TOO_LARGE, "key position beyond the coordinate limit");
+    if (s->meshes[o->mesh].mesh == NULL) { /* a box primitive: its corners as turned */
+        double R[9];
+        noctQuatToMatrix(&k.x.q, R, NULL);
+        if (noct_check_box_corners(s->meshes[o->mesh].half, R, NULL) != NOCT_OK)
+            return perr(p, NOCT_ERR_TOO_LARGE,
+                        "the box as turned puts a corner beyond the coordinate limit");
+    }
+    if (s->nkeys == s->capkeys) {
+        size_t cap = s->capkeys ? 2 * s->capkeys : 64;
+        noctKeyframe *q = realloc(s->keys, cap * sizeof *q);
+        if (q == NULL)
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
+        s->keys = q;
+        s->capkeys = cap;
+    }
+    if (o->nkeys == 0)
+        o->first_key = s->nkeys;
+    s->keys[s->nkeys++] = k;
+    ++o->nkeys;
+    o->type = NOCT_OBJECT_KINEMATIC;
+    s->def.effects |= NOCT_EFFECT_TRACK;
+    return NOCT_OK;
+}
+
 static noctStatus parse_line(parser *p, noctScene *s, char *kw)
 {
     noctStatus st;
@@ -494,10 +563,12 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
                 e |= NOCT_EFFECT_SUBSTEP;
             else if (strcmp(tok, "spin") == 0)
                 e |= NOCT_EFFECT_SPIN;
+            else if (strcmp(tok, "track") == 0)
+                e |= NOCT_EFFECT_TRACK;
             else if (strcmp(tok, "none") != 0)
                 return perr(p, NOCT_ERR_INVALID,
                             "unknown effect '%s' (motion, events, response, walls, "
-                            "substep, spin, none)",
+                            "substep, spin, track, none)",
                             tok);
         }
         s->def.effects = e;
@@ -524,6 +595,8 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         return parse_mesh(p, s);
     if (strcmp(kw, "object") == 0)
         return parse_object(p, s);
+    if (strcmp(kw, "key") == 0)
+        return parse_key(p, s);
     if (strcmp(kw, "family") == 0) {
         char *tok = next(p);
         if (s->nfamilies == sizeof s->families / sizeof *s->families)
@@ -700,6 +773,8 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
         }
         noctObjectId id;
         st = noct_world_add_object(w, &d, speed, &id, err);
+        if (st == NOCT_OK && o->nkeys > 0)
+            st = noctWorldSetTrack(w, id, &s->keys[o->first_key], o->nkeys, err);
     }
     if (st != NOCT_OK) {
         noctWorldDestroy(w);

@@ -58,7 +58,8 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
                          (int)def->accuracy);
     if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
                                    NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS |
-                                   NOCT_EFFECT_SUBSTEP | NOCT_EFFECT_SPIN))
+                                   NOCT_EFFECT_SUBSTEP | NOCT_EFFECT_SPIN |
+                                   NOCT_EFFECT_TRACK))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown effect bits 0x%x",
                          def->effects);
     if (def->maintenance != NOCT_MAINTAIN_INCREMENTAL &&
@@ -121,8 +122,8 @@ void noctWorldDestroy(noctWorld *w)
     free(w->events.sensing_held.p);
     free(w->spin.w);
     free(w->spin.spinners);
-    free(w->spin.old_q);
-    free(w->spin.old_mesh);
+    free(w->placed);
+    noct_world_free_tracks(w);
     free(w);
 }
 
@@ -546,6 +547,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     }
     noctMeshDestroy(w->pose[id.index].rotated);
     w->pose[id.index].rotated = NULL;
+    noct_world_drop_track(w, id.index);
     /* The lists stay: the colliding one holds its pairs, which the next
      * step's diff ends. */
     return NOCT_OK;
@@ -932,8 +934,7 @@ static uint64_t substeps_for(noctWorld *w, noctError *err)
 /* ---- spin (#NOCT_EFFECT_SPIN) ------------------------------------------------------ */
 
 /* The spinners (live moving objects whose angular velocity is not the
- * identity) and room for what a failed step gives back; false without
- * memory. */
+ * identity); false without memory. */
 static bool update_spinners(noctWorld *w)
 {
     noct_spin *sp = &w->spin;
@@ -945,15 +946,9 @@ static bool update_spinners(noctWorld *w)
              !is_identity_quat(&sp->w[i]);
     if (n > sp->cap) {
         uint32_t *a = realloc(sp->spinners, n * sizeof *a);
-        if (a != NULL)
-            sp->spinners = a;
-        noctQuat *q = a != NULL ? realloc(sp->old_q, n * sizeof *q) : NULL;
-        if (q != NULL)
-            sp->old_q = q;
-        noctMesh **m = q != NULL ? realloc(sp->old_mesh, n * sizeof *m) : NULL;
-        if (m == NULL)
+        if (a == NULL)
             return false;
-        sp->old_mesh = m;
+        sp->spinners = a;
         sp->cap = n;
     }
     sp->nspinners = 0;
@@ -965,18 +960,78 @@ static bool update_spinners(noctWorld *w)
     return true;
 }
 
-/* Give back the rotations this step made so far (a failed step): the old
- * quaternions and meshes, the boxes they place; the tree, which saw the
- * new boxes, is torn down for the next step to build again. */
-static void unspin(noctWorld *w)
+/* ---- placements before the motion (spin, tracks) ------------------------------------ */
+
+bool noct_world_reserve_placed(noctWorld *w, uint32_t n)
 {
-    noct_spin *sp = &w->spin;
-    for (uint32_t k = sp->nspun; k-- > 0;) {
-        const uint32_t s = sp->spinners[k];
+    w->nplaced = 0;
+    if (n <= w->capplaced)
+        return true;
+    noct_placed *a = realloc(w->placed, n * sizeof *a);
+    if (a == NULL)
+        return false;
+    w->placed = a;
+    w->capplaced = n;
+    return true;
+}
+
+noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const double p[3],
+                            noctError *err)
+{
+    NOCT_INVARIANT(w->nplaced < w->capplaced);
+    noct_pose *ps = &w->pose[s];
+    noctStatus st = check_position(p, err);
+    double R[9];
+    if (st == NOCT_OK)
+        st = noctQuatToMatrix(q, R, err);
+    if (st != NOCT_OK)
+        return st;
+    /* The same quaternion, bit for bit: the same shape, turned as it is. */
+    const bool same = memcmp(q, &ps->q, sizeof *q) == 0;
+    noctMesh *rotated = ps->rotated;
+    if (!same && w->obj[s].box && (st = noct_check_box_corners(ps->shape.half, R, err)) != NOCT_OK)
+        return st;
+    if (!same && (st = rotate_shape(shape_of(w, s), R, &rotated, err)) != NOCT_OK)
+        return st;
+    double lo[3], hi[3];
+    if (same) {
+        memcpy(lo, w->obj[s].mlo, sizeof lo);
+        memcpy(hi, w->obj[s].mhi, sizeof hi);
+    } else {
+        local_box(w, s, rotated, R, lo, hi);
+    }
+    st = noct_bp_move_to(&w->bp, s, lo, hi, p);
+    if (st != NOCT_OK) {
+        if (!same)
+            noctMeshDestroy(rotated);
+        return noct_fail(err, st, (long)s, 0, "placing object %u: out of memory", s);
+    }
+    noct_placed *r = &w->placed[w->nplaced++];
+    r->s = s;
+    r->new_mesh = !same;
+    r->q = ps->q;
+    r->mesh = ps->rotated;
+    memcpy(r->p, w->pos[s], sizeof r->p);
+    ps->rotated = rotated;
+    ps->q = *q;
+    memcpy(w->pos[s], p, sizeof w->pos[s]);
+    if (!same)
+        place_mesh(w, s);
+    return NOCT_OK;
+}
+
+void noct_world_unplace(noctWorld *w)
+{
+    for (uint32_t k = w->nplaced; k-- > 0;) {
+        const noct_placed *r = &w->placed[k];
+        const uint32_t s = r->s;
         noct_pose *p = &w->pose[s];
-        noctMeshDestroy(p->rotated);
-        p->rotated = sp->old_mesh[k];
-        p->q = sp->old_q[k];
+        if (r->new_mesh) {
+            noctMeshDestroy(p->rotated);
+            p->rotated = r->mesh;
+        }
+        p->q = r->q;
+        memcpy(w->pos[s], r->p, sizeof w->pos[s]);
         place_mesh(w, s);
         noct_proxy *o = &w->bp.proxy[s];
         memcpy(o->mlo, w->obj[s].mlo, sizeof o->mlo);
@@ -984,55 +1039,34 @@ static void unspin(noctWorld *w)
         noct_place_box(o->mlo, o->mhi, w->pos[s], &w->bp.box[s]);
         noct_forget_home(&w->bp, s);
     }
-    if (sp->nspun > 0 && w->bp.root != NULL)
+    if (w->nplaced > 0 && w->bp.root != NULL)
         noct_bp_drop_tree(&w->bp);
-    sp->nspun = 0;
+    w->nplaced = 0;
 }
 
-/* A step that succeeded keeps its rotations: the old meshes go. */
-static void spin_done(noctWorld *w)
+/* A step that succeeded keeps its placements: the meshes they replaced go. */
+static void placements_done(noctWorld *w)
 {
-    for (uint32_t k = 0; k < w->spin.nspun; ++k)
-        noctMeshDestroy(w->spin.old_mesh[k]);
-    w->spin.nspun = 0;
+    for (uint32_t k = 0; k < w->nplaced; ++k)
+        if (w->placed[k].new_mesh)
+            noctMeshDestroy(w->placed[k].mesh);
+    w->nplaced = 0;
 }
 
 /* Turn each spinner by its angular velocity, q <- noctQuatCompose(w, q),
- * through the set-transform path; on failure give them all back. */
+ * where it is; on failure give every placement back. */
 static noctStatus stage_spin(noctWorld *w, noctError *err)
 {
     noct_spin *sp = &w->spin;
-    sp->nspun = 0;
     for (uint32_t k = 0; k < sp->nspinners; ++k) {
         const uint32_t s = sp->spinners[k];
-        noct_pose *p = &w->pose[s];
-        const noctQuat q = noctQuatCompose(&sp->w[s], &p->q);
-        double R[9];
-        noctStatus st = noctQuatToMatrix(&q, R, err);
-        if (st == NOCT_OK && w->obj[s].box)
-            st = noct_check_box_corners(p->shape.half, R, err);
-        noctMesh *rotated = NULL;
-        if (st == NOCT_OK)
-            st = rotate_shape(shape_of(w, s), R, &rotated, err);
-        if (st == NOCT_OK) {
-            double lo[3], hi[3];
-            local_box(w, s, rotated, R, lo, hi);
-            st = noct_bp_move_to(&w->bp, s, lo, hi, w->pos[s]);
-            if (st != NOCT_OK) {
-                noctMeshDestroy(rotated);
-                noct_fail(err, st, (long)s, 0, "turning object %u: out of memory", s);
-            }
-        }
+        const noctQuat q = noctQuatCompose(&sp->w[s], &w->pose[s].q);
+        const double p[3] = {w->pos[s][0], w->pos[s][1], w->pos[s][2]};
+        noctStatus st = noct_world_place(w, s, &q, p, err);
         if (st != NOCT_OK) {
-            unspin(w);
+            noct_world_unplace(w);
             return st;
         }
-        sp->old_q[k] = p->q;
-        sp->old_mesh[k] = p->rotated;
-        ++sp->nspun;
-        p->rotated = rotated;
-        p->q = q;
-        place_mesh(w, s);
     }
     return NOCT_OK;
 }
@@ -1091,9 +1125,18 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     const bool spin = (w->def.effects & NOCT_EFFECT_SPIN) && w->spin.count > 0;
     if (spin && !update_spinners(w))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const bool tracks = (w->def.effects & NOCT_EFFECT_TRACK) && w->tracks.n > 0;
+    if (!noct_world_reserve_placed(w, (spin ? w->spin.nspinners : 0) +
+                                          (tracks ? w->tracks.n : 0)))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     w->substeps = k;
     ++w->c.steps;
     w->moved = w->touched = false;
+    if (tracks) {
+        noctStatus st = noct_world_stage_tracks(w, w->tick + 1, err);
+        if (st != NOCT_OK)
+            return st;
+    }
     if (spin) {
         noctStatus st = stage_spin(w, err);
         if (st != NOCT_OK)
@@ -1103,7 +1146,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, err);
         if (st != NOCT_OK) {
             noct_world_roll_back(w, w->moved, w->touched);
-            unspin(w);
+            noct_world_unplace(w);
             if (k > 1) {
                 noct_pair_list t = w->events.colliding;
                 w->events.colliding = w->events.held;
@@ -1117,7 +1160,8 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             return st;
         }
     }
-    spin_done(w);
+    placements_done(w);
+    ++w->tick;
     return NOCT_OK;
 }
 

@@ -80,19 +80,43 @@ typedef struct noct_events {
 
 /* Angular velocity (#NOCT_EFFECT_SPIN): each moving object's rotation per
  * step, per slot, made when the first object gets one (NULL before, so a
- * world without spin keeps none); the spinners, made again when objects,
- * types or angular velocities change; and what a failed step gives back:
- * each spun object's quaternion and rotated mesh from before the step. */
+ * world without spin keeps none); and the spinners, made again when
+ * objects, types or angular velocities change. */
 typedef struct noct_spin {
     noctQuat *w;           /* per slot; NULL: every one the identity */
     size_t count;          /* live objects with one not the identity */
     uint32_t *spinners;    /* live moving objects with one, by slot */
     uint32_t nspinners, cap;
     bool stale;
-    noctQuat *old_q;       /* per spinner, while a step runs */
-    noctMesh **old_mesh;
-    uint32_t nspun;        /* spinners turned so far this step */
 } noct_spin;
+
+/* An object's track (#NOCT_EFFECT_TRACK): its keyframes, owned. */
+typedef struct noct_track {
+    uint32_t slot;
+    noctKeyframe *keys;
+    size_t n;
+} noct_track;
+
+/* The tracks: a list, and per slot the index of its track in it
+ * (UINT32_MAX: none), made when the first track is set (NULL before). */
+typedef struct noct_tracks {
+    noct_track *list;
+    uint32_t n, cap;
+    uint32_t *of;          /* capof entries */
+    uint32_t capof;
+} noct_tracks;
+
+/* What a stage that places objects before the motion (spin, tracks)
+ * changed of one object, for a failed step to give back: its quaternion,
+ * its rotated mesh (owned here while the step runs, when a new one
+ * replaced it) and its position. */
+typedef struct noct_placed {
+    uint32_t s;
+    bool new_mesh;
+    noctQuat q;
+    noctMesh *mesh;
+    double p[3];
+} noct_placed;
 
 struct noctWorld {
     noctWorldDef def;
@@ -111,6 +135,10 @@ struct noctWorld {
     noct_motion motion;
     noct_events events;
     noct_spin spin;
+    noct_tracks tracks;
+    noct_placed *placed;   /* this step's placements (spin, tracks) */
+    uint32_t nplaced, capplaced;
+    uint64_t tick;         /* steps done */
     size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */
@@ -131,6 +159,30 @@ noctStatus noct_world_add_object(noctWorld *w, const noctObjectDef *def, double 
 /* Object s's placed mesh, made now for a box primitive that has none
  * (kept while its rotation lasts); NULL, with *st, if that failed. */
 const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st);
+
+/* Place object s at q and p for a stage of the step (spin, tracks), as
+ * noctWorldSetTransform() would, recording in w->placed (room reserved)
+ * what noct_world_unplace() gives back; on failure nothing changed. */
+noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const double p[3],
+                            noctError *err);
+
+/* Give back this step's placements (a failed step), last first; the
+ * tree, which saw them, is torn down for the next step to build again. */
+void noct_world_unplace(noctWorld *w);
+
+/* Room for n placements this step; false without memory. */
+bool noct_world_reserve_placed(noctWorld *w, uint32_t n);
+
+/* ---- world_track.c --------------------------------------------------------------- */
+
+/* Place every tracked object at its track's pose at tick (the step's);
+ * on failure give the placements back (noct_world_unplace()). */
+noctStatus noct_world_stage_tracks(noctWorld *w, uint64_t tick, noctError *err);
+
+/* Object s is gone: its track goes too. */
+void noct_world_drop_track(noctWorld *w, uint32_t s);
+
+void noct_world_free_tracks(noctWorld *w);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
 

@@ -14,6 +14,7 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
 	tests/check-objects tests/check-objects-efficient \
 	tests/check-queries tests/check-queries-efficient \
+	tests/check-tracks tests/check-tracks-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
@@ -24,6 +25,7 @@ TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
 	tests/check-objects tests/check-objects-efficient \
 	tests/check-queries tests/check-queries-efficient \
+	tests/check-tracks tests/check-tracks-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -97,6 +99,15 @@ tests_check_queries_efficient_SOURCES = $(tests_check_queries_SOURCES)
 tests_check_queries_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_queries_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_queries_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_tracks_SOURCES = tests/check_tracks.c $(test_common)
+tests_check_tracks_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_tracks_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_tracks_efficient_SOURCES = $(tests_check_tracks_SOURCES)
+tests_check_tracks_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_tracks_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_tracks_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
 tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)

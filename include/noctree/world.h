@@ -164,7 +164,7 @@ enum noctEffect {
                                          sub-step. For scenes whose objects
                                          may otherwise pass through each
                                          other between steps. */
-    NOCT_EFFECT_SPIN = 1u << 5      /**< Moving objects turn by their angular
+    NOCT_EFFECT_SPIN = 1u << 5,     /**< Moving objects turn by their angular
                                          velocity: once a step, before the
                                          motion (before the first sub-step),
                                          q becomes noctQuatCompose(angular
@@ -175,6 +175,15 @@ enum noctEffect {
                                          hundred instructions). Without it,
                                          angular velocities are kept but
                                          cost nothing. */
+    NOCT_EFFECT_TRACK = 1u << 6     /**< Objects with a track
+                                         (noctWorldSetTrack()) follow it: at
+                                         each step, first, each is placed
+                                         at its track's pose at the step's
+                                         tick (noctWorldTick() + 1), as by
+                                         noctWorldSetTransform(). Without
+                                         it, tracks are kept but cost
+                                         nothing, and a world without
+                                         tracks pays nothing for it. */
 };
 
 /** @brief How the octree follows the objects. */
@@ -463,7 +472,8 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError
  * @pre @p world is not NULL.
  * A failed step changes nothing that a program can see but the error and
  * the counters: every object is where it was, with the velocity it had,
- * before the step (all of its sub-steps with #NOCT_EFFECT_SUBSTEP), the
+ * before the step (all of its sub-steps with #NOCT_EFFECT_SUBSTEP; turned
+ * and placed as it was, whatever spin or a track did), the
  * colliding list is the one before the step, and the began and ended
  * lists are empty. If the octree might have been changed, it is torn
  * down and the next step builds it again (noctWorldRoot() is NULL until
@@ -475,6 +485,93 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError
  *         #NOCT_ERR_NOMEM; a narrowphase status (#NOCT_ERR_NUMERIC).
  */
 NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
+
+/** @brief A keyframe of a track: where an object is at a tick. */
+typedef struct noctKeyframe {
+    uint64_t tick;   /**< The world's tick (steps done, noctWorldTick()) at
+                          which the object is here. */
+    noctTransform x; /**< Its rotation and translation there. */
+} noctKeyframe;
+
+/**
+ * @brief Where a track puts an object at a tick.
+ *
+ * Before the first keyframe, the first one's transform; from the last one
+ * on, the last one's; at a keyframe's tick, that keyframe's transform, bit
+ * for bit. Between keyframes k and k + 1, with
+ * `s = fl((double)(tick - t_k) / (double)(t_k+1 - t_k))`:
+ * - each coordinate of the position is `fl(fl(fl(1 - s) p_k) + fl(s p_k+1))`
+ *   (linear interpolation, every operation rounded once, no fused
+ *   multiply-add);
+ * - the rotation is the spherical linear interpolation along the shorter
+ *   arc: with `d` the dot product of the two quaternions (((x x + y y) +
+ *   z z) + w w) and q_k+1 negated when d < 0 (then d = -d), `q = a q_k +
+ *   b q_k+1` with `a = 1 - s, b = s` when d > 0.9995 (nearly the same
+ *   rotation), else `a = sin((1 - s) t) / sin(t)`, `b = sin(s t) / sin(t)`
+ *   for `t = acos(d)` (the C library's acos and sin), then divided by
+ *   `fl(sqrt(((x x + y y) + z z) + w w))` of itself.
+ *
+ * So the same keyframes give the same poses on every run, in both builds;
+ * across C libraries the rotations between keyframes may differ in their
+ * last bits.
+ * @pre keys != NULL && n > 0 && x != NULL; the keyframes' ticks increase
+ *      and their quaternions are unit (as noctWorldSetTrack() checks).
+ * @post *x is the pose at tick.
+ * @param keys the keyframes, in order of tick.
+ * @param n how many.
+ * @param tick the tick.
+ * @param x receives the pose.
+ */
+NOCT_API void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransform *x);
+
+/**
+ * @brief Make an object follow a track (#NOCT_EFFECT_TRACK), or none.
+ * @pre world != NULL && (keys != NULL || n == 0)
+ * @post On #NOCT_OK the world keeps a copy of the keyframes; the object is
+ *       placed at once at the track's pose at the current tick
+ *       (noctTrackAt() at noctWorldTick(), as noctWorldSetTransform()
+ *       places it), and at each step, with the effect, at the step's. With
+ *       n == 0 the object has no track any more (it stays where it is).
+ *       A track places the object; it does not stop it moving: a moving
+ *       object also moves by its velocity after the track placed it, so
+ *       objects that follow tracks are usually kinematic. On failure
+ *       nothing changed.
+ * @param world the world.
+ * @param id the object.
+ * @param keys its keyframes, in strictly increasing order of tick.
+ * @param n how many (0: no track).
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle, or keyframes
+ *         whose ticks do not strictly increase (the message names the
+ *         keyframe); what noctWorldSetTransform() returns for a keyframe's
+ *         bad transform, naming it (#NOCT_ERR_NONFINITE, #NOCT_ERR_INVALID,
+ *         #NOCT_ERR_TOO_LARGE); #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldSetTrack(noctWorld *world, noctObjectId id,
+                                      const noctKeyframe *keys, size_t n, noctError *err);
+
+/**
+ * @brief An object's track.
+ * @pre world != NULL && keys != NULL
+ * @post *keys points at the world's copy of its keyframes (valid until the
+ *       track or the object changes), NULL when it has none or the handle
+ *       is stale.
+ * @param world the world.
+ * @param id the object.
+ * @param keys receives the keyframes.
+ * @return how many keyframes (0: no track, or a stale handle).
+ */
+NOCT_API size_t noctWorldGetTrack(const noctWorld *world, noctObjectId id,
+                                  const noctKeyframe **keys);
+
+/**
+ * @brief The world's tick: how many steps it has done (failed ones not
+ * counted).
+ * @pre world != NULL
+ * @param world the world.
+ * @return the steps done.
+ */
+NOCT_API uint64_t noctWorldTick(const noctWorld *world);
 
 /**
  * @brief The pairs colliding after the last step (or none before the
