@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # noctree-sim end to end: known event counts, the event log, a scene file,
-# the per-step reports against pairs worked out by hand, and a
+# the per-step reports and --first against pairs worked out by hand, and a
 # precise message with exit status 2 for every kind of bad input.
 set -u
 . "${srcdir:-.}/lib.sh"
@@ -94,7 +94,7 @@ expect_run 0 '^contact begins 1$' --quiet --substep "$tmp/fast.scene"
 "$sim" --quiet --substep "$tmp/fast.scene" 2>&1 | grep -q warning &&
     fail "--substep still warns" || ok
 
-# ---- --report ------------------------------------------------------------------
+# ---- --report and --first ---------------------------------------------------
 # Unit cubes (half-extents 0.5) on the x axis, without response, so that
 # objects pass through each other: two collide after step s exactly when
 # their positions (p += v each step, before detection) are at most 1 apart on
@@ -211,6 +211,63 @@ else
     echo "sim: gnuplot not installed, the scripts are not run"
 fi
 
+# --first: the step follows from the gap g between the faces and the closing
+# speed c = v0 + v1: ceil(g / c) (in eighths: (8g + 8c - 1) / 8c). At that
+# step cube 0 is at x0 = v0 s and cube 1 at (x1, dy, dz), x1 = 1 + g - v1 s
+# > x0, so the boxes' intersection is x1 - 0.5 to x0 + 0.5 on x, and
+# max(-0.5, d - 0.5) to min(0.5, d + 0.5) for d = dy, dz on y and z.
+first_case() { # G V0 V1 DY DZ: the gap and the speeds in eighths, cube 1's offset
+    awk -v g="$1" -v a="$2" -v b="$3" -v dy="$4" -v dz="$5" -v f="$tmp/first.scene" 'BEGIN {
+        print "mesh cube box 0.5 0.5 0.5" > f
+        printf "object cube 0 0 0 velocity %g 0 0\n", a / 8 > f
+        printf "object cube %g %g %g velocity %g 0 0\n", 1 + g / 8, dy, dz, -b / 8 > f
+        s = int((g + a + b - 1) / (a + b)); x0 = a * s / 8; x1 = 1 + (g - b * s) / 8
+        line = "first collision at step %d: objects 0 and 1, contact box (%g, %g, %g) (%g, %g, %g)\n"
+        ylo = dy > 0 ? dy - 0.5 : -0.5; yhi = dy < 0 ? dy + 0.5 : 0.5
+        zlo = dz > 0 ? dz - 0.5 : -0.5; zhi = dz < 0 ? dz + 0.5 : 0.5
+        printf line, s, x1 - 0.5, ylo, zlo, x0 + 0.5, yhi, zhi
+    }' > "$tmp/first.want"
+    "$sim" --first --quiet "$tmp/first.scene" > "$tmp/first.got" 2> /dev/null
+    check "--first, gap $1/8, speeds $2/8 and $3/8: exit 0" [ $? -eq 0 ]
+    check "--first, gap $1/8, speeds $2/8 and $3/8: want $(cat "$tmp/first.want"), got $(cat "$tmp/first.got")" \
+        cmp -s "$tmp/first.got" "$tmp/first.want"
+}
+first_case 32 2 3 0 0         # ceil(32 / 5) = 7; the boxes overlap by 0.375
+first_case 16 2 2 0 0         # 16 / 4 = 4: touching faces count
+first_case 24 1 0 0.25 -0.5   # cube 1 still, offset on y and z: step 24
+first_case 12 3 2 -0.75 0.125 # ceil(12 / 5) = 3
+
+expect_run 0 '^first collision at step 3: objects 0 and 2, contact box (1.25, -0.5, -0.5) (1.25, 0.5, 0.5)$' \
+    --first --quiet "$tmp/three.scene"
+# It stops there: no event after step 3, no summary.
+"$sim" --first --events --quiet "$tmp/three.scene" > "$tmp/out" 2>&1
+check "--first --events: the begin at step 3, then the line" \
+    [ "$(cat "$tmp/out")" = "3 begin 0 2
+first collision at step 3: objects 0 and 2, contact box (1.25, -0.5, -0.5) (1.25, 0.5, 0.5)" ]
+expect_run 0 '^no collision in 2 steps$' --first --steps 2 --quiet "$tmp/three.scene"
+"$sim" --first --steps 2 --quiet "$tmp/three.scene" > "$tmp/out" 2>&1
+check "--first without a collision: one line, no summary" [ "$(wc -l < "$tmp/out")" -eq 1 ]
+# Sensors' pairs are not collisions.
+expect_run 0 '^no collision in 100 steps$' --first --steps 100 --quiet "$tmp/sensor.scene"
+# Overlapping before the first step: that is step 1.
+cat > "$tmp/overlap.scene" <<'SCENE'
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0
+object cube 0.5 0.25 0
+SCENE
+expect_run 0 '^first collision at step 1: objects 0 and 1, contact box (0, -0.25, -0.5) (0.5, 0.5, 0.5)$' \
+    --first "$tmp/overlap.scene"
+# Two pairs meet at step 8: the first in the world's order, 0-3, not 1-2.
+cat > "$tmp/two-pairs.scene" <<'SCENE'
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0    velocity 0.25 0 0
+object cube 0 10 0   velocity 0.25 0 0
+object cube 3 10 0   type static
+object cube 3 0 0    type static
+SCENE
+expect_run 0 '^first collision at step 8: objects 0 and 3, contact box (2.5, -0.5, -0.5) (2.5, 0.5, 0.5)$' \
+    --first "$tmp/two-pairs.scene"
+
 # Bad usage: exit 2.
 expect_run 2 'give one scene' --quiet
 expect_run 2 "unknown scene 'nope:3'" --scene nope:3
@@ -223,6 +280,8 @@ expect_run 2 '--accuracy must be' --scene planes:1 --accuracy perfect
 expect_run 2 "^noctree-sim: --report must be table, csv or gnuplot, not 'xml'$" \
     --scene planes:1 --report xml
 expect_run 2 "unknown option or missing value: '--report'" --scene planes:1 --report
+expect_run 2 '^noctree-sim: --first and --report cannot be combined$' \
+    --scene planes:1 --first --report table
 expect_run 2 '^noctree-sim: --output needs --report$' --scene planes:1 --output "$tmp/o.csv"
 check "--output without --report: no file made" [ ! -e "$tmp/o.csv" ]
 expect_run 2 "^noctree-sim: cannot open '$tmp/no-such-dir/r.csv' for writing: " \

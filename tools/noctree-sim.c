@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * noctree-sim: run a scene (a file, or a built-in family) in the collision
- * world and report its contact events, the pairs colliding at each step,
- * and where the time went.
+ * world and report its contact events, the pairs colliding at each step or
+ * the first collision, and where the time went.
  * See noctree-sim(1) and noctree-scene(5).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -33,12 +33,15 @@ static const char usage[] =
     "  --report FORMAT       the colliding pairs after every step: table, csv or\n"
     "                        gnuplot (a script plotting them against the step)\n"
     "  --output FILE         write the report to FILE, not standard output\n"
+    "  --first               stop at the first step with a colliding pair and say\n"
+    "                        which objects and their bounding boxes' intersection\n"
     "  --quiet               no progress bar\n"
     "  --help                this text\n"
     "  --version             the version\n"
     "\n"
-    "Exit status: 0 on success, 1 if the simulation failed or the report could\n"
-    "not be written, 2 for bad usage or input.\n";
+    "Exit status: 0 on success (with --first, whether or not a pair collided),\n"
+    "1 if the simulation failed or the report could not be written, 2 for bad\n"
+    "usage or input.\n";
 
 /*
  * --report: after every step, the world's colliding pairs (noctWorldColliding(),
@@ -157,13 +160,37 @@ static void report_end(report *r)
     fputs("plot $data using 1:2 with steps linewidth 2 title 'colliding pairs'\n", r->out);
 }
 
+/* --first: the line for the first pair colliding after step s, with its
+ * contact box, the intersection of the objects' placed bounding boxes. */
+static bool print_first(const noctWorld *w, int s, noctPair pair)
+{
+    double alo[3], ahi[3], blo[3], bhi[3], lo[3], hi[3];
+    if (noctWorldObjectBox(w, pair.a, alo, ahi) != NOCT_OK ||
+        noctWorldObjectBox(w, pair.b, blo, bhi) != NOCT_OK) {
+        tool_error("step %d: no box for the pair %u-%u", s, pair.a.index, pair.b.index);
+        return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = alo[k] > blo[k] ? alo[k] : blo[k];
+        hi[k] = ahi[k] < bhi[k] ? ahi[k] : bhi[k];
+    }
+    char b[6][32];
+    printf("first collision at step %d: objects %u and %u, contact box (%s, %s, %s) "
+           "(%s, %s, %s)\n",
+           s, pair.a.index, pair.b.index, tool_format_double(lo[0], b[0]),
+           tool_format_double(lo[1], b[1]), tool_format_double(lo[2], b[2]),
+           tool_format_double(hi[0], b[3]), tool_format_double(hi[1], b[4]),
+           tool_format_double(hi[2], b[5]));
+    return true;
+}
+
 int main(int argc, char **argv)
 {
     tool_scene_args sa = {0};
     const char *opt_acc = NULL,
                *opt_maint = NULL;
     long steps = 0;
-    bool events = false, quiet = false, substep = false;
+    bool events = false, quiet = false, substep = false, first = false;
     report rep = {.format = REPORT_NONE};
     tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
@@ -181,6 +208,8 @@ int main(int argc, char **argv)
             quiet = true;
         } else if (strcmp(a, "--substep") == 0) {
             substep = true;
+        } else if (strcmp(a, "--first") == 0) {
+            first = true;
         } else if (strcmp(a, "--report") == 0 && has_value) {
             const char *f = argv[++i];
             rep.format = REPORT_NONE;
@@ -207,6 +236,8 @@ int main(int argc, char **argv)
         }
     }
 
+    if (first && rep.format != REPORT_NONE)
+        return tool_usage_error("--first and --report cannot be combined");
     if (rep.path != NULL && rep.format == REPORT_NONE)
         return tool_usage_error("--output needs --report");
     /* The gnuplot script draws its plot in the --output name with .svg for
@@ -289,9 +320,10 @@ int main(int argc, char **argv)
     }
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0, sensor_events = 0;
-    int status = 0;
+    int status = 0, stopped = 0;
     for (int s = 1; s <= nsteps; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
+            tool_progress_end();
             tool_error("step %d: %s", s, err.message);
             status = 1;
             break;
@@ -313,9 +345,16 @@ int main(int argc, char **argv)
         sensor_events += ne;
         for (size_t i = 0; events && i < ne; ++i)
             fprintf(info, "%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
-        if (rep.format != REPORT_NONE) {
+        if (rep.format != REPORT_NONE || first) {
             size_t nc = noctWorldColliding(w, &p);
             report_step(&rep, s, p, nc);
+            if (first && nc > 0) {
+                tool_progress_end();
+                if (!print_first(w, s, p[0]))
+                    status = 1;
+                stopped = s;
+                break;
+            }
         }
         if (s % 5 == 0 || s == nsteps) {
             char label[48];
@@ -333,7 +372,10 @@ int main(int argc, char **argv)
         tool_error("cannot write the report: %s", strerror(errno));
         status = 1;
     }
-    if (status == 0) {
+    if (status == 0 && first) {
+        if (stopped == 0)
+            printf("no collision in %d steps\n", nsteps);
+    } else if (status == 0) {
         noctWorldCounters c;
         noctWorldGetCounters(w, &c);
         const noctPair *p;
