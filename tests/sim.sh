@@ -268,6 +268,17 @@ SCENE
 expect_run 0 '^first collision at step 8: objects 0 and 3, contact box (2.5, -0.5, -0.5) (2.5, 0.5, 0.5)$' \
     --first "$tmp/two-pairs.scene"
 
+# With sub-steps the plates of fast.scene meet and part within step 6
+# (ceil(10.1 / 2)): in the events, not in the colliding list at the step's
+# end, which is all --first and --report see; a warning says so.
+expect_run 0 "^noctree-sim: warning: step 6: objects 0 and 1 met and parted within the step's sub-steps; --first sees only" \
+    --quiet --substep --first "$tmp/fast.scene"
+expect_run 0 '^no collision in 10 steps$' --quiet --substep --first "$tmp/fast.scene"
+expect_run 0 "^noctree-sim: warning: step 6: objects 0 and 1 met and parted within the step's sub-steps; the report lists only" \
+    --quiet --substep --report csv "$tmp/fast.scene"
+"$sim" --quiet --report csv --steps 20 "$tmp/three.scene" 2>&1 | grep -q 'met and parted' &&
+    fail "--report: a parting warning without sub-steps" || ok
+
 # Bad usage: exit 2.
 expect_run 2 'give one scene' --quiet
 expect_run 2 "unknown scene 'nope:3'" --scene nope:3

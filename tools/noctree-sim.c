@@ -160,6 +160,28 @@ static void report_end(report *r)
     fputs("plot $data using 1:2 with steps linewidth 2 title 'colliding pairs'\n", r->out);
 }
 
+static int pair_order(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
+
+/* With sub-steps, a pair can meet and part within one step: it is in the
+ * step's began list but not in its colliding list, the last sub-step's,
+ * which is all that --report and --first see. Find the first such pair. */
+static bool parted_within(const noctPair *began, size_t nb, const noctPair *col, size_t nc,
+                          noctPair *pair)
+{
+    for (size_t i = 0; i < nb; ++i)
+        if (nc == 0 || bsearch(&began[i], col, nc, sizeof *col, pair_order) == NULL) {
+            *pair = began[i];
+            return true;
+        }
+    return false;
+}
+
 /* --first: the line for the first pair colliding after step s, with its
  * contact box, the intersection of the objects' placed bounding boxes. */
 static bool print_first(const noctWorld *w, int s, noctPair pair)
@@ -321,6 +343,7 @@ int main(int argc, char **argv)
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0, sensor_events = 0;
     int status = 0, stopped = 0;
+    bool told_parted = false;
     for (int s = 1; s <= nsteps; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
             tool_progress_end();
@@ -328,16 +351,16 @@ int main(int argc, char **argv)
             status = 1;
             break;
         }
-        const noctPair *p;
-        size_t nb = noctWorldBegan(w, &p);
-        begins += nb;
-        for (size_t i = 0; events && i < nb; ++i)
-            fprintf(info, "%d begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        const noctPair *p, *began;
+        size_t nbegan = noctWorldBegan(w, &began);
+        begins += nbegan;
+        for (size_t i = 0; events && i < nbegan; ++i)
+            fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
         size_t ne = noctWorldEnded(w, &p);
         ends += ne;
         for (size_t i = 0; events && i < ne; ++i)
             fprintf(info, "%d end %u %u\n", s, p[i].a.index, p[i].b.index);
-        nb = noctWorldSensorBegan(w, &p);
+        size_t nb = noctWorldSensorBegan(w, &p);
         sensor_events += nb;
         for (size_t i = 0; events && i < nb; ++i)
             fprintf(info, "%d sensor-begin %u %u\n", s, p[i].a.index, p[i].b.index);
@@ -347,6 +370,15 @@ int main(int argc, char **argv)
             fprintf(info, "%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
         if (rep.format != REPORT_NONE || first) {
             size_t nc = noctWorldColliding(w, &p);
+            noctPair gone;
+            if (!told_parted && parted_within(began, nbegan, p, nc, &gone)) {
+                tool_progress_end();
+                tool_error("warning: step %d: objects %u and %u met and parted within the "
+                           "step's sub-steps; %s only the pairs colliding at the end of a step",
+                           s, gone.a.index, gone.b.index,
+                           first ? "--first sees" : "the report lists");
+                told_parted = true;
+            }
             report_step(&rep, s, p, nc);
             if (first && nc > 0) {
                 tool_progress_end();
