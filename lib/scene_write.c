@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * noctSceneWrite(): a scene as a scene file that reads back to the same
- * scene, every number with 17 significant digits (a double's round trip),
+ * scene, every number in the fewest digits that read back to it,
  * rotations by the axis and degrees they were given by.
  */
 #include "config.h"
@@ -9,17 +9,39 @@
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
 #include "mesh_internal.h"
 #include "scene_internal.h"
 
+/* x in the fewest significant digits (15 to 17) that read back to it. */
+static const char *num(char buf[32], double x)
+{
+    for (int digits = 15; digits <= 17; ++digits) {
+        snprintf(buf, 32, "%.*g", digits, x);
+        if (strtod(buf, NULL) == x)
+            break;
+    }
+    return buf;
+}
+
+/* " a b c" for three numbers. */
+static void nums(FILE *f, const double *x, int n)
+{
+    char b[32];
+    for (int i = 0; i < n; ++i)
+        fprintf(f, " %s", num(b, x[i]));
+}
+
 static void turn(FILE *f, const char *kw, const scene_turn *t)
 {
-    if (t->given)
-        fprintf(f, " %s %.17g %.17g %.17g %.17g", kw, t->axis[0], t->axis[1], t->axis[2],
-                t->degrees);
+    if (!t->given)
+        return;
+    fprintf(f, " %s", kw);
+    nums(f, t->axis, 3);
+    nums(f, &t->degrees, 1);
 }
 
 static const char *type_name(noctObjectType t)
@@ -41,27 +63,34 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             : d->accuracy == NOCT_ACCURACY_CONVEX ? "convex"
                                                   : "exact",
             d->maintenance == NOCT_MAINTAIN_REBUILD ? "rebuild" : "incremental", s->steps);
-    if (d->effects & NOCT_EFFECT_WALLS)
-        fprintf(f, "walls %.17g %.17g %.17g %.17g %.17g %.17g\n", d->walls_lo[0], d->walls_lo[1],
-                d->walls_lo[2], d->walls_hi[0], d->walls_hi[1], d->walls_hi[2]);
+    if (d->effects & NOCT_EFFECT_WALLS) {
+        fprintf(f, "walls");
+        nums(f, d->walls_lo, 3);
+        nums(f, d->walls_hi, 3);
+        fprintf(f, "\n");
+    }
     for (size_t i = 0; i < s->nmeshes; ++i) {
         const scene_mesh *m = &s->meshes[i];
-        if (m->box)
-            fprintf(f, "mesh %s box %.17g %.17g %.17g\n", m->name, m->half[0], m->half[1],
-                    m->half[2]);
-        else
+        if (m->box) {
+            fprintf(f, "mesh %s box", m->name);
+            nums(f, m->half, 3);
+            fprintf(f, "\n");
+        } else
             fprintf(f, "mesh %s file %s\n", m->name, m->file);
     }
     for (size_t i = 0; i < s->nfamilies; ++i)
         fprintf(f, "family %s %ld\n", s->families[i].gas ? "gas" : "planes", s->families[i].size);
     for (size_t i = 0; i < s->nobjects; ++i) {
         const scene_object *o = &s->objects[i];
-        fprintf(f, "object %s %.17g %.17g %.17g", s->meshes[o->mesh].name, o->pos[0], o->pos[1],
-                o->pos[2]);
-        if (o->has_velocity)
-            fprintf(f, " velocity %.17g %.17g %.17g", o->vel[0], o->vel[1], o->vel[2]);
-        else if (o->speed > 0)
-            fprintf(f, " %.17g %.17g %.17g %.17g", o->dir[0], o->dir[1], o->dir[2], o->speed);
+        fprintf(f, "object %s", s->meshes[o->mesh].name);
+        nums(f, o->pos, 3);
+        if (o->has_velocity) {
+            fprintf(f, " velocity");
+            nums(f, o->vel, 3);
+        } else if (o->speed > 0) {
+            nums(f, o->dir, 3);
+            nums(f, &o->speed, 1);
+        }
         turn(f, "rotate", &o->rotate);
         fprintf(f, " type %s", type_name(o->type));
         if (o->category != NOCT_FILTER_ALL || o->mask != NOCT_FILTER_ALL)
@@ -72,8 +101,8 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
         fprintf(f, "\n");
         for (size_t j = 0; j < o->nkeys; ++j) {
             const scene_key *k = &s->keys[o->first_key + j];
-            fprintf(f, "key %" PRIu64 " %.17g %.17g %.17g", k->k.tick, k->k.x.p[0], k->k.x.p[1],
-                    k->k.x.p[2]);
+            fprintf(f, "key %" PRIu64, k->k.tick);
+            nums(f, k->k.x.p, 3);
             turn(f, "rotate", &k->turn);
             fprintf(f, "\n");
         }

@@ -840,11 +840,11 @@ START_TEST(scenes_written_read_back)
             static const char *const LINES[] = {
                 "N big\n", "max-depth 12\n", "maintenance rebuild\n", "steps 60\n",
                 "walls -10 -10 -10 10 10 10\n", "mesh a box 0.5 0.25 0.125\n",
-                "object a 0 0 0 velocity 0.10000000000000001 -0.20000000000000001 "
-                "0.29999999999999999 rotate 0 0 1 90 type moving filter 0x6 0x3\n",
+                "object a 0 0 0 velocity 0.1 -0.2 0.3 rotate 0 0 1 90 type moving "
+                "filter 0x6 0x3\n",
                 "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n",
-                "object f 0.29999999999999999 5 0 type static sensor\n",
-                " spin 0 0 1 7.5\n", "key 7 2 1.5 1 rotate 0 1 0 33.299999999999997\n",
+                "object f 0.3 5 0 type static sensor\n",
+                " spin 0 0 1 7.5\n", "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
                 "key 20 -1 0 0\n", "effects motion events response walls spin track\n"};
             for (size_t k = 0; k < sizeof LINES / sizeof *LINES; ++k)
                 ck_assert_msg(strstr(t1, LINES[k]) != NULL, "'%s' not in:\n%s", LINES[k], t1);

@@ -305,4 +305,31 @@ if [ -w /dev/full ]; then
         --quiet --report csv --output /dev/full "$tmp/three.scene"
 fi
 
+# The families made of tracks, and --write-scene: the example files under
+# docs/examples/scenes are what the families write, and run the same.
+scenes="$top_srcdir/docs/examples/scenes"
+"$sim" --scene arms:3 --write-scene "$tmp/arms.scene" > "$tmp/out" 2>&1
+check "--write-scene: exit 0, nothing printed" [ $? -eq 0 ] && [ ! -s "$tmp/out" ]
+check "--write-scene arms:3 is docs/examples/scenes/arms-3.scene" \
+    cmp -s "$tmp/arms.scene" "$scenes/arms-3.scene"
+"$sim" --scene keyframes:20 --write-scene - > "$tmp/kf.scene" 2>&1
+check "--write-scene - keyframes:20 is docs/examples/scenes/keyframes-20.scene" \
+    cmp -s "$tmp/kf.scene" "$scenes/keyframes-20.scene"
+"$sim" --quiet --events --scene arms:3 > "$tmp/fam.events" 2>&1
+"$sim" --quiet --events "$scenes/arms-3.scene" > "$tmp/file.events" 2>&1
+check "arms:3: the family and its file give the same events" \
+    sh -c "grep -E '^[0-9]+ (begin|end)' '$tmp/fam.events' > '$tmp/fam.e'; grep -E '^[0-9]+ (begin|end)' '$tmp/file.events' > '$tmp/file.e'; [ -s '$tmp/fam.e' ] && cmp -s '$tmp/fam.e' '$tmp/file.e'"
+check "arms:3: the arms' tips (objects 16 and 19) touch from step 1 and part at 9" \
+    sh -c "grep -q '^1 begin 16 19\$' '$tmp/fam.events' && grep -q '^9 end 16 19\$' '$tmp/fam.events'"
+expect_run 0 '^first collision at step 1: objects 16 and 19, contact box ' \
+    --quiet --first --scene arms:3
+"$sim" --quiet --events --maintenance rebuild "$scenes/keyframes-20.scene" > "$tmp/kf1" 2>&1
+"$sim" --quiet --events --N big "$scenes/keyframes-20.scene" > "$tmp/kf2" 2>&1
+check "keyframes-20: the same events whatever the tree" \
+    sh -c "grep -E '^[0-9]+ (begin|end)' '$tmp/kf1' > '$tmp/kf1e'; grep -E '^[0-9]+ (begin|end)' '$tmp/kf2' > '$tmp/kf2e'; [ -s '$tmp/kf1e' ] && cmp -s '$tmp/kf1e' '$tmp/kf2e'"
+expect_run 2 "^noctree-sim: /nonexistent/x.scene: cannot open" \
+    --scene arms:1 --write-scene /nonexistent/x.scene
+expect_run 2 "unknown scene 'arms:9'" --scene arms:9
+expect_run 2 "unknown scene 'keyframes:0'" --scene keyframes:0
+
 finish sim

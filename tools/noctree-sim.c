@@ -18,10 +18,11 @@
 
 static const char usage[] =
     "usage: noctree-sim [OPTIONS] SCENE-FILE\n"
-    "       noctree-sim [OPTIONS] --scene planes:K|gas:N\n"
+    "       noctree-sim [OPTIONS] --scene planes:K|gas:N|arms:K|keyframes:N\n"
     "Run a scene in the libnoctree collision world.\n"
     "\n"
-    "  --scene FAMILY        a built-in scene: planes:K (the report's t_K) or gas:N\n"
+    "  --scene FAMILY        a built-in scene: planes:K (the report's t_K), gas:N,\n"
+    "                        arms:K (two arms of K links in a bay) or keyframes:N\n"
     "  --N N|big             most objects per octree leaf (big: exhaustive)\n"
     "  --max-depth D         deepest octree level, 1 to 40\n"
     "  --accuracy LEVEL      box, convex or exact\n"
@@ -35,6 +36,8 @@ static const char usage[] =
     "  --output FILE         write the report to FILE, not standard output\n"
     "  --first               stop at the first step with a colliding pair and say\n"
     "                        which objects and their bounding boxes' intersection\n"
+    "  --write-scene FILE    write the scene, with the options above applied, as a\n"
+    "                        scene file (- for standard output) and run nothing\n"
     "  --quiet               no progress bar\n"
     "  --help                this text\n"
     "  --version             the version\n"
@@ -213,6 +216,7 @@ int main(int argc, char **argv)
                *opt_maint = NULL;
     long steps = 0;
     bool events = false, quiet = false, substep = false, first = false;
+    const char *write_scene = NULL;
     report rep = {.format = REPORT_NONE};
     tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
@@ -242,6 +246,8 @@ int main(int argc, char **argv)
                 return tool_usage_error("--report must be table, csv or gnuplot, not '%s'", f);
         } else if (strcmp(a, "--output") == 0 && has_value) {
             rep.path = argv[++i];
+        } else if (strcmp(a, "--write-scene") == 0 && has_value) {
+            write_scene = argv[++i];
         } else if (strcmp(a, "--accuracy") == 0 && has_value) {
             opt_acc = argv[++i];
         } else if (strcmp(a, "--maintenance") == 0 && has_value) {
@@ -299,6 +305,26 @@ int main(int argc, char **argv)
     if (substep)
         def->effects |= NOCT_EFFECT_SUBSTEP;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
+    if (write_scene != NULL) {
+        const bool to_stdout = strcmp(write_scene, "-") == 0;
+        FILE *f = to_stdout ? stdout : fopen(write_scene, "w");
+        if (f == NULL) {
+            tool_error("%s: cannot open: %s", write_scene, strerror(errno));
+            noctSceneDestroy(scene);
+            return 2;
+        }
+        noctStatus st = noctSceneWrite(scene, f, &err);
+        if ((!to_stdout && fclose(f) != 0 && st == NOCT_OK) ||
+            (to_stdout && fflush(stdout) != 0 && st == NOCT_OK)) {
+            st = NOCT_ERR_IO;
+            snprintf(err.message, sizeof err.message, "writing the scene: %s",
+                     strerror(errno));
+        }
+        if (st != NOCT_OK)
+            tool_error("%s: %s", write_scene, err.message);
+        noctSceneDestroy(scene);
+        return st == NOCT_OK ? 0 : 1;
+    }
 
     noctWorld *w;
     if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
