@@ -30,6 +30,7 @@ noctree_sources = \
 	lib/world_internal.h \
 	lib/world_motion.c \
 	lib/world_narrow.c \
+	lib/world_near.c \
 	lib/world_query.c \
 	lib/world_track.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)

@@ -169,6 +169,20 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
                             const double q[3], bool *hit, double *fraction,
                             uint32_t *triangle, double normal[3]);
 
+/* The slack of the distance test below for these placed meshes and d:
+ * 2^-40 of the largest coordinate of their placed boxes or d, whichever
+ * is larger; it bounds the rounding of the floating-point distances. */
+double noct_distance_slack(const noctMesh *a, const double ta[3], const noctMesh *b,
+                           const double tb[3], double d);
+
+/* Are the boundaries of two placed meshes within d + the slack of each
+ * other (floating-point distances of their triangles)? For two solids
+ * that do not meet, their distance is their boundaries': true for every
+ * pair at most d apart (never missed), and false for every pair more than
+ * d + 2 slack apart. */
+bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b,
+                        const double tb[3], double d);
+
 /* ---- box primitives (mesh.c) ---- */
 
 /* The corners fl(R v) of the box with these half-extents (bit 2 of the

@@ -1080,6 +1080,209 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
     return NOCT_OK;
 }
 
+/* ---- distance, for margins (world_near.c, world_query.c) -------------------------- */
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static double dist2(const double a[3], const double b[3])
+{
+    const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    return dot3(d, d);
+}
+
+static double clamp01(double x)
+{
+    return x < 0 ? 0 : x > 1 ? 1 : x;
+}
+
+/* Squared distance between segments p1 q1 and p2 q2 (after Ericson,
+ * Real-Time Collision Detection, 5.1.9), in floating point. */
+static double seg_seg_dist2(const double p1[3], const double q1[3], const double p2[3],
+                            const double q2[3])
+{
+    double d1[3], d2[3], r[3];
+    for (int k = 0; k < 3; ++k) {
+        d1[k] = q1[k] - p1[k];
+        d2[k] = q2[k] - p2[k];
+        r[k] = p1[k] - p2[k];
+    }
+    const double a = dot3(d1, d1), e = dot3(d2, d2), f = dot3(d2, r);
+    double s, t;
+    if (a <= 0 && e <= 0) {
+        s = t = 0;
+    } else if (a <= 0) {
+        s = 0;
+        t = clamp01(f / e);
+    } else {
+        const double c = dot3(d1, r);
+        if (e <= 0) {
+            t = 0;
+            s = clamp01(-c / a);
+        } else {
+            const double b = dot3(d1, d2), den = a * e - b * b;
+            s = den > 0 ? clamp01((b * f - c * e) / den) : 0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = clamp01(-c / a);
+            } else if (t > 1) {
+                t = 1;
+                s = clamp01((b - c) / a);
+            }
+        }
+    }
+    double x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+        x[k] = p1[k] + d1[k] * s;
+        y[k] = p2[k] + d2[k] * t;
+    }
+    return dist2(x, y);
+}
+
+/* Squared distance from p to triangle abc (Ericson 5.1.5's closest point),
+ * in floating point. */
+static double point_tri_dist2(const double p[3], const double a[3], const double b[3],
+                              const double c[3])
+{
+    double ab[3], ac[3], ap[3], x[3];
+    for (int k = 0; k < 3; ++k) {
+        ab[k] = b[k] - a[k];
+        ac[k] = c[k] - a[k];
+        ap[k] = p[k] - a[k];
+    }
+    const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+    if (d1 <= 0 && d2 <= 0)
+        return dist2(p, a);
+    double bp[3], cp[3];
+    for (int k = 0; k < 3; ++k) {
+        bp[k] = p[k] - b[k];
+        cp[k] = p[k] - c[k];
+    }
+    const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    if (d3 >= 0 && d4 <= d3)
+        return dist2(p, b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const double v = d1 / (d1 - d3);
+        for (int k = 0; k < 3; ++k)
+            x[k] = a[k] + v * ab[k];
+        return dist2(p, x);
+    }
+    const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    if (d6 >= 0 && d5 <= d6)
+        return dist2(p, c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const double w = d2 / (d2 - d6);
+        for (int k = 0; k < 3; ++k)
+            x[k] = a[k] + w * ac[k];
+        return dist2(p, x);
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int k = 0; k < 3; ++k)
+            x[k] = b[k] + w * (c[k] - b[k]);
+        return dist2(p, x);
+    }
+    const double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
+    for (int k = 0; k < 3; ++k)
+        x[k] = a[k] + ab[k] * v + ac[k] * w;
+    return dist2(p, x);
+}
+
+/* Squared distance between two triangles that do not meet: the least of
+ * their edges' distances and their corners' distances to the other. */
+static double tri_tri_dist2(double a[3][3], double b[3][3])
+{
+    double best = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            best = noct_min(best, seg_seg_dist2(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
+        best = noct_min(best, point_tri_dist2(a[i], b[0], b[1], b[2]));
+        best = noct_min(best, point_tri_dist2(b[i], a[0], a[1], a[2]));
+    }
+    return best;
+}
+
+/* Squared distance between placed boxes [alo, ahi] + ta and [blo, bhi] + tb. */
+static double box_dist2(const double alo[3], const double ahi[3], const double ta[3],
+                        const double blo[3], const double bhi[3], const double tb[3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double g = noct_max(noct_max((blo[k] + tb[k]) - (ahi[k] + ta[k]),
+                                           (alo[k] + ta[k]) - (bhi[k] + tb[k])),
+                                  0);
+        s += g * g;
+    }
+    return s;
+}
+
+double noct_distance_slack(const noctMesh *a, const double ta[3], const noctMesh *b,
+                           const double tb[3], double d)
+{
+    double scale = d;
+    for (int k = 0; k < 3; ++k) {
+        scale = noct_max(scale, noct_max(fabs(a->lo[k] + ta[k]), fabs(a->hi[k] + ta[k])));
+        scale = noct_max(scale, noct_max(fabs(b->lo[k] + tb[k]), fabs(b->hi[k] + tb[k])));
+    }
+    return 0x1p-40 * scale;
+}
+
+bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b,
+                        const double tb[3], double d)
+{
+    const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
+    const double reach = d + noct_distance_slack(a, ta, b, tb, d), reach2 = reach * reach;
+    struct { uint32_t a, b; } stack[PAIR_STACK];
+    size_t top = 0;
+    stack[top].a = 0;
+    stack[top++].b = 0;
+    while (top > 0) {
+        --top;
+        const bvh_node *na = &a->nodes[stack[top].a];
+        const bvh_node *nb = &b->nodes[stack[top].b];
+        if (box_dist2(na->lo, na->hi, ta, nb->lo, nb->hi, tb) > reach2)
+            continue;
+        if (na->count > 0 && nb->count > 0) {
+            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                double x[3][3];
+                for (int c = 0; c < 3; ++c)
+                    place(&A, a->tri[3 * i + c], x[c]);
+                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
+                    double y[3][3];
+                    for (int c = 0; c < 3; ++c)
+                        place(&B, b->tri[3 * j + c], y[c]);
+                    if (tri_tri_dist2(x, y) <= reach2)
+                        return true;
+                }
+            }
+            continue;
+        }
+        double sa = 0, sb = 0;
+        for (int k = 0; k < 3; ++k) {
+            sa += na->hi[k] - na->lo[k];
+            sb += nb->hi[k] - nb->lo[k];
+        }
+        const bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
+        const uint32_t ia = stack[top].a, ib = stack[top].b;
+        if (top + 2 > PAIR_STACK)
+            return true; /* unreachable for meshes within the size limits; never misses */
+        if (split_a) {
+            stack[top].a = na->first;     stack[top++].b = ib;
+            stack[top].a = na->first + 1; stack[top++].b = ib;
+        } else {
+            stack[top].a = ia; stack[top++].b = nb->first;
+            stack[top].a = ia; stack[top++].b = nb->first + 1;
+        }
+    }
+    return false;
+}
+
 noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
                        const double tb[3], noctAccuracy accuracy, bool *colliding,
                        noctNarrowStats *stats)

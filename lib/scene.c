@@ -525,6 +525,16 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         s->def.max_depth = (int)v;
         return end_of_line(p);
     }
+    if (strcmp(kw, "margin") == 0) {
+        double d;
+        if ((st = number(p, "margin", &d)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
+            return st;
+        if (!(d >= 0 && d <= NOCT_MAX_COORDINATE))
+            return perr(p, NOCT_ERR_INVALID, "margin %g: it must be 0 to %g", d,
+                        NOCT_MAX_COORDINATE);
+        s->def.margin = d;
+        return NOCT_OK;
+    }
     if (strcmp(kw, "steps") == 0) {
         if ((st = integer(p, "steps", 1, 10000000, &v)) != NOCT_OK)
             return st;

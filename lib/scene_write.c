@@ -63,6 +63,10 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             : d->accuracy == NOCT_ACCURACY_CONVEX ? "convex"
                                                   : "exact",
             d->maintenance == NOCT_MAINTAIN_REBUILD ? "rebuild" : "incremental", s->steps);
+    if (d->margin > 0) {
+        char b[32];
+        fprintf(f, "margin %s\n", num(b, d->margin));
+    }
     if (d->effects & NOCT_EFFECT_WALLS) {
         fprintf(f, "walls");
         nums(f, d->walls_lo, 3);

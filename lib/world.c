@@ -39,6 +39,7 @@ noctWorldDef noctDefaultWorldDef(void)
     d.maintenance = NOCT_MAINTAIN_INCREMENTAL;
     for (int k = 0; k < 3; ++k)
         d.walls_lo[k] = d.walls_hi[k] = 0;
+    d.margin = 0;
     return d;
 }
 
@@ -73,6 +74,9 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
                 return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                                  "the walls need a finite container with lo < hi "
                                  "on every axis");
+    if (!(def->margin >= 0 && def->margin <= NOCT_MAX_COORDINATE))
+        return noct_fail(err, isnan(def->margin) ? NOCT_ERR_NONFINITE : NOCT_ERR_INVALID, -1, 0,
+                         "margin %g: it must be 0 to %g", def->margin, NOCT_MAX_COORDINATE);
     noctWorld *w = calloc(1, sizeof *w);
     if (w == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
@@ -120,6 +124,10 @@ void noctWorldDestroy(noctWorld *w)
     free(w->events.sensor_began.p);
     free(w->events.sensor_ended.p);
     free(w->events.sensing_held.p);
+    free(w->events.near.p);
+    free(w->events.near_prev.p);
+    free(w->events.near_began.p);
+    free(w->events.near_ended.p);
     free(w->spin.w);
     free(w->spin.spinners);
     free(w->placed);
@@ -812,6 +820,17 @@ static noctStatus stage_maintenance(noctWorld *w, bool moving)
     return st;
 }
 
+/* The colliding and sensing lists back to the ones before stage_pairs(). */
+static void unswap_pairs(noct_events *e)
+{
+    noct_pair_list tmp = e->colliding;
+    e->colliding = e->previous;
+    e->previous = tmp;
+    tmp = e->sensing;
+    e->sensing = e->sensing_prev;
+    e->sensing_prev = tmp;
+}
+
 /* The pair search, narrowphase and events: the colliding list becomes
  * the previous one, the broadphase's pairs go through the narrowphase,
  * and what began and ended is found. On failure the colliding list is
@@ -839,14 +858,8 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
         st = noct_world_split_sensors(e, w->obj);
     if (st == NOCT_OK && (w->def.effects & (NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE)))
         st = noct_world_diff_events(e, &w->c.events);
-    if (st != NOCT_OK) {
-        tmp = e->colliding;
-        e->colliding = e->previous;
-        e->previous = tmp;
-        tmp = e->sensing;
-        e->sensing = e->sensing_prev;
-        e->sensing_prev = tmp;
-    }
+    if (st != NOCT_OK)
+        unswap_pairs(e);
     return st;
 }
 
@@ -863,8 +876,10 @@ static void add_teleports_reach(noctWorld *w)
     w->bp.reach += w->bp.pending_reach * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
 }
 
-/* One step, or one of k sub-steps (fraction = 1/k of the velocity). */
-static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *err)
+/* One step, or one of k sub-steps (fraction = 1/k of the velocity); the
+ * near pairs after the last. */
+static noctStatus substep(noctWorld *w, double fraction, bool first, bool last,
+                         noctError *err)
 {
     ++w->bp.clock; /* the enter check's stamps: one tick per sub-step */
     ++w->bp.frame;
@@ -892,6 +907,11 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, noctError *
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
+    if (last && w->def.margin > 0 && (st = noct_world_stage_near(w, err)) != NOCT_OK) {
+        unswap_pairs(&w->events);
+        w->events.began.n = from_began;
+        return st;
+    }
     if (first) { /* the teleports' travel is in this search's reach */
         w->bp.pending_reach = 0;
         ++w->bp.search_epoch;
@@ -1108,6 +1128,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     NOCT_REQUIRE(w != NULL);
     w->events.began.n = w->events.ended.n = 0;
     w->events.sensor_began.n = w->events.sensor_ended.n = 0;
+    w->events.near_began.n = w->events.near_ended.n = 0;
     if (w->bp.tree_owed) {
         noctStatus st = noct_bp_rebuild(&w->bp, 0);
         if (st != NOCT_OK)
@@ -1143,7 +1164,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             return st;
     }
     for (uint64_t i = 0; i < k; ++i) {
-        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, err);
+        noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, i + 1 == k, err);
         if (st != NOCT_OK) {
             noct_world_roll_back(w, w->moved, w->touched);
             noct_world_unplace(w);
@@ -1157,6 +1178,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
             }
             w->events.began.n = w->events.ended.n = 0;
             w->events.sensor_began.n = w->events.sensor_ended.n = 0;
+            w->events.near_began.n = w->events.near_ended.n = 0;
             return st;
         }
     }

@@ -11,8 +11,8 @@
 #include "world_internal.h"
 
 /* began += now - before, ended += before - now, both sorted. */
-static noctStatus diff(const noct_pair_list *now, const noct_pair_list *before,
-                       noct_pair_list *began, noct_pair_list *ended)
+noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list *before,
+                                 noct_pair_list *began, noct_pair_list *ended)
 {
     size_t i = 0, j = 0;
     while (i < now->n || j < before->n) {
@@ -37,9 +37,9 @@ noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
 {
     const size_t began = e->began.n, ended = e->ended.n;
     const size_t sbegan = e->sensor_began.n, sended = e->sensor_ended.n;
-    noctStatus st = diff(&e->colliding, &e->previous, &e->began, &e->ended);
+    noctStatus st = noct_world_diff_lists(&e->colliding, &e->previous, &e->began, &e->ended);
     if (st == NOCT_OK && (e->sensing.n > 0 || e->sensing_prev.n > 0))
-        st = diff(&e->sensing, &e->sensing_prev, &e->sensor_began, &e->sensor_ended);
+        st = noct_world_diff_lists(&e->sensing, &e->sensing_prev, &e->sensor_began, &e->sensor_ended);
     if (st == NOCT_OK)
         *events += e->began.n - began + e->ended.n - ended + e->sensor_began.n - sbegan +
                    e->sensor_ended.n - sended;

@@ -76,6 +76,9 @@ typedef struct noct_events {
     noct_pair_list held;   /* the colliding list before a step of sub-steps */
     /* The same for the pairs of a sensor and an object that is not one. */
     noct_pair_list sensing, sensing_prev, sensor_began, sensor_ended, sensing_held;
+    /* With a margin: the pairs within it now and before, what began and
+     * ended (world_near.c). */
+    noct_pair_list near, near_prev, near_began, near_ended;
 } noct_events;
 
 /* Angular velocity (#NOCT_EFFECT_SPIN): each moving object's rotation per
@@ -183,6 +186,34 @@ noctStatus noct_world_stage_tracks(noctWorld *w, uint64_t tick, noctError *err);
 void noct_world_drop_track(noctWorld *w, uint32_t s);
 
 void noct_world_free_tracks(noctWorld *w);
+
+/* ---- world_query.c ----------------------------------------------------------------- */
+
+/* A box primitive's shape as a read-only view of its corners. */
+typedef struct noct_shape_view {
+    noctMesh view;
+    bvh_node leaf;
+    double corners[24];
+} noct_shape_view;
+
+/* Object s's placed shape, to be placed at w->pos[s]: its mesh (rotated
+ * as placed), or a view of its box primitive's corners in *v; reads the
+ * world only (no mesh is made). */
+const noctMesh *noct_world_shape(const noctWorld *w, uint32_t s, noct_shape_view *v);
+
+/* ---- world_events.c (the lists) --- */
+
+/* began += now - before, ended += before - now (sorted lists; a pair
+ * whose objects' generations differ is another pair). NOMEM. */
+noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list *before,
+                                 noct_pair_list *began, noct_pair_list *ended);
+
+/* ---- world_near.c ------------------------------------------------------------------ */
+
+/* The near pairs after the step's pairs (the colliding list is this
+ * step's): near becomes near_prev, the new list is found, and with events
+ * its differences. On failure (NOMEM) the lists are as before. */
+noctStatus noct_world_stage_near(noctWorld *w, noctError *err);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
 

@@ -87,16 +87,15 @@ static noctStatus gather(const noctWorld *w, const double lo[3], const double hi
 
 /* ---- an object's shape as the queries see it ------------------------------------- */
 
-/* Object s's placed shape: its mesh (rotated as placed), or a view of its
- * box primitive's corners in the caller's storage. */
-typedef struct shape {
-    const noctMesh *m;
-    noctMesh view;
-    bvh_node leaf;
-    double corners[24];
-} shape;
+/* The queries' name for the shape view. */
+typedef noct_shape_view shape;
 
 static const noctMesh *shape_of_object(const noctWorld *w, uint32_t s, shape *sh)
+{
+    return noct_world_shape(w, s, sh);
+}
+
+const noctMesh *noct_world_shape(const noctWorld *w, uint32_t s, noct_shape_view *sh)
 {
     if (!w->obj[s].box)
         return w->mesh[s];
@@ -179,15 +178,21 @@ static noctStatus meets(const noctWorld *w, uint32_t s, const noctMesh *q, const
 
 /* Report the candidates that meet q placed at tq, in order. */
 static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const double tq[3],
-                                 const noct_box_slot *qs, noctAccuracy level,
+                                 const noct_box_slot *qs, noctAccuracy level, double margin,
                                  noctQueryFilter filter,
                                  noctObjectFcn *fcn, void *context, noctError *err)
 {
-    double lo[3], hi[3];
+    double lo[3], hi[3], scale = margin;
     for (int k = 0; k < 3; ++k) {
         lo[k] = q->lo[k] + tq[k];
         hi[k] = q->hi[k] + tq[k];
+        scale = noct_max(scale, noct_max(fabs(lo[k]), fabs(hi[k])));
     }
+    if (margin > 0) /* grown by the margin and more than its rounding */
+        for (int k = 0; k < 3; ++k) {
+            lo[k] -= margin + 0x1p-38 * scale;
+            hi[k] += margin + 0x1p-38 * scale;
+        }
     candidates c;
     candidates_init(&c);
     noctStatus st = gather(w, lo, hi, filter, &c, err);
@@ -195,6 +200,10 @@ static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const do
         const uint32_t s = c.s[i];
         bool hit;
         st = meets(w, s, q, tq, qs, level, &hit);
+        if (st == NOCT_OK && !hit && margin > 0) {
+            noct_shape_view v;
+            hit = noct_solids_within(q, tq, noct_world_shape(w, s, &v), w->pos[s], margin);
+        }
         if (st != NOCT_OK)
             st = noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
         else if (hit && !fcn(context, handle(w, s), w->bp.proxy[s].user))
@@ -238,16 +247,15 @@ noctStatus noctWorldQueryBox(const noctWorld *w, const double lo[3], const doubl
     if (solid)
         noct_box_slot_of_corners(v, identity, &slot, blo, bhi);
     return report_meeting(w, &view, origin, solid && slot.has_box ? &slot : NULL,
-                          w->def.accuracy, filter, fcn, context, err);
+                          w->def.accuracy, 0, filter, fcn, context, err);
 }
 
-noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
-                               const double half_extents[3], const noctTransform *x,
-                               noctQueryFilter filter, noctObjectFcn *fcn, void *context,
-                               noctError *err)
+/* The objects that meet the shape at x, or come within margin of it. */
+static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
+                              const double half_extents[3], const noctTransform *x,
+                              double margin, noctQueryFilter filter, noctObjectFcn *fcn,
+                              void *context, noctError *err)
 {
-    NOCT_REQUIRE(w != NULL && x != NULL && fcn != NULL);
-    NOCT_REQUIRE(mesh != NULL || half_extents != NULL);
     noctStatus st = noctTransformCheck(x, err);
     if (st != NOCT_OK)
         return st;
@@ -266,7 +274,7 @@ noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
         double blo[3], bhi[3];
         noct_box_slot_of_corners(v, R, &slot, blo, bhi);
         return report_meeting(w, &view, x->p, slot.has_box ? &slot : NULL,
-                              NOCT_ACCURACY_EXACT, filter, fcn, context, err);
+                              NOCT_ACCURACY_EXACT, margin, filter, fcn, context, err);
     }
     noctMesh *rotated = NULL;
     if (!noct_is_identity(R) && (st = noct_mesh_rotated(mesh, R, &rotated, err)) != NOCT_OK)
@@ -275,10 +283,35 @@ noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
     noct_box_slot slot;
     if (m->has_box)
         noct_box_slot_fill(m, &slot);
-    st = report_meeting(w, m, x->p, m->has_box ? &slot : NULL, NOCT_ACCURACY_EXACT, filter,
-                        fcn, context, err);
+    st = report_meeting(w, m, x->p, m->has_box ? &slot : NULL, NOCT_ACCURACY_EXACT, margin,
+                        filter, fcn, context, err);
     noctMeshDestroy(rotated);
     return st;
+}
+
+noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
+                               const double half_extents[3], const noctTransform *x,
+                               noctQueryFilter filter, noctObjectFcn *fcn, void *context,
+                               noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL && fcn != NULL);
+    NOCT_REQUIRE(mesh != NULL || half_extents != NULL);
+    return shape_query(w, mesh, half_extents, x, 0, filter, fcn, context, err);
+}
+
+noctStatus noctWorldQueryNear(const noctWorld *w, const noctMesh *mesh,
+                              const double half_extents[3], const noctTransform *x,
+                              double margin, noctQueryFilter filter, noctObjectFcn *fcn,
+                              void *context, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL && fcn != NULL);
+    NOCT_REQUIRE(mesh != NULL || half_extents != NULL);
+    if (isnan(margin))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "query margin is not a number");
+    if (!(margin >= 0 && margin <= NOCT_MAX_COORDINATE))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "query margin %g: it must be 0 to %g",
+                         margin, NOCT_MAX_COORDINATE);
+    return shape_query(w, mesh, half_extents, x, margin, filter, fcn, context, err);
 }
 
 /* ---- rays -------------------------------------------------------------------------- */

@@ -788,7 +788,11 @@ static void same_runs(const noctScene *a, const noctScene *b)
         ck_assert_int_eq(noctWorldStep(wa, &err), NOCT_OK);
         ck_assert_int_eq(noctWorldStep(wb, &err), NOCT_OK);
         const noctPair *pa, *pb;
-        const size_t na = noctWorldColliding(wa, &pa), nb = noctWorldColliding(wb, &pb);
+        size_t na = noctWorldColliding(wa, &pa), nb = noctWorldColliding(wb, &pb);
+        ck_assert_uint_eq(na, nb);
+        ck_assert(na == 0 || memcmp(pa, pb, na * sizeof *pa) == 0);
+        na = noctWorldNear(wa, &pa);
+        nb = noctWorldNear(wb, &pb);
         ck_assert_uint_eq(na, nb);
         ck_assert(na == 0 || memcmp(pa, pb, na * sizeof *pa) == 0);
         if (step % 37 == 0)
@@ -810,7 +814,7 @@ START_TEST(scenes_written_read_back)
     const char *off = write_text("cube.off", CUBE_OFF);
     char text[2048];
     snprintf(text, sizeof text,
-             "N big\nmax-depth 12\naccuracy exact\nmaintenance rebuild\nsteps 60\n"
+             "N big\nmax-depth 12\naccuracy exact\nmaintenance rebuild\nsteps 60\nmargin 0.25\n"
              "walls -10 -10 -10 10 10 10\n"
              "mesh a box 0.5 0.25 0.125\nmesh f file %s\n"
              "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
@@ -839,6 +843,7 @@ START_TEST(scenes_written_read_back)
         if (specs[i] == path) { /* every attribute, as given */
             static const char *const LINES[] = {
                 "N big\n", "max-depth 12\n", "maintenance rebuild\n", "steps 60\n",
+                "margin 0.25\n",
                 "walls -10 -10 -10 10 10 10\n", "mesh a box 0.5 0.25 0.125\n",
                 "object a 0 0 0 velocity 0.1 -0.2 0.3 rotate 0 0 1 90 type moving "
                 "filter 0x6 0x3\n",

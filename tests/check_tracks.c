@@ -200,6 +200,7 @@ static int brute(const tracked *t, noctPair *out)
     return n;
 }
 
+/* _i: 0 a quick run (under valgrind too), 1 the full one (tag slow). */
 START_TEST(worlds_follow_their_tracks)
 {
     const uint64_t seed = rng;
@@ -208,7 +209,7 @@ START_TEST(worlds_follow_their_tracks)
     static const struct { noctMaintenance mode; int N; } CONF[3] = {
         {NOCT_MAINTAIN_INCREMENTAL, 2}, {NOCT_MAINTAIN_REBUILD, 4},
         {NOCT_MAINTAIN_INCREMENTAL, NOCT_N_EXHAUSTIVE}};
-    for (int round = 0; round < 6; ++round) {
+    for (int round = 0; round < (_i ? 6 : 1); ++round) {
         noctPair log[3][120][NOBJ * NOBJ / 2];
         int nlog[3][120];
         const uint64_t start = rng;
@@ -253,7 +254,7 @@ START_TEST(worlds_follow_their_tracks)
                           0);
             }
     }
-    ck_assert_int_gt(events, 50);
+    ck_assert_int_gt(events, _i ? 50 : 5);
     (void)seed;
 }
 END_TEST
@@ -554,13 +555,18 @@ static Suite *tracks_suite(void)
     TCase *tc = tcase_create("tracks");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, interpolation_against_the_formula);
-    tcase_add_test(tc, worlds_follow_their_tracks);
+    tcase_add_loop_test(tc, worlds_follow_their_tracks, 0, 1);
     tcase_add_test(tc, without_the_effect_nothing_moves);
     tcase_add_test(tc, a_failed_step_gives_the_placements_back);
     tcase_add_test(tc, removal_and_replacement);
     tcase_add_test(tc, bad_tracks);
     tcase_add_test(tc, scene_keys);
     suite_add_tcase(s, tc);
+    TCase *full = tcase_create("tracks, full");
+    tcase_set_tags(full, "slow"); /* left out under valgrind */
+    tcase_set_timeout(full, 300);
+    tcase_add_loop_test(full, worlds_follow_their_tracks, 1, 2);
+    suite_add_tcase(s, full);
     return s;
 }
 

@@ -15,6 +15,7 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-objects tests/check-objects-efficient \
 	tests/check-queries tests/check-queries-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
+	tests/check-near tests/check-near-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
@@ -26,6 +27,7 @@ TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-objects tests/check-objects-efficient \
 	tests/check-queries tests/check-queries-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
+	tests/check-near tests/check-near-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -91,7 +93,8 @@ tests_check_objects_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_objects_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_objects_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
-tests_check_queries_SOURCES = tests/check_queries.c $(test_common)
+tests_check_queries_SOURCES = tests/check_queries.c tests/testgeom.c tests/testgeom.h \
+	$(test_common)
 tests_check_queries_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_queries_LDADD = lib/libnoctree.la $(CHECK_LIBS)
 
@@ -108,6 +111,16 @@ tests_check_tracks_efficient_SOURCES = $(tests_check_tracks_SOURCES)
 tests_check_tracks_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_tracks_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_tracks_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+tests_check_near_SOURCES = tests/check_near.c tests/testgeom.c tests/testgeom.h \
+	$(test_common)
+tests_check_near_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_near_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_near_efficient_SOURCES = $(tests_check_near_SOURCES)
+tests_check_near_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_near_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_near_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
 tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)

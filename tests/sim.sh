@@ -332,4 +332,22 @@ expect_run 2 "^noctree-sim: /nonexistent/x.scene: cannot open" \
 expect_run 2 "unknown scene 'arms:9'" --scene arms:9
 expect_run 2 "unknown scene 'keyframes:0'" --scene keyframes:0
 
+# The margin: the near pairs include the colliding ones, step by step, and
+# there are more of them; their events are printed.
+"$sim" --quiet --margin 0.3 --report csv --output "$tmp/near.csv" --scene arms:3 \
+    > "$tmp/near.out" 2>&1
+check "--margin: exit 0" [ $? -eq 0 ]
+check "--margin: the summary counts the near events" grep -q '^near begins [1-9]' "$tmp/near.out"
+check "--margin --report csv: every colliding pair is near at its step" \
+    awk -F, 'NR > 1 { if ($2 == "collide") c[$1 "," $3 "," $4] = 1; else if ($2 == "near") n[$1 "," $3 "," $4] = 1 }
+        END { for (k in c) { if (!(k in n)) exit 1; cc++ } for (k in n) nn++; exit !(cc > 0 && nn > cc) }' \
+    "$tmp/near.csv"
+"$sim" --quiet --margin 0.3 --events --scene arms:3 > "$tmp/near.ev" 2>&1
+check "--margin --events: near-begin 16 19 at step 1" grep -q '^1 near-begin 16 19$' "$tmp/near.ev"
+check "--margin --events: near-end lines" grep -q '^[0-9]* near-end [0-9]* [0-9]*$' "$tmp/near.ev"
+"$sim" --quiet --events --scene arms:3 > "$tmp/nomargin.ev" 2>&1
+check "no margin: no near events" sh -c "! grep -q near '$tmp/nomargin.ev'"
+expect_run 2 "^noctree-sim: --margin must be a distance" --margin -1 --scene arms:1
+expect_run 2 "^noctree-sim: --margin must be a distance" --margin nan --scene arms:1
+
 finish sim

@@ -29,8 +29,10 @@ static const char usage[] =
     "  --maintenance MODE    incremental or rebuild\n"
     "  --steps S             number of steps\n"
     "  --substep             split steps so fast objects cannot pass through others\n"
+    "  --margin D            also find the pairs within distance D (near pairs)\n"
     "  --events              print every contact event: STEP begin|end A B\n"
-    "                        (and sensor-begin|sensor-end for sensors)\n"
+    "                        (sensor-begin|sensor-end for sensors, and\n"
+    "                        near-begin|near-end with a margin)\n"
     "  --report FORMAT       the colliding pairs after every step: table, csv or\n"
     "                        gnuplot (a script plotting them against the step)\n"
     "  --output FILE         write the report to FILE, not standard output\n"
@@ -48,15 +50,15 @@ static const char usage[] =
 
 /*
  * --report: after every step, the world's colliding pairs (noctWorldColliding(),
- * objects by index, in its order). Every format names the kind of pair, so
- * that pairs within a margin ("near") can be added as a second kind; only
- * "collide" exists.
+ * objects by index, in its order), kind "collide", and with a margin the
+ * pairs within it (noctWorldNear()), kind "near".
  */
 typedef enum report_format { REPORT_NONE, REPORT_TABLE, REPORT_CSV, REPORT_GNUPLOT } report_format;
 
 static const char *const report_names[] = {"", "table", "csv", "gnuplot"};
 
 static const char kind_collide[] = "collide";
+static const char kind_near[] = "near";
 
 typedef struct report {
     report_format format;
@@ -64,6 +66,7 @@ typedef struct report {
     const char *path; /* --output, or NULL for standard output */
     size_t most;      /* gnuplot: the most pairs at one step */
     int steps;        /* gnuplot: the steps written */
+    bool near;        /* a margin: near pairs too */
 } report;
 
 /* Write PREFIX and S in single quotes for gnuplot, which substitutes nothing
@@ -115,35 +118,49 @@ static void report_begin(report *r, const char *scene, const char *svg)
         fputs(" noenhanced\nset xlabel 'step'\nset ylabel 'colliding pairs'\n"
               "set grid\nset key top right\n"
               "# one row a step: the step, then its pairs of each kind\n"
-              "$data << EOD\n"
-              "# step collide\n",
+              "$data << EOD\n",
               r->out);
+        fputs(r->near ? "# step collide near\n" : "# step collide\n", r->out);
         break;
     }
 }
 
-/* The n pairs p colliding after step s. */
-static void report_step(report *r, int s, const noctPair *p, size_t n)
+static void table_line(report *r, int s, const char *kind, const noctPair *p, size_t n)
+{
+    if (n == 0)
+        return;
+    fprintf(r->out, "%8d  %-7s  %5zu ", s, kind, n);
+    for (size_t i = 0; i < n; ++i)
+        fprintf(r->out, " %u-%u", p[i].a.index, p[i].b.index);
+    fputc('\n', r->out);
+}
+
+/* The n pairs p colliding after step s, and the nn pairs q near. */
+static void report_step(report *r, int s, const noctPair *p, size_t n, const noctPair *q,
+                        size_t nn)
 {
     switch (r->format) {
     case REPORT_NONE:
         break;
     case REPORT_TABLE:
-        if (n == 0)
-            break;
-        fprintf(r->out, "%8d  %-7s  %5zu ", s, kind_collide, n);
-        for (size_t i = 0; i < n; ++i)
-            fprintf(r->out, " %u-%u", p[i].a.index, p[i].b.index);
-        fputc('\n', r->out);
+        table_line(r, s, kind_collide, p, n);
+        table_line(r, s, kind_near, q, nn);
         break;
     case REPORT_CSV:
         for (size_t i = 0; i < n; ++i)
             fprintf(r->out, "%d,%s,%u,%u\n", s, kind_collide, p[i].a.index, p[i].b.index);
+        for (size_t i = 0; i < nn; ++i)
+            fprintf(r->out, "%d,%s,%u,%u\n", s, kind_near, q[i].a.index, q[i].b.index);
         break;
     case REPORT_GNUPLOT:
-        fprintf(r->out, "%d %zu\n", s, n);
+        if (r->near)
+            fprintf(r->out, "%d %zu %zu\n", s, n, nn);
+        else
+            fprintf(r->out, "%d %zu\n", s, n);
         if (n > r->most)
             r->most = n;
+        if (nn > r->most)
+            r->most = nn;
         r->steps = s;
         break;
     }
@@ -160,7 +177,12 @@ static void report_end(report *r)
             r->most + 1);
     if (r->most < 10)
         fputs("set ytics 1\n", r->out);
-    fputs("plot $data using 1:2 with steps linewidth 2 title 'colliding pairs'\n", r->out);
+    fputs("plot $data using 1:2 with steps linewidth 2 title 'colliding pairs'", r->out);
+    if (r->near)
+        fputs(", \\\n     $data using 1:3 with steps linewidth 2 dashtype 2 title 'pairs within "
+              "the margin'",
+              r->out);
+    fputc('\n', r->out);
 }
 
 static int pair_order(const void *x, const void *y)
@@ -217,6 +239,7 @@ int main(int argc, char **argv)
     long steps = 0;
     bool events = false, quiet = false, substep = false, first = false;
     const char *write_scene = NULL;
+    double margin = -1; /* --margin, if given */
     report rep = {.format = REPORT_NONE};
     tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
@@ -246,6 +269,12 @@ int main(int argc, char **argv)
                 return tool_usage_error("--report must be table, csv or gnuplot, not '%s'", f);
         } else if (strcmp(a, "--output") == 0 && has_value) {
             rep.path = argv[++i];
+        } else if (strcmp(a, "--margin") == 0 && has_value) {
+            char *end;
+            margin = strtod(argv[++i], &end);
+            if (end == argv[i] || *end != '\0' || !(margin >= 0 && margin <= 1e100))
+                return tool_usage_error("--margin must be a distance from 0 to 1e100, not '%s'",
+                                        argv[i]);
         } else if (strcmp(a, "--write-scene") == 0 && has_value) {
             write_scene = argv[++i];
         } else if (strcmp(a, "--accuracy") == 0 && has_value) {
@@ -304,6 +333,9 @@ int main(int argc, char **argv)
     }
     if (substep)
         def->effects |= NOCT_EFFECT_SUBSTEP;
+    if (margin >= 0)
+        def->margin = margin;
+    rep.near = def->margin > 0;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
     if (write_scene != NULL) {
         const bool to_stdout = strcmp(write_scene, "-") == 0;
@@ -367,7 +399,7 @@ int main(int argc, char **argv)
         free(svg);
     }
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
-    size_t begins = 0, ends = 0, sensor_events = 0;
+    size_t begins = 0, ends = 0, sensor_events = 0, near_events[2] = {0, 0};
     int status = 0, stopped = 0;
     bool told_parted = false;
     for (int s = 1; s <= nsteps; ++s) {
@@ -394,6 +426,14 @@ int main(int argc, char **argv)
         sensor_events += ne;
         for (size_t i = 0; events && i < ne; ++i)
             fprintf(info, "%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
+        nb = noctWorldNearBegan(w, &p);
+        near_events[0] += nb;
+        for (size_t i = 0; events && i < nb; ++i)
+            fprintf(info, "%d near-begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        ne = noctWorldNearEnded(w, &p);
+        near_events[1] += ne;
+        for (size_t i = 0; events && i < ne; ++i)
+            fprintf(info, "%d near-end %u %u\n", s, p[i].a.index, p[i].b.index);
         if (rep.format != REPORT_NONE || first) {
             size_t nc = noctWorldColliding(w, &p);
             noctPair gone;
@@ -405,7 +445,9 @@ int main(int argc, char **argv)
                            first ? "--first sees" : "the report lists");
                 told_parted = true;
             }
-            report_step(&rep, s, p, nc);
+            const noctPair *q;
+            const size_t nn = noctWorldNear(w, &q);
+            report_step(&rep, s, p, nc, q, nn);
             if (first && nc > 0) {
                 tool_progress_end();
                 if (!print_first(w, s, p[0]))
@@ -447,6 +489,10 @@ int main(int argc, char **argv)
         if (sensor_events > 0 || noctWorldSensing(w, &p) > 0)
             fprintf(info, "sensor events %zu\nsensing at the end %zu\n", sensor_events,
                     noctWorldSensing(w, &p));
+        if (def->margin > 0)
+            fprintf(info, "margin %s\nnear begins %zu\nnear ends %zu\nnear at the end %zu\n",
+                    tool_format_double(def->margin, (char[32]){0}), near_events[0],
+                    near_events[1], noctWorldNear(w, &p));
         double levels = c.narrow.seconds_convex + c.narrow.seconds_exact;
         fprintf(info, "time per step %.3f ms (motion %.3f, maintenance %.3f, pair search and "
                 "box tests %.3f, convex level %.3f, exact level %.3f, events and "

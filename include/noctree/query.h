@@ -19,7 +19,8 @@
  *   at the box level, those whose boxes meet it);
  * - noctWorldQueryShape(): the objects that collide with a shape (a mesh
  *   or a box primitive) at a transform, exactly, without adding it to the
- *   world (a planner's "would the arm collide here?");
+ *   world (a planner's "would the arm collide here?"); noctWorldQueryNear():
+ *   those within a distance of it ("would it come within d?");
  * - noctWorldRayCast() and noctWorldRayCastClosest(): the objects a
  *   closed segment meets. Whether it meets a solid is decided exactly;
  *   where (the fraction along it, the point, the normal) is computed in
@@ -186,6 +187,31 @@ NOCT_API noctStatus noctWorldQueryShape(const noctWorld *world, const noctMesh *
                                         const double half_extents[3], const noctTransform *x,
                                         noctQueryFilter filter, noctObjectFcn *fcn,
                                         void *context, noctError *err);
+
+/**
+ * @brief Visit the objects within a distance of a shape placed at x:
+ * those that collide with it (exactly), and those whose triangles come
+ * within margin of its (as noctWorldNear() decides it: in floating point,
+ * with a slack of 2^-40 of the coordinates' magnitude).
+ * @pre As noctWorldQueryShape().
+ * @post As noctWorldQueryShape(), for the objects within margin; with a
+ *       margin of 0, its objects exactly.
+ * @param world the world.
+ * @param mesh the shape, or NULL for a box primitive.
+ * @param half_extents the box primitive's half-extents when mesh is NULL.
+ * @param x where the shape is.
+ * @param margin the distance, 0 to #NOCT_MAX_COORDINATE.
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldQueryShape(); #NOCT_ERR_NONFINITE or
+ *         #NOCT_ERR_INVALID for a bad margin.
+ */
+NOCT_API noctStatus noctWorldQueryNear(const noctWorld *world, const noctMesh *mesh,
+                                       const double half_extents[3], const noctTransform *x,
+                                       double margin, noctQueryFilter filter,
+                                       noctObjectFcn *fcn, void *context, noctError *err);
 
 /**
  * @brief Visit the objects the closed segment from origin to

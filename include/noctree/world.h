@@ -209,6 +209,10 @@ typedef struct noctWorldDef {
     double walls_lo[3];     /**< The container's low corner, for
                                  #NOCT_EFFECT_WALLS. Default 0. */
     double walls_hi[3];     /**< The container's high corner. Default 0. */
+    double margin;          /**< Distance within which two objects are
+                                 "near" (noctWorldNear()): 0 (the
+                                 default) keeps no near pairs and costs
+                                 nothing; at most #NOCT_MAX_COORDINATE. */
 } noctWorldDef;
 
 /** @brief How an object moves. */
@@ -485,6 +489,48 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError
  *         #NOCT_ERR_NOMEM; a narrowphase status (#NOCT_ERR_NUMERIC).
  */
 NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
+
+/**
+ * @brief The pairs near each other after the last step: with a margin
+ * (noctWorldDef::margin) d > 0, the pairs of objects that are not sensors,
+ * whose filters let them pair, and whose solids come within d of each
+ * other, colliding ones included, sorted as noctWorldColliding()'s.
+ *
+ * Found once a step, after its last sub-step. At the box level, two
+ * objects are near when their placed boxes are within d (Euclidean
+ * distance, in floating point). At the convex and exact levels, when the
+ * pair collides, or when the distance between their placed triangles,
+ * computed in floating point, is at most d plus a slack of 2^-40 of the
+ * largest coordinate of their placed boxes (or of d): so a pair whose
+ * distance exceeds d by more than twice the slack is never near, and one
+ * within d is near unless rounding errs by more than the slack (nearly
+ * parallel edges are where it errs most; the tests have not seen it).
+ * @pre world != NULL && pairs != NULL
+ * @param world the world.
+ * @param pairs receives the list (valid until the next step).
+ * @return how many.
+ */
+NOCT_API size_t noctWorldNear(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The pairs that became near at the last step (with
+ * #NOCT_EFFECT_EVENTS; sorted).
+ * @pre world != NULL && pairs != NULL
+ * @param world the world.
+ * @param pairs receives the list.
+ * @return how many.
+ */
+NOCT_API size_t noctWorldNearBegan(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The pairs that stopped being near at the last step, removed
+ * objects' pairs included (with #NOCT_EFFECT_EVENTS; sorted).
+ * @pre world != NULL && pairs != NULL
+ * @param world the world.
+ * @param pairs receives the list.
+ * @return how many.
+ */
+NOCT_API size_t noctWorldNearEnded(const noctWorld *world, const noctPair **pairs);
 
 /** @brief A keyframe of a track: where an object is at a tick. */
 typedef struct noctKeyframe {

@@ -1,0 +1,170 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The margin (noctWorldDef::margin): after a step's pairs, the pairs of
+ * objects within the margin of each other ("near": the arm is about to
+ * collide), and the pairs that became near or stopped being near. Each
+ * object looks for its partners of higher index in the broadphase, its
+ * box grown by the margin; a pair that collides is near, else the
+ * distance of their triangles decides (noct_solids_within()). A world
+ * without a margin never comes here.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "world_internal.h"
+
+typedef struct partners {
+    uint32_t self;
+    uint32_t *s;
+    size_t n, cap;
+    bool failed;
+} partners;
+
+static bool take(void *context, noctProxyId id, void *user)
+{
+    (void)user;
+    partners *p = context;
+    if (id.index <= p->self)
+        return true;
+    if (p->n == p->cap) {
+        const size_t cap = p->cap ? 2 * p->cap : 16;
+        uint32_t *a = realloc(p->s, cap * sizeof *a);
+        if (a == NULL) {
+            p->failed = true;
+            return false;
+        }
+        p->s = a;
+        p->cap = cap;
+    }
+    p->s[p->n++] = id.index;
+    return true;
+}
+
+static int by_index(const void *a, const void *b)
+{
+    const uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Is (a, b), a < b, in the sorted list? */
+static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
+{
+    size_t lo = 0, hi = l->n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        const noctPair *p = &l->p[mid];
+        if (p->a.index < a || (p->a.index == a && p->b.index < b))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < l->n && l->p[lo].a.index == a && l->p[lo].b.index == b;
+}
+
+/* Are objects i and j near, at the world's level? */
+static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
+{
+    if (listed(&w->events.colliding, i, j))
+        return true;
+    if (w->def.accuracy == NOCT_ACCURACY_BOX) {
+        const noct_aabb *a = &w->bp.box[i], *b = &w->bp.box[j];
+        double s = 0, scale = d;
+        for (int k = 0; k < 3; ++k) {
+            const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
+            s += g * g;
+            scale = noct_max(scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
+                                             noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+        }
+        const double reach = d + 0x1p-40 * scale;
+        return s <= reach * reach;
+    }
+    noct_shape_view va, vb;
+    const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
+    return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
+}
+
+noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
+{
+    noct_events *e = &w->events;
+    const double d = w->def.margin;
+    noct_pair_list tmp = e->near_prev;
+    e->near_prev = e->near;
+    e->near = tmp;
+    e->near.n = 0;
+    const size_t began = e->near_began.n, ended = e->near_ended.n;
+    partners p = {0, NULL, 0, 0, false};
+    noctStatus st = NOCT_OK;
+    for (uint32_t i = 0; i < w->bp.nslots && st == NOCT_OK; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_proxy *o = &w->bp.proxy[i];
+        const noct_aabb *b = &w->bp.box[i];
+        double lo[3], hi[3], scale = d;
+        for (int k = 0; k < 3; ++k)
+            scale = noct_max(scale, noct_max(fabs(b->lo[k]), fabs(b->hi[k])));
+        /* grown by the margin and more than its rounding */
+        const double grow = d + 0x1p-38 * scale;
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = b->lo[k] - grow;
+            hi[k] = b->hi[k] + grow;
+        }
+        p.self = i;
+        p.n = 0;
+        st = noctBroadphaseQueryBox(&w->bp, lo, hi,
+                                    (noctQueryFilter){o->category, o->mask}, take, &p);
+        if (st == NOCT_OK && p.failed)
+            st = NOCT_ERR_NOMEM;
+        if (st != NOCT_OK)
+            break;
+        qsort(p.s, p.n, sizeof *p.s, by_index);
+        for (size_t k = 0; k < p.n; ++k) {
+            const uint32_t j = p.s[k];
+            if (w->obj[j].sensor || !near(w, i, j, d))
+                continue;
+            const noctPair pair = {{i, w->bp.gen[i]}, {j, w->bp.gen[j]}};
+            if (!noct_pairs_push(&e->near, pair)) {
+                st = NOCT_ERR_NOMEM;
+                break;
+            }
+        }
+    }
+    free(p.s);
+    if (st == NOCT_OK && (w->def.effects & NOCT_EFFECT_EVENTS))
+        st = noct_world_diff_lists(&e->near, &e->near_prev, &e->near_began, &e->near_ended);
+    if (st != NOCT_OK) {
+        tmp = e->near;
+        e->near = e->near_prev;
+        e->near_prev = tmp;
+        e->near_began.n = began;
+        e->near_ended.n = ended;
+        return noct_fail(err, st, -1, 0, "near pairs: %s", noctStatusString(st));
+    }
+    return NOCT_OK;
+}
+
+static size_t list_of(const noct_pair_list *l, const noctPair **pairs)
+{
+    *pairs = l->p;
+    return l->n;
+}
+
+size_t noctWorldNear(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    return list_of(&w->events.near, pairs);
+}
+
+size_t noctWorldNearBegan(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    return list_of(&w->events.near_began, pairs);
+}
+
+size_t noctWorldNearEnded(const noctWorld *w, const noctPair **pairs)
+{
+    NOCT_REQUIRE(w != NULL && pairs != NULL);
+    return list_of(&w->events.near_ended, pairs);
+}

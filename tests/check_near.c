@@ -1,0 +1,389 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The margin (noctWorldDef::margin, noctWorldNear(), noctWorldQueryNear())
+ * against the test's own distances between the ideal solids (testgeom.c:
+ * from their edges, by ternary search, in long double): on random rotated
+ * scenes of boxes and L meshes with filters and sensors, moved every step,
+ * a pair within the margin is never missed and one clearly beyond it is
+ * never near; colliding pairs are near; the near events are the lists'
+ * differences step to step, removals included; the box level uses the
+ * boxes; a failed step keeps the lists; bad margins get a status.
+ */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree.h>
+
+#include "testgeom.h"
+#include "testutil.h"
+
+/* May objects i and j pair: filters, no sensor? */
+static bool may_pair(const scene *s, int i, int j)
+{
+    return !s->sensor[i] && !s->sensor[j] && (s->cat[i] & s->mask[j]) != 0 &&
+           (s->cat[j] & s->mask[i]) != 0;
+}
+
+static int index_of(const scene *s, uint32_t slot)
+{
+    for (int i = 0; i < s->n; ++i)
+        if (s->id[i].index == slot)
+            return i;
+    return -1;
+}
+
+static bool in_list(const noctPair *p, size_t n, noctObjectId a, noctObjectId b)
+{
+    for (size_t k = 0; k < n; ++k)
+        if (p[k].a.index == a.index && p[k].b.index == b.index &&
+            p[k].a.generation == a.generation && p[k].b.generation == b.generation)
+            return true;
+    return false;
+}
+
+/* Teleport object i to a random pose (the test keeps its ideal pose). */
+static void teleport(scene *s, int i)
+{
+    noctTransform x;
+    for (int k = 0; k < 3; ++k)
+        x.p[k] = 6 * uniform();
+    random_quat(&x.q);
+    ck_assert_int_eq(noctWorldSetTransform(s->w, s->id[i], &x, NULL), NOCT_OK);
+    s->x[i] = x;
+    quat_matrix(&x.q, s->g[i].R);
+    for (int k = 0; k < 3; ++k)
+        s->g[i].t[k] = x.p[k];
+}
+
+/* The slack the library allows beyond the margin (2^-40 of the largest
+ * coordinate, here under 10), and the test's own doubt. */
+#define BEYOND 1e-9L
+
+/* _i: 0 a quick run (under valgrind too), 1 the full one (tag slow). */
+START_TEST(near_pairs_against_geometry)
+{
+    noctMesh *ell = make_ell();
+    int within = 0, beyond = 0, skipped = 0, events = 0, removed_ended = 0;
+    const int rounds = _i ? 8 : 1;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = 0.05 + 0.6 * uniform();
+        const double d = world_margin;
+        scene s;
+        random_scene(&s, 10 + (int)(25 * uniform()), 1 + round % 4, NOCT_ACCURACY_EXACT, ell);
+        world_margin = 0;
+        noctPair prev[MAXO * MAXO / 2];
+        size_t nprev = 0;
+        for (int step = 0; step < 12; ++step) {
+            for (int i = 0; i < s.n; ++i)
+                if (uniform() < 0.3 && !(i == 0 && step > 6))
+                    teleport(&s, i);
+            /* one object goes at step 6: its near pairs end at once */
+            noctObjectId gone = {UINT32_MAX, 0};
+            if (step == 6) {
+                gone = s.id[0];
+                ck_assert_int_eq(noctWorldRemove(s.w, gone, NULL), NOCT_OK);
+            }
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            const noctPair *near, *col, *b, *e;
+            const size_t nn = noctWorldNear(s.w, &near);
+            const size_t nc = noctWorldColliding(s.w, &col);
+            const size_t nb = noctWorldNearBegan(s.w, &b), ne = noctWorldNearEnded(s.w, &e);
+            /* sorted, no sensors, filters kept */
+            for (size_t k = 0; k < nn; ++k) {
+                ck_assert_uint_lt(near[k].a.index, near[k].b.index);
+                if (k > 0)
+                    ck_assert(near[k - 1].a.index < near[k].a.index ||
+                              (near[k - 1].a.index == near[k].a.index &&
+                               near[k - 1].b.index < near[k].b.index));
+                const int i = index_of(&s, near[k].a.index), j = index_of(&s, near[k].b.index);
+                ck_assert(i >= 0 && j >= 0 && may_pair(&s, i, j));
+            }
+            /* colliding pairs are near */
+            for (size_t k = 0; k < nc; ++k)
+                ck_assert(in_list(near, nn, col[k].a, col[k].b));
+            /* every pair that may pair, against the ideal distance */
+            for (int i = 0; i < s.n; ++i)
+                for (int j = i + 1; j < s.n; ++j) {
+                    if (!may_pair(&s, i, j) || (step >= 6 && (i == 0 || j == 0)))
+                        continue;
+                    const long double dist = ideal_distance(&s.g[i], &s.g[j]);
+                    noctObjectId a = s.id[i], c = s.id[j];
+                    if (a.index > c.index) {
+                        const noctObjectId t = a;
+                        a = c;
+                        c = t;
+                    }
+                    const bool got = in_list(near, nn, a, c);
+                    if (dist <= d - BEYOND) {
+                        ck_assert_msg(got, "objects %d and %d, %.12Lg apart, not near (margin %g)",
+                                      i, j, dist, d);
+                        ++within;
+                    } else if (dist > d + BEYOND) {
+                        ck_assert_msg(!got, "objects %d and %d, %.12Lg apart, near (margin %g)",
+                                      i, j, dist, d);
+                        ++beyond;
+                    } else {
+                        ++skipped;
+                    }
+                }
+            /* the events: this list against the last */
+            for (size_t k = 0; k < nn; ++k)
+                ck_assert(in_list(b, nb, near[k].a, near[k].b) ==
+                          !in_list(prev, nprev, near[k].a, near[k].b));
+            for (size_t k = 0; k < nprev; ++k)
+                ck_assert(in_list(e, ne, prev[k].a, prev[k].b) ==
+                          !in_list(near, nn, prev[k].a, prev[k].b));
+            ck_assert_uint_le(nb, nn);
+            ck_assert_uint_le(ne, nprev);
+            if (gone.index != UINT32_MAX)
+                for (size_t k = 0; k < nprev; ++k)
+                    if (prev[k].a.index == gone.index || prev[k].b.index == gone.index) {
+                        ck_assert(in_list(e, ne, prev[k].a, prev[k].b));
+                        ++removed_ended;
+                    }
+            events += (int)(nb + ne);
+            memcpy(prev, near, nn * sizeof *near);
+            nprev = nn;
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 300 : 10);
+    ck_assert_int_gt(beyond, _i ? 3000 : 100);
+    ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
+    ck_assert_int_gt(events, _i ? 100 : 5);
+    ck_assert_int_ge(removed_ended, _i ? 1 : 0);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+/* At the box level, the boxes decide. */
+START_TEST(box_level_uses_the_boxes)
+{
+    noctMesh *ell = make_ell();
+    int checked = 0, nears = 0;
+    for (int round = 0; round < (_i ? 4 : 1); ++round) {
+        world_margin = 0.1 + 0.5 * uniform();
+        const double d = world_margin;
+        scene s;
+        random_scene(&s, 30, 3, NOCT_ACCURACY_BOX, ell);
+        world_margin = 0;
+        ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+        const noctPair *near;
+        const size_t nn = noctWorldNear(s.w, &near);
+        for (int i = 0; i < s.n; ++i)
+            for (int j = i + 1; j < s.n; ++j) {
+                if (!may_pair(&s, i, j))
+                    continue;
+                double alo[3], ahi[3], blo[3], bhi[3];
+                ck_assert_int_eq(noctWorldObjectBox(s.w, s.id[i], alo, ahi), NOCT_OK);
+                ck_assert_int_eq(noctWorldObjectBox(s.w, s.id[j], blo, bhi), NOCT_OK);
+                long double g2 = 0;
+                for (int k = 0; k < 3; ++k) {
+                    const long double g = fmaxl(fmaxl((long double)blo[k] - ahi[k],
+                                                      (long double)alo[k] - bhi[k]),
+                                                0);
+                    g2 += g * g;
+                }
+                const long double dist = sqrtl(g2);
+                const bool got = in_list(near, nn, s.id[i], s.id[j]);
+                if (fabsl(dist - d) > BEYOND) {
+                    ck_assert(got == (dist < d));
+                    ++checked;
+                    nears += got;
+                }
+            }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(checked, _i ? 1000 : 200);
+    ck_assert_int_gt(nears, _i ? 50 : 5);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+typedef struct found {
+    int n;
+    noctObjectId id[MAXO];
+} found;
+
+static bool collect(void *context, noctObjectId id, void *user)
+{
+    (void)user;
+    found *f = context;
+    ck_assert_int_lt(f->n, MAXO);
+    f->id[f->n++] = id;
+    return true;
+}
+
+START_TEST(query_near_against_geometry)
+{
+    noctMesh *ell = make_ell();
+    int within = 0, beyond = 0;
+    for (int round = 0; round < (_i ? 6 : 1); ++round) {
+        scene s;
+        random_scene(&s, 30, 2, NOCT_ACCURACY_EXACT, ell);
+        for (int q = 0; q < (_i ? 40 : 10); ++q) {
+            const double d = q % 5 == 0 ? 0 : 0.8 * uniform();
+            noctTransform x;
+            for (int k = 0; k < 3; ++k)
+                x.p[k] = 6 * uniform();
+            random_quat(&x.q);
+            const bool is_ell = uniform() < 0.4;
+            double h[3];
+            for (int k = 0; k < 3; ++k)
+                h[k] = 0.1 + 0.6 * uniform();
+            ideal sh = {0};
+            quat_matrix(&x.q, sh.R);
+            for (int k = 0; k < 3; ++k)
+                sh.t[k] = x.p[k];
+            if (is_ell) {
+                sh.npieces = 2;
+                sh.pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
+                sh.pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
+            } else {
+                sh.npieces = 1;
+                sh.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+            }
+            const noctQueryFilter f = random_filter();
+            found got = {0};
+            ck_assert_int_eq(noctWorldQueryNear(s.w, is_ell ? ell : NULL, h, &x, d, f, collect,
+                                                &got, NULL),
+                             NOCT_OK);
+            for (int i = 0; i < s.n; ++i) {
+                bool in = false;
+                for (int k = 0; k < got.n; ++k)
+                    in = in || got.id[k].index == s.id[i].index;
+                if (!passes(&s, i, f)) {
+                    ck_assert(!in);
+                    continue;
+                }
+                const long double dist = ideal_distance(&sh, &s.g[i]);
+                if (dist <= d - BEYOND) {
+                    ck_assert_msg(in, "query: object %d %.12Lg away, not within %g", i, dist, d);
+                    ++within;
+                } else if (dist > d + BEYOND) {
+                    ck_assert_msg(!in, "query: object %d %.12Lg away, within %g", i, dist, d);
+                    ++beyond;
+                }
+            }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 300 : 10);
+    ck_assert_int_gt(beyond, _i ? 3000 : 100);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+START_TEST(no_margin_no_near_and_bad_margins)
+{
+    noctMesh *ell = make_ell();
+    scene s;
+    random_scene(&s, 20, 2, NOCT_ACCURACY_EXACT, ell);
+    for (int step = 0; step < 3; ++step) {
+        ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+        const noctPair *p;
+        ck_assert_uint_eq(noctWorldNear(s.w, &p), 0);
+        ck_assert_uint_eq(noctWorldNearBegan(s.w, &p), 0);
+    }
+    noctWorldDef wd = noctDefaultWorldDef();
+    noctWorld *w;
+    noctError err;
+    wd.margin = NAN;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_ERR_NONFINITE);
+    ck_assert_ptr_null(w);
+    wd.margin = -1;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_nonnull(strstr(err.message, "margin"));
+    wd.margin = 2e100;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_ERR_INVALID);
+    noctTransform x = noctIdentityTransform();
+    found got = {0};
+    const double h[3] = {1, 1, 1};
+    ck_assert_int_eq(noctWorldQueryNear(s.w, NULL, h, &x, NAN, noctDefaultQueryFilter(),
+                                        collect, &got, &err),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldQueryNear(s.w, NULL, h, &x, -0.5, noctDefaultQueryFilter(),
+                                        collect, &got, &err),
+                     NOCT_ERR_INVALID);
+    ck_assert_int_eq(got.n, 0);
+    free_scene(&s);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
+/* A step that fails (an object would leave the coordinate range) keeps the
+ * near list and reports no near events. */
+START_TEST(a_failed_step_keeps_the_near_pairs)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
+    wd.margin = 0.5;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef od = noctDefaultObjectDef();
+    od.half_extents[0] = od.half_extents[1] = od.half_extents[2] = 0.5;
+    od.type = NOCT_OBJECT_STATIC;
+    noctObjectId a, b, far;
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &a, NULL), NOCT_OK);
+    od.transform.p[0] = 1.25; /* 0.25 apart: near, not colliding */
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &b, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldColliding(w, &p), 0);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 1);
+    ck_assert_uint_eq(noctWorldNearBegan(w, &p), 1);
+    od.type = NOCT_OBJECT_MOVING;
+    od.transform.p[0] = 9.9e99;
+    od.velocity[0] = 1e99;
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &far, NULL), NOCT_OK);
+    noctError err;
+    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_ERR_TOO_LARGE);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 1);
+    ck_assert_uint_eq(p[0].a.index, a.index);
+    ck_assert_uint_eq(p[0].b.index, b.index);
+    ck_assert_uint_eq(noctWorldNearBegan(w, &p), 0);
+    ck_assert_uint_eq(noctWorldNearEnded(w, &p), 0);
+    /* without it, the next step goes on: the pair stays near, no event */
+    ck_assert_int_eq(noctWorldRemove(w, far, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 1);
+    ck_assert_uint_eq(noctWorldNearBegan(w, &p), 0);
+    ck_assert_uint_eq(noctWorldNearEnded(w, &p), 0);
+    /* moved 0.75 apart: the pair ends */
+    noctTransform x = noctIdentityTransform();
+    x.p[0] = 1.75;
+    ck_assert_int_eq(noctWorldSetTransform(w, b, &x, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 0);
+    ck_assert_uint_eq(noctWorldNearEnded(w, &p), 1);
+    noctWorldDestroy(w);
+}
+END_TEST
+
+static Suite *near_suite(void)
+{
+    Suite *s = suite_create("near");
+    TCase *tc = tcase_create("near");
+    tcase_set_timeout(tc, 300);
+    tcase_add_loop_test(tc, near_pairs_against_geometry, 0, 1);
+    tcase_add_loop_test(tc, box_level_uses_the_boxes, 0, 1);
+    tcase_add_loop_test(tc, query_near_against_geometry, 0, 1);
+    tcase_add_test(tc, no_margin_no_near_and_bad_margins);
+    tcase_add_test(tc, a_failed_step_keeps_the_near_pairs);
+    suite_add_tcase(s, tc);
+    TCase *full = tcase_create("near, full");
+    tcase_set_tags(full, "slow"); /* left out under valgrind */
+    tcase_set_timeout(full, 300);
+    tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
+    tcase_add_loop_test(full, box_level_uses_the_boxes, 1, 2);
+    tcase_add_loop_test(full, query_near_against_geometry, 1, 2);
+    suite_add_tcase(s, full);
+    return s;
+}
+
+int main(void)
+{
+    return run_suite(near_suite());
+}

@@ -1,0 +1,78 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The tests' own geometry of random rotated scenes (check-queries,
+ * check-near): objects that are boxes or L meshes (unions of two boxes),
+ * as the ideal solids they stand for, in long double, with the test's own
+ * containment, separating-axis, segment and distance computations; and
+ * the worlds that hold them.
+ */
+#ifndef NOCT_TESTS_TESTGEOM_H
+#define NOCT_TESTS_TESTGEOM_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include <noctree.h>
+
+#define MAXO 48
+#define MARGIN 1e-9L
+
+typedef struct piece {
+    long double c[3], h[3];
+} piece;
+
+typedef struct ideal {
+    int npieces;
+    piece pc[2];
+    long double R[9]; /* rows: world = R local + t */
+    long double t[3];
+} ideal;
+
+typedef struct scene {
+    noctWorld *w;
+    int n;
+    noctObjectId id[MAXO];
+    ideal g[MAXO];
+    int kind[MAXO];           /* 0: box primitive, 1: box mesh, 2: L mesh */
+    noctMesh *mesh[MAXO];     /* the object's mesh (kinds 1 and 2); the
+                                 test's mesh of a box primitive (kind 0) */
+    noctTransform x[MAXO];
+    uint64_t cat[MAXO], mask[MAXO];
+    bool sensor[MAXO];
+} scene;
+
+typedef struct obb {
+    long double c[3], u[3][3], h[3];
+} obb;
+
+extern uint64_t rng;
+
+/* The margin of the worlds new_world() makes (default 0). */
+extern double world_margin;
+
+double uniform(void);
+void quat_matrix(const noctQuat *q, long double R[9]);
+void random_quat(noctQuat *q);
+void to_local(const ideal *g, const long double p[3], long double out[3]);
+void dir_to_local(const ideal *g, const long double d[3], long double out[3]);
+int ideal_contains(const ideal *g, const double p[3]);
+obb piece_box(const ideal *g, int j);
+int obb_meet(const obb *a, const obb *b);
+int union_meet(const ideal *a, const ideal *b);
+int ideal_ray(const ideal *g, const double p[3], const double d[3], long double *s,
+              long double normal[3], bool *sharp);
+noctMesh *make_ell(void);
+noctWorld *new_world(int N, noctAccuracy accuracy);
+uint64_t random_bits(void);
+void random_scene(scene *s, int n, int N, noctAccuracy accuracy, noctMesh *ell);
+void free_scene(scene *s);
+bool passes(const scene *s, int i, noctQueryFilter f);
+noctQueryFilter random_filter(void);
+const noctMesh *mesh_of(const scene *s, int i, const noctMesh *ell);
+
+/* The distance between two objects' ideal solids (0 when they meet), from
+ * their edges: each edge's distance to each box of the other, minimised
+ * along the edge (a convex function) by ternary search. */
+long double ideal_distance(const ideal *a, const ideal *b);
+
+#endif /* NOCT_TESTS_TESTGEOM_H */
