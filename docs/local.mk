@@ -14,6 +14,13 @@ noinst_PROGRAMS += docs/examples/driven-arm
 docs_examples_driven_arm_SOURCES = docs/examples/driven-arm.c
 docs_examples_driven_arm_LDADD = lib/libnoctree.la -lm
 
+# The scene files of the arms:K and keyframes:N families (noctree-sim
+# --scene arms:3 --write-scene ...; tests/sim.sh checks that they are
+# still what the families write), installed with the documentation.
+examplescenesdir = $(docdir)/examples/scenes
+dist_examplescenes_DATA = docs/examples/scenes/arms-3.scene \
+	docs/examples/scenes/keyframes-20.scene
+
 EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md \
 	docs/doxygen-header.html $(docs_results)
 docs_results = \

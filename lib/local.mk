@@ -21,6 +21,9 @@ noctree_sources = \
 	lib/predicates.c \
 	lib/predicates.h \
 	lib/scene.c \
+	lib/scene_families.c \
+	lib/scene_internal.h \
+	lib/scene_write.c \
 	lib/transform.c \
 	lib/world.c \
 	lib/world_events.c \

@@ -21,46 +21,8 @@
 
 #include "internal.h"
 #include "mesh_internal.h"
+#include "scene_internal.h"
 #include "world_internal.h"
-
-typedef struct scene_mesh {
-    char *name;
-    noctMesh *mesh;  /* NULL for a box primitive */
-    double half[3];  /* a box primitive's half-extents */
-} scene_mesh;
-
-typedef struct scene_object {
-    size_t mesh;
-    double pos[3], dir[3], speed;
-    bool has_velocity;       /* a velocity vector, not dir and speed */
-    double vel[3];
-    noctQuat q;              /* from 'rotate', else the identity */
-    noctObjectType type;
-    uint64_t category, mask;
-    bool sensor;
-    noctQuat spin;           /* from 'spin', else the identity */
-    bool has_type;           /* 'type' given */
-    size_t first_key, nkeys; /* its keyframes in noctScene.keys */
-} scene_object;
-
-typedef struct scene_family {
-    int gas;      /* 0 planes, 1 gas */
-    long size;
-} scene_family;
-
-struct noctScene {
-    noctWorldDef def;
-    int steps;
-    scene_mesh *meshes;
-    size_t nmeshes, capmeshes;
-    scene_object *objects;
-    size_t nobjects, capobjects;
-    noctKeyframe *keys;      /* the objects' tracks, each object's in a row */
-    size_t nkeys, capkeys;
-    scene_family families[16];
-    size_t nfamilies;
-    noctMesh *unit_cube; /* for planes families */
-};
 
 void noctSceneDestroy(noctScene *s)
 {
@@ -68,6 +30,7 @@ void noctSceneDestroy(noctScene *s)
         return;
     for (size_t i = 0; i < s->nmeshes; ++i) {
         free(s->meshes[i].name);
+        free(s->meshes[i].file);
         noctMeshDestroy(s->meshes[i].mesh);
     }
     free(s->meshes);
@@ -207,6 +170,82 @@ static char *relative_path(const char *scene_path, const char *file)
     return out;
 }
 
+noctStatus noct_scene_add_mesh(noctScene *s, const char *name, noctMesh *m, const double h[3],
+                               const char *file)
+{
+    if (s->nmeshes == s->capmeshes) {
+        size_t cap = s->capmeshes ? 2 * s->capmeshes : 8;
+        scene_mesh *q = realloc(s->meshes, cap * sizeof *q);
+        if (q == NULL) {
+            noctMeshDestroy(m);
+            return NOCT_ERR_NOMEM;
+        }
+        s->meshes = q;
+        s->capmeshes = cap;
+    }
+    scene_mesh *sm = &s->meshes[s->nmeshes];
+    memset(sm, 0, sizeof *sm);
+    sm->name = strdup(name);
+    sm->file = file != NULL ? strdup(file) : NULL;
+    if (sm->name == NULL || (file != NULL && sm->file == NULL)) {
+        free(sm->name);
+        free(sm->file);
+        noctMeshDestroy(m);
+        return NOCT_ERR_NOMEM;
+    }
+    memcpy(sm->half, h, sizeof sm->half);
+    sm->box = file == NULL;
+    sm->mesh = m;
+    ++s->nmeshes;
+    return NOCT_OK;
+}
+
+scene_object noct_scene_object(size_t mesh, const double pos[3])
+{
+    scene_object o;
+    memset(&o, 0, sizeof o);
+    o.mesh = mesh;
+    memcpy(o.pos, pos, sizeof o.pos);
+    o.q = o.spin = (noctQuat){0, 0, 0, 1};
+    o.type = NOCT_OBJECT_MOVING;
+    o.category = o.mask = NOCT_FILTER_ALL;
+    return o;
+}
+
+noctStatus noct_scene_add_object(noctScene *s, const scene_object *o)
+{
+    if (s->nobjects == s->capobjects) {
+        size_t cap = s->capobjects ? 2 * s->capobjects : 64;
+        scene_object *q = realloc(s->objects, cap * sizeof *q);
+        if (q == NULL)
+            return NOCT_ERR_NOMEM;
+        s->objects = q;
+        s->capobjects = cap;
+    }
+    s->objects[s->nobjects++] = *o;
+    return NOCT_OK;
+}
+
+/* The last object follows a track: it is kinematic. */
+noctStatus noct_scene_add_key(noctScene *s, const scene_key *k)
+{
+    if (s->nkeys == s->capkeys) {
+        size_t cap = s->capkeys ? 2 * s->capkeys : 64;
+        scene_key *q = realloc(s->keys, cap * sizeof *q);
+        if (q == NULL)
+            return NOCT_ERR_NOMEM;
+        s->keys = q;
+        s->capkeys = cap;
+    }
+    scene_object *o = &s->objects[s->nobjects - 1];
+    if (o->nkeys == 0)
+        o->first_key = s->nkeys;
+    s->keys[s->nkeys++] = *k;
+    ++o->nkeys;
+    o->type = NOCT_OBJECT_KINEMATIC;
+    return NOCT_OK;
+}
+
 static noctStatus parse_mesh(parser *p, noctScene *s)
 {
     char *name = next(p), *kind = next(p);
@@ -219,6 +258,7 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
     noctError inner = {0};
     noctStatus st;
     double h[3] = {0, 0, 0};
+    char *full = NULL; /* a file mesh's path, as opened */
     if (strcmp(kind, "box") == 0) {
         if ((st = numbers(p, "half-extent", h, 3)) != NOCT_OK || (st = end_of_line(p)) != NOCT_OK)
             return st;
@@ -234,32 +274,21 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
             return perr(p, NOCT_ERR_PARSE, "missing the mesh file name");
         if ((st = end_of_line(p)) != NOCT_OK)
             return st;
-        char *full = relative_path(p->path, file);
+        full = relative_path(p->path, file);
         if (full == NULL)
             return perr(p, NOCT_ERR_NOMEM, "out of memory");
         st = noctMeshRead(full, &m, &inner);
-        free(full);
     } else {
         return perr(p, NOCT_ERR_PARSE, "unknown mesh kind '%s' (box or file)", kind);
     }
-    if (st != NOCT_OK)
+    if (st != NOCT_OK) {
+        free(full);
         return noct_fail(p->err, st, inner.index, p->line, "%s:%ld: mesh '%s': %s",
                          p->path, p->line, name, inner.message);
-    if (s->nmeshes == s->capmeshes) {
-        size_t cap = s->capmeshes ? 2 * s->capmeshes : 8;
-        scene_mesh *q = realloc(s->meshes, cap * sizeof *q);
-        if (q == NULL) {
-            noctMeshDestroy(m);
-            return perr(p, NOCT_ERR_NOMEM, "out of memory");
-        }
-        s->meshes = q;
-        s->capmeshes = cap;
     }
-    s->meshes[s->nmeshes].name = strdup(name);
-    memcpy(s->meshes[s->nmeshes].half, h, sizeof h);
-    s->meshes[s->nmeshes++].mesh = m;
-    return s->meshes[s->nmeshes - 1].name ? NOCT_OK
-                                           : perr(p, NOCT_ERR_NOMEM, "out of memory");
+    st = noct_scene_add_mesh(s, name, m, h, full);
+    free(full);
+    return st == NOCT_OK ? NOCT_OK : perr(p, st, "out of memory");
 }
 
 /* A 64-bit filter word: decimal, or hexadecimal with 0x. */
@@ -312,6 +341,7 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
                 return st;
             if (noctQuatFromAxisAngle(axis, axis[3], &o->q) != NOCT_OK)
                 return perr(p, NOCT_ERR_INVALID, "a rotation needs a non-zero axis");
+            o->rotate = (scene_turn){true, {axis[0], axis[1], axis[2]}, axis[3]};
         } else if (k == 2) {
             char *t = next(p);
             if (t == NULL)
@@ -334,6 +364,7 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
                 return st;
             if (noctQuatFromAxisAngle(axis, axis[3], &o->spin) != NOCT_OK)
                 return perr(p, NOCT_ERR_INVALID, "a spin needs a non-zero axis");
+            o->spin_turn = (scene_turn){true, {axis[0], axis[1], axis[2]}, axis[3]};
         } else {
             if ((st = bits(p, "category", &o->category)) != NOCT_OK ||
                 (st = bits(p, "mask", &o->mask)) != NOCT_OK)
@@ -363,12 +394,7 @@ static noctStatus parse_object(parser *p, noctScene *s)
             mi = i;
     if (mi == s->nmeshes)
         return perr(p, NOCT_ERR_INVALID, "unknown mesh '%s' (define it first)", name);
-    scene_object o;
-    memset(&o, 0, sizeof o);
-    o.mesh = mi;
-    o.q = o.spin = (noctQuat){0, 0, 0, 1};
-    o.type = NOCT_OBJECT_MOVING;
-    o.category = o.mask = NOCT_FILTER_ALL;
+    scene_object o = noct_scene_object(mi, (const double[3]){0, 0, 0});
     noctStatus st = numbers(p, "position", o.pos, 3);
     if (st != NOCT_OK)
         return st;
@@ -410,16 +436,8 @@ static noctStatus parse_object(parser *p, noctScene *s)
             return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");
     if ((st = count_objects(p, 1)) != NOCT_OK)
         return st;
-    if (s->nobjects == s->capobjects) {
-        size_t cap = s->capobjects ? 2 * s->capobjects : 64;
-        scene_object *q = realloc(s->objects, cap * sizeof *q);
-        if (q == NULL)
-            return perr(p, NOCT_ERR_NOMEM, "out of memory");
-        s->objects = q;
-        s->capobjects = cap;
-    }
-    s->objects[s->nobjects++] = o;
-    return NOCT_OK;
+    return noct_scene_add_object(s, &o) == NOCT_OK ? NOCT_OK
+                                                   : perr(p, NOCT_ERR_NOMEM, "out of memory");
 }
 
 /* 'key TICK X Y Z [rotate AX AY AZ DEGREES]': a keyframe of the last
@@ -435,12 +453,14 @@ static noctStatus parse_key(parser *p, noctScene *s)
     if (o->has_type && o->type != NOCT_OBJECT_KINEMATIC)
         return perr(p, NOCT_ERR_INVALID, "an object that follows a track is kinematic");
     long tick;
-    noctKeyframe k;
+    scene_key key;
+    memset(&key, 0, sizeof key);
+    noctKeyframe *kf = &key.k;
     noctStatus st = integer(p, "key tick", 0, 9007199254740992L, &tick);
-    if (st != NOCT_OK || (st = numbers(p, "key position", k.x.p, 3)) != NOCT_OK)
+    if (st != NOCT_OK || (st = numbers(p, "key position", kf->x.p, 3)) != NOCT_OK)
         return st;
-    k.tick = (uint64_t)tick;
-    k.x.q = (noctQuat){0, 0, 0, 1};
+    kf->tick = (uint64_t)tick;
+    kf->x.q = (noctQuat){0, 0, 0, 1};
     char *tok = next(p);
     if (tok != NULL) {
         if (strcmp(tok, "rotate") != 0)
@@ -451,36 +471,26 @@ static noctStatus parse_key(parser *p, noctScene *s)
         if ((st = numbers(p, "rotation axis and angle", axis, 4)) != NOCT_OK ||
             (st = end_of_line(p)) != NOCT_OK)
             return st;
-        if (noctQuatFromAxisAngle(axis, axis[3], &k.x.q) != NOCT_OK)
+        if (noctQuatFromAxisAngle(axis, axis[3], &kf->x.q) != NOCT_OK)
             return perr(p, NOCT_ERR_INVALID, "a rotation needs a non-zero axis");
+        key.turn = (scene_turn){true, {axis[0], axis[1], axis[2]}, axis[3]};
     }
-    if (o->nkeys > 0 && !(k.tick > s->keys[s->nkeys - 1].tick))
+    if (o->nkeys > 0 && !(kf->tick > s->keys[s->nkeys - 1].k.tick))
         return perr(p, NOCT_ERR_INVALID, "key tick %llu is not after the previous key's %llu",
-                    (unsigned long long)k.tick,
-                    (unsigned long long)s->keys[s->nkeys - 1].tick);
+                    (unsigned long long)kf->tick,
+                    (unsigned long long)s->keys[s->nkeys - 1].k.tick);
     for (int c = 0; c < 3; ++c)
-        if (fabs(k.x.p[c]) > NOCT_MAX_COORDINATE)
+        if (fabs(kf->x.p[c]) > NOCT_MAX_COORDINATE)
             return perr(p, NOCT_ERR_TOO_LARGE, "key position beyond the coordinate limit");
     if (s->meshes[o->mesh].mesh == NULL) { /* a box primitive: its corners as turned */
         double R[9];
-        noctQuatToMatrix(&k.x.q, R, NULL);
+        noctQuatToMatrix(&kf->x.q, R, NULL);
         if (noct_check_box_corners(s->meshes[o->mesh].half, R, NULL) != NOCT_OK)
             return perr(p, NOCT_ERR_TOO_LARGE,
                         "the box as turned puts a corner beyond the coordinate limit");
     }
-    if (s->nkeys == s->capkeys) {
-        size_t cap = s->capkeys ? 2 * s->capkeys : 64;
-        noctKeyframe *q = realloc(s->keys, cap * sizeof *q);
-        if (q == NULL)
-            return perr(p, NOCT_ERR_NOMEM, "out of memory");
-        s->keys = q;
-        s->capkeys = cap;
-    }
-    if (o->nkeys == 0)
-        o->first_key = s->nkeys;
-    s->keys[s->nkeys++] = k;
-    ++o->nkeys;
-    o->type = NOCT_OBJECT_KINEMATIC;
+    if (noct_scene_add_key(s, &key) != NOCT_OK)
+        return perr(p, NOCT_ERR_NOMEM, "out of memory");
     s->def.effects |= NOCT_EFFECT_TRACK;
     return NOCT_OK;
 }
@@ -702,17 +712,33 @@ noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
     *scene = NULL;
     const char *colon = strchr(spec, ':');
     char *end = NULL;
+    errno = 0;
     long size = colon ? strtol(colon + 1, &end, 10) : -1;
-    int gas = colon && (size_t)(colon - spec) == 3 && strncmp(spec, "gas", 3) == 0;
-    int planes = colon && (size_t)(colon - spec) == 6 && strncmp(spec, "planes", 6) == 0;
-    if ((!gas && !planes) || end == colon + 1 || (end && *end != '\0') ||
-        (planes && (size < 0 || size > 1000)) || (gas && (size < 1 || size > 10000000)))
+    const size_t len = colon ? (size_t)(colon - spec) : 0;
+    const bool number = colon && end != colon + 1 && *end == '\0' && errno == 0;
+    int gas = number && len == 3 && strncmp(spec, "gas", 3) == 0;
+    int planes = number && len == 6 && strncmp(spec, "planes", 6) == 0;
+    int arms = number && len == 4 && strncmp(spec, "arms", 4) == 0;
+    int keyframes = number && len == 9 && strncmp(spec, "keyframes", 9) == 0;
+    if ((!gas && !planes && !arms && !keyframes) || (planes && (size < 0 || size > 1000)) ||
+        (gas && (size < 1 || size > 10000000)) || (arms && (size < 1 || size > 8)) ||
+        (keyframes && (size < 1 || size > 100000)))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "unknown scene '%s' (planes:K with K 0 to 1000, or gas:N with N "
-                         "1 to 10000000)", spec);
+                         "unknown scene '%s' (planes:K with K 0 to 1000, gas:N with N "
+                         "1 to 10000000, arms:K with K 1 to 8, or keyframes:N with N 1 to "
+                         "100000)", spec);
     noctScene *s = scene_new();
     if (s == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    if (arms || keyframes) {
+        noctStatus st = arms ? noct_scene_arms(s, size, err) : noct_scene_keyframes(s, size, err);
+        if (st != NOCT_OK) {
+            noctSceneDestroy(s);
+            return st;
+        }
+        *scene = s;
+        return NOCT_OK;
+    }
     s->families[s->nfamilies++] = (scene_family){gas, size};
     if (gas) {
         double lb = noctGasContainerSize((size_t)size);
@@ -773,8 +799,17 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
         }
         noctObjectId id;
         st = noct_world_add_object(w, &d, speed, &id, err);
-        if (st == NOCT_OK && o->nkeys > 0)
-            st = noctWorldSetTrack(w, id, &s->keys[o->first_key], o->nkeys, err);
+        if (st == NOCT_OK && o->nkeys > 0) {
+            noctKeyframe *k = malloc(o->nkeys * sizeof *k);
+            if (k == NULL) {
+                st = noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+                break;
+            }
+            for (size_t j = 0; j < o->nkeys; ++j)
+                k[j] = s->keys[o->first_key + j].k;
+            st = noctWorldSetTrack(w, id, k, o->nkeys, err);
+            free(k);
+        }
     }
     if (st != NOCT_OK) {
         noctWorldDestroy(w);

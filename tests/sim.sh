@@ -1,7 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # noctree-sim end to end: known event counts, the event log, a scene file,
-# and a precise message with exit status 2 for every kind of bad input.
+# the per-step reports and --first against pairs worked out by hand, and a
+# precise message with exit status 2 for every kind of bad input.
 set -u
 . "${srcdir:-.}/lib.sh"
 sim="$top_builddir/tools/noctree-sim"
@@ -93,6 +94,191 @@ expect_run 0 '^contact begins 1$' --quiet --substep "$tmp/fast.scene"
 "$sim" --quiet --substep "$tmp/fast.scene" 2>&1 | grep -q warning &&
     fail "--substep still warns" || ok
 
+# ---- --report and --first ---------------------------------------------------
+# Unit cubes (half-extents 0.5) on the x axis, without response, so that
+# objects pass through each other: two collide after step s exactly when
+# their positions (p += v each step, before detection) are at most 1 apart on
+# every axis, touching included. Speeds are multiples of 1/8, so every
+# position is exact. Cube 0 (x = 0.25 s) meets the static cube 2 (x = 1.75)
+# at steps 3 to 11, cube 1 (x = 5 - 0.25 s) meets cube 2 at 9 to 17 and
+# cube 0 at 8 to 12.
+cat > "$tmp/three.scene" <<'SCENE'
+effects motion events
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0     velocity 0.25 0 0
+object cube 5 0 0     velocity -0.25 0 0
+object cube 1.75 0 0  type static
+SCENE
+# The oracle: the same positions, every pair tested by hand, as the CSV rows.
+awk 'BEGIN {
+    split("0 5 1.75", x0, " "); split("0.25 -0.25 0", v, " ")
+    for (s = 1; s <= 20; ++s)
+        for (i = 1; i <= 3; ++i)
+            for (j = i + 1; j <= 3; ++j) {
+                d = (x0[j] + v[j] * s) - (x0[i] + v[i] * s)
+                if (d <= 1 && d >= -1)
+                    printf "%d,collide,%d,%d\n", s, i - 1, j - 1
+            }
+}' > "$tmp/want.csv"
+check "oracle: 23 colliding rows" [ "$(wc -l < "$tmp/want.csv")" -eq 23 ]
+
+# CSV on standard output; the summary goes to standard error then.
+"$sim" --report csv --steps 20 --quiet "$tmp/three.scene" > "$tmp/csv" 2> "$tmp/err"
+check "--report csv: exit 0" [ $? -eq 0 ]
+check "--report csv: header step,kind,a,b" [ "$(head -1 "$tmp/csv")" = "step,kind,a,b" ]
+tail -n +2 "$tmp/csv" > "$tmp/rows.csv"
+check "--report csv: the rows are the oracle's" cmp -s "$tmp/rows.csv" "$tmp/want.csv"
+check "--report csv: standard output holds only the report" \
+    [ "$(grep -c -v '^[0-9]*,collide,[0-9]*,[0-9]*$' "$tmp/csv")" -eq 1 ]
+check "--report csv: the summary goes to standard error" \
+    grep -q '^contact begins 3$' "$tmp/err"
+
+# The table: a header, then a line per step with pairs (3 to 17), in the
+# world's order; the same pairs as the CSV rows.
+"$sim" --report table --steps 20 --quiet "$tmp/three.scene" > "$tmp/table" 2> /dev/null
+check "--report table: header" \
+    [ "$(head -1 "$tmp/table" | awk '{ $1 = $1; print }')" = "step kind count pairs" ]
+check "--report table: 15 lines of pairs" [ "$(tail -n +2 "$tmp/table" | wc -l)" -eq 15 ]
+check "--report table: step 8 has 0-1 and 0-2" grep -q '^ *8  *collide  *2  *0-1 0-2$' "$tmp/table"
+check "--report table: step 10 has all three pairs" \
+    grep -q '^ *10  *collide  *3  *0-1 0-2 1-2$' "$tmp/table"
+check "--report table: no line for step 2 or 18" \
+    [ "$(awk 'NR > 1 && ($1 == 2 || $1 == 18)' "$tmp/table" | wc -l)" -eq 0 ]
+awk 'NR > 1 { for (i = 4; i <= NF; ++i) { split($i, ab, "-"); print $1 "," $2 "," ab[1] "," ab[2] }
+              if (NF - 3 != $3) print "count " $3 " for " NF - 3 " pairs at step " $1 }' \
+    "$tmp/table" > "$tmp/table.csv"
+check "--report table: counts and pairs agree with the oracle" \
+    cmp -s "$tmp/table.csv" "$tmp/want.csv"
+
+# --output: the report in the file; the summary and events stay on standard
+# output, and --events works as without --report.
+"$sim" --report csv --output "$tmp/out.csv" --events --steps 20 "$tmp/three.scene" \
+    > "$tmp/stdout" 2> /dev/null
+check "--output: the file holds the CSV" cmp -s "$tmp/out.csv" "$tmp/csv"
+check "--output: the summary on standard output" grep -q '^contact begins 3$' "$tmp/stdout"
+check "--output --events: the events on standard output" \
+    [ "$(grep -c '^[0-9]* \(begin\|end\) [0-9]* [0-9]*$' "$tmp/stdout")" -eq 6 ]
+check "--output --events: 0-1 begins at step 8" grep -q '^8 begin 0 1$' "$tmp/stdout"
+"$sim" --report table --events --steps 20 "$tmp/three.scene" > "$tmp/stdout" 2> "$tmp/err"
+check "--report --events without --output: the events on standard error" \
+    grep -q '^18 end 1 2$' "$tmp/err"
+check "--report --events without --output: standard output holds only the table" \
+    cmp -s "$tmp/stdout" "$tmp/table"
+
+# gnuplot: a script with its data inline, a row a step, zeros included.
+"$sim" --report gnuplot --output "$tmp/plot.gp" --steps 20 --quiet "$tmp/three.scene" \
+    > "$tmp/stdout" 2> /dev/null
+check "--report gnuplot: the summary stays on standard output" \
+    grep -q '^contact begins 3$' "$tmp/stdout"
+# starts_line FILE TEXT: a line of FILE starts with TEXT.
+starts_line() { awk -v t="$2" 'index($0, t) == 1 { found = 1 } END { exit !found }' "$1"; }
+for line in "set terminal svg " "set output '$tmp/plot.svg'" "set title '" \
+        "set xlabel 'step'" "set ylabel 'colliding pairs'" '$data << EOD' 'EOD' \
+        'plot $data using 1:2 '; do
+    check "--report gnuplot: a line starting '$line'" starts_line "$tmp/plot.gp" "$line"
+done
+awk '/^EOD$/ { inside = 0 } inside && !/^#/ { print } /^\$data << EOD$/ { inside = 1 }' \
+    "$tmp/plot.gp" > "$tmp/rows"
+awk -F, '{ n[$1]++ } END { for (s = 1; s <= 20; ++s) print s, n[s] + 0 }' \
+    "$tmp/want.csv" > "$tmp/want.rows"
+check "--report gnuplot: 20 rows, step and pairs, the oracle's counts" \
+    cmp -s "$tmp/rows" "$tmp/want.rows"
+check "--report gnuplot: plot after the data" \
+    [ "$(grep -n '^EOD$' "$tmp/plot.gp" | cut -d: -f1)" -lt \
+      "$(grep -n '^plot ' "$tmp/plot.gp" | cut -d: -f1)" ]
+"$sim" --report gnuplot --steps 20 --quiet "$tmp/three.scene" > "$tmp/stdout.gp" 2> /dev/null
+check "--report gnuplot without --output: no set output" \
+    [ "$(grep -c '^set output' "$tmp/stdout.gp")" -eq 0 ]
+mkdir "$tmp/d.x"
+"$sim" --report gnuplot --output "$tmp/d.x/plot" --steps 2 "$tmp/three.scene" > /dev/null 2>&1
+check "--report gnuplot: .svg added to a name without an extension" \
+    grep -q -F -x "set output '$tmp/d.x/plot.svg'" "$tmp/d.x/plot"
+"$sim" --report gnuplot --output "$tmp/it's.gp" --steps 20 "$tmp/three.scene" > /dev/null 2>&1
+check "--report gnuplot: a quote in the name doubled" \
+    grep -q -F -x "set output '$tmp/it''s.svg'" "$tmp/it's.gp"
+if command -v gnuplot > /dev/null 2>&1; then
+    check "gnuplot draws the script's SVG" gnuplot "$tmp/plot.gp"
+    check "gnuplot: the SVG is whole" grep -q '</svg>' "$tmp/plot.svg"
+    check "gnuplot: the quoted name" gnuplot "$tmp/it's.gp"
+    check "gnuplot: the SVG under the quoted name" grep -q '</svg>' "$tmp/it's.svg"
+    gnuplot "$tmp/stdout.gp" > "$tmp/stdout.svg" 2> "$tmp/err"
+    check "gnuplot: without --output, the SVG on standard output" \
+        grep -q '</svg>' "$tmp/stdout.svg"
+    "$sim" --report gnuplot --output "$tmp/none.gp" --steps 1 "$tmp/three.scene" > /dev/null 2>&1
+    check "gnuplot: one step without a collision, without a warning" \
+        [ "$(gnuplot "$tmp/none.gp" 2>&1 | wc -c)" -eq 0 ]
+else
+    echo "sim: gnuplot not installed, the scripts are not run"
+fi
+
+# --first: the step follows from the gap g between the faces and the closing
+# speed c = v0 + v1: ceil(g / c) (in eighths: (8g + 8c - 1) / 8c). At that
+# step cube 0 is at x0 = v0 s and cube 1 at (x1, dy, dz), x1 = 1 + g - v1 s
+# > x0, so the boxes' intersection is x1 - 0.5 to x0 + 0.5 on x, and
+# max(-0.5, d - 0.5) to min(0.5, d + 0.5) for d = dy, dz on y and z.
+first_case() { # G V0 V1 DY DZ: the gap and the speeds in eighths, cube 1's offset
+    awk -v g="$1" -v a="$2" -v b="$3" -v dy="$4" -v dz="$5" -v f="$tmp/first.scene" 'BEGIN {
+        print "mesh cube box 0.5 0.5 0.5" > f
+        printf "object cube 0 0 0 velocity %g 0 0\n", a / 8 > f
+        printf "object cube %g %g %g velocity %g 0 0\n", 1 + g / 8, dy, dz, -b / 8 > f
+        s = int((g + a + b - 1) / (a + b)); x0 = a * s / 8; x1 = 1 + (g - b * s) / 8
+        line = "first collision at step %d: objects 0 and 1, contact box (%g, %g, %g) (%g, %g, %g)\n"
+        ylo = dy > 0 ? dy - 0.5 : -0.5; yhi = dy < 0 ? dy + 0.5 : 0.5
+        zlo = dz > 0 ? dz - 0.5 : -0.5; zhi = dz < 0 ? dz + 0.5 : 0.5
+        printf line, s, x1 - 0.5, ylo, zlo, x0 + 0.5, yhi, zhi
+    }' > "$tmp/first.want"
+    "$sim" --first --quiet "$tmp/first.scene" > "$tmp/first.got" 2> /dev/null
+    check "--first, gap $1/8, speeds $2/8 and $3/8: exit 0" [ $? -eq 0 ]
+    check "--first, gap $1/8, speeds $2/8 and $3/8: want $(cat "$tmp/first.want"), got $(cat "$tmp/first.got")" \
+        cmp -s "$tmp/first.got" "$tmp/first.want"
+}
+first_case 32 2 3 0 0         # ceil(32 / 5) = 7; the boxes overlap by 0.375
+first_case 16 2 2 0 0         # 16 / 4 = 4: touching faces count
+first_case 24 1 0 0.25 -0.5   # cube 1 still, offset on y and z: step 24
+first_case 12 3 2 -0.75 0.125 # ceil(12 / 5) = 3
+
+expect_run 0 '^first collision at step 3: objects 0 and 2, contact box (1.25, -0.5, -0.5) (1.25, 0.5, 0.5)$' \
+    --first --quiet "$tmp/three.scene"
+# It stops there: no event after step 3, no summary.
+"$sim" --first --events --quiet "$tmp/three.scene" > "$tmp/out" 2>&1
+check "--first --events: the begin at step 3, then the line" \
+    [ "$(cat "$tmp/out")" = "3 begin 0 2
+first collision at step 3: objects 0 and 2, contact box (1.25, -0.5, -0.5) (1.25, 0.5, 0.5)" ]
+expect_run 0 '^no collision in 2 steps$' --first --steps 2 --quiet "$tmp/three.scene"
+"$sim" --first --steps 2 --quiet "$tmp/three.scene" > "$tmp/out" 2>&1
+check "--first without a collision: one line, no summary" [ "$(wc -l < "$tmp/out")" -eq 1 ]
+# Sensors' pairs are not collisions.
+expect_run 0 '^no collision in 100 steps$' --first --steps 100 --quiet "$tmp/sensor.scene"
+# Overlapping before the first step: that is step 1.
+cat > "$tmp/overlap.scene" <<'SCENE'
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0
+object cube 0.5 0.25 0
+SCENE
+expect_run 0 '^first collision at step 1: objects 0 and 1, contact box (0, -0.25, -0.5) (0.5, 0.5, 0.5)$' \
+    --first "$tmp/overlap.scene"
+# Two pairs meet at step 8: the first in the world's order, 0-3, not 1-2.
+cat > "$tmp/two-pairs.scene" <<'SCENE'
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0    velocity 0.25 0 0
+object cube 0 10 0   velocity 0.25 0 0
+object cube 3 10 0   type static
+object cube 3 0 0    type static
+SCENE
+expect_run 0 '^first collision at step 8: objects 0 and 3, contact box (2.5, -0.5, -0.5) (2.5, 0.5, 0.5)$' \
+    --first "$tmp/two-pairs.scene"
+
+# With sub-steps the plates of fast.scene meet and part within step 6
+# (ceil(10.1 / 2)): in the events, not in the colliding list at the step's
+# end, which is all --first and --report see; a warning says so.
+expect_run 0 "^noctree-sim: warning: step 6: objects 0 and 1 met and parted within the step's sub-steps; --first sees only" \
+    --quiet --substep --first "$tmp/fast.scene"
+expect_run 0 '^no collision in 10 steps$' --quiet --substep --first "$tmp/fast.scene"
+expect_run 0 "^noctree-sim: warning: step 6: objects 0 and 1 met and parted within the step's sub-steps; the report lists only" \
+    --quiet --substep --report csv "$tmp/fast.scene"
+"$sim" --quiet --report csv --steps 20 "$tmp/three.scene" 2>&1 | grep -q 'met and parted' &&
+    fail "--report: a parting warning without sub-steps" || ok
+
 # Bad usage: exit 2.
 expect_run 2 'give one scene' --quiet
 expect_run 2 "unknown scene 'nope:3'" --scene nope:3
@@ -102,5 +288,48 @@ expect_run 2 "'--N must be a positive integer\|--N must be" --scene planes:1 --N
 expect_run 2 '--steps must be' --scene planes:1 --steps abc
 expect_run 2 "unknown option" --scene planes:1 --frob
 expect_run 2 '--accuracy must be' --scene planes:1 --accuracy perfect
+expect_run 2 "^noctree-sim: --report must be table, csv or gnuplot, not 'xml'$" \
+    --scene planes:1 --report xml
+expect_run 2 "unknown option or missing value: '--report'" --scene planes:1 --report
+expect_run 2 '^noctree-sim: --first and --report cannot be combined$' \
+    --scene planes:1 --first --report table
+expect_run 2 '^noctree-sim: --output needs --report$' --scene planes:1 --output "$tmp/o.csv"
+check "--output without --report: no file made" [ ! -e "$tmp/o.csv" ]
+expect_run 2 "^noctree-sim: cannot open '$tmp/no-such-dir/r.csv' for writing: " \
+    --scene planes:1 --report csv --output "$tmp/no-such-dir/r.csv"
+expect_run 2 "^noctree-sim: --output '$tmp/p.svg': the script would draw its plot over itself" \
+    --scene planes:1 --report gnuplot --output "$tmp/p.svg"
+# A report that cannot be written: exit 1, as a failed run.
+if [ -w /dev/full ]; then
+    expect_run 1 "^noctree-sim: cannot write '/dev/full': " \
+        --quiet --report csv --output /dev/full "$tmp/three.scene"
+fi
+
+# The families made of tracks, and --write-scene: the example files under
+# docs/examples/scenes are what the families write, and run the same.
+scenes="$top_srcdir/docs/examples/scenes"
+"$sim" --scene arms:3 --write-scene "$tmp/arms.scene" > "$tmp/out" 2>&1
+check "--write-scene: exit 0, nothing printed" [ $? -eq 0 ] && [ ! -s "$tmp/out" ]
+check "--write-scene arms:3 is docs/examples/scenes/arms-3.scene" \
+    cmp -s "$tmp/arms.scene" "$scenes/arms-3.scene"
+"$sim" --scene keyframes:20 --write-scene - > "$tmp/kf.scene" 2>&1
+check "--write-scene - keyframes:20 is docs/examples/scenes/keyframes-20.scene" \
+    cmp -s "$tmp/kf.scene" "$scenes/keyframes-20.scene"
+"$sim" --quiet --events --scene arms:3 > "$tmp/fam.events" 2>&1
+"$sim" --quiet --events "$scenes/arms-3.scene" > "$tmp/file.events" 2>&1
+check "arms:3: the family and its file give the same events" \
+    sh -c "grep -E '^[0-9]+ (begin|end)' '$tmp/fam.events' > '$tmp/fam.e'; grep -E '^[0-9]+ (begin|end)' '$tmp/file.events' > '$tmp/file.e'; [ -s '$tmp/fam.e' ] && cmp -s '$tmp/fam.e' '$tmp/file.e'"
+check "arms:3: the arms' tips (objects 16 and 19) touch from step 1 and part at 9" \
+    sh -c "grep -q '^1 begin 16 19\$' '$tmp/fam.events' && grep -q '^9 end 16 19\$' '$tmp/fam.events'"
+expect_run 0 '^first collision at step 1: objects 16 and 19, contact box ' \
+    --quiet --first --scene arms:3
+"$sim" --quiet --events --maintenance rebuild "$scenes/keyframes-20.scene" > "$tmp/kf1" 2>&1
+"$sim" --quiet --events --N big "$scenes/keyframes-20.scene" > "$tmp/kf2" 2>&1
+check "keyframes-20: the same events whatever the tree" \
+    sh -c "grep -E '^[0-9]+ (begin|end)' '$tmp/kf1' > '$tmp/kf1e'; grep -E '^[0-9]+ (begin|end)' '$tmp/kf2' > '$tmp/kf2e'; [ -s '$tmp/kf1e' ] && cmp -s '$tmp/kf1e' '$tmp/kf2e'"
+expect_run 2 "^noctree-sim: /nonexistent/x.scene: cannot open" \
+    --scene arms:1 --write-scene /nonexistent/x.scene
+expect_run 2 "unknown scene 'arms:9'" --scene arms:9
+expect_run 2 "unknown scene 'keyframes:0'" --scene keyframes:0
 
 finish sim

@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * noctree-sim: run a scene (a file, or a built-in family) in the collision
- * world and report its contact events and where the time went.
+ * world and report its contact events, the pairs colliding at each step or
+ * the first collision, and where the time went.
  * See noctree-sim(1) and noctree-scene(5).
  */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,10 +18,11 @@
 
 static const char usage[] =
     "usage: noctree-sim [OPTIONS] SCENE-FILE\n"
-    "       noctree-sim [OPTIONS] --scene planes:K|gas:N\n"
+    "       noctree-sim [OPTIONS] --scene planes:K|gas:N|arms:K|keyframes:N\n"
     "Run a scene in the libnoctree collision world.\n"
     "\n"
-    "  --scene FAMILY        a built-in scene: planes:K (the report's t_K) or gas:N\n"
+    "  --scene FAMILY        a built-in scene: planes:K (the report's t_K), gas:N,\n"
+    "                        arms:K (two arms of K links in a bay) or keyframes:N\n"
     "  --N N|big             most objects per octree leaf (big: exhaustive)\n"
     "  --max-depth D         deepest octree level, 1 to 40\n"
     "  --accuracy LEVEL      box, convex or exact\n"
@@ -28,11 +31,183 @@ static const char usage[] =
     "  --substep             split steps so fast objects cannot pass through others\n"
     "  --events              print every contact event: STEP begin|end A B\n"
     "                        (and sensor-begin|sensor-end for sensors)\n"
+    "  --report FORMAT       the colliding pairs after every step: table, csv or\n"
+    "                        gnuplot (a script plotting them against the step)\n"
+    "  --output FILE         write the report to FILE, not standard output\n"
+    "  --first               stop at the first step with a colliding pair and say\n"
+    "                        which objects and their bounding boxes' intersection\n"
+    "  --write-scene FILE    write the scene, with the options above applied, as a\n"
+    "                        scene file (- for standard output) and run nothing\n"
     "  --quiet               no progress bar\n"
     "  --help                this text\n"
     "  --version             the version\n"
     "\n"
-    "Exit status: 0 on success, 1 if the simulation failed, 2 for bad usage or input.\n";
+    "Exit status: 0 on success (with --first, whether or not a pair collided),\n"
+    "1 if the simulation failed or the report could not be written, 2 for bad\n"
+    "usage or input.\n";
+
+/*
+ * --report: after every step, the world's colliding pairs (noctWorldColliding(),
+ * objects by index, in its order). Every format names the kind of pair, so
+ * that pairs within a margin ("near") can be added as a second kind; only
+ * "collide" exists.
+ */
+typedef enum report_format { REPORT_NONE, REPORT_TABLE, REPORT_CSV, REPORT_GNUPLOT } report_format;
+
+static const char *const report_names[] = {"", "table", "csv", "gnuplot"};
+
+static const char kind_collide[] = "collide";
+
+typedef struct report {
+    report_format format;
+    FILE *out;
+    const char *path; /* --output, or NULL for standard output */
+    size_t most;      /* gnuplot: the most pairs at one step */
+    int steps;        /* gnuplot: the steps written */
+} report;
+
+/* Write PREFIX and S in single quotes for gnuplot, which substitutes nothing
+ * inside them ('' is a quote); control characters, which they cannot hold,
+ * as '?'. PREFIX is the program's own text, S a name it was given. */
+static void gnuplot_quote(FILE *f, const char *prefix, const char *s)
+{
+    fputc('\'', f);
+    fputs(prefix, f);
+    for (; *s != '\0'; ++s)
+        if (*s == '\'')
+            fputs("''", f);
+        else
+            fputc((unsigned char)*s < 0x20 || *s == 0x7f ? '?' : *s, f);
+    fputc('\'', f);
+}
+
+/* The header of the report; svg is the plot's file for gnuplot, or NULL
+ * for standard output. */
+static void report_begin(report *r, const char *scene, const char *svg)
+{
+    switch (r->format) {
+    case REPORT_NONE:
+        break;
+    case REPORT_TABLE:
+        fprintf(r->out, "%8s  %-7s  %5s  %s\n", "step", "kind", "count", "pairs");
+        break;
+    case REPORT_CSV:
+        fputs("step,kind,a,b\n", r->out);
+        break;
+    case REPORT_GNUPLOT:
+        fputs("# noctree-sim --report gnuplot: the colliding pairs after each step.\n", r->out);
+        if (svg != NULL) {
+            fputs("# Run it with gnuplot; it draws the plot in SVG to ", r->out);
+            gnuplot_quote(r->out, "", svg);
+            fputs(".\n", r->out);
+        } else {
+            fputs("# Run it with gnuplot; it writes the plot in SVG to standard output.\n",
+                  r->out);
+        }
+        fputs("set terminal svg size 800,480 dynamic font 'sans,12'\n", r->out);
+        if (svg != NULL) {
+            fputs("set output ", r->out);
+            gnuplot_quote(r->out, "", svg);
+            fputc('\n', r->out);
+        }
+        fputs("set title ", r->out);
+        gnuplot_quote(r->out, "colliding pairs per step: ", scene);
+        fputs(" noenhanced\nset xlabel 'step'\nset ylabel 'colliding pairs'\n"
+              "set grid\nset key top right\n"
+              "# one row a step: the step, then its pairs of each kind\n"
+              "$data << EOD\n"
+              "# step collide\n",
+              r->out);
+        break;
+    }
+}
+
+/* The n pairs p colliding after step s. */
+static void report_step(report *r, int s, const noctPair *p, size_t n)
+{
+    switch (r->format) {
+    case REPORT_NONE:
+        break;
+    case REPORT_TABLE:
+        if (n == 0)
+            break;
+        fprintf(r->out, "%8d  %-7s  %5zu ", s, kind_collide, n);
+        for (size_t i = 0; i < n; ++i)
+            fprintf(r->out, " %u-%u", p[i].a.index, p[i].b.index);
+        fputc('\n', r->out);
+        break;
+    case REPORT_CSV:
+        for (size_t i = 0; i < n; ++i)
+            fprintf(r->out, "%d,%s,%u,%u\n", s, kind_collide, p[i].a.index, p[i].b.index);
+        break;
+    case REPORT_GNUPLOT:
+        fprintf(r->out, "%d %zu\n", s, n);
+        if (n > r->most)
+            r->most = n;
+        r->steps = s;
+        break;
+    }
+}
+
+/* The end of the report: gnuplot's plot of the rows written. */
+static void report_end(report *r)
+{
+    if (r->format != REPORT_GNUPLOT)
+        return;
+    /* Fixed ranges, so that a run of one step or without a collision
+     * draws without gnuplot's warnings about an empty range; whole ticks. */
+    fprintf(r->out, "EOD\nset xrange [0:%d]\nset yrange [0:%zu]\n", r->steps > 0 ? r->steps : 1,
+            r->most + 1);
+    if (r->most < 10)
+        fputs("set ytics 1\n", r->out);
+    fputs("plot $data using 1:2 with steps linewidth 2 title 'colliding pairs'\n", r->out);
+}
+
+static int pair_order(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
+
+/* With sub-steps, a pair can meet and part within one step: it is in the
+ * step's began list but not in its colliding list, the last sub-step's,
+ * which is all that --report and --first see. Find the first such pair. */
+static bool parted_within(const noctPair *began, size_t nb, const noctPair *col, size_t nc,
+                          noctPair *pair)
+{
+    for (size_t i = 0; i < nb; ++i)
+        if (nc == 0 || bsearch(&began[i], col, nc, sizeof *col, pair_order) == NULL) {
+            *pair = began[i];
+            return true;
+        }
+    return false;
+}
+
+/* --first: the line for the first pair colliding after step s, with its
+ * contact box, the intersection of the objects' placed bounding boxes. */
+static bool print_first(const noctWorld *w, int s, noctPair pair)
+{
+    double alo[3], ahi[3], blo[3], bhi[3], lo[3], hi[3];
+    if (noctWorldObjectBox(w, pair.a, alo, ahi) != NOCT_OK ||
+        noctWorldObjectBox(w, pair.b, blo, bhi) != NOCT_OK) {
+        tool_error("step %d: no box for the pair %u-%u", s, pair.a.index, pair.b.index);
+        return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = alo[k] > blo[k] ? alo[k] : blo[k];
+        hi[k] = ahi[k] < bhi[k] ? ahi[k] : bhi[k];
+    }
+    char b[6][32];
+    printf("first collision at step %d: objects %u and %u, contact box (%s, %s, %s) "
+           "(%s, %s, %s)\n",
+           s, pair.a.index, pair.b.index, tool_format_double(lo[0], b[0]),
+           tool_format_double(lo[1], b[1]), tool_format_double(lo[2], b[2]),
+           tool_format_double(hi[0], b[3]), tool_format_double(hi[1], b[4]),
+           tool_format_double(hi[2], b[5]));
+    return true;
+}
 
 int main(int argc, char **argv)
 {
@@ -40,7 +215,9 @@ int main(int argc, char **argv)
     const char *opt_acc = NULL,
                *opt_maint = NULL;
     long steps = 0;
-    bool events = false, quiet = false, substep = false;
+    bool events = false, quiet = false, substep = false, first = false;
+    const char *write_scene = NULL;
+    report rep = {.format = REPORT_NONE};
     tool_name = "noctree-sim";
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -57,6 +234,20 @@ int main(int argc, char **argv)
             quiet = true;
         } else if (strcmp(a, "--substep") == 0) {
             substep = true;
+        } else if (strcmp(a, "--first") == 0) {
+            first = true;
+        } else if (strcmp(a, "--report") == 0 && has_value) {
+            const char *f = argv[++i];
+            rep.format = REPORT_NONE;
+            for (int k = REPORT_TABLE; k <= REPORT_GNUPLOT; ++k)
+                if (strcmp(f, report_names[k]) == 0)
+                    rep.format = (report_format)k;
+            if (rep.format == REPORT_NONE)
+                return tool_usage_error("--report must be table, csv or gnuplot, not '%s'", f);
+        } else if (strcmp(a, "--output") == 0 && has_value) {
+            rep.path = argv[++i];
+        } else if (strcmp(a, "--write-scene") == 0 && has_value) {
+            write_scene = argv[++i];
         } else if (strcmp(a, "--accuracy") == 0 && has_value) {
             opt_acc = argv[++i];
         } else if (strcmp(a, "--maintenance") == 0 && has_value) {
@@ -71,6 +262,28 @@ int main(int argc, char **argv)
             if (took == 0)
                 return tool_usage_error("unknown option or missing value: '%s'", a);
         }
+    }
+
+    if (first && rep.format != REPORT_NONE)
+        return tool_usage_error("--first and --report cannot be combined");
+    if (rep.path != NULL && rep.format == REPORT_NONE)
+        return tool_usage_error("--output needs --report");
+    /* The gnuplot script draws its plot in the --output name with .svg for
+     * its extension: that must be another file, and a name gnuplot can hold. */
+    if (rep.format == REPORT_GNUPLOT && rep.path != NULL) {
+        for (const char *c = rep.path; *c != '\0'; ++c)
+            if ((unsigned char)*c < 0x20 || *c == 0x7f)
+                return tool_usage_error("--output: a gnuplot script cannot name a plot file "
+                                        "holding a control character");
+        char *svg = tool_with_extension(rep.path, ".svg");
+        if (svg == NULL)
+            return tool_error("out of memory"), 1;
+        bool itself = strcmp(svg, rep.path) == 0;
+        free(svg);
+        if (itself)
+            return tool_usage_error("--output '%s': the script would draw its plot over "
+                                    "itself; give it another extension, such as .gp",
+                                    rep.path);
     }
 
     noctScene *scene;
@@ -92,6 +305,26 @@ int main(int argc, char **argv)
     if (substep)
         def->effects |= NOCT_EFFECT_SUBSTEP;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
+    if (write_scene != NULL) {
+        const bool to_stdout = strcmp(write_scene, "-") == 0;
+        FILE *f = to_stdout ? stdout : fopen(write_scene, "w");
+        if (f == NULL) {
+            tool_error("%s: cannot open: %s", write_scene, strerror(errno));
+            noctSceneDestroy(scene);
+            return 2;
+        }
+        noctStatus st = noctSceneWrite(scene, f, &err);
+        if ((!to_stdout && fclose(f) != 0 && st == NOCT_OK) ||
+            (to_stdout && fflush(stdout) != 0 && st == NOCT_OK)) {
+            st = NOCT_ERR_IO;
+            snprintf(err.message, sizeof err.message, "writing the scene: %s",
+                     strerror(errno));
+        }
+        if (st != NOCT_OK)
+            tool_error("%s: %s", write_scene, err.message);
+        noctSceneDestroy(scene);
+        return st == NOCT_OK ? 0 : 1;
+    }
 
     noctWorld *w;
     if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
@@ -104,66 +337,130 @@ int main(int argc, char **argv)
         tool_error("warning: an object moves %.2f times its smallest "
                 "size per step; objects can pass through each other unseen (the "
                 "report's fidelity constraint): use --substep", ratio);
+    /* The report goes to --output or standard output; in the second case
+     * the events and the summary go to standard error, so that standard
+     * output holds only the report. */
+    FILE *info = stdout;
+    rep.out = stdout;
+    if (rep.format != REPORT_NONE) {
+        char *svg = NULL;
+        if (rep.path != NULL) {
+            if (rep.format == REPORT_GNUPLOT &&
+                (svg = tool_with_extension(rep.path, ".svg")) == NULL) {
+                tool_error("out of memory");
+                noctWorldDestroy(w);
+                noctSceneDestroy(scene);
+                return 1;
+            }
+            rep.out = fopen(rep.path, "w");
+            if (rep.out == NULL) {
+                tool_error("cannot open '%s' for writing: %s", rep.path, strerror(errno));
+                free(svg);
+                noctWorldDestroy(w);
+                noctSceneDestroy(scene);
+                return 2;
+            }
+        } else {
+            info = stderr;
+        }
+        report_begin(&rep, sa.family != NULL ? sa.family : sa.file, svg);
+        free(svg);
+    }
     bool bar = !quiet && !events && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0, sensor_events = 0;
-    int status = 0;
+    int status = 0, stopped = 0;
+    bool told_parted = false;
     for (int s = 1; s <= nsteps; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
+            tool_progress_end();
             tool_error("step %d: %s", s, err.message);
             status = 1;
             break;
         }
-        const noctPair *p;
-        size_t nb = noctWorldBegan(w, &p);
-        begins += nb;
-        for (size_t i = 0; events && i < nb; ++i)
-            printf("%d begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        const noctPair *p, *began;
+        size_t nbegan = noctWorldBegan(w, &began);
+        begins += nbegan;
+        for (size_t i = 0; events && i < nbegan; ++i)
+            fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
         size_t ne = noctWorldEnded(w, &p);
         ends += ne;
         for (size_t i = 0; events && i < ne; ++i)
-            printf("%d end %u %u\n", s, p[i].a.index, p[i].b.index);
-        nb = noctWorldSensorBegan(w, &p);
+            fprintf(info, "%d end %u %u\n", s, p[i].a.index, p[i].b.index);
+        size_t nb = noctWorldSensorBegan(w, &p);
         sensor_events += nb;
         for (size_t i = 0; events && i < nb; ++i)
-            printf("%d sensor-begin %u %u\n", s, p[i].a.index, p[i].b.index);
+            fprintf(info, "%d sensor-begin %u %u\n", s, p[i].a.index, p[i].b.index);
         ne = noctWorldSensorEnded(w, &p);
         sensor_events += ne;
         for (size_t i = 0; events && i < ne; ++i)
-            printf("%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
+            fprintf(info, "%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (rep.format != REPORT_NONE || first) {
+            size_t nc = noctWorldColliding(w, &p);
+            noctPair gone;
+            if (!told_parted && parted_within(began, nbegan, p, nc, &gone)) {
+                tool_progress_end();
+                tool_error("warning: step %d: objects %u and %u met and parted within the "
+                           "step's sub-steps; %s only the pairs colliding at the end of a step",
+                           s, gone.a.index, gone.b.index,
+                           first ? "--first sees" : "the report lists");
+                told_parted = true;
+            }
+            report_step(&rep, s, p, nc);
+            if (first && nc > 0) {
+                tool_progress_end();
+                if (!print_first(w, s, p[0]))
+                    status = 1;
+                stopped = s;
+                break;
+            }
+        }
         if (s % 5 == 0 || s == nsteps) {
             char label[48];
             snprintf(label, sizeof label, "step %d/%d", s, nsteps);
             tool_progress(bar, s, nsteps, label);
         }
     }
-    if (status == 0) {
+    report_end(&rep);
+    if (rep.out != stdout) {
+        if (fclose(rep.out) != 0) {
+            tool_error("cannot write '%s': %s", rep.path, strerror(errno));
+            status = 1;
+        }
+    } else if (rep.format != REPORT_NONE && (fflush(stdout) != 0 || ferror(stdout))) {
+        tool_error("cannot write the report: %s", strerror(errno));
+        status = 1;
+    }
+    if (status == 0 && first) {
+        if (stopped == 0)
+            printf("no collision in %d steps\n", nsteps);
+    } else if (status == 0) {
         noctWorldCounters c;
         noctWorldGetCounters(w, &c);
         const noctPair *p;
         double total = c.seconds_motion + c.seconds_maintenance + c.seconds_pairs +
                        c.seconds_response;
-        printf("objects %zu\nsteps %d\nN %s%.0d\naccuracy %s\n", noctWorldObjectCount(w),
-               nsteps, def->N == NOCT_N_EXHAUSTIVE ? "big" : "",
-               def->N == NOCT_N_EXHAUSTIVE ? 0 : def->N, noctAccuracyName(def->accuracy));
-        printf("contact begins %zu\ncontact ends %zu\ncolliding at the end %zu\n", begins,
-               ends, noctWorldColliding(w, &p));
+        fprintf(info, "objects %zu\nsteps %d\nN %s%.0d\naccuracy %s\n",
+                noctWorldObjectCount(w), nsteps, def->N == NOCT_N_EXHAUSTIVE ? "big" : "",
+                def->N == NOCT_N_EXHAUSTIVE ? 0 : def->N, noctAccuracyName(def->accuracy));
+        fprintf(info, "contact begins %zu\ncontact ends %zu\ncolliding at the end %zu\n",
+                begins, ends, noctWorldColliding(w, &p));
         if (sensor_events > 0 || noctWorldSensing(w, &p) > 0)
-            printf("sensor events %zu\nsensing at the end %zu\n", sensor_events,
-                   noctWorldSensing(w, &p));
+            fprintf(info, "sensor events %zu\nsensing at the end %zu\n", sensor_events,
+                    noctWorldSensing(w, &p));
         double levels = c.narrow.seconds_convex + c.narrow.seconds_exact;
-        printf("time per step %.3f ms (motion %.3f, maintenance %.3f, pair search and "
-               "box tests %.3f, convex level %.3f, exact level %.3f, events and "
-               "response %.3f)\n",
-               1e3 * total / nsteps, 1e3 * c.seconds_motion / nsteps,
-               1e3 * c.seconds_maintenance / nsteps,
-               1e3 * (c.seconds_pairs - levels) / nsteps,
-               1e3 * c.narrow.seconds_convex / nsteps, 1e3 * c.narrow.seconds_exact / nsteps,
-               1e3 * c.seconds_response / nsteps);
-        printf("per step: %.1f candidate pairs, %.1f tested, %.1f colliding; %.1f "
-               "neighbor queries, %.2f splits, %.2f merges\n",
-               (double)c.candidate_pairs / nsteps, (double)c.tested_pairs / nsteps,
-               (double)c.colliding_pairs / nsteps, (double)c.neighbor_queries / nsteps,
-               (double)c.splits / nsteps, (double)c.merges / nsteps);
+        fprintf(info, "time per step %.3f ms (motion %.3f, maintenance %.3f, pair search and "
+                "box tests %.3f, convex level %.3f, exact level %.3f, events and "
+                "response %.3f)\n",
+                1e3 * total / nsteps, 1e3 * c.seconds_motion / nsteps,
+                1e3 * c.seconds_maintenance / nsteps,
+                1e3 * (c.seconds_pairs - levels) / nsteps,
+                1e3 * c.narrow.seconds_convex / nsteps, 1e3 * c.narrow.seconds_exact / nsteps,
+                1e3 * c.seconds_response / nsteps);
+        fprintf(info, "per step: %.1f candidate pairs, %.1f tested, %.1f colliding; %.1f "
+                "neighbor queries, %.2f splits, %.2f merges\n",
+                (double)c.candidate_pairs / nsteps, (double)c.tested_pairs / nsteps,
+                (double)c.colliding_pairs / nsteps, (double)c.neighbor_queries / nsteps,
+                (double)c.splits / nsteps, (double)c.merges / nsteps);
     }
     noctWorldDestroy(w);
     noctSceneDestroy(scene);

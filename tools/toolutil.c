@@ -121,6 +121,30 @@ int tool_scene_load(const tool_scene_args *a, noctScene **scene)
     return 0;
 }
 
+const char *tool_format_double(double x, char buf[32])
+{
+    for (int digits = 1; digits <= 17; ++digits) {
+        snprintf(buf, 32, "%.*g", digits, x);
+        if (strtod(buf, NULL) == x)
+            break;
+    }
+    return buf;
+}
+
+char *tool_with_extension(const char *path, const char *ext)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    const char *dot = strrchr(base, '.');
+    size_t keep = dot != NULL && dot != base ? (size_t)(dot - path) : strlen(path);
+    char *s = malloc(keep + strlen(ext) + 1);
+    if (s != NULL) {
+        memcpy(s, path, keep);
+        strcpy(s + keep, ext);
+    }
+    return s;
+}
+
 double tool_now(void)
 {
     struct timespec ts;
@@ -128,10 +152,14 @@ double tool_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* A bar is drawn and its line not yet ended. */
+static bool progress_open;
+
 void tool_progress(bool on, long done, long total, const char *label)
 {
     if (!on || total <= 0)
         return;
+    progress_open = done < total;
     enum { WIDTH = 40 };
     int filled = (int)((long long)WIDTH * done / total);
     fprintf(stderr, "\r[%.*s%*s] %3d%% %-32.32s", filled,
@@ -140,4 +168,11 @@ void tool_progress(bool on, long done, long total, const char *label)
     if (done >= total)
         fputc('\n', stderr);
     fflush(stderr);
+}
+
+void tool_progress_end(void)
+{
+    if (progress_open)
+        fputc('\n', stderr);
+    progress_open = false;
 }

@@ -50,11 +50,24 @@ int tool_scene_arg(tool_scene_args *a, int argc, char **argv, int *i);
  * --max-depth. Returns 0, or the exit status 2 after printing the error. */
 int tool_scene_load(const tool_scene_args *a, noctScene **scene);
 
+/* Write x in the fewest significant digits (at most 17) that read back as
+ * exactly x, as %g writes them: 1.25, 2, -0.5, 0.1. Returns buf. */
+const char *tool_format_double(double x, char buf[32]);
+
+/* PATH with its extension replaced by EXT (".svg"): the extension is the
+ * part of the last path component from its last dot, unless that dot
+ * starts the component; without one, EXT is added. A string from malloc,
+ * or NULL when memory runs out. */
+char *tool_with_extension(const char *path, const char *ext);
+
 /* Seconds on a monotonic clock. */
 double tool_now(void);
 
 /* Draw "[####    ]  40% label" on stderr when it is a terminal and bars
  * are on; done == total ends the line. */
 void tool_progress(bool on, long done, long total, const char *label);
+
+/* End the progress bar's line when a run stops before done == total. */
+void tool_progress_end(void);
 
 #endif /* NOCT_TOOLS_TOOLUTIL_H */

@@ -19,6 +19,8 @@
 #ifndef NOCTREE_SCENE_H
 #define NOCTREE_SCENE_H
 
+#include <stdio.h>
+
 #include <noctree/export.h>
 #include <noctree/status.h>
 #include <noctree/world.h>
@@ -60,18 +62,53 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
                                   noctError *err);
 
 /**
- * @brief Make a built-in scene family: `planes:K` (t_K) or `gas:N`.
+ * @brief Make a built-in scene family: `planes:K` (t_K), `gas:N`,
+ *        `arms:K` or `keyframes:N`.
+ *
+ * - `planes:K` (K 0 to 1000) and `gas:N` (N 1 to 10^7): SCENES.md's
+ *   benchmark families, 200 steps with the default world parameters (gas
+ *   with its container walls).
+ * - `arms:K` (K 1 to 8): two robot arms of K links each (box primitives,
+ *   length 2) swinging at revolute joints in a bay of six static walls,
+ *   with static boxes loose on its floor; every link follows a track with
+ *   a keyframe at every tick (forward kinematics of its joints' angles,
+ *   each a triangle wave between its limits), 240 steps, effects events
+ *   and track. The arms meet only when both are stretched out. Filters
+ *   keep walls from pairing with walls and the loose boxes, and links
+ *   from pairing with their own arm's.
+ * - `keyframes:N` (N 1 to 10^5): N boxes of random sizes moving through
+ *   each other along tracks of 5 random keyframes (ticks 0, 50, ..., 200),
+ *   200 steps, effects events and track.
+ *
+ * noctree-sim(1) gives the exact definitions of arms and keyframes.
  * @param[in]  spec  The family and its size.
  * @param[out] scene Receives the scene on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.
  * @pre @p spec and @p scene are not NULL.
- * @post The scene runs 200 steps with the default world parameters (gas
- *       with its container walls).
+ * @post On #NOCT_OK, the scene, as noctSceneRead() would give it from the
+ *       file noctSceneWrite() writes of it.
  * @return #NOCT_OK; #NOCT_ERR_INVALID for an unknown family or size;
  *         #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctSceneFamily(const char *spec, noctScene **scene,
                                     noctError *err);
+
+/**
+ * @brief Write a scene as a scene file (noctree-scene(5)).
+ * @param[in]  scene The scene.
+ * @param[in]  f     Where to write it, open for writing.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p scene and @p f are not NULL.
+ * @post On #NOCT_OK, f holds a file from which noctSceneRead() gives the
+ *       same scene: the world parameters as noctSceneDef() has them now,
+ *       the steps, every mesh (a mesh read from a file by the path it was
+ *       opened by), object, key and family, every number written so that
+ *       it reads back bit for bit (rotations as the axis and degrees they
+ *       were given by, so that they make the same quaternions).
+ * @return #NOCT_OK, or #NOCT_ERR_IO if writing failed (the message says
+ *         why).
+ */
+NOCT_API noctStatus noctSceneWrite(const noctScene *scene, FILE *f, noctError *err);
 
 /**
  * @brief Destroy a scene and its meshes.

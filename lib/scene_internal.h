@@ -1,0 +1,91 @@
+/* SPDX-License-Identifier: MIT */
+/* Private: a scene as read (scene.c), made by a family (scene_families.c)
+ * or written back (scene_write.c). */
+#ifndef NOCT_LIB_SCENE_INTERNAL_H
+#define NOCT_LIB_SCENE_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <noctree/scene.h>
+#include <noctree/world.h>
+
+typedef struct scene_mesh {
+    char *name;
+    noctMesh *mesh;  /* NULL for a box primitive */
+    double half[3];  /* a box primitive's half-extents, or a box mesh's */
+    bool box;        /* 'box' (else 'file') */
+    char *file;      /* the file a mesh was read from, as opened */
+} scene_mesh;
+
+/* A rotation as the scene gives it: an axis and degrees, which make the
+ * quaternion through noctQuatFromAxisAngle() (so that writing them back
+ * gives the same quaternion). */
+typedef struct scene_turn {
+    bool given;
+    double axis[3], degrees;
+} scene_turn;
+
+/* A keyframe as read, with its rotation as given. */
+typedef struct scene_key {
+    noctKeyframe k;
+    scene_turn turn;
+} scene_key;
+
+typedef struct scene_object {
+    size_t mesh;
+    double pos[3], dir[3], speed;
+    bool has_velocity;       /* a velocity vector, not dir and speed */
+    double vel[3];
+    noctQuat q;              /* from 'rotate', else the identity */
+    scene_turn rotate, spin_turn; /* as given, for noctSceneWrite() */
+    noctObjectType type;
+    uint64_t category, mask;
+    bool sensor;
+    noctQuat spin;           /* from 'spin', else the identity */
+    bool has_type;           /* 'type' given */
+    size_t first_key, nkeys; /* its keyframes in noctScene.keys */
+} scene_object;
+
+typedef struct scene_family {
+    int gas;      /* 0 planes, 1 gas */
+    long size;
+} scene_family;
+
+struct noctScene {
+    noctWorldDef def;
+    int steps;
+    scene_mesh *meshes;
+    size_t nmeshes, capmeshes;
+    scene_object *objects;
+    size_t nobjects, capobjects;
+    scene_key *keys;         /* the objects' tracks, each object's in a row */
+    size_t nkeys, capkeys;
+    scene_family families[16];
+    size_t nfamilies;
+    noctMesh *unit_cube; /* for planes families */
+};
+
+/* Add a mesh (m, or NULL for a box primitive of half-extents h; file: the
+ * path it was read from, or NULL for a box); takes m, destroying it on
+ * failure. NOMEM. */
+noctStatus noct_scene_add_mesh(noctScene *s, const char *name, noctMesh *m, const double h[3],
+                               const char *file);
+
+/* Add an object, and keyframes to the last object (the scene's rules
+ * checked by the caller). NOMEM. */
+noctStatus noct_scene_add_object(noctScene *s, const scene_object *o);
+noctStatus noct_scene_add_key(noctScene *s, const scene_key *k);
+
+/* A scene_object with the defaults of an object line: not moving, not
+ * turned, moving type, every filter bit. */
+scene_object noct_scene_object(size_t mesh, const double pos[3]);
+
+/* The families made of objects and keyframes (scene_families.c): their
+ * meshes, objects, keys, parameters and steps. INVALID for a size out of
+ * range, NOMEM. */
+noctStatus noct_scene_arms(noctScene *s, long k, noctError *err);
+noctStatus noct_scene_keyframes(noctScene *s, long n, noctError *err);
+
+#endif /* NOCT_LIB_SCENE_INTERNAL_H */
