@@ -16,6 +16,7 @@ check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
 	tests/check-queries tests/check-queries-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
 	tests/check-near tests/check-near-efficient \
+	tests/check-families tests/check-families-efficient \
 	tests/check-readers tests/check-readers-efficient
 TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-neighbor tests/check-neighbor-efficient \
@@ -28,6 +29,7 @@ TESTS += tests/check-octree tests/check-octree-efficient \
 	tests/check-queries tests/check-queries-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
 	tests/check-near tests/check-near-efficient \
+	tests/check-families tests/check-families-efficient \
 	tests/check-readers tests/check-readers-efficient
 endif
 
@@ -121,6 +123,17 @@ tests_check_near_efficient_SOURCES = $(tests_check_near_SOURCES)
 tests_check_near_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tests_check_near_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_near_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+
+# The scene families arms:K and keyframes:N against the test's own long
+# double geometry (forward kinematics, interpolation, oriented boxes).
+tests_check_families_SOURCES = tests/check_families.c $(test_common)
+tests_check_families_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_families_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+
+tests_check_families_efficient_SOURCES = $(tests_check_families_SOURCES)
+tests_check_families_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tests_check_families_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
+tests_check_families_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
 tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)
