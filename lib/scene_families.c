@@ -60,9 +60,11 @@ noctStatus noct_scene_arms(noctScene *s, long k, noctError *err)
     const double K = (double)k, d = 2 * K - 0.5;
     s->steps = ARMS_STEPS;
     s->def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_TRACK;
-    /* meshes: 0 floor and ceiling, 1 x walls, 2 y walls, 3 loose box, 4 link */
+    /* meshes: 0 floor, 1 ceiling, 2 x walls, 3 y walls, 4 loose box, 5 link;
+     * the floor as deep as the arms reach below it when they curl */
     noctStatus st = NOCT_OK;
-    if ((st = add_box(s, "floor", d + 2, 2.5, 0.25)) != NOCT_OK ||
+    if ((st = add_box(s, "floor", d + 2, 2.5, K)) != NOCT_OK ||
+        (st = add_box(s, "ceiling", d + 2, 2.5, 0.25)) != NOCT_OK ||
         (st = add_box(s, "xwall", 0.25, 2.5, K + 1.5)) != NOCT_OK ||
         (st = add_box(s, "ywall", d + 2, 0.25, K + 1.5)) != NOCT_OK ||
         (st = add_box(s, "loose", 0.3, 0.3, 0.3)) != NOCT_OK ||
@@ -70,27 +72,27 @@ noctStatus noct_scene_arms(noctScene *s, long k, noctError *err)
         return noct_fail(err, st, -1, 0, "out of memory");
     const uint64_t arms = ARM_A | ARM_B;
     /* the bay: floor, ceiling, -x, +x, -y, +y */
-    if ((st = add_static(s, 0, 0, 0, -0.25, BAY, arms)) != NOCT_OK ||
-        (st = add_static(s, 0, 0, 0, 2 * K + 2.25, BAY, arms)) != NOCT_OK ||
-        (st = add_static(s, 1, -(d + 1.75), 0, K + 1, BAY, arms)) != NOCT_OK ||
-        (st = add_static(s, 1, d + 1.75, 0, K + 1, BAY, arms)) != NOCT_OK ||
-        (st = add_static(s, 2, 0, -2.25, K + 1, BAY, arms)) != NOCT_OK ||
-        (st = add_static(s, 2, 0, 2.25, K + 1, BAY, arms)) != NOCT_OK)
+    if ((st = add_static(s, 0, 0, 0, -K, BAY, arms)) != NOCT_OK ||
+        (st = add_static(s, 1, 0, 0, 2 * K + 2.25, BAY, arms)) != NOCT_OK ||
+        (st = add_static(s, 2, -(d + 1.75), 0, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = add_static(s, 2, d + 1.75, 0, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = add_static(s, 3, 0, -2.25, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = add_static(s, 3, 0, 2.25, K + 1, BAY, arms)) != NOCT_OK)
         return noct_fail(err, st, -1, 0, "out of memory");
     /* loose boxes on the floor, in the arms' plane and beside it */
     for (int m = 0; d - 1.5 - 2.5 * m > 1; ++m) {
         const double x = d - 1.5 - 2.5 * m;
-        if ((st = add_static(s, 3, -x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
-            (st = add_static(s, 3, x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
-            (st = add_static(s, 3, -x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK ||
-            (st = add_static(s, 3, x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK)
+        if ((st = add_static(s, 4, -x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = add_static(s, 4, x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = add_static(s, 4, -x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = add_static(s, 4, x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK)
             return noct_fail(err, st, -1, 0, "out of memory");
     }
     /* the links, each with a keyframe at every tick: forward kinematics */
     for (int a = 0; a < 2; ++a) {
         const double side = a == 0 ? 1 : -1;
         for (int j = 0; j < (int)k; ++j) {
-            scene_object o = noct_scene_object(4, (const double[3]){0, 0, 0});
+            scene_object o = noct_scene_object(5, (const double[3]){0, 0, 0});
             o.type = NOCT_OBJECT_KINEMATIC;
             o.has_type = true;
             o.category = a == 0 ? ARM_A : ARM_B;

@@ -278,7 +278,7 @@ static void arms_init(arms *s, int K)
     const ld d = s->d, hz = K + 1.5L;
     size_t n = 0;
     static const enum kind wall_kind[6] = {FLOOR, CEILING, XWALL, XWALL, YWALL, YWALL};
-    const ld wall[6][6] = {{0, 0, -0.25L, d + 2, 2.5L, 0.25L},
+    const ld wall[6][6] = {{0, 0, -K, d + 2, 2.5L, K},
                            {0, 0, 2 * K + 2.25L, d + 2, 2.5L, 0.25L},
                            {-(d + 1.75L), 0, K + 1, 0.25L, 2.5L, hz},
                            {d + 1.75L, 0, K + 1, 0.25L, 2.5L, hz},
