@@ -169,6 +169,12 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
                             const double q[3], bool *hit, double *fraction,
                             uint32_t *triangle, double normal[3]);
 
+/* Does the separating-axis test on two slots placed at ta and tb prove
+ * them more than d apart (on one of its 15 axes, with the allowances of
+ * noct_box_decide())? false when it cannot. */
+bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                       const double tb[3], double d);
+
 /* The slack of the distance test below for these placed meshes and d:
  * 2^-40 of the largest coordinate of their placed boxes or d, whichever
  * is larger; it bounds the rounding of the floating-point distances. */

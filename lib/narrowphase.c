@@ -1080,6 +1080,62 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
     return NOCT_OK;
 }
 
+/* ---- box forms apart by more than a distance (margins) ------------------------ */
+
+/* Is the separation of the two box forms along axis u (not unit), gap
+ * (their projections' distance, less the allowances, in units of u),
+ * more than d? */
+static bool gap_beyond(double gap, const double u[3], double d)
+{
+    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return gap > d * n * (1 + 0x1p-40);
+}
+
+bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                       const double tb[3], double d)
+{
+    double T[3];
+    const double M = box_offset(a, ta, b, tb, T);
+    const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
+    double C[3][3], la[3], lb[3];
+    for (int i = 0; i < 3; ++i) {
+        const double *u = a->e[i];
+        la[i] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        for (int j = 0; j < 3; ++j)
+            C[i][j] = u[0] * b->e[j][0] + u[1] * b->e[j][1] + u[2] * b->e[j][2];
+        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)a->own[i] -
+                           (fabs(C[i][0]) + fabs(C[i][1]) + fabs(C[i][2])) - la[i] * dev -
+                           unit * la[i];
+        if (gap_beyond(gap, u, d))
+            return true;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const double *u = b->e[j];
+        lb[j] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] -
+                           (fabs(C[0][j]) + fabs(C[1][j]) + fabs(C[2][j])) - lb[j] * dev -
+                           unit * lb[j];
+        if (gap_beyond(gap, u, d))
+            return true;
+    }
+    for (int i = 0; i < 3; ++i) {
+        const double *x = a->e[i];
+        for (int j = 0; j < 3; ++j) {
+            const double *y = b->e[j];
+            const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                                 x[0] * y[1] - x[1] * y[0]};
+            const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+            if (!(l1 > 1e-6 * la[i] * lb[j]))
+                continue; /* (nearly) parallel edges */
+            const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) -
+                               box_radius(a->e, u) - box_radius(b->e, u) - l1 * dev - unit * l1;
+            if (gap_beyond(gap, u, d))
+                return true;
+        }
+    }
+    return false;
+}
+
 /* ---- distance, for margins (world_near.c, world_query.c) -------------------------- */
 
 static double dot3(const double a[3], const double b[3])

@@ -81,6 +81,11 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
         const double reach = d + 0x1p-40 * scale;
         return s <= reach * reach;
     }
+    /* two boxes that a separating axis proves farther apart: the common
+     * case, a few dozen operations */
+    if (w->slot[i].has_box && w->slot[j].has_box &&
+        noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
+        return false;
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);

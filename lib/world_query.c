@@ -200,7 +200,9 @@ static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const do
         const uint32_t s = c.s[i];
         bool hit;
         st = meets(w, s, q, tq, qs, level, &hit);
-        if (st == NOCT_OK && !hit && margin > 0) {
+        if (st == NOCT_OK && !hit && margin > 0 &&
+            !(qs != NULL && w->slot[s].has_box &&
+              noct_box_apart_by(qs, tq, &w->slot[s], w->pos[s], margin))) {
             noct_shape_view v;
             hit = noct_solids_within(q, tq, noct_world_shape(w, s, &v), w->pos[s], margin);
         }

@@ -14,6 +14,7 @@
  * - bad input: a status and no call.
  */
 #include <check.h>
+#include <pthread.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,14 +58,16 @@ static void expect_index_order(const found *f)
 
 /* ---- random scenes against the ideal geometry ----------------------------------------- */
 
+/* The random sweeps: _i 0 is a quick run (under valgrind too), 1 the full
+ * one (tag slow). */
 START_TEST(points_against_geometry)
 {
     noctMesh *ell = make_ell();
     int checked = 0, inside = 0;
-    for (int round = 0; round < 12; ++round) {
+    for (int round = 0; round < (_i ? 12 : 1); ++round) {
         scene s;
         random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
-        for (int q = 0; q < 300; ++q) {
+        for (int q = 0; q < (_i ? 300 : 100); ++q) {
             double p[3];
             for (int k = 0; k < 3; ++k)
                 p[k] = -1 + 8 * uniform();
@@ -122,8 +125,8 @@ START_TEST(points_against_geometry)
         }
         free_scene(&s);
     }
-    ck_assert_int_gt(checked, 10000);
-    ck_assert_int_gt(inside, 150);
+    ck_assert_int_gt(checked, _i ? 10000 : 300);
+    ck_assert_int_gt(inside, _i ? 150 : 3);
     noctMeshDestroy(ell);
 }
 END_TEST
@@ -134,10 +137,10 @@ START_TEST(boxes_and_shapes_against_brute_force)
 {
     noctMesh *ell = make_ell();
     int checked = 0, met = 0;
-    for (int round = 0; round < 10; ++round) {
+    for (int round = 0; round < (_i ? 10 : 1); ++round) {
         scene s;
         random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
-        for (int q = 0; q < 60; ++q) {
+        for (int q = 0; q < (_i ? 60 : 20); ++q) {
             noctQueryFilter f = random_filter();
             /* a box */
             double lo[3], hi[3];
@@ -220,8 +223,8 @@ START_TEST(boxes_and_shapes_against_brute_force)
         }
         free_scene(&s);
     }
-    ck_assert_int_gt(checked, 5000);
-    ck_assert_int_gt(met, 500);
+    ck_assert_int_gt(checked, _i ? 5000 : 100);
+    ck_assert_int_gt(met, _i ? 500 : 10);
     noctMeshDestroy(ell);
 }
 END_TEST
@@ -243,10 +246,10 @@ START_TEST(rays_against_geometry)
 {
     noctMesh *ell = make_ell();
     int checked = 0, hit = 0, normals = 0;
-    for (int round = 0; round < 12; ++round) {
+    for (int round = 0; round < (_i ? 12 : 1); ++round) {
         scene s;
         random_scene(&s, 10 + (int)(30 * uniform()), 1 + round % 5, NOCT_ACCURACY_EXACT, ell);
-        for (int q = 0; q < 200; ++q) {
+        for (int q = 0; q < (_i ? 200 : 60); ++q) {
             double o[3], d[3];
             for (int k = 0; k < 3; ++k) {
                 o[k] = -1 + 8 * uniform();
@@ -320,9 +323,9 @@ START_TEST(rays_against_geometry)
         }
         free_scene(&s);
     }
-    ck_assert_int_gt(checked, 5000);
-    ck_assert_int_gt(hit, 300);
-    ck_assert_int_gt(normals, 200);
+    ck_assert_int_gt(checked, _i ? 5000 : 200);
+    ck_assert_int_gt(hit, _i ? 300 : 5);
+    ck_assert_int_gt(normals, _i ? 200 : 3);
     noctMeshDestroy(ell);
 }
 END_TEST
@@ -337,7 +340,7 @@ START_TEST(answers_do_not_depend_on_the_tree)
     random_scene(&a, 40, 1, NOCT_ACCURACY_EXACT, ell);
     rng = seed;
     random_scene(&b, 40, NOCT_N_EXHAUSTIVE, NOCT_ACCURACY_EXACT, ell);
-    for (int q = 0; q < 200; ++q) {
+    for (int q = 0; q < (_i ? 200 : 40); ++q) {
         double o[3], d[3], lo[3], hi[3];
         for (int k = 0; k < 3; ++k) {
             o[k] = -1 + 8 * uniform();
@@ -608,19 +611,112 @@ START_TEST(buffers_stopping_and_bad_input)
 }
 END_TEST
 
+/* ---- threads ------------------------------------------------------------------- */
+
+#define NQ 120
+
+typedef struct answers {
+    int box[NQ][MAXO + 1], point[NQ][MAXO + 1], ray[NQ][MAXO + 1];
+} answers;
+
+typedef struct job {
+    const scene *s;
+    const double (*q)[6];
+    answers *a;
+    bool ok;
+} job;
+
+static bool count_into(void *context, noctObjectId id, void *user)
+{
+    (void)user;
+    int *row = context;
+    row[++row[0]] = (int)id.index;
+    return row[0] < MAXO;
+}
+
+static bool count_hit_into(void *context, const noctRayHit *h)
+{
+    int *row = context;
+    row[++row[0]] = (int)h->id.index;
+    return row[0] < MAXO;
+}
+
+static void *run_queries(void *arg)
+{
+    job *j = arg;
+    j->ok = true;
+    const noctQueryFilter all = noctDefaultQueryFilter();
+    for (int k = 0; k < NQ; ++k) {
+        const double *q = j->q[k];
+        const double hi[3] = {q[0] + 1, q[1] + 1, q[2] + 1};
+        j->a->box[k][0] = j->a->point[k][0] = j->a->ray[k][0] = 0;
+        j->ok = j->ok &&
+                noctWorldQueryBox(j->s->w, q, hi, all, count_into, j->a->box[k], NULL) == NOCT_OK &&
+                noctWorldQueryPoint(j->s->w, q, all, count_into, j->a->point[k], NULL) == NOCT_OK &&
+                noctWorldRayCast(j->s->w, q, &q[3], all, count_hit_into, j->a->ray[k], NULL) ==
+                    NOCT_OK;
+    }
+    return NULL;
+}
+
+/* Queries only read the world: two threads querying it at once get what
+ * one gets alone. */
+START_TEST(queries_from_two_threads)
+{
+    noctMesh *ell = make_ell();
+    scene s;
+    random_scene(&s, 40, 2, NOCT_ACCURACY_EXACT, ell);
+    ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+    static double q[NQ][6];
+    for (int k = 0; k < NQ; ++k)
+        for (int c = 0; c < 6; ++c)
+            q[k][c] = c < 3 ? -1 + 8 * uniform() : 6 * (uniform() - 0.5);
+    static answers alone, two[2];
+    job ref = {&s, (const double (*)[6])q, &alone, false};
+    run_queries(&ref);
+    ck_assert(ref.ok);
+    job jobs[2] = {{&s, (const double (*)[6])q, &two[0], false},
+                   {&s, (const double (*)[6])q, &two[1], false}};
+    pthread_t th[2];
+    for (int t = 0; t < 2; ++t)
+        ck_assert_int_eq(pthread_create(&th[t], NULL, run_queries, &jobs[t]), 0);
+    for (int t = 0; t < 2; ++t)
+        ck_assert_int_eq(pthread_join(th[t], NULL), 0);
+    int total = 0;
+    for (int t = 0; t < 2; ++t) {
+        ck_assert(jobs[t].ok);
+        ck_assert(memcmp(&two[t], &alone, sizeof alone) == 0);
+    }
+    for (int k = 0; k < NQ; ++k)
+        total += alone.box[k][0] + alone.point[k][0] + alone.ray[k][0];
+    ck_assert_int_gt(total, NQ);
+    free_scene(&s);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
 static Suite *queries_suite(void)
 {
     Suite *s = suite_create("queries");
     TCase *tc = tcase_create("queries");
     tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, points_against_geometry);
-    tcase_add_test(tc, boxes_and_shapes_against_brute_force);
-    tcase_add_test(tc, rays_against_geometry);
-    tcase_add_test(tc, answers_do_not_depend_on_the_tree);
+    tcase_add_loop_test(tc, points_against_geometry, 0, 1);
+    tcase_add_loop_test(tc, boxes_and_shapes_against_brute_force, 0, 1);
+    tcase_add_loop_test(tc, rays_against_geometry, 0, 1);
+    tcase_add_loop_test(tc, answers_do_not_depend_on_the_tree, 0, 1);
     tcase_add_test(tc, exact_points_on_faces_edges_and_corners);
     tcase_add_test(tc, exact_rays_along_faces_and_through_edges);
     tcase_add_test(tc, buffers_stopping_and_bad_input);
+    tcase_add_test(tc, queries_from_two_threads);
     suite_add_tcase(s, tc);
+    TCase *full = tcase_create("queries, full");
+    tcase_set_tags(full, "slow"); /* left out under valgrind */
+    tcase_set_timeout(full, 300);
+    tcase_add_loop_test(full, points_against_geometry, 1, 2);
+    tcase_add_loop_test(full, boxes_and_shapes_against_brute_force, 1, 2);
+    tcase_add_loop_test(full, rays_against_geometry, 1, 2);
+    tcase_add_loop_test(full, answers_do_not_depend_on_the_tree, 1, 2);
+    suite_add_tcase(s, full);
     return s;
 }
 

@@ -97,13 +97,13 @@ tests_check_objects_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 tests_check_queries_SOURCES = tests/check_queries.c tests/testgeom.c tests/testgeom.h \
 	$(test_common)
-tests_check_queries_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_queries_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+tests_check_queries_CFLAGS = $(tests_check_octree_CFLAGS) -pthread
+tests_check_queries_LDADD = lib/libnoctree.la $(CHECK_LIBS) -lpthread
 
 tests_check_queries_efficient_SOURCES = $(tests_check_queries_SOURCES)
 tests_check_queries_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_queries_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_queries_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+tests_check_queries_efficient_CFLAGS = $(tests_check_octree_CFLAGS) -pthread
+tests_check_queries_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS) -lpthread
 
 tests_check_tracks_SOURCES = tests/check_tracks.c $(test_common)
 tests_check_tracks_CFLAGS = $(tests_check_octree_CFLAGS)

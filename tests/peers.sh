@@ -68,9 +68,13 @@ check "bench-peers --driven: noct-driven in the CSV" \
 "$peers" --queries 2000 gas:1000 > "$tmp/qq.txt" 2> "$tmp/qq.err"
 check "bench-peers --queries exits 0" [ $? -eq 0 ]
 check "bench-peers --queries: nothing on stderr" [ ! -s "$tmp/qq.err" ]
-check "bench-peers --queries: 5 rows, each found something" \
-    awk '$1 == "gas:1000" { r++; if ($NF + 0 <= 0) bad = 1 } END { exit bad || r != 5 }' \
+check "bench-peers --queries: 8 rows (ours 4, FCL 1, Bullet 3), each found something" \
+    awk '$1 == "gas:1000" { r++; if ($NF + 0 <= 0) bad = 1 } END { exit bad || r != 8 }' \
     "$tmp/qq.txt"
+check "bench-peers --queries: Bullet's box, all-hits and first-hit rows" \
+    sh -c "grep -q '^gas:1000  *bullet  *box ' '$tmp/qq.txt' &&
+           grep -q '^gas:1000  *bullet  *segment, all ' '$tmp/qq.txt' &&
+           grep -q '^gas:1000  *bullet  *segment, first ' '$tmp/qq.txt'"
 check "bench-peers --queries: libnoctree and FCL find the same objects in boxes" \
     awk '$1 == "gas:1000" && $3 == "box" { n[$2] = $NF }
         END { exit !(n["libnoctree"] > 0 && n["libnoctree"] == n["fcl-dtree"]) }' \

@@ -56,14 +56,18 @@
  * noctWorldRayCast() for all hits and noctWorldRayCastClosest()); FCL's
  * dynamic AABB tree answers the boxes (its collide() of a box object
  * against the manager, each candidate through fcl::collide), and has no
- * point or segment query; the lines give queries a second and the objects
- * found, which must agree where both answer.
+ * point or segment query; Bullet's collision world answers the boxes
+ * (contactTest()) and the segments (rayTest()), and has no point query.
+ * The lines give queries a second and the objects found: FCL's must agree
+ * with ours; Bullet's are printed beside them, with a line when they
+ * differ (its tolerances decide touching boxes and grazing rays).
  *
  * Usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]] [--steps S]
  *                    [--repeats R] [--N N] [--budget SEC] [--libs LIST] [--csv FILE]
  *                    [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
+#include <btBulletCollisionCommon.h>
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/narrowphase/collision.h>
@@ -881,9 +885,12 @@ bool count_object(void *context, noctObjectId, void *)
     return true;
 }
 
-bool count_hit(void *context, const noctRayHit *)
+// Hits, and (second) those at fraction 0: segments that start in a solid.
+bool count_hit(void *context, const noctRayHit *h)
 {
-    ++*static_cast<size_t *>(context);
+    size_t *n = static_cast<size_t *>(context);
+    ++n[0];
+    n[1] += h->fraction == 0;
     return true;
 }
 
@@ -909,6 +916,99 @@ void print_query_row(const char *scene, const char *lib, const char *kind, long 
                 static_cast<double>(q) / sec, 1e6 * sec / static_cast<double>(q), found);
 }
 
+// Bullet's collision world (btDbvtBroadphase, its dynamic AABB trees) on
+// the same boxes, margins 0 so that its boxes are the scene's: the boxes
+// through contactTest() with a box object (the objects it reports contact
+// points with), the segments through rayTest() with its all-hits and
+// closest-hit callbacks. Bullet has no point query. Its answers are
+// printed beside ours; they may differ on touching boxes (a contact at
+// distance 0) and grazing rays, where its tolerances decide.
+struct BulletObjects : btCollisionWorld::ContactResultCallback {
+    std::vector<const btCollisionObject *> hit;
+    btScalar addSingleResult(btManifoldPoint &p, const btCollisionObjectWrapper *a, int, int,
+                             const btCollisionObjectWrapper *b, int, int) override
+    {
+        if (p.getDistance() <= 0) { /* touching or overlapping, not merely near */
+            hit.push_back(a->getCollisionObject());
+            hit.push_back(b->getCollisionObject());
+        }
+        return 0;
+    }
+};
+
+bool bullet_queries(const char *spec, const Scene &s, const QuerySet &qs, long q, size_t boxes,
+                    const size_t rays[2], size_t closest, size_t closest_inside)
+{
+    btDefaultCollisionConfiguration config;
+    btCollisionDispatcher dispatcher(&config);
+    btDbvtBroadphase broadphase;
+    btCollisionWorld world(&dispatcher, &broadphase, &config);
+    std::vector<std::unique_ptr<btBoxShape>> shape;
+    std::vector<std::unique_ptr<btCollisionObject>> obj;
+    for (const Body &b : s.body) {
+        shape.emplace_back(new btBoxShape(btVector3(b.h[0], b.h[1], b.h[2])));
+        shape.back()->setMargin(0);
+        obj.emplace_back(new btCollisionObject());
+        btTransform x(btMatrix3x3(b.r[0], b.r[1], b.r[2], b.r[3], b.r[4], b.r[5], b.r[6], b.r[7],
+                                  b.r[8]),
+                      btVector3(b.c[0], b.c[1], b.c[2]));
+        obj.back()->setWorldTransform(x);
+        obj.back()->setCollisionShape(shape.back().get());
+        world.addCollisionObject(obj.back().get());
+    }
+    world.updateAabbs();
+    size_t found_boxes = 0, found_rays = 0, found_closest = 0;
+    double t = now();
+    for (const auto &b : qs.box) {
+        btBoxShape box(btVector3((b[3] - b[0]) / 2, (b[4] - b[1]) / 2, (b[5] - b[2]) / 2));
+        box.setMargin(0);
+        btCollisionObject qo;
+        qo.setCollisionShape(&box);
+        btTransform x;
+        x.setIdentity();
+        x.setOrigin(btVector3((b[0] + b[3]) / 2, (b[1] + b[4]) / 2, (b[2] + b[5]) / 2));
+        qo.setWorldTransform(x);
+        BulletObjects r;
+        world.contactTest(&qo, r);
+        std::sort(r.hit.begin(), r.hit.end());
+        r.hit.erase(std::unique(r.hit.begin(), r.hit.end()), r.hit.end());
+        found_boxes += r.hit.size() - (std::find(r.hit.begin(), r.hit.end(), &qo) != r.hit.end());
+    }
+    print_query_row(spec, "bullet", "box", q, now() - t, found_boxes);
+    t = now();
+    for (const auto &r : qs.ray) {
+        const btVector3 from(r[0], r[1], r[2]), to(r[0] + r[3], r[1] + r[4], r[2] + r[5]);
+        btCollisionWorld::AllHitsRayResultCallback cb(from, to);
+        world.rayTest(from, to, cb);
+        std::vector<const btCollisionObject *> o;
+        for (int k = 0; k < cb.m_collisionObjects.size(); ++k)
+            o.push_back(cb.m_collisionObjects[k]);
+        std::sort(o.begin(), o.end());
+        found_rays += std::unique(o.begin(), o.end()) - o.begin();
+    }
+    print_query_row(spec, "bullet", "segment, all", q, now() - t, found_rays);
+    t = now();
+    for (const auto &r : qs.ray) {
+        const btVector3 from(r[0], r[1], r[2]), to(r[0] + r[3], r[1] + r[4], r[2] + r[5]);
+        btCollisionWorld::ClosestRayResultCallback cb(from, to);
+        world.rayTest(from, to, cb);
+        found_closest += cb.hasHit();
+    }
+    print_query_row(spec, "bullet", "segment, first", q, now() - t, found_closest);
+    for (auto &o : obj)
+        world.removeCollisionObject(o.get());
+    // Where the counts differ, the line says so, with how many of our hits
+    // are at fraction 0 (segments that start in a solid, which Bullet's ray
+    // test reports only sometimes).
+    if (found_boxes != boxes || found_rays != rays[0] || found_closest != closest)
+        std::printf("%s: Bullet found %zu, %zu and %zu objects in the boxes, along the segments "
+                    "and first on them; libnoctree %zu, %zu and %zu (%zu and %zu of them at "
+                    "fraction 0: segments that start in a solid)\n",
+                    spec, found_boxes, found_rays, found_closest, boxes, rays[0], closest,
+                    rays[1], closest_inside);
+    return true;
+}
+
 // Returns false when a library failed or the two disagree.
 bool run_queries(const char *spec, long q, const Options &o)
 {
@@ -931,7 +1031,7 @@ bool run_queries(const char *spec, long q, const Options &o)
     noctSceneDestroy(sc);
     const noctQueryFilter all = noctDefaultQueryFilter();
     bool ok = true;
-    size_t boxes = 0, points = 0, rays = 0, closest = 0;
+    size_t boxes = 0, points = 0, rays[2] = {0, 0}, closest = 0, closest_inside = 0;
     double t = now();
     for (const auto &b : qs.box)
         ok = ok && noctWorldQueryBox(w, &b[0], &b[3], all, count_object, &boxes, &err) == NOCT_OK;
@@ -942,7 +1042,7 @@ bool run_queries(const char *spec, long q, const Options &o)
     const double t_point = now() - t;
     t = now();
     for (const auto &r : qs.ray)
-        ok = ok && noctWorldRayCast(w, &r[0], &r[3], all, count_hit, &rays, &err) == NOCT_OK;
+        ok = ok && noctWorldRayCast(w, &r[0], &r[3], all, count_hit, rays, &err) == NOCT_OK;
     const double t_ray = now() - t;
     t = now();
     for (const auto &r : qs.ray) {
@@ -950,6 +1050,7 @@ bool run_queries(const char *spec, long q, const Options &o)
         bool found;
         ok = ok && noctWorldRayCastClosest(w, &r[0], &r[3], all, &h, &found, &err) == NOCT_OK;
         closest += found;
+        closest_inside += found && h.fraction == 0;
     }
     const double t_closest = now() - t;
     noctWorldDestroy(w);
@@ -959,7 +1060,7 @@ bool run_queries(const char *spec, long q, const Options &o)
     }
     print_query_row(spec, "libnoctree", "box", q, t_box, boxes);
     print_query_row(spec, "libnoctree", "point", q, t_point, points);
-    print_query_row(spec, "libnoctree", "segment, all", q, t_ray, rays);
+    print_query_row(spec, "libnoctree", "segment, all", q, t_ray, rays[0]);
     print_query_row(spec, "libnoctree", "segment, first", q, t_closest, closest);
     // FCL: the same boxes as box objects against its manager.
     std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
@@ -986,12 +1087,13 @@ bool run_queries(const char *spec, long q, const Options &o)
         fcl_boxes += c.found;
     }
     print_query_row(spec, "fcl-dtree", "box", q, now() - t, fcl_boxes);
+    const bool bullet_ok = bullet_queries(spec, s, qs, q, boxes, rays, closest, closest_inside);
     if (fcl_boxes != boxes) {
         std::printf("%s: box queries found %zu objects in libnoctree and %zu in FCL\n", spec,
                     boxes, fcl_boxes);
         return false;
     }
-    return true;
+    return bullet_ok;
 }
 
 } // namespace
@@ -1076,9 +1178,10 @@ int main(int argc, char **argv)
         if (scenes.empty())
             scenes = {"gas:10000", "gas:100000"};
         std::printf("bench-peers --queries: libnoctree %s (efficient build, N = %d, exact) "
-                    "against FCL %s (dynamic AABB tree), %ld queries of each kind on each "
-                    "scene as set up; one thread\n",
-                    NOCT_VERSION_STRING, o.N, FCL_VERSION, queries);
+                    "against FCL %s (dynamic AABB tree) and Bullet %d.%02d (btDbvtBroadphase), "
+                    "%ld queries of each kind on each scene as set up; one thread\n",
+                    NOCT_VERSION_STRING, o.N, FCL_VERSION, BT_BULLET_VERSION / 100,
+                    BT_BULLET_VERSION % 100, queries);
         std::printf("%-12s %-12s %-16s %8s %12s %10s %10s\n", "scene", "library", "query",
                     "queries", "per second", "us each", "found");
         bool all = true;
