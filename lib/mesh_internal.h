@@ -182,10 +182,11 @@ double noct_distance_slack(const noctMesh *a, const double ta[3], const noctMesh
                            const double tb[3], double d);
 
 /* Are the boundaries of two placed meshes within d + the slack of each
- * other (floating-point distances of their triangles)? For two solids
- * that do not meet, their distance is their boundaries': true for every
- * pair at most d apart (never missed), and false for every pair more than
- * d + 2 slack apart. */
+ * other? Each pair of triangles' distance is bounded from below, proved in
+ * floating point (the largest gap on the separating axes that contain the
+ * closest points' direction); for two solids that do not meet, their
+ * distance is their boundaries'. So: true for every pair at most d apart
+ * (never missed), and false for every pair more than d + 2 slack apart. */
 bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b,
                         const double tb[3], double d);
 

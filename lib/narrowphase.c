@@ -1143,124 +1143,91 @@ static double dot3(const double a[3], const double b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-static double dist2(const double a[3], const double b[3])
+/* A lower bound on the distance between two closed triangles that do not
+ * meet, proved in floating point: for disjoint convex polytopes the
+ * distance is the largest gap between their projections on a unit axis,
+ * reached on the axis from one closest point to the other, which is a
+ * face normal, the cross product of two edges, the difference of two
+ * corners, or the perpendicular from a corner to an edge or from one
+ * edge's line to a parallel one's (the same as from one of its corners).
+ * The gap on every axis, computed with
+ * an allowance for its rounding, bounds the distance from below whatever
+ * the axis's own rounding; the largest is the bound, within a few
+ * roundings of the distance. (A zero axis is skipped: that only lowers the
+ * bound.) */
+static double cross_into(const double a[3], const double b[3], double out[3])
 {
-    const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    return dot3(d, d);
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+    return fabs(out[0]) + fabs(out[1]) + fabs(out[2]);
 }
 
-static double clamp01(double x)
+/* The gap along u proved: (least of B's projections - greatest of A's,
+ * less twice the rounding of either) over |u|, or 0; s bounds every
+ * coordinate. */
+static double proved_gap(const double u[3], double a[3][3], double b[3][3], double s)
 {
-    return x < 0 ? 0 : x > 1 ? 1 : x;
-}
-
-/* Squared distance between segments p1 q1 and p2 q2 (after Ericson,
- * Real-Time Collision Detection, 5.1.9), in floating point. */
-static double seg_seg_dist2(const double p1[3], const double q1[3], const double p2[3],
-                            const double q2[3])
-{
-    double d1[3], d2[3], r[3];
-    for (int k = 0; k < 3; ++k) {
-        d1[k] = q1[k] - p1[k];
-        d2[k] = q2[k] - p2[k];
-        r[k] = p1[k] - p2[k];
-    }
-    const double a = dot3(d1, d1), e = dot3(d2, d2), f = dot3(d2, r);
-    double s, t;
-    if (a <= 0 && e <= 0) {
-        s = t = 0;
-    } else if (a <= 0) {
-        s = 0;
-        t = clamp01(f / e);
-    } else {
-        const double c = dot3(d1, r);
-        if (e <= 0) {
-            t = 0;
-            s = clamp01(-c / a);
-        } else {
-            const double b = dot3(d1, d2), den = a * e - b * b;
-            s = den > 0 ? clamp01((b * f - c * e) / den) : 0;
-            t = (b * s + f) / e;
-            if (t < 0) {
-                t = 0;
-                s = clamp01(-c / a);
-            } else if (t > 1) {
-                t = 1;
-                s = clamp01((b - c) / a);
-            }
-        }
-    }
-    double x[3], y[3];
-    for (int k = 0; k < 3; ++k) {
-        x[k] = p1[k] + d1[k] * s;
-        y[k] = p2[k] + d2[k] * t;
-    }
-    return dist2(x, y);
-}
-
-/* Squared distance from p to triangle abc (Ericson 5.1.5's closest point),
- * in floating point. */
-static double point_tri_dist2(const double p[3], const double a[3], const double b[3],
-                              const double c[3])
-{
-    double ab[3], ac[3], ap[3], x[3];
-    for (int k = 0; k < 3; ++k) {
-        ab[k] = b[k] - a[k];
-        ac[k] = c[k] - a[k];
-        ap[k] = p[k] - a[k];
-    }
-    const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
-    if (d1 <= 0 && d2 <= 0)
-        return dist2(p, a);
-    double bp[3], cp[3];
-    for (int k = 0; k < 3; ++k) {
-        bp[k] = p[k] - b[k];
-        cp[k] = p[k] - c[k];
-    }
-    const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-    if (d3 >= 0 && d4 <= d3)
-        return dist2(p, b);
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        const double v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; ++k)
-            x[k] = a[k] + v * ab[k];
-        return dist2(p, x);
-    }
-    const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-    if (d6 >= 0 && d5 <= d6)
-        return dist2(p, c);
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        const double w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; ++k)
-            x[k] = a[k] + w * ac[k];
-        return dist2(p, x);
-    }
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
-        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; ++k)
-            x[k] = b[k] + w * (c[k] - b[k]);
-        return dist2(p, x);
-    }
-    const double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
-    for (int k = 0; k < 3; ++k)
-        x[k] = a[k] + ab[k] * v + ac[k] * w;
-    return dist2(p, x);
-}
-
-/* Squared distance between two triangles that do not meet: the least of
- * their edges' distances and their corners' distances to the other. */
-static double tri_tri_dist2(double a[3][3], double b[3][3])
-{
-    double best = INFINITY;
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    if (!(l1 > 0))
+        return 0;
+    double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
     for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j)
-            best = noct_min(best, seg_seg_dist2(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
-        best = noct_min(best, point_tri_dist2(a[i], b[0], b[1], b[2]));
-        best = noct_min(best, point_tri_dist2(b[i], a[0], a[1], a[2]));
+        const double pa = dot3(u, a[i]), pb = dot3(u, b[i]);
+        amax = noct_max(amax, pa);
+        amin = noct_min(amin, pa);
+        bmax = noct_max(bmax, pb);
+        bmin = noct_min(bmin, pb);
     }
+    /* each projection errs by at most 4 ulp of l1 s; the difference one
+     * more */
+    const double err = 0x1p-50 * l1 * s;
+    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
+    if (!(gap > 0))
+        return 0;
+    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return gap / (n * (1 + 0x1p-48));
+}
+
+static double tri_tri_lower_bound(double a[3][3], double b[3][3])
+{
+    double s = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            s = noct_max(s, noct_max(fabs(a[i][k]), fabs(b[i][k])));
+    double ea[3][3], eb[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) {
+            ea[i][k] = a[(i + 1) % 3][k] - a[i][k];
+            eb[i][k] = b[(i + 1) % 3][k] - b[i][k];
+        }
+    double best = 0, u[3], w[3], v[3];
+    /* face normals */
+    cross_into(ea[0], ea[1], u);
+    best = noct_max(best, proved_gap(u, a, b, s));
+    cross_into(eb[0], eb[1], u);
+    best = noct_max(best, proved_gap(u, a, b, s));
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            /* edge against edge */
+            cross_into(ea[i], eb[j], u);
+            best = noct_max(best, proved_gap(u, a, b, s));
+            /* corner against corner */
+            for (int k = 0; k < 3; ++k)
+                u[k] = b[j][k] - a[i][k];
+            best = noct_max(best, proved_gap(u, a, b, s));
+            /* corner against edge, both ways: (e x (p - q)) x e */
+            for (int k = 0; k < 3; ++k)
+                v[k] = a[i][k] - b[j][k];
+            cross_into(eb[j], v, w);
+            cross_into(w, eb[j], u);
+            best = noct_max(best, proved_gap(u, a, b, s));
+            for (int k = 0; k < 3; ++k)
+                v[k] = b[j][k] - a[i][k];
+            cross_into(ea[i], v, w);
+            cross_into(w, ea[i], u);
+            best = noct_max(best, proved_gap(u, a, b, s));
+        }
     return best;
 }
 
@@ -1313,7 +1280,7 @@ bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b
                     double y[3][3];
                     for (int c = 0; c < 3; ++c)
                         place(&B, b->tri[3 * j + c], y[c]);
-                    if (tri_tri_dist2(x, y) <= reach2)
+                    if (tri_tri_lower_bound(x, y) <= reach)
                         return true;
                 }
             }

@@ -289,8 +289,11 @@ START_TEST(rays_against_geometry)
                 if (v < 0)
                     continue;
                 ++checked;
-                ck_assert_msg((h != NULL) == (v == 1), "ray, object %d: %d, ideal %d", i,
-                              h != NULL, v);
+                ck_assert_msg((h != NULL) == (v == 1),
+                              "ray, object %d (kind %d): %d, ideal %d at %.17Lg; origin %a %a %a "
+                              "translation %a %a %a",
+                              i, s.kind[i], h != NULL, v, sfrac, o[0], o[1], o[2], d[0], d[1],
+                              d[2]);
                 if (v == 0)
                     continue;
                 ++hit;

@@ -77,7 +77,7 @@ int ideal_contains(const ideal *g, const double p[3])
     to_local(g, pl, l);
     int verdict = 0;
     for (int j = 0; j < g->npieces; ++j) {
-        long double depth = INFINITY;
+        long double depth = 1e300L; /* (no infinities: valgrind's long double is a double) */
         for (int k = 0; k < 3; ++k)
             depth = fminl(depth, g->pc[j].h[k] - fabsl(l[k] - g->pc[j].c[k]));
         if (depth > MARGIN)
@@ -126,7 +126,7 @@ int obb_meet(const obb *a, const obb *b)
                 axes[n][k] = c[k] / l;
             ++n;
         }
-    long double least = INFINITY;
+    long double least = 1e300L;
     for (int m = 0; m < n; ++m) {
         const long double *u = axes[m];
         long double ra = 0, rb = 0, d = 0;
@@ -169,9 +169,10 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
     dir_to_local(g, dw, dl);
     const long double len = sqrtl(dw[0] * dw[0] + dw[1] * dw[1] + dw[2] * dw[2]);
     int verdict = 0;
-    long double best = INFINITY;
+    long double best = 1e300L;
+    bool found = false;
     for (int j = 0; j < g->npieces; ++j) {
-        long double lo = 0, hi = 1, second = -INFINITY;
+        long double lo = 0, hi = 1, second = -1e300L;
         int axis = -1, sign = 0;
         bool uncertain = false;
         for (int k = 0; k < 3 && hi >= lo; ++k) {
@@ -211,8 +212,9 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
         }
         if (gap < 0)
             continue;
-        if (lo < best) {
+        if (!found || lo < best) {
             best = lo;
+            found = true;
             for (int k = 0; k < 3; ++k)
                 normal[k] = axis < 0 ? 0 : sign * g->R[3 * k + axis];
             *sharp = axis < 0 || (lo - second) * len > 1e-6L;
@@ -220,7 +222,7 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
     }
     if (verdict < 0)
         return -1;
-    if (isinf(best))
+    if (!found)
         return 0;
     *s = best;
     return 1;
@@ -381,7 +383,7 @@ static void corner(const obb *b, int i, long double out[3])
 /* The least distance from a's edges to the solid b. */
 static long double edges_to(const obb *a, const obb *b)
 {
-    long double best = INFINITY;
+    long double best = 1e300L;
     for (int i = 0; i < 8; ++i)
         for (int j = 0; j < 3; ++j) {
             if ((i >> j) & 1)
@@ -412,7 +414,7 @@ static long double edges_to(const obb *a, const obb *b)
 
 long double ideal_distance(const ideal *a, const ideal *b)
 {
-    long double best = INFINITY;
+    long double best = 1e300L;
     for (int i = 0; i < a->npieces; ++i)
         for (int j = 0; j < b->npieces; ++j) {
             const obb x = piece_box(a, i), y = piece_box(b, j);

@@ -191,8 +191,9 @@ NOCT_API noctStatus noctWorldQueryShape(const noctWorld *world, const noctMesh *
 /**
  * @brief Visit the objects within a distance of a shape placed at x:
  * those that collide with it (exactly), and those whose triangles come
- * within margin of its (as noctWorldNear() decides it: in floating point,
- * with a slack of 2^-40 of the coordinates' magnitude).
+ * within margin of its, as noctWorldNear() decides it: every object within
+ * margin, and none farther than margin plus twice a slack of 2^-40 of the
+ * coordinates' magnitude.
  * @pre As noctWorldQueryShape().
  * @post As noctWorldQueryShape(), for the objects within margin; with a
  *       margin of 0, its objects exactly.

@@ -499,12 +499,16 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
  * Found once a step, after its last sub-step. At the box level, two
  * objects are near when their placed boxes are within d (Euclidean
  * distance, in floating point). At the convex and exact levels, when the
- * pair collides, or when the distance between their placed triangles,
- * computed in floating point, is at most d plus a slack of 2^-40 of the
- * largest coordinate of their placed boxes (or of d): so a pair whose
- * distance exceeds d by more than twice the slack is never near, and one
- * within d is near unless rounding errs by more than the slack (nearly
- * parallel edges are where it errs most; the tests have not seen it).
+ * pair collides, or when a lower bound on the distance between two of
+ * their placed triangles is at most d plus a slack of 2^-40 of the
+ * largest coordinate of their placed boxes (or of d). The bound is proved
+ * in floating point (the largest gap between the triangles' projections
+ * on the separating axes that hold the direction between their closest
+ * points, each gap less an allowance for its rounding), and is within a
+ * few roundings of the distance. So a pair within d is always near, and
+ * one farther than d by more than twice the slack never is. (Two boxes
+ * that the separating-axis test proves farther apart are not near
+ * without looking at their triangles.)
  * @pre world != NULL && pairs != NULL
  * @param world the world.
  * @param pairs receives the list (valid until the next step).
