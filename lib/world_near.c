@@ -124,7 +124,8 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             st = NOCT_ERR_NOMEM;
         if (st != NOCT_OK)
             break;
-        qsort(p.s, p.n, sizeof *p.s, by_index);
+        if (p.n > 1)
+            qsort(p.s, p.n, sizeof *p.s, by_index);
         for (size_t k = 0; k < p.n; ++k) {
             const uint32_t j = p.s[k];
             if (w->obj[j].sensor || !near(w, i, j, d))

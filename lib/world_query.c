@@ -81,7 +81,8 @@ static noctStatus gather(const noctWorld *w, const double lo[3], const double hi
         st = NOCT_ERR_NOMEM;
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "query: %s", noctStatusString(st));
-    qsort(c->s, c->n, sizeof *c->s, by_index);
+    if (c->n > 1)
+        qsort(c->s, c->n, sizeof *c->s, by_index);
     return NOCT_OK;
 }
 
@@ -443,7 +444,8 @@ noctStatus noctWorldRayCast(const noctWorld *w, const double origin[3],
     memset(&r, 0, sizeof r);
     noctStatus st = cast(w, origin, translation, filter, &r, err);
     if (st == NOCT_OK) {
-        qsort(r.hits, r.n, sizeof *r.hits, by_fraction);
+        if (r.n > 1)
+            qsort(r.hits, r.n, sizeof *r.hits, by_fraction);
         for (size_t i = 0; i < r.n; ++i)
             if (!fcn(context, &r.hits[i]))
                 break;
@@ -468,6 +470,28 @@ noctStatus noctWorldRayCastClosest(const noctWorld *w, const double origin[3],
         *found = true;
     }
     return st;
+}
+
+noctStatus noctWorldRayCastAlong(const noctWorld *w, const double origin[3],
+                                 const double direction[3], double distance,
+                                 noctQueryFilter filter, noctRayHit *hit, bool *found,
+                                 noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && origin != NULL && direction != NULL && hit != NULL);
+    NOCT_REQUIRE(found != NULL);
+    *found = false;
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(direction[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "ray direction is not finite");
+    if (!isfinite(distance))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "ray distance is not finite");
+    if (distance < 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "ray distance %g is negative", distance);
+    double u[3];
+    if (!noct_unit_direction(direction, u))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "a ray needs a non-zero direction");
+    const double translation[3] = {distance * u[0], distance * u[1], distance * u[2]};
+    return noctWorldRayCastClosest(w, origin, translation, filter, hit, found, err);
 }
 
 /* ---- arrays -------------------------------------------------------------------------- */

@@ -144,7 +144,8 @@ START_TEST(near_pairs_against_geometry)
                         ++removed_ended;
                     }
             events += (int)(nb + ne);
-            memcpy(prev, near, nn * sizeof *near);
+            if (nn > 0)
+                memcpy(prev, near, nn * sizeof *near);
             nprev = nn;
         }
         free_scene(&s);

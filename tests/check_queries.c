@@ -598,6 +598,33 @@ START_TEST(buffers_stopping_and_bad_input)
     ck_assert_int_eq(noctWorldRayCast(w, (double[3]){9e99, 0, 0}, (double[3]){9e99, 0, 0},
                                       noctDefaultQueryFilter(), collect_hit, &calls, &err),
                      NOCT_ERR_TOO_LARGE);
+    /* a ray by direction and distance: a zero direction is an error */
+    noctRayHit rh;
+    bool any = true;
+    ck_assert_int_eq(noctWorldRayCastAlong(w, (double[3]){-5, 0.125, 0.125}, (double[3]){0, 0, 0},
+                                           10, noctDefaultQueryFilter(), &rh, &any, &err),
+                     NOCT_ERR_INVALID);
+    ck_assert(!any);
+    ck_assert_ptr_nonnull(strstr(err.message, "non-zero direction"));
+    ck_assert_int_eq(noctWorldRayCastAlong(w, lo, (double[3]){NAN, 1, 0}, 10,
+                                           noctDefaultQueryFilter(), &rh, &any, &err),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_int_eq(noctWorldRayCastAlong(w, lo, (double[3]){1, 0, 0}, -1,
+                                           noctDefaultQueryFilter(), &rh, &any, &err),
+                     NOCT_ERR_INVALID);
+    /* any length of direction: the same first hit, box 5 at 2.875 along x */
+    const double dirs[3][3] = {{1e-200, 0, 0}, {1, 0, 0}, {1e200, 0, 0}};
+    for (int k = 0; k < 3; ++k) {
+        ck_assert_int_eq(noctWorldRayCastAlong(w, (double[3]){-5, 0.125, 0.125}, dirs[k], 10,
+                                               noctDefaultQueryFilter(), &rh, &any, &err),
+                         NOCT_OK);
+        ck_assert(any && rh.id.index == id[5].index && rh.fraction == 0.2875);
+        ck_assert(rh.point[0] == -2.125);
+    }
+    ck_assert_int_eq(noctWorldRayCastAlong(w, (double[3]){-5, 0.125, 0.125}, dirs[1], 2,
+                                           noctDefaultQueryFilter(), &rh, &any, &err),
+                     NOCT_OK);
+    ck_assert(!any); /* it stops short of the box, 2.875 away */
     noctTransform x = noctIdentityTransform();
     x.q.w = 2; /* far from unit length */
     ck_assert_int_eq(noctWorldQueryShape(w, NULL, (double[3]){1, 1, 1}, &x,

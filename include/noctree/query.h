@@ -22,7 +22,8 @@
  *   world (a planner's "would the arm collide here?"); noctWorldQueryNear():
  *   those within a distance of it ("would it come within d?");
  * - noctWorldRayCast() and noctWorldRayCastClosest(): the objects a
- *   closed segment meets. Whether it meets a solid is decided exactly;
+ *   closed segment meets (noctWorldRayCastAlong(): the first along a ray
+ *   given by a direction and a distance). Whether it meets a solid is decided exactly;
  *   where (the fraction along it, the point, the normal) is computed in
  *   floating point. A segment that starts in a solid hits it at fraction
  *   0, with no triangle and a zero normal.
@@ -263,6 +264,33 @@ NOCT_API noctStatus noctWorldRayCastClosest(const noctWorld *world, const double
                                             const double translation[3],
                                             noctQueryFilter filter, noctRayHit *hit,
                                             bool *found, noctError *err);
+
+/**
+ * @brief The first object a ray meets: from origin along direction, up to
+ * distance; a ray cast for programs that hold a direction and a length.
+ * @pre world != NULL && origin != NULL && direction != NULL && hit != NULL
+ *      && found != NULL
+ * @post As noctWorldRayCastClosest() with the translation distance * u,
+ *       where u is direction made unit (scaled first, so that any finite
+ *       non-zero vector, however small or large, gives its direction);
+ *       hit->fraction is then a fraction of distance. Nothing is called
+ *       and *found is false on failure.
+ * @param world the world.
+ * @param origin where the ray starts.
+ * @param direction its direction: any finite vector but zero.
+ * @param distance how far it goes: finite, 0 or more.
+ * @param filter which objects to report.
+ * @param hit receives the first hit.
+ * @param found receives whether there is one.
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldRayCastClosest(); #NOCT_ERR_INVALID for a zero
+ *         direction or a negative distance; #NOCT_ERR_NONFINITE for a
+ *         direction or distance that is not finite.
+ */
+NOCT_API noctStatus noctWorldRayCastAlong(const noctWorld *world, const double origin[3],
+                                          const double direction[3], double distance,
+                                          noctQueryFilter filter, noctRayHit *hit,
+                                          bool *found, noctError *err);
 
 /** @brief An array for a query's objects: pass noctCollectObjects() as the
  *  function and a pointer to this as its context. */
