@@ -918,21 +918,37 @@ noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
 
 /* ---- the world's queries (world_query.c) ------------------------------------ */
 
-/* Is p on a triangle of B (closed)? Through the BVH, on the nodes' placed
- * boxes, which hold their placed triangles exactly. */
-static bool on_boundary(const placed *B, const double p[3], const exact_ctx *x)
+/* out = a x b; returns |out|_1. */
+static double cross_into(const double a[3], const double b[3], double out[3])
 {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+    return fabs(out[0]) + fabs(out[1]) + fabs(out[2]);
+}
+
+/* Call fn for each placed triangle of B whose BVH leaf's placed box meets
+ * the box [lo, hi] (the placed boxes hold their placed triangles exactly),
+ * in the BVH's order, until it returns true; true if one did. */
+typedef bool triangle_fn(void *context, uint32_t i, double a[3], double b[3], double c[3]);
+
+static bool walk_triangles(const placed *B, const double lo[3], const double hi[3],
+                           triangle_fn *fn, void *context)
+{
+    static const double zero[3] = {0, 0, 0};
     const noctMesh *m = B->m;
     uint32_t stack[64];
     size_t top = 0;
     stack[top++] = 0;
     while (top > 0) {
         const bvh_node *n = &m->nodes[stack[--top]];
-        if (!boxes_overlap(n->lo, n->hi, B->t, p, p, (const double[3]){0, 0, 0}))
+        if (!boxes_overlap(n->lo, n->hi, B->t, lo, hi, zero))
             continue;
         if (n->count == 0) {
+            /* unreachable: a BVH is at most 33 deep, and the stack holds
+             * one node a level and one more */
             if (top + 2 > sizeof stack / sizeof *stack)
-                return true; /* unreachable: BVHs are far shallower */
+                return true;
             stack[top++] = n->first;
             stack[top++] = n->first + 1;
             continue;
@@ -942,11 +958,30 @@ static bool on_boundary(const placed *B, const double p[3], const exact_ctx *x)
             place(B, m->tri[3 * i], a);
             place(B, m->tri[3 * i + 1], b);
             place(B, m->tri[3 * i + 2], c);
-            if (o3(x, a, b, c, p) == 0 && seg_tri(x, p, p, 0, 0, a, b, c))
+            if (fn(context, i, a, b, c))
                 return true;
         }
     }
     return false;
+}
+
+typedef struct point_on {
+    const double *p;
+    exact_ctx x;
+} point_on;
+
+static bool point_on_triangle(void *context, uint32_t i, double a[3], double b[3], double c[3])
+{
+    (void)i;
+    const point_on *q = context;
+    return o3(&q->x, a, b, c, q->p) == 0 && seg_tri(&q->x, q->p, q->p, 0, 0, a, b, c);
+}
+
+/* Is p on a triangle of B (closed)? */
+static bool on_boundary(const placed *B, const double p[3], const exact_ctx *x)
+{
+    point_on q = {p, *x};
+    return walk_triangles(B, p, p, point_on_triangle, &q);
 }
 
 noctStatus noct_point_in_solid(const noctMesh *m, const double t[3], const double p[3],
@@ -1006,6 +1041,38 @@ static double entry_fraction(const double p[3], const double q[3], const double 
     return best;
 }
 
+/* The first triangle segment pq enters, so far. */
+typedef struct segment_entry {
+    const double *p, *q;
+    exact_ctx x;
+    double best;
+    uint32_t triangle;
+    double *normal;
+} segment_entry;
+
+static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], double c[3])
+{
+    segment_entry *e = context;
+    const int s1 = o3(&e->x, a, b, c, e->p), s2 = o3(&e->x, a, b, c, e->q);
+    if (!seg_tri(&e->x, e->p, e->q, s1, s2, a, b, c))
+        return false;
+    double u[3], v[3], nn[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = b[k] - a[k];
+        v[k] = c[k] - a[k];
+    }
+    cross_into(u, v, nn);
+    const double f = entry_fraction(e->p, e->q, a, b, c, nn, s1 == 0 && s2 == 0);
+    if (f < e->best || (f == e->best && i < e->triangle)) {
+        e->best = f;
+        e->triangle = i;
+        const double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
+        for (int k = 0; k < 3; ++k)
+            e->normal[k] = len > 0 ? nn[k] / len : 0;
+    }
+    return false; /* on: the least fraction */
+}
+
 noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
                             const double q[3], bool *hit, double *fraction,
                             uint32_t *triangle, double normal[3])
@@ -1032,47 +1099,10 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
         *fraction = 0;
         return NOCT_OK;
     }
-    uint32_t stack[64];
-    size_t top = 0;
-    stack[top++] = 0;
-    double best = INFINITY;
-    while (top > 0) {
-        const bvh_node *n = &m->nodes[stack[--top]];
-        if (!boxes_overlap(n->lo, n->hi, t, slo, shi, zero))
-            continue;
-        if (n->count == 0) {
-            if (top + 2 > sizeof stack / sizeof *stack)
-                return NOCT_ERR_NUMERIC; /* unreachable: BVHs are far shallower */
-            stack[top++] = n->first;
-            stack[top++] = n->first + 1;
-            continue;
-        }
-        for (uint32_t i = n->first; i < n->first + n->count; ++i) {
-            double a[3], b[3], c[3];
-            place(&B, m->tri[3 * i], a);
-            place(&B, m->tri[3 * i + 1], b);
-            place(&B, m->tri[3 * i + 2], c);
-            const int s1 = o3(&x, a, b, c, p), s2 = o3(&x, a, b, c, q);
-            if (!seg_tri(&x, p, q, s1, s2, a, b, c))
-                continue;
-            double u[3], v[3], nn[3];
-            for (int k = 0; k < 3; ++k) {
-                u[k] = b[k] - a[k];
-                v[k] = c[k] - a[k];
-            }
-            nn[0] = u[1] * v[2] - u[2] * v[1];
-            nn[1] = u[2] * v[0] - u[0] * v[2];
-            nn[2] = u[0] * v[1] - u[1] * v[0];
-            const double f = entry_fraction(p, q, a, b, c, nn, s1 == 0 && s2 == 0);
-            if (f < best || (f == best && i < *triangle)) {
-                best = f;
-                *triangle = i;
-                const double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
-                for (int k = 0; k < 3; ++k)
-                    normal[k] = len > 0 ? nn[k] / len : 0;
-            }
-        }
-    }
+    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal};
+    walk_triangles(&B, slo, shi, segment_meets, &e);
+    *triangle = e.triangle;
+    const double best = e.best;
     if (*triangle != UINT32_MAX) {
         *hit = true;
         *fraction = best;
@@ -1155,14 +1185,6 @@ static double dot3(const double a[3], const double b[3])
  * the axis's own rounding; the largest is the bound, within a few
  * roundings of the distance. (A zero axis is skipped: that only lowers the
  * bound.) */
-static double cross_into(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-    return fabs(out[0]) + fabs(out[1]) + fabs(out[2]);
-}
-
 /* The gap along u proved: (least of B's projections - greatest of A's,
  * less twice the rounding of either) over |u|, or 0; s bounds every
  * coordinate. */

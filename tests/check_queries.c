@@ -26,35 +26,6 @@
 
 /* ---- collecting ------------------------------------------------------------------ */
 
-typedef struct found {
-    int n;
-    noctObjectId id[MAXO];
-} found;
-
-static bool collect(void *context, noctObjectId id, void *user)
-{
-    found *f = context;
-    ck_assert(user != NULL && ((noctObjectId *)user)->index == id.index);
-    ck_assert_int_lt(f->n, MAXO);
-    f->id[f->n++] = id;
-    return true;
-}
-
-static bool in_found(const found *f, const scene *s, int i)
-{
-    for (int k = 0; k < f->n; ++k)
-        if (f->id[k].index == s->id[i].index) {
-            ck_assert_uint_eq(f->id[k].generation, s->id[i].generation);
-            return true;
-        }
-    return false;
-}
-
-static void expect_index_order(const found *f)
-{
-    for (int k = 1; k < f->n; ++k)
-        ck_assert_uint_lt(f->id[k - 1].index, f->id[k].index);
-}
 
 /* ---- random scenes against the ideal geometry ----------------------------------------- */
 

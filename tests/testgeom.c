@@ -170,7 +170,7 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
     const long double len = sqrtl(dw[0] * dw[0] + dw[1] * dw[1] + dw[2] * dw[2]);
     int verdict = 0;
     long double best = 1e300L;
-    bool found = false;
+    bool any = false;
     for (int j = 0; j < g->npieces; ++j) {
         long double lo = 0, hi = 1, second = -1e300L;
         int axis = -1, sign = 0;
@@ -212,9 +212,9 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
         }
         if (gap < 0)
             continue;
-        if (!found || lo < best) {
+        if (!any || lo < best) {
             best = lo;
-            found = true;
+            any = true;
             for (int k = 0; k < 3; ++k)
                 normal[k] = axis < 0 ? 0 : sign * g->R[3 * k + axis];
             *sharp = axis < 0 || (lo - second) * len > 1e-6L;
@@ -222,7 +222,7 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
     }
     if (verdict < 0)
         return -1;
-    if (!found)
+    if (!any)
         return 0;
     *s = best;
     return 1;
@@ -421,4 +421,31 @@ long double ideal_distance(const ideal *a, const ideal *b)
             best = fminl(best, fminl(edges_to(&x, &y), edges_to(&y, &x)));
         }
     return best;
+}
+
+/* ---- what overlap queries found ---------------------------------------------------- */
+
+bool collect(void *context, noctObjectId id, void *user)
+{
+    found *f = context;
+    ck_assert(user != NULL && ((noctObjectId *)user)->index == id.index);
+    ck_assert_int_lt(f->n, MAXO);
+    f->id[f->n++] = id;
+    return true;
+}
+
+bool in_found(const found *f, const scene *s, int i)
+{
+    for (int k = 0; k < f->n; ++k)
+        if (f->id[k].index == s->id[i].index) {
+            ck_assert_uint_eq(f->id[k].generation, s->id[i].generation);
+            return true;
+        }
+    return false;
+}
+
+void expect_index_order(const found *f)
+{
+    for (int k = 1; k < f->n; ++k)
+        ck_assert_uint_lt(f->id[k - 1].index, f->id[k].index);
 }

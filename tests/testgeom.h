@@ -45,6 +45,11 @@ typedef struct obb {
     long double c[3], u[3][3], h[3];
 } obb;
 
+typedef struct found {
+    int n;
+    noctObjectId id[MAXO];
+} found;
+
 extern uint64_t rng;
 
 /* The margin of the worlds new_world() makes (default 0). */
@@ -74,5 +79,15 @@ const noctMesh *mesh_of(const scene *s, int i, const noctMesh *ell);
  * their edges: each edge's distance to each box of the other, minimised
  * along the edge (a convex function) by ternary search. */
 long double ideal_distance(const ideal *a, const ideal *b);
+
+/* A #noctObjectFcn for a found: the object's user data must be its handle
+ * (random_scene() makes it so). */
+bool collect(void *context, noctObjectId id, void *user);
+
+/* Did the query find object i of the scene (with its generation)? */
+bool in_found(const found *f, const scene *s, int i);
+
+/* The objects in f are in increasing order of index. */
+void expect_index_order(const found *f);
 
 #endif /* NOCT_TESTS_TESTGEOM_H */
