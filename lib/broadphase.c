@@ -104,11 +104,20 @@ void noct_apool_free(noct_apool *p)
 noctBroadphaseDef noctDefaultBroadphaseDef(void)
 {
     noctBroadphaseDef d;
-    d.N = 10;
-    d.max_depth = 10;
+    d.N = NOCT_AUTO;
+    d.max_depth = NOCT_AUTO;
     for (int k = 0; k < 3; ++k)
         d.bounds_lo[k] = d.bounds_hi[k] = 0;
     return d;
+}
+
+void noctBroadphaseGetSettings(const noctBroadphase *bp, int *N, int *max_depth)
+{
+    NOCT_REQUIRE(bp != NULL);
+    if (N != NULL)
+        *N = bp->N;
+    if (max_depth != NULL)
+        *max_depth = bp->max_depth;
 }
 
 noctQueryFilter noctDefaultQueryFilter(void)
@@ -118,12 +127,12 @@ noctQueryFilter noctDefaultQueryFilter(void)
 
 noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctError *err)
 {
-    if (def->N < 1)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "N is %d; it must be at least 1",
-                         def->N);
-    if (def->max_depth < 1 || def->max_depth > 40)
+    if (def->N < 0)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "max_depth is %d; it must be 1 to 40", def->max_depth);
+                         "N is %d; it must be at least 1, or NOCT_AUTO (0)", def->N);
+    if (def->max_depth < 0 || def->max_depth > 40)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "max_depth is %d; it must be 1 to 40, or NOCT_AUTO (0)", def->max_depth);
     bool hint = true;
     for (int k = 0; k < 3; ++k) {
         if (!isfinite(def->bounds_lo[k]) || !isfinite(def->bounds_hi[k]))
@@ -141,8 +150,11 @@ noctStatus noct_bp_init(noctBroadphase *bp, const noctBroadphaseDef *def, noctEr
     bp->near_pool.base = 8;
     bp->spans_pool.elem = sizeof(noct_span);
     bp->spans_pool.base = 4; /* most proxies are in 4 leaves or fewer */
-    bp->N = def->N;
-    bp->max_depth = def->max_depth;
+    bp->auto_N = def->N == NOCT_AUTO;
+    bp->auto_depth = def->max_depth == NOCT_AUTO;
+    /* until the first build chooses */
+    bp->N = bp->auto_N ? NOCT_AUTO_N : def->N;
+    bp->max_depth = bp->auto_depth ? 40 : def->max_depth;
     bp->hint = hint;
     memcpy(bp->bounds_lo, def->bounds_lo, sizeof bp->bounds_lo);
     memcpy(bp->bounds_hi, def->bounds_hi, sizeof bp->bounds_hi);
@@ -270,8 +282,9 @@ noctStatus noct_bp_add(noctBroadphase *bp, uint32_t s, const double mlo[3], cons
     noct_forget_home(bp, s);
     ++bp->alive;
     bp->filtered += category != NOCT_FILTER_ALL || mask != NOCT_FILTER_ALL;
-    if (bp->tree_owed) {
-        /* a failure tore the tree down: build it now, with this one */
+    if (bp->tree_owed || noct_bp_choice_stale(bp)) {
+        /* a failure tore the tree down, or the automatic settings are
+         * due again: build it now, with this one */
         noctStatus st = noct_bp_rebuild(bp, 0);
         if (st == NOCT_OK)
             return st;

@@ -186,7 +186,9 @@ typedef struct noct_block {
 } noct_block;
 
 struct noctBroadphase {
-    int N, max_depth;
+    int N, max_depth;         /* in force: as given, or as chosen */
+    bool auto_N, auto_depth;  /* chosen at every build (noct_bp_choose) */
+    size_t chosen_for;        /* live proxies at the last choice */
     bool hint;                /* bounds_lo/hi hold a hint for the root */
     double bounds_lo[3], bounds_hi[3];
     bool rebuild_mode;        /* the world rebuilds every step: the tree
@@ -240,6 +242,21 @@ struct noctBroadphase {
     double pending_reach;     /* public: the largest travel since then */
     noctBroadphaseCounters c;
 };
+
+/* The automatic settings (broadphase.h, "Settings"): N, and how many
+ * proxies, as a factor of those the settings were chosen for, make them
+ * be chosen again (a rebuild), either way. */
+#define NOCT_AUTO_N 128
+#define NOCT_AUTO_RECHOOSE 4
+
+/* Whether the population moved far enough from the one the automatic
+ * settings were chosen for that the next settle should build again. */
+static inline bool noct_bp_choice_stale(const noctBroadphase *bp)
+{
+    return (bp->auto_N || bp->auto_depth) && bp->root != NULL &&
+           (bp->alive > NOCT_AUTO_RECHOOSE * bp->chosen_for ||
+            bp->alive * NOCT_AUTO_RECHOOSE < bp->chosen_for);
+}
 
 /* ---- small helpers, inlined on the hot paths --------------------------------- */
 

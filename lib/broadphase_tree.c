@@ -529,6 +529,51 @@ static size_t straddling(const noctBroadphase *bp, const double corner[3], doubl
     }
     return n;
 }
+/*
+ * The automatic settings (broadphase.h, "Settings"), chosen for a root of
+ * the given size from the live proxies, or from a sample of about 4096 of
+ * them (every stride-th slot): a pure function of the boxes in the slots.
+ *
+ * A proxy of extent e (its box's largest side) can make a leaf split only
+ * while it is at most half the leaf's size, so the deepest leaves it can
+ * bring about are at generation D(e) = 1 + max{d : e <= size 2^-(d+1)}
+ * (40 for a point). max_depth is D at the 99th percentile of the sample,
+ * from the small end: deep enough that 99 in 100 proxies never meet it,
+ * shallow enough that coincident proxies cannot split the cells far below
+ * their own size. N is NOCT_AUTO_N, whatever the scene: the sweep in
+ * docs/results.md found it within the noise of the best N on every family
+ * and size, and the lowest in memory.
+ */
+static void choose_settings(noctBroadphase *bp, double size)
+{
+    bp->chosen_for = bp->alive;
+    if (bp->auto_N)
+        bp->N = NOCT_AUTO_N;
+    if (!bp->auto_depth)
+        return;
+    uint32_t hist[41] = {0}, counted = 0;
+    const uint32_t stride = bp->nslots > 4096 ? bp->nslots / 4096 : 1;
+    for (uint32_t i = 0; i < bp->nslots; i += stride) {
+        if (!bp->proxy[i].alive)
+            continue;
+        const noct_aabb *o = &bp->box[i];
+        const double e =
+            noct_max(noct_max(o->hi[0] - o->lo[0], o->hi[1] - o->lo[1]), o->hi[2] - o->lo[2]);
+        int d = 0; /* 1 + the deepest generation whose half-size is >= e */
+        for (double half = size / 2; d < 40 && e <= half; half /= 2)
+            ++d;
+        ++hist[d];
+        ++counted;
+    }
+    /* the depth that all but the smallest 1 in 100 stay within */
+    const uint64_t keep = counted - counted / 100;
+    uint64_t seen = 0;
+    int depth = 0;
+    while (depth < 40 && seen + hist[depth] < keep)
+        seen += hist[depth++];
+    bp->max_depth = depth < 1 ? 1 : depth;
+}
+
 static noctStatus build_tree(noctBroadphase *bp, double min_size)
 {
     destroy_tree(bp);
@@ -570,6 +615,7 @@ static noctStatus build_tree(noctBroadphase *bp, double min_size)
     noct_cell *rc = &bp->root_cell;
     const double zero[3] = {0, 0, 0};
     reset_cell(rc, zero, size);
+    choose_settings(bp, size);
     /* Cells about twice the objects' mean size (a sample of at most about
      * 4096 objects), and the shift that makes the fewest straddle them. */
     uint32_t stride = bp->nslots > 4096 ? bp->nslots / 4096 : 1;
@@ -1006,8 +1052,8 @@ noctStatus noct_bp_settle(noctBroadphase *bp, bool escaped)
         st = noct_bp_rebuild(bp, 2 * noct_cell_of(bp->root)->size);
         bp->shrink_from = bp->frame + SHRINK_AFTER;
     }
-    if (st == NOCT_OK && bp->root != NULL && bp->frame >= bp->shrink_from &&
-        root_too_large(bp))
+    if (st == NOCT_OK && bp->root != NULL &&
+        ((bp->frame >= bp->shrink_from && root_too_large(bp)) || noct_bp_choice_stale(bp)))
         st = noct_bp_rebuild(bp, 0);
     if (st == NOCT_OK && bp->root != NULL && bp->merge_owed) {
         bp->merge_owed = false;

@@ -15,6 +15,7 @@
 
 #include <noctree/world.h>
 
+#include "families_internal.h"
 #include "internal.h"
 #include "mesh_internal.h"
 #include "world_internal.h"
@@ -77,23 +78,74 @@ static double fam_unit_draw(uint64_t *state)
     return (double)(fam_splitmix64(state) >> 11) * 0x1p-53;
 }
 
-noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
+/* The gas kinds, in the order of noct_gas_kind: name, whether the
+ * container's walls turn the boxes back, and the kind's size limit. */
+static const struct {
+    const char *name;
+    bool walls;
+} GAS_KINDS[NOCT_GAS_KINDS] = {
+    {"gas", true}, {"mixed", true}, {"clusters", true}, {"static", true}, {"escape", false},
+};
+
+const char *noct_gas_kind_name(noct_gas_kind kind)
 {
-    NOCT_REQUIRE(w != NULL);
+    return GAS_KINDS[kind].name;
+}
+
+bool noct_gas_kind_walls(noct_gas_kind kind)
+{
+    return GAS_KINDS[kind].walls;
+}
+
+bool noct_gas_kind_of(const char *name, size_t len, noct_gas_kind *kind)
+{
+    for (int k = 0; k < NOCT_GAS_KINDS; ++k)
+        if (strlen(GAS_KINDS[k].name) == len && strncmp(GAS_KINDS[k].name, name, len) == 0) {
+            *kind = (noct_gas_kind)k;
+            return true;
+        }
+    return false;
+}
+
+double noct_gas_kind_container(noct_gas_kind kind, size_t n)
+{
+    /* mixed: the mean volume of a box is E[scale^3] = 4.7625 times the
+     * gas's, so the container holds five times the gas's volume (about
+     * the same tenth filled) */
+    return kind == NOCT_GAS_MIXED ? cbrt(50.0 * (double)n) : noctGasContainerSize(n);
+}
+
+/* A box's scale in the mixed kind, from its extra draw w. */
+static double mixed_scale(double w)
+{
+    return w < 0.5 ? 0.5 : w < 0.8 ? 1 : w < 0.95 ? 2 : 4;
+}
+
+noctStatus noct_world_add_gas_kind(noctWorld *w, noct_gas_kind kind, size_t n, noctError *err)
+{
     if (n < 1 || n > 10000000)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "gas: %zu boxes; it must be 1 to 10000000", n);
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "%s: %zu boxes; it must be 1 to 10000000",
+                         noct_gas_kind_name(kind), n);
     /* room for them all at once: no per-slot array grows by doubling */
     noctStatus rst = noctWorldReserve(w, n, err);
     if (rst != NOCT_OK)
         return rst;
+    const size_t nclusters = (n + 999) / 1000;
     noctObjectId *ids = malloc(n * sizeof *ids);
-    if (ids == NULL)
+    double *cluster = kind == NOCT_GAS_CLUSTERS ? malloc(3 * nclusters * sizeof *cluster) : NULL;
+    if (ids == NULL || (kind == NOCT_GAS_CLUSTERS && cluster == NULL)) {
+        free(ids);
+        free(cluster);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
     const double pi = 3.141592653589793;
-    const double lb = noctGasContainerSize(n);
+    const double lb = noct_gas_kind_container(kind, n);
     uint64_t state = 42;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t c = 0; c < 3 * nclusters && cluster != NULL; ++c)
+        cluster[c] = lb * fam_unit_draw(&state);
+    noctStatus st = NOCT_OK;
+    size_t i = 0;
+    for (; i < n; ++i) {
         double half[3];
         for (int k = 0; k < 3; ++k)
             half[k] = 0.25 + 0.5 * fam_unit_draw(&state);
@@ -103,32 +155,56 @@ noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
         double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
         double centre[3];
         for (int k = 0; k < 3; ++k)
-            centre[k] = lb * fam_unit_draw(&state);
+            centre[k] = kind == NOCT_GAS_CLUSTERS
+                            ? cluster[3 * (i % nclusters) + (size_t)k] +
+                                  15 * (fam_unit_draw(&state) - 0.5)
+                            : lb * fam_unit_draw(&state);
         double dz = 2 * fam_unit_draw(&state) - 1, phi = 2 * pi * fam_unit_draw(&state);
-        const double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi),
-                               dz};
+        double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi), dz};
+        double speed = 0.05;
+        noctObjectDef d = noctDefaultObjectDef();
+        if (kind == NOCT_GAS_MIXED) {
+            const double s = mixed_scale(fam_unit_draw(&state));
+            for (int k = 0; k < 3; ++k)
+                half[k] *= s;
+        } else if (kind == NOCT_GAS_STATIC && !(fam_unit_draw(&state) < 0.1)) {
+            speed = 0;
+            d.type = NOCT_OBJECT_STATIC;
+        } else if (kind == NOCT_GAS_ESCAPE) {
+            speed = 0.2;
+            for (int k = 0; k < 3; ++k)
+                dir[k] = centre[k] - lb / 2;
+        }
         /* a box primitive turned by (x, y, z, qw), whose matrix SCENES.md
          * gives: noctQuatToMatrix() computes that formula, in the same
          * order, and neither normalises nor snaps these quaternions
          * (tests/check_objects.c checks the first 100 000; the first
          * 3 000 000 were checked once); with the velocity noctWorldAdd()
          * would give it */
-        noctObjectDef d = noctDefaultObjectDef();
         memcpy(d.half_extents, half, sizeof half);
         memcpy(d.transform.p, centre, sizeof centre);
         d.transform.q = (noctQuat){x, y, z, qw};
         double unit[3];
-        if (!noct_unit_direction(dir, unit))
-            return fam_unbuild(w, ids, i,
-                               noct_fail(err, NOCT_ERR_NUMERIC, (long)i, 0,
-                                         "gas: box %zu has no direction", i));
+        if (speed > 0 && !noct_unit_direction(dir, unit)) {
+            st = noct_fail(err, NOCT_ERR_NUMERIC, (long)i, 0, "%s: box %zu has no direction",
+                           noct_gas_kind_name(kind), i);
+            break;
+        }
         for (int k = 0; k < 3; ++k)
-            d.velocity[k] = 0.05 * unit[k];
-        noctStatus st = noct_world_add_object(w, &d, 0.05, &ids[i], err);
+            d.velocity[k] = speed > 0 ? speed * unit[k] : 0;
+        st = noct_world_add_object(w, &d, speed, &ids[i], err);
         if (st != NOCT_OK)
-            return fam_unbuild(w, ids, i, st);
+            break;
     }
+    free(cluster);
+    if (st != NOCT_OK)
+        return fam_unbuild(w, ids, i, st);
     free(ids);
     return NOCT_OK;
 }
 
+noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    return noct_world_add_gas_kind(w, NOCT_GAS_UNIFORM, n, err);
+}

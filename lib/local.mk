@@ -11,7 +11,7 @@ noctree_sources = \
 	lib/broadphase_query.c \
 	lib/broadphase_tree.c \
 	lib/direction.c \
-	lib/families.c \
+	lib/families.c lib/families_internal.h \
 	lib/mesh.c \
 	lib/mesh_internal.h \
 	lib/meshio.c \

@@ -19,6 +19,7 @@
 
 #include <noctree/scene.h>
 
+#include "families_internal.h"
 #include "internal.h"
 #include "mesh_internal.h"
 #include "scene_internal.h"
@@ -110,9 +111,10 @@ static noctStatus number(parser *p, const char *what, double *out)
     return NOCT_OK;
 }
 
-static noctStatus integer(parser *p, const char *what, long lo, long hi, long *out)
+/* The integer tok (NULL: missing), lo to hi. */
+static noctStatus integer_token(parser *p, const char *tok, const char *what, long lo, long hi,
+                                long *out)
 {
-    char *tok = next(p);
     if (tok == NULL)
         return perr(p, NOCT_ERR_PARSE, "missing %s", what);
     char *end;
@@ -127,6 +129,11 @@ static noctStatus integer(parser *p, const char *what, long lo, long hi, long *o
         return perr(p, NOCT_ERR_INVALID, "%s", range);
     }
     return NOCT_OK;
+}
+
+static noctStatus integer(parser *p, const char *what, long lo, long hi, long *out)
+{
+    return integer_token(p, next(p), what, lo, hi, out);
 }
 
 static noctStatus end_of_line(parser *p)
@@ -501,8 +508,8 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
     long v;
     if (strcmp(kw, "N") == 0) {
         char *tok = next(p);
-        if (tok != NULL && strcmp(tok, "big") == 0) {
-            s->def.N = NOCT_N_EXHAUSTIVE;
+        if (tok != NULL && (strcmp(tok, "big") == 0 || strcmp(tok, "auto") == 0)) {
+            s->def.N = tok[0] == 'b' ? NOCT_N_EXHAUSTIVE : NOCT_AUTO;
             return end_of_line(p);
         }
         if (tok == NULL)
@@ -511,16 +518,22 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         errno = 0;
         v = strtol(tok, &end, 10);
         if (end == tok || *end != '\0' || errno != 0)
-            return perr(p, NOCT_ERR_PARSE, "N must be an integer or 'big', not '%s'", tok);
+            return perr(p, NOCT_ERR_PARSE, "N must be an integer, 'big' or 'auto', not '%s'",
+                        tok);
         if (v < 1 || v > INT_MAX - 1)
             return perr(p, NOCT_ERR_INVALID,
-                        "N must be at least 1 and below %d (or 'big'), not '%s'", INT_MAX,
-                        tok);
+                        "N must be at least 1 and below %d (or 'big' or 'auto'), not '%s'",
+                        INT_MAX, tok);
         s->def.N = (int)v;
         return end_of_line(p);
     }
     if (strcmp(kw, "max-depth") == 0) {
-        if ((st = integer(p, "max-depth", 1, 40, &v)) != NOCT_OK)
+        const char *tok = next(p);
+        if (tok != NULL && strcmp(tok, "auto") == 0) {
+            s->def.max_depth = NOCT_AUTO;
+            return end_of_line(p);
+        }
+        if ((st = integer_token(p, tok, "max-depth", 1, 40, &v)) != NOCT_OK)
             return st;
         s->def.max_depth = (int)v;
         return end_of_line(p);
@@ -622,20 +635,22 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         if (s->nfamilies == sizeof s->families / sizeof *s->families)
             return perr(p, NOCT_ERR_TOO_LARGE, "too many families");
         scene_family f;
+        noct_gas_kind kind;
         if (tok != NULL && strcmp(tok, "planes") == 0) {
-            f.gas = 0;
+            f.kind = -1;
             st = integer(p, "planes rings", 0, 1000, &f.size);
-        } else if (tok != NULL && strcmp(tok, "gas") == 0) {
-            f.gas = 1;
-            st = integer(p, "gas boxes", 1, 10000000, &f.size);
+        } else if (tok != NULL && noct_gas_kind_of(tok, strlen(tok), &kind)) {
+            f.kind = (int)kind;
+            st = integer(p, "boxes", 1, 10000000, &f.size);
         } else {
-            return perr(p, NOCT_ERR_INVALID, "unknown family '%s' (planes or gas)",
+            return perr(p, NOCT_ERR_INVALID,
+                        "unknown family '%s' (planes, gas, mixed, clusters, static or escape)",
                         tok ? tok : "");
         }
         if (st != NOCT_OK || (st = end_of_line(p)) != NOCT_OK ||
-            (st = count_objects(p, f.gas ? (uint64_t)f.size
-                                         : 2 * (uint64_t)(2 * f.size + 1) *
-                                               (uint64_t)(2 * f.size + 1))) != NOCT_OK)
+            (st = count_objects(p, f.kind >= 0 ? (uint64_t)f.size
+                                               : 2 * (uint64_t)(2 * f.size + 1) *
+                                                     (uint64_t)(2 * f.size + 1))) != NOCT_OK)
             return st;
         s->families[s->nfamilies++] = f;
         return NOCT_OK;
@@ -726,17 +741,18 @@ noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
     long size = colon ? strtol(colon + 1, &end, 10) : -1;
     const size_t len = colon ? (size_t)(colon - spec) : 0;
     const bool number = colon && end != colon + 1 && *end == '\0' && errno == 0;
-    int gas = number && len == 3 && strncmp(spec, "gas", 3) == 0;
-    int planes = number && len == 6 && strncmp(spec, "planes", 6) == 0;
-    int arms = number && len == 4 && strncmp(spec, "arms", 4) == 0;
-    int keyframes = number && len == 9 && strncmp(spec, "keyframes", 9) == 0;
+    noct_gas_kind kind = NOCT_GAS_UNIFORM;
+    const bool gas = number && noct_gas_kind_of(spec, len, &kind);
+    const bool planes = number && len == 6 && strncmp(spec, "planes", 6) == 0;
+    const bool arms = number && len == 4 && strncmp(spec, "arms", 4) == 0;
+    const bool keyframes = number && len == 9 && strncmp(spec, "keyframes", 9) == 0;
     if ((!gas && !planes && !arms && !keyframes) || (planes && (size < 0 || size > 1000)) ||
         (gas && (size < 1 || size > 10000000)) || (arms && (size < 1 || size > 8)) ||
         (keyframes && (size < 1 || size > 100000)))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "unknown scene '%s' (planes:K with K 0 to 1000, gas:N with N "
-                         "1 to 10000000, arms:K with K 1 to 8, or keyframes:N with N 1 to "
-                         "100000)", spec);
+                         "unknown scene '%s' (planes:K with K 0 to 1000; gas:N, mixed:N, "
+                         "clusters:N, static:N or escape:N with N 1 to 10000000; arms:K with "
+                         "K 1 to 8; or keyframes:N with N 1 to 100000)", spec);
     noctScene *s = scene_new();
     if (s == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
@@ -749,9 +765,9 @@ noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
         *scene = s;
         return NOCT_OK;
     }
-    s->families[s->nfamilies++] = (scene_family){gas, size};
-    if (gas) {
-        double lb = noctGasContainerSize((size_t)size);
+    s->families[s->nfamilies++] = (scene_family){gas ? (int)kind : -1, size};
+    if (gas && noct_gas_kind_walls(kind)) {
+        double lb = noct_gas_kind_container(kind, (size_t)size);
         for (int k = 0; k < 3; ++k) {
             s->def.walls_lo[k] = 0;
             s->def.walls_hi[k] = lb;
@@ -772,8 +788,9 @@ noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err
     if (st != NOCT_OK)
         return st;
     for (size_t i = 0; i < s->nfamilies && st == NOCT_OK; ++i) {
-        if (s->families[i].gas) {
-            st = noctWorldAddGas(w, (size_t)s->families[i].size, err);
+        if (s->families[i].kind >= 0) {
+            st = noct_world_add_gas_kind(w, (noct_gas_kind)s->families[i].kind,
+                                         (size_t)s->families[i].size, err);
         } else {
             if (s->unit_cube == NULL)
                 st = noctMeshCreateBox(0.5, 0.5, 0.5, &s->unit_cube, err);

@@ -49,7 +49,7 @@ typedef struct scene_object {
 } scene_object;
 
 typedef struct scene_family {
-    int gas;      /* 0 planes, 1 gas */
+    int kind;     /* -1 planes, else a noct_gas_kind */
     long size;
 } scene_family;
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "families_internal.h"
 #include "internal.h"
 #include "mesh_internal.h"
 #include "scene_internal.h"
@@ -54,11 +55,15 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
     NOCT_REQUIRE(s != NULL && f != NULL);
     const noctWorldDef *d = &s->def;
     fprintf(f, "# a libnoctree scene (noctree-scene(5)), written by noctSceneWrite()\n");
-    if (d->N == NOCT_N_EXHAUSTIVE)
-        fprintf(f, "N big\n");
+    if (d->N == NOCT_N_EXHAUSTIVE || d->N == NOCT_AUTO)
+        fprintf(f, "N %s\n", d->N == NOCT_AUTO ? "auto" : "big");
     else
         fprintf(f, "N %d\n", d->N);
-    fprintf(f, "max-depth %d\naccuracy %s\nmaintenance %s\nsteps %d\n", d->max_depth,
+    if (d->max_depth == NOCT_AUTO)
+        fprintf(f, "max-depth auto\n");
+    else
+        fprintf(f, "max-depth %d\n", d->max_depth);
+    fprintf(f, "accuracy %s\nmaintenance %s\nsteps %d\n",
             d->accuracy == NOCT_ACCURACY_BOX      ? "box"
             : d->accuracy == NOCT_ACCURACY_CONVEX ? "convex"
                                                   : "exact",
@@ -83,7 +88,10 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             fprintf(f, "mesh %s file %s\n", m->name, m->file);
     }
     for (size_t i = 0; i < s->nfamilies; ++i)
-        fprintf(f, "family %s %ld\n", s->families[i].gas ? "gas" : "planes", s->families[i].size);
+        fprintf(f, "family %s %ld\n",
+                s->families[i].kind < 0 ? "planes"
+                                        : noct_gas_kind_name((noct_gas_kind)s->families[i].kind),
+                s->families[i].size);
     for (size_t i = 0; i < s->nobjects; ++i) {
         const scene_object *o = &s->objects[i];
         fprintf(f, "object %s", s->meshes[o->mesh].name);

@@ -32,8 +32,8 @@ double noct_seconds(void)
 noctWorldDef noctDefaultWorldDef(void)
 {
     noctWorldDef d;
-    d.N = 10;
-    d.max_depth = 10;
+    d.N = NOCT_AUTO;
+    d.max_depth = NOCT_AUTO;
     d.accuracy = NOCT_ACCURACY_EXACT;
     d.effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | NOCT_EFFECT_RESPONSE;
     d.maintenance = NOCT_MAINTAIN_INCREMENTAL;
@@ -47,12 +47,6 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
 {
     NOCT_REQUIRE(def != NULL && world != NULL);
     *world = NULL;
-    if (def->N < 1)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "N is %d; it must be at least 1",
-                         def->N);
-    if (def->max_depth < 1 || def->max_depth > 40)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "max_depth is %d; it must be 1 to 40", def->max_depth);
     if (def->accuracy != NOCT_ACCURACY_BOX && def->accuracy != NOCT_ACCURACY_CONVEX &&
         def->accuracy != NOCT_ACCURACY_EXACT)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown accuracy %d",
@@ -80,6 +74,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
     noctWorld *w = calloc(1, sizeof *w);
     if (w == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    /* N and the depth are checked (and, for NOCT_AUTO, chosen) there */
     noctBroadphaseDef bd = noctDefaultBroadphaseDef();
     bd.N = def->N;
     bd.max_depth = def->max_depth;

@@ -553,13 +553,13 @@ START_TEST(bad_input_changes_nothing)
     noctBroadphaseDef def = noctDefaultBroadphaseDef();
     noctBroadphase *bp;
     noctError err;
-    def.N = 0;
+    def.N = -1;
     ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
     ck_assert_ptr_null(bp);
     def = noctDefaultBroadphaseDef();
     def.max_depth = 41;
     ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
-    def.max_depth = 0;
+    def.max_depth = -1;
     ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_ERR_INVALID);
     def = noctDefaultBroadphaseDef();
     def.bounds_lo[1] = NAN;

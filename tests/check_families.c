@@ -723,7 +723,7 @@ static noctWorld *build_family(const char *spec, noctScene **scene)
     ck_assert_msg(noctSceneBuild(*scene, &w, &err) == NOCT_OK, "noctSceneBuild(%s): %s", spec,
                   err.message);
     const noctWorldDef *def = noctSceneDef(*scene);
-    ck_assert_int_eq(def->N, 10);
+    ck_assert_int_eq(def->N, NOCT_AUTO);
     ck_assert_int_eq(def->accuracy, NOCT_ACCURACY_EXACT);
     ck_assert_uint_eq(def->effects, NOCT_EFFECT_EVENTS | NOCT_EFFECT_TRACK);
     return w;

@@ -1023,7 +1023,7 @@ START_TEST(bad_input_changes_nothing)
 {
     noctMesh *cube = make_box(0.5, 0.5, 0.5);
     noctWorld *w;
-    ck_assert_int_eq(noctWorldCreate(&(noctWorldDef){0}, &w, NULL), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldCreate(&(noctWorldDef){.N = -1}, &w, NULL), NOCT_ERR_INVALID);
     noctWorldDef wd = noctDefaultWorldDef();
     ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
     noctObjectDef d = noctDefaultObjectDef();

@@ -1104,7 +1104,7 @@ START_TEST(handles_and_bad_input)
     noctWorldDestroy(w);
 
     noctWorldDef def = noctDefaultWorldDef();
-    def.N = 0;
+    def.N = -1;
     ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_ERR_INVALID);
     ck_assert_ptr_null(w);
     def = noctDefaultWorldDef();

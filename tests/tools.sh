@@ -10,12 +10,19 @@ bench="$top_builddir/tools/noctree-bench"
 
 # ---- octprint ------------------------------------------------------------
 
-"$octprint" --scene planes:3 --step 60 --dot "$tmp/t3.dot" --svg "$tmp/t3.svg" \
-    > "$tmp/t3.txt" 2> "$tmp/err"
+"$octprint" --scene planes:3 --step 60 --N 10 --max-depth 10 --dot "$tmp/t3.dot" \
+    --svg "$tmp/t3.svg" > "$tmp/t3.txt" 2> "$tmp/err"
 check "octprint planes:3 --step 60 exits 0" [ $? -eq 0 ]
 check "octprint: nothing on stderr" [ ! -s "$tmp/err" ]
 check "octprint: header names 98 objects and step 60" \
-    grep -q '^# planes:3, N = 10, step 60: 98 objects' "$tmp/t3.txt"
+    grep -q '^# planes:3, N = 10, max depth 10, step 60: 98 objects' "$tmp/t3.txt"
+check "octprint: a split tree at N = 10" [ "$(wc -l < "$tmp/t3.txt")" -gt 9 ]
+# At the defaults the world chooses: N = 128 holds t3's 98 cubes in the root.
+"$octprint" --scene planes:3 --step 60 > "$tmp/auto.txt"
+check "octprint: the defaults say what was chosen" \
+    grep -q '^# planes:3, N = 128 (auto), max depth [0-9]* (auto), step 60: 98 objects' \
+    "$tmp/auto.txt"
+check "octprint: the defaults' tree is the root" [ "$(wc -l < "$tmp/auto.txt")" -eq 2 ]
 check "octprint: one root line" [ "$(grep -c '^OMEGA 0: ' "$tmp/t3.txt")" -eq 1 ]
 # Every node line: indentation of two spaces per generation, a child type,
 # the generation, the cube; the node count is 1 + 8 * (split nodes).
@@ -123,6 +130,6 @@ SCENE
 "$octprint" --step 10 "$tmp/turned.scene" > "$tmp/turned.txt" 2> "$tmp/err"
 check "octprint on a turned scene exits 0" [ $? -eq 0 ]
 check "octprint: the turned scene's 4 objects at step 10" \
-    grep -q 'turned.scene, N = 2, step 10: 4 objects' "$tmp/turned.txt"
+    grep -q 'turned.scene, N = 2, max depth [0-9]* (auto), step 10: 4 objects' "$tmp/turned.txt"
 
 finish tools

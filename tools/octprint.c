@@ -24,8 +24,8 @@ static const char usage[] =
     "\n"
     "  --scene FAMILY     a built-in scene: planes:K or gas:N\n"
     "  --step S           run S steps first (default 0: the tree as built)\n"
-    "  --N N|big          most objects per octree leaf\n"
-    "  --max-depth D      deepest octree level, 1 to 40\n"
+    "  --N N|big|auto     most objects per octree leaf\n"
+    "  --max-depth D|auto deepest octree level, 1 to 40\n"
     "  --dot FILE         also write the tree as Graphviz dot ('-': stdout)\n"
     "  --svg FILE         also draw a slice of the cells and objects as SVG\n"
     "  --slice AXIS=V     the slice: x, y or z equal to V (default: z through\n"
@@ -331,10 +331,15 @@ int main(int argc, char **argv)
             tool_error("step %ld: %s", s, err.message);
             status = 1;
         }
+    /* the settings in force, and whether the world chose them */
+    int N, depth;
+    noctBroadphaseGetSettings(noctWorldBroadphase(w), &N, &depth);
     char title[256], nb[16];
-    snprintf(nb, sizeof nb, "%d", def->N);
-    snprintf(title, sizeof title, "%s, N = %s, step %ld", sa.family ? sa.family : sa.file,
-             def->N == NOCT_N_EXHAUSTIVE ? "big" : nb, steps);
+    snprintf(nb, sizeof nb, "%d", N);
+    snprintf(title, sizeof title, "%s, N = %s%s, max depth %d%s, step %ld",
+             sa.family ? sa.family : sa.file, N == NOCT_N_EXHAUSTIVE ? "big" : nb,
+             def->N == NOCT_AUTO ? " (auto)" : "", depth,
+             def->max_depth == NOCT_AUTO ? " (auto)" : "", steps);
     if (status == 0 && text) {
         printf("# %s: %zu objects; each line: child type, generation: cube (low corner, "
                "edge) and a leaf's objects\n", title, noctWorldObjectCount(w));

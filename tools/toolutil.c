@@ -58,6 +58,8 @@ bool tool_parse_N(const char *s, int *N)
     long n;
     if (strcmp(s, "big") == 0)
         *N = NOCT_N_EXHAUSTIVE;
+    else if (strcmp(s, "auto") == 0)
+        *N = NOCT_AUTO;
     else if (tool_parse_long(s, 1, INT_MAX - 1, &n))
         *N = (int)n;
     else
@@ -86,12 +88,17 @@ int tool_scene_arg(tool_scene_args *a, int argc, char **argv, int *i)
         a->family = argv[++*i];
     } else if (strcmp(arg, "--N") == 0 && has) {
         if (!tool_parse_N(argv[++*i], &a->N))
-            return tool_usage_error("--N must be a positive integer or 'big', not '%s'",
+            return tool_usage_error("--N must be a positive integer, 'big' or 'auto', not '%s'",
                                     argv[*i]), -1;
+        a->set_N = true;
     } else if (strcmp(arg, "--max-depth") == 0 && has) {
-        if (!tool_parse_long(argv[++*i], 1, 40, &v))
-            return tool_usage_error("--max-depth must be 1 to 40, not '%s'", argv[*i]), -1;
+        if (strcmp(argv[++*i], "auto") == 0)
+            v = NOCT_AUTO;
+        else if (!tool_parse_long(argv[*i], 1, 40, &v))
+            return tool_usage_error("--max-depth must be 1 to 40 or 'auto', not '%s'", argv[*i]),
+                   -1;
         a->depth = (int)v;
+        a->set_depth = true;
     } else if (arg[0] == '-' && arg[1] != '\0') {
         return 0;
     } else if (a->file == NULL) {
@@ -114,9 +121,9 @@ int tool_scene_load(const tool_scene_args *a, noctScene **scene)
         return 2;
     }
     noctWorldDef *def = noctSceneDef(*scene);
-    if (a->N > 0)
+    if (a->set_N)
         def->N = a->N;
-    if (a->depth > 0)
+    if (a->set_depth)
         def->max_depth = a->depth;
     return 0;
 }

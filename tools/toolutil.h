@@ -27,17 +27,18 @@ bool tool_parse_long(const char *s, long lo, long hi, long *out);
 /* s is a whole finite decimal number in [lo, hi]. */
 bool tool_parse_double(const char *s, double lo, double hi, double *out);
 
-/* s is a positive integer or "big" (NOCT_N_EXHAUSTIVE). */
+/* s is a positive integer, "big" (NOCT_N_EXHAUSTIVE) or "auto" (NOCT_AUTO). */
 bool tool_parse_N(const char *s, int *N);
 
 /* s is "box", "convex" or "exact". */
 bool tool_parse_accuracy(const char *s, noctAccuracy *accuracy);
 
 /* The scene a tool runs: a file or --scene FAMILY, with --N and
- * --max-depth (0: the scene's own values). */
+ * --max-depth when given (set_N, set_depth), else the scene's own. */
 typedef struct tool_scene_args {
     const char *family, *file;
     int N, depth;
+    bool set_N, set_depth;
 } tool_scene_args;
 
 /* If argv[*i] is --scene, --N or --max-depth with a value, or a scene

@@ -51,6 +51,44 @@
  * status, never by aborting, but for violated requires clauses in the
  * defensive build.
  *
+ * **Settings.** N and the maximum depth are the two parameters of the
+ * report's tree. Given as numbers, they are kept exactly (Table 1's
+ * experiment and the tests fix N). Given as #NOCT_AUTO (the default),
+ * the broadphase chooses them each time it builds its tree: when the
+ * first proxy comes, when the root grows or shrinks, after a failure,
+ * and when the number of proxies has grown or shrunk by a factor of 4
+ * since the last choice (which then rebuilds the tree; a factor, not a
+ * difference, so that a population that changes by a little never
+ * rebuilds, and one that grows steadily rebuilds a logarithmic number of
+ * times, in linear time in all). The choice is a pure function of the
+ * proxies' boxes in their slots and the root's size, so the same
+ * operations give the same tree on every run and in both builds:
+ * - N is 128 whatever the proxies: measured over every scene family of
+ *   the tools, at 1 000 to 1 000 000 objects and N from 5 to 128
+ *   (docs/results.md, "Fast at the defaults"), the step time is flat
+ *   from about N = 30 up, within the run's noise, and memory falls as N
+ *   grows; small N loses up to 3 times, because leaves smaller than
+ *   their boxes make every box span many leaves. (The leaves' sweeps,
+ *   see Pairs, keep a large leaf cheap.) Box, point and segment queries
+ *   test the boxes of the leaves they meet, so a larger N costs them a
+ *   little; a program that mostly queries may want a smaller N.
+ * - max_depth comes from the proxies' sizes against the root's: a box of
+ *   extent e (its largest side) can make a leaf split only while it is at
+ *   most half the leaf's size, so it can bring about leaves down to the
+ *   generation D(e) = 1 + max{d : e <= root 2^-(d+1)}. The maximum depth
+ *   is D of the 99th percentile of the boxes, counted from the largest
+ *   (1 at least, 40 at most; 40 if more than 1 in 100 are points), over
+ *   all the live proxies or, beyond 4096 slots, every k-th slot for
+ *   about 4096 of them. So the depth never stops 99 in 100 proxies from
+ *   being separated, and coincident or crowded proxies stop splitting
+ *   near their own size instead of at a fixed depth.
+ *
+ * noctBroadphaseGetSettings() tells what is in force. What the choice
+ * does not see: between two choices the population may change by up to
+ * the factor of 4, and boxes may change size, without the settings
+ * following; a tree whose maximum depth became too shallow for new small
+ * boxes gives the same pairs, in leaves that hold more than N.
+ *
  * **Threads.** A broadphase is not thread-safe; distinct broadphases may
  * be used from distinct threads.
  * @{
@@ -91,6 +129,10 @@ typedef struct noctProxyPair {
     noctProxyId b; /**< The proxy with the larger index. */
 } noctProxyPair;
 
+/** N or max_depth chosen by the broadphase itself (see "Settings" above):
+ *  the default of both. */
+#define NOCT_AUTO 0
+
 /** N that never splits the root: the exhaustive algorithm ("N = big"). */
 #define NOCT_N_EXHAUSTIVE 0x7fffffff
 
@@ -100,11 +142,14 @@ typedef struct noctProxyPair {
 /** @brief Parameters of a broadphase; fill with noctDefaultBroadphaseDef(). */
 typedef struct noctBroadphaseDef {
     int N;               /**< Most proxies per leaf that a split could
-                              separate (1 or more), or #NOCT_N_EXHAUSTIVE
+                              separate (1 or more), #NOCT_N_EXHAUSTIVE
                               (never split: every pair of proxies is a
-                              candidate). Default 10. */
-    int max_depth;       /**< Deepest leaf generation, 1 to 40; see also
-                              the finest cell under Limits. Default 10. */
+                              candidate), or #NOCT_AUTO (chosen; see
+                              Settings). Default #NOCT_AUTO. */
+    int max_depth;       /**< Deepest leaf generation, 1 to 40, or
+                              #NOCT_AUTO (chosen; see Settings); see also
+                              the finest cell under Limits. Default
+                              #NOCT_AUTO. */
     double bounds_lo[3]; /**< Bounds hint: the first root covers this box as
                               well as the proxies. Ignored unless
                               bounds_lo < bounds_hi on every axis. Default
@@ -135,7 +180,8 @@ typedef struct noctBroadphaseCounters {
 
 /**
  * @brief Return the default parameters.
- * @return N = 10, max_depth = 10, no bounds hint.
+ * @return N and max_depth #NOCT_AUTO (chosen from the proxies), no
+ *         bounds hint.
  */
 NOCT_API noctBroadphaseDef noctDefaultBroadphaseDef(void);
 
@@ -144,7 +190,7 @@ NOCT_API noctBroadphaseDef noctDefaultBroadphaseDef(void);
  * @pre def != NULL && bp != NULL
  * @post On #NOCT_OK, *bp is a new broadphase with no proxies. Otherwise
  *       *bp is NULL and err (if not NULL) says why: #NOCT_ERR_INVALID for
- *       N < 1 or max_depth outside 1..40, #NOCT_ERR_NONFINITE for a bounds
+ *       N < 0 or max_depth outside 0..40 (0 is #NOCT_AUTO), #NOCT_ERR_NONFINITE for a bounds
  *       hint that is not finite, #NOCT_ERR_TOO_LARGE for one beyond
  *       #NOCT_MAX_COORDINATE, #NOCT_ERR_NOMEM.
  * @param def the parameters.
@@ -154,6 +200,20 @@ NOCT_API noctBroadphaseDef noctDefaultBroadphaseDef(void);
  */
 NOCT_API noctStatus noctBroadphaseCreate(const noctBroadphaseDef *def, noctBroadphase **bp,
                                          noctError *err);
+
+/**
+ * @brief The N and maximum depth in force: as given to
+ *        noctBroadphaseCreate(), or as last chosen for #NOCT_AUTO (see
+ *        Settings).
+ * @pre bp != NULL
+ * @post *N and *max_depth (each optional, NULL for none) hold them; before
+ *       the first proxy, a #NOCT_AUTO N reads 128 and a #NOCT_AUTO depth
+ *       40.
+ * @param bp the broadphase.
+ * @param N receives N, or NULL.
+ * @param max_depth receives the maximum depth, or NULL.
+ */
+NOCT_API void noctBroadphaseGetSettings(const noctBroadphase *bp, int *N, int *max_depth);
 
 /**
  * @brief Free a broadphase and its tree. NULL is allowed.

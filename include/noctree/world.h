@@ -196,12 +196,16 @@ typedef enum noctMaintenance {
 typedef struct noctWorldDef {
     int N;                  /**< Most objects per leaf that a split could
                                  separate (1 or more; see "The octree"
-                                 above), or #NOCT_N_EXHAUSTIVE. Default 10. */
-    int max_depth;          /**< Deepest leaf generation (1 to 40); leaves
+                                 above), #NOCT_N_EXHAUSTIVE, or #NOCT_AUTO:
+                                 chosen by the world's broadphase from
+                                 what it holds (broadphase.h, Settings).
+                                 Default #NOCT_AUTO. */
+    int max_depth;          /**< Deepest leaf generation (1 to 40), or
+                                 #NOCT_AUTO (chosen as N is); leaves
                                  there, and leaves at the finest cell size
                                  far from the origin (broadphase.h,
                                  Limits), may hold more than N. Default
-                                 10. */
+                                 #NOCT_AUTO. */
     noctAccuracy accuracy;  /**< Narrowphase level. Default exact. */
     unsigned effects;       /**< #noctEffect bits. Default: motion, events
                                  and response. */
@@ -336,7 +340,7 @@ typedef struct noctWorldCounters {
 
 /**
  * @brief Return the default world parameters.
- * @return N = 10, max_depth = 10, exact accuracy, the effects motion,
+ * @return N and max_depth #NOCT_AUTO, exact accuracy, the effects motion,
  *         events and response (not walls or sub-steps), incremental
  *         maintenance.
  */
