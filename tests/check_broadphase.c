@@ -146,13 +146,13 @@ static void move_one(noctBroadphase *bp, model *m, int i, double scene)
     ck_assert_int_eq(noctBroadphaseMove(bp, m->id[i], m->lo[i], m->hi[i], &err), NOCT_OK);
 }
 
-static const int CONFIG_N[] = {1, 2, 10, NOCT_N_EXHAUSTIVE};
-static const int CONFIG_DEPTH[] = {3, 10, 40};
+static const int CONFIG_N[] = {1, 2, 10, NOCT_N_EXHAUSTIVE, NOCT_AUTO};
+static const int CONFIG_DEPTH[] = {3, 10, 40, NOCT_AUTO};
 
 /* Random scenes in every configuration, checked after every batch. */
 START_TEST(pairs_against_brute_force)
 {
-    const int N = CONFIG_N[_i % 4], depth = CONFIG_DEPTH[_i / 4];
+    const int N = CONFIG_N[_i % 5], depth = CONFIG_DEPTH[_i / 5];
     rng = 0x1234567u + (uint64_t)_i;
     noctBroadphaseDef def = noctDefaultBroadphaseDef();
     def.N = N;
@@ -466,6 +466,136 @@ static void walk_tree(walk *w, octNode *n)
     ck_assert_uint_eq(n_in, want);
 }
 
+/* ---- the automatic settings ---------------------------------------------------- */
+
+static int cmp_int(const void *a, const void *b)
+{
+    return *(const int *)a - *(const int *)b;
+}
+
+/* broadphase.h's rule for the automatic depth, from the test's own boxes:
+ * D(e) = 1 + max{d : e <= root 2^-(d+1)} (40 at most) for every live box,
+ * and D of the 99th percentile counted from the largest boxes; at least 1.
+ * (Up to 4096 proxies, every one is in the sample.) */
+static int expected_depth(const model *m, double root)
+{
+    static int D[MAXP];
+    int n = 0;
+    for (int i = 0; i < m->n; ++i) {
+        if (!m->alive[i])
+            continue;
+        double e = 0;
+        for (int k = 0; k < 3; ++k)
+            e = fmax(e, m->hi[i][k] - m->lo[i][k]);
+        int d = 0;
+        while (d < 40 && e <= ldexp(root, -(d + 1)))
+            ++d;
+        D[n++] = d;
+    }
+    if (n == 0)
+        return 1;
+    qsort(D, (size_t)n, sizeof *D, cmp_int);
+    const int at = D[n - n / 100 - 1];
+    return at < 1 ? 1 : at;
+}
+
+static double root_size(const noctBroadphase *bp)
+{
+    double lo[3], size = 0;
+    noctBroadphaseCell(bp, noctBroadphaseRoot(bp), lo, &size, NULL, 0);
+    return size;
+}
+
+static uint64_t rebuilds_of(const noctBroadphase *bp)
+{
+    noctBroadphaseCounters c;
+    noctBroadphaseGetCounters(bp, &c);
+    return c.rebuilds;
+}
+
+/*
+ * The defaults choose N and the depth at every build, from the boxes then
+ * live; a population that grows or shrinks by more than a factor of 4
+ * since the last choice builds again (and one that does not, does not
+ * for that reason); settings given as numbers are kept whatever happens.
+ * After every operation the test checks the settings in force against
+ * its own reading of the rule, and the pairs against brute force.
+ */
+START_TEST(automatic_settings)
+{
+    rng = 0xa17u + (uint64_t)_i;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    ck_assert_int_eq(def.N, NOCT_AUTO);
+    ck_assert_int_eq(def.max_depth, NOCT_AUTO);
+    const bool fixed = _i == 1;
+    if (fixed) {
+        def.N = 7;
+        def.max_depth = 9;
+    }
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    size_t chosen_for = 0, live = 0;
+    int want_depth = fixed ? 9 : 40;
+    uint64_t rebuilds = 0, depths_seen = 0; /* bit d: depth d was chosen */
+    /* After an operation: a build chose again (the test's expectation of
+     * the depth follows), and none was owed and skipped. */
+    #define AFTER(op_grows)                                                                \
+        do {                                                                               \
+            const uint64_t r = rebuilds_of(bp);                                            \
+            if (!fixed && ((op_grows) ? live > 4 * chosen_for : live * 4 < chosen_for))   \
+                ck_assert_msg(r > rebuilds, "%zu proxies, chosen for %zu: no new choice",  \
+                              live, chosen_for);                                           \
+            if (r > rebuilds && !fixed) {                                                  \
+                chosen_for = live;                                                         \
+                want_depth = expected_depth(&m, root_size(bp));                            \
+            }                                                                              \
+            rebuilds = r;                                                                  \
+            int N_now, depth_now;                                                          \
+            noctBroadphaseGetSettings(bp, &N_now, &depth_now);                             \
+            ck_assert_int_eq(N_now, fixed ? 7 : 128);                                      \
+            ck_assert_int_eq(depth_now, want_depth);                                       \
+            depths_seen |= (uint64_t)1 << depth_now;                                       \
+        } while (0)
+    /* 150 boxes of every size, then 400 small ones that need a deeper
+     * tree, then most of them removed */
+    m.n = 550;
+    for (int i = 0; i < m.n; ++i) {
+        if (i < 150) {
+            add_one(bp, &m, i, 20);
+        } else {
+            for (int k = 0; k < 3; ++k) {
+                m.lo[i][k] = 20 * uniform();
+                m.hi[i][k] = m.lo[i][k] + 1e-3;
+            }
+            ck_assert_int_eq(noctBroadphaseAdd(bp, m.lo[i], m.hi[i], NULL, NOCT_FILTER_ALL,
+                                               NOCT_FILTER_ALL, &m.id[i], &err), NOCT_OK);
+            m.cat[i] = m.mask[i] = NOCT_FILTER_ALL;
+            m.alive[i] = true;
+        }
+        ++live;
+        AFTER(true);
+    }
+    check_pairs(bp, &m);
+    for (int i = 0; i < m.n; ++i)
+        if (i % 8 != 0) {
+            ck_assert_int_eq(noctBroadphaseRemove(bp, m.id[i]), NOCT_OK);
+            m.alive[i] = false;
+            --live;
+            /* a removal owes the new choice to the next search */
+            ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+            AFTER(false);
+        }
+    check_pairs(bp, &m);
+    /* the choice followed the population (a constant would pass the rest) */
+    ck_assert(fixed ? depths_seen == (uint64_t)1 << 9 : (depths_seen & (depths_seen - 1)) != 0);
+    #undef AFTER
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
 START_TEST(leaves_and_counters)
 {
     rng = 77;
@@ -730,10 +860,11 @@ int main(void)
     Suite *s = suite_create("broadphase");
     TCase *tc = tcase_create("brute force");
     tcase_set_timeout(tc, 300);
-    tcase_add_loop_test(tc, pairs_against_brute_force, 0, 12);
+    tcase_add_loop_test(tc, pairs_against_brute_force, 0, 20);
     tcase_add_loop_test(tc, queries_against_brute_force, 0, 2);
     suite_add_tcase(s, tc);
     tc = tcase_create("tree");
+    tcase_add_loop_test(tc, automatic_settings, 0, 2);
     tcase_add_test(tc, leaves_and_counters);
     tcase_add_test(tc, fast_path_and_pair_callbacks);
     tcase_add_test(tc, world_broadphase_is_the_objects);

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <noctree/scene.h>
 #include <noctree/world.h>
 
 #include "testutil.h"
@@ -53,7 +54,7 @@ static size_t run_planes(int k, int N, noctMaintenance mode, int validate_every,
 {
     noctMesh *cube;
     ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &cube, NULL), NOCT_OK);
-    noctWorld *w = make_world(N, 6, mode);
+    noctWorld *w = make_world(N, N == NOCT_AUTO ? NOCT_AUTO : 6, mode);
     ck_assert_int_eq(noctWorldAddPlanes(w, k, cube, NULL), NOCT_OK);
     ck_assert_uint_eq(noctWorldObjectCount(w), (size_t)(2 * (2 * k + 1) * (2 * k + 1)));
     size_t begins = 0;
@@ -83,7 +84,7 @@ static size_t run_planes(int k, int N, noctMaintenance mode, int validate_every,
 START_TEST(planes_counts_across_N_and_modes)
 {
     static const int ks[] = {0, 1, 2, 3, 5, 10};
-    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE};
+    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE, NOCT_AUTO};
     int k = ks[_i];
     size_t want = (size_t)((2 * k + 1) * (2 * k + 1));
     uint64_t first = 0;
@@ -105,7 +106,7 @@ END_TEST
  * events throughout. (k <= 10 runs every N in both modes above.) */
 START_TEST(planes_t20_t30)
 {
-    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE};
+    static const int Ns[] = {1, 2, 5, 10, 30, 50, NOCT_N_EXHAUSTIVE, NOCT_AUTO};
     int k = _i == 0 ? 20 : 30;
     size_t want = (size_t)((2 * k + 1) * (2 * k + 1));
     uint64_t first = 0, h;
@@ -128,7 +129,7 @@ static size_t run_gas(size_t n, int N, noctMaintenance mode, uint64_t *hash)
 {
     noctWorldDef def = noctDefaultWorldDef();
     def.N = N;
-    def.max_depth = 8;
+    def.max_depth = N == NOCT_AUTO ? NOCT_AUTO : 8;
     def.maintenance = mode;
     def.effects |= NOCT_EFFECT_WALLS;
     double lb = noctGasContainerSize(n);
@@ -160,18 +161,78 @@ static size_t run_gas(size_t n, int N, noctMaintenance mode, uint64_t *hash)
 
 START_TEST(gas_1000_known_answer)
 {
-    uint64_t h1, h2;
+    uint64_t h1, h2, h3;
     ck_assert_uint_eq(run_gas(1000, 10, NOCT_MAINTAIN_INCREMENTAL, &h1), 6212);
     ck_assert_uint_eq(run_gas(1000, 30, NOCT_MAINTAIN_REBUILD, &h2), 6212);
-    ck_assert(h1 == h2);
+    ck_assert_uint_eq(run_gas(1000, NOCT_AUTO, NOCT_MAINTAIN_INCREMENTAL, &h3), 6212);
+    ck_assert(h1 == h2 && h1 == h3);
 }
 END_TEST
 
 /* gas_10000: 77 281 events, the reference's answer. */
 START_TEST(gas_10000_known_answer)
 {
-    uint64_t h;
+    uint64_t h, h_auto;
     ck_assert_uint_eq(run_gas(10000, 30, NOCT_MAINTAIN_INCREMENTAL, &h), 77281);
+    ck_assert_uint_eq(run_gas(10000, NOCT_AUTO, NOCT_MAINTAIN_INCREMENTAL, &h_auto), 77281);
+    ck_assert(h == h_auto);
+}
+END_TEST
+
+/* A family from noctSceneFamily() at N (NOCT_AUTO: the depth too, else
+ * depth 10) and maintenance mode, its steps; its begins and their hash. */
+static size_t run_family(const char *spec, int N, noctMaintenance mode, uint64_t *hash)
+{
+    noctScene *sc;
+    noctWorld *w;
+    noctError err;
+    ck_assert_msg(noctSceneFamily(spec, &sc, &err) == NOCT_OK, "%s", err.message);
+    noctWorldDef *def = noctSceneDef(sc);
+    def->N = N;
+    def->max_depth = N == NOCT_AUTO ? NOCT_AUTO : 10;
+    def->maintenance = mode;
+    ck_assert_msg(noctSceneBuild(sc, &w, &err) == NOCT_OK, "%s", err.message);
+    size_t begins = 0;
+    uint64_t h = 1469598103934665603u;
+    for (int s = 1; s <= noctSceneSteps(sc); ++s) {
+        step_ok(w);
+        const noctPair *p;
+        const size_t nb = noctWorldBegan(w, &p);
+        begins += nb;
+        for (size_t i = 0; i < nb; ++i)
+            h = ((h ^ (uint64_t)s) * 1099511628211u ^ p[i].a.index ^
+                 ((uint64_t)p[i].b.index << 32)) * 1099511628211u;
+        if (s % 50 == 0)
+            validate_ok(w);
+    }
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+    *hash = h;
+    return begins;
+}
+
+/* The gas kinds of noctree-families(7) at 1 000 boxes, 200 steps: the
+ * counts it publishes, and the same event sequence at the defaults, at
+ * N = 5, in rebuild mode and by the exhaustive algorithm (every pair of
+ * boxes a candidate: the brute force of the broadphase). */
+START_TEST(gas_kinds_known_answers)
+{
+    static const struct {
+        const char *spec;
+        size_t begins;
+    } kinds[] = {{"mixed:1000", 2290},
+                 {"clusters:1000", 45451},
+                 {"static:1000", 2079},
+                 {"escape:1000", 1977}};
+    uint64_t h[4];
+    const size_t got = run_family(kinds[_i].spec, NOCT_AUTO, NOCT_MAINTAIN_INCREMENTAL, &h[0]);
+    ck_assert_msg(got == kinds[_i].begins, "%s: %zu begins, want %zu", kinds[_i].spec, got,
+                  kinds[_i].begins);
+    ck_assert_uint_eq(run_family(kinds[_i].spec, 5, NOCT_MAINTAIN_INCREMENTAL, &h[1]), got);
+    ck_assert_uint_eq(run_family(kinds[_i].spec, NOCT_AUTO, NOCT_MAINTAIN_REBUILD, &h[2]), got);
+    ck_assert_uint_eq(
+        run_family(kinds[_i].spec, NOCT_N_EXHAUSTIVE, NOCT_MAINTAIN_INCREMENTAL, &h[3]), got);
+    ck_assert(h[0] == h[1] && h[0] == h[2] && h[0] == h[3]);
 }
 END_TEST
 
@@ -1353,6 +1414,7 @@ int main(void)
     tcase_add_loop_test(tc, planes_t20_t30, 0, 2);
     tcase_add_test(tc, gas_1000_known_answer);
     tcase_add_test(tc, gas_10000_known_answer);
+    tcase_add_loop_test(tc, gas_kinds_known_answers, 0, 4);
     tcase_add_test(tc, planes_timing_and_reversal);
     suite_add_tcase(s, tc);
     tc = tcase_create("random scenes");

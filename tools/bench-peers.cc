@@ -63,7 +63,7 @@
  * differ (its tolerances decide touching boxes and grazing rays).
  *
  * Usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]] [--steps S]
- *                    [--repeats R] [--N N] [--budget SEC] [--libs LIST] [--csv FILE]
+ *                    [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE]
  *                    [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
@@ -293,7 +293,7 @@ struct Options {
     bool broadphase = false; // pairs of boxes only: --broadphase
     int steps = 200;
     int repeats = 3;
-    int N = 30;
+    int N = NOCT_AUTO; // the world's own choice, as users get it
     double budget = 60;
 };
 
@@ -822,7 +822,7 @@ void usage(FILE *f)
 {
     std::fputs("usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]]\n"
                "                   [--steps S] [--repeats R]\n"
-               "                   [--N N] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
+               "                   [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
                "libnoctree,noct-driven,fcl-dtree,ode-sap,ode-hash (default\n"
@@ -1131,8 +1131,10 @@ int main(int argc, char **argv)
         } else if (std::strcmp(a, "--repeats") == 0 && has && parse_int(argv[i + 1], 1, 100, &v)) {
             o.repeats = static_cast<int>(v);
             ++i;
-        } else if (std::strcmp(a, "--N") == 0 && has && parse_int(argv[i + 1], 1, 100000, &v)) {
-            o.N = static_cast<int>(v);
+        } else if (std::strcmp(a, "--N") == 0 && has &&
+                   (std::strcmp(argv[i + 1], "auto") == 0 ||
+                    parse_int(argv[i + 1], 1, 100000, &v))) {
+            o.N = std::strcmp(argv[i + 1], "auto") == 0 ? NOCT_AUTO : static_cast<int>(v);
             ++i;
         } else if (std::strcmp(a, "--budget") == 0 && has && parse_int(argv[i + 1], 1, 86400, &v)) {
             o.budget = static_cast<double>(v);
@@ -1174,13 +1176,14 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    const std::string n_name = o.N == NOCT_AUTO ? std::string("auto") : std::to_string(o.N);
     if (queries > 0) {
         if (scenes.empty())
             scenes = {"gas:10000", "gas:100000"};
-        std::printf("bench-peers --queries: libnoctree %s (efficient build, N = %d, exact) "
+        std::printf("bench-peers --queries: libnoctree %s (efficient build, N = %s, exact) "
                     "against FCL %s (dynamic AABB tree) and Bullet %d.%02d (btDbvtBroadphase), "
                     "%ld queries of each kind on each scene as set up; one thread\n",
-                    NOCT_VERSION_STRING, o.N, FCL_VERSION, BT_BULLET_VERSION / 100,
+                    NOCT_VERSION_STRING, n_name.c_str(), FCL_VERSION, BT_BULLET_VERSION / 100,
                     BT_BULLET_VERSION % 100, queries);
         std::printf("%-12s %-12s %-16s %8s %12s %10s %10s\n", "scene", "library", "query",
                     "queries", "per second", "us each", "found");
@@ -1216,15 +1219,15 @@ int main(int argc, char **argv)
     }
     if (o.broadphase)
         std::printf("bench-peers --broadphase: libnoctree %s's broadphase (efficient build, "
-                    "N = %d) against\nFCL %s (dynamic AABB tree) and ODE %s (sweep and prune; "
+                    "N = %s) against\nFCL %s (dynamic AABB tree) and ODE %s (sweep and prune; "
                     "hash) on the same axis-aligned\nboxes: move, update, find the overlapping "
                     "pairs; no narrowphase; one thread\n",
-                    NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+                    NOCT_VERSION_STRING, n_name.c_str(), FCL_VERSION, NOCT_ODE_VERSION);
     else
-        std::printf("bench-peers: libnoctree %s (efficient build, N = %d, exact) against FCL %s "
+        std::printf("bench-peers: libnoctree %s (efficient build, N = %s, exact) against FCL %s "
                     "(dynamic AABB tree)\nand ODE %s (sweep and prune; hash), each with its own "
                     "box-box test; one thread\n",
-                    NOCT_VERSION_STRING, o.N, FCL_VERSION, NOCT_ODE_VERSION);
+                    NOCT_VERSION_STRING, n_name.c_str(), FCL_VERSION, NOCT_ODE_VERSION);
     if (use[DRIVEN])
         std::printf("noct-driven: libnoctree's world without its motion effect, every object "
                     "moved by the program\nwith noctWorldSetTransform() each step, the response "

@@ -33,6 +33,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <noctree/scene.h>
 #include <noctree/world.h>
 
 static double now(void)
@@ -247,6 +248,208 @@ static int overlap_bench(bool quick)
     return 0;
 }
 
+
+/* ---- sweep: N and the depth over every family, the automatic choice marked -- */
+
+/* The sweep's families: a name and how its size spec is made for about n
+ * objects (0: not at that size). */
+static const char *const SWEEP_FAMILIES[] = {"planes", "gas",    "mixed",     "clusters",
+                                             "static", "escape", "keyframes", "arms"};
+#define SWEEP_NFAMILIES (sizeof SWEEP_FAMILIES / sizeof *SWEEP_FAMILIES)
+
+/* The spec of family f at about n objects into buf; false if the family
+ * has no such size (keyframes stop at 10^5; arms is one size, shown with
+ * 1 000). */
+static bool sweep_spec(size_t f, long n, char *buf, size_t size)
+{
+    const char *name = SWEEP_FAMILIES[f];
+    if (strcmp(name, "planes") == 0) {
+        long k = 0; /* the t_k with 2 (2k+1)^2 nearest n */
+        while (labs(2 * (2 * (k + 1) + 1) * (2 * (k + 1) + 1) - n) <
+               labs(2 * (2 * k + 1) * (2 * k + 1) - n))
+            ++k;
+        snprintf(buf, size, "planes:%ld", k);
+    } else if (strcmp(name, "arms") == 0) {
+        if (n != 1000)
+            return false;
+        snprintf(buf, size, "arms:8");
+    } else if (strcmp(name, "keyframes") == 0 && n > 100000) {
+        return false;
+    } else {
+        snprintf(buf, size, "%s:%ld", name, n);
+    }
+    return true;
+}
+
+typedef struct sweep_job {
+    char spec[32];
+    int N, depth, steps;
+} sweep_job;
+
+typedef struct sweep_result {
+    double median, setup;
+    size_t objects, begins;
+    int N, depth; /* in force after the last step */
+    int ok;
+} sweep_result;
+
+/* One configuration in a child process: the family as noctSceneFamily()
+ * makes it, at N and depth (NOCT_AUTO for the choice), steps steps. */
+static void sweep_child(const void *arg, void *out)
+{
+    const sweep_job *j = arg;
+    sweep_result *r = out;
+    memset(r, 0, sizeof *r);
+    noctScene *sc;
+    noctWorld *w;
+    noctError err;
+    if (noctSceneFamily(j->spec, &sc, &err) != NOCT_OK) {
+        fprintf(stderr, "bench-world: %s: %s\n", j->spec, err.message);
+        return;
+    }
+    noctSceneDef(sc)->N = j->N;
+    noctSceneDef(sc)->max_depth = j->depth;
+    double t0 = now();
+    if (noctSceneBuild(sc, &w, &err) != NOCT_OK) {
+        fprintf(stderr, "bench-world: %s: %s\n", j->spec, err.message);
+        return;
+    }
+    r->setup = now() - t0;
+    r->objects = noctWorldObjectCount(w);
+    double *t = malloc((size_t)j->steps * sizeof *t);
+    for (int s = 0; s < j->steps; ++s) {
+        double a = now();
+        if (noctWorldStep(w, &err) != NOCT_OK) {
+            fprintf(stderr, "bench-world: %s: %s\n", j->spec, err.message);
+            return;
+        }
+        t[s] = now() - a;
+        const noctPair *p;
+        r->begins += noctWorldBegan(w, &p);
+    }
+    qsort(t, (size_t)j->steps, sizeof *t, cmp_double);
+    r->median = t[j->steps / 2];
+    noctBroadphaseGetSettings(noctWorldBroadphase(w), &r->N, &r->depth);
+    free(t);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+    r->ok = 1;
+}
+
+static double median_of(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+#define SWEEP_MAX_CONFIGS 16
+#define SWEEP_MAX_REPEATS 9
+
+/*
+ * For each family and size: N in {5, 10, 20, 30, 50, 80, 128} at the
+ * automatic depth, the depths 6, 8, 10 and 14 at the automatic N, and the
+ * defaults (both automatic); each configuration repeats times, the
+ * configurations taking turns in every repeat; a row is the median over
+ * the repeats of each run's median step, and the peak memory's median.
+ * Under each family and size: the defaults' step time and memory over
+ * those of the fastest hand-picked setting (the sweep's best). The events
+ * must not depend on the settings: the tool fails if they do.
+ */
+static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, int nfams,
+                       int repeats, int steps_arg)
+{
+    static const int sweep_N[] = {5, 10, 20, 30, 50, 80, 128};
+    static const int sweep_depth[] = {6, 8, 10, 14};
+    FILE *csv = fopen("bench-sweep.csv", "w");
+    if (csv == NULL) {
+        perror("bench-world: bench-sweep.csv");
+        return EXIT_FAILURE;
+    }
+    fprintf(csv, "family,size,objects,setting,N,depth,steps,repeats,median_s,setup_s,begins,"
+                 "peak_kib\n");
+    printf("sweep: N and the maximum depth, each row the median of %d interleaved runs\n",
+           repeats);
+    printf("%-16s %8s %-14s %4s %5s %11s %9s %10s %9s\n", "scene", "objects", "setting", "N",
+           "depth", "median ms", "setup s", "peak MiB", "begins");
+    int status = EXIT_SUCCESS;
+    for (int si = 0; si < nsizes; ++si)
+        for (size_t f = 0; f < SWEEP_NFAMILIES; ++f) {
+            bool wanted = nfams == 0;
+            for (int i = 0; i < nfams; ++i)
+                wanted = wanted || strcmp(fams[i], SWEEP_FAMILIES[f]) == 0;
+            sweep_job base;
+            if (!wanted || !sweep_spec(f, sizes[si], base.spec, sizeof base.spec))
+                continue;
+            /* fewer steps for the largest sizes: a step of 10^6 objects
+             * takes about a second at small N */
+            base.steps = steps_arg > 0 ? steps_arg : sizes[si] >= 1000000 ? 10
+                                                 : sizes[si] >= 100000   ? 40
+                                                                         : 100;
+            sweep_job jobs[SWEEP_MAX_CONFIGS];
+            char names[SWEEP_MAX_CONFIGS][16];
+            int nj = 0;
+            jobs[nj] = base;
+            jobs[nj].N = jobs[nj].depth = NOCT_AUTO;
+            snprintf(names[nj++], sizeof *names, "defaults");
+            for (size_t i = 0; i < sizeof sweep_N / sizeof *sweep_N; ++i) {
+                jobs[nj] = base;
+                jobs[nj].N = sweep_N[i];
+                jobs[nj].depth = NOCT_AUTO;
+                snprintf(names[nj++], sizeof *names, "N %d", sweep_N[i]);
+            }
+            for (size_t i = 0; i < sizeof sweep_depth / sizeof *sweep_depth; ++i) {
+                jobs[nj] = base;
+                jobs[nj].N = NOCT_AUTO;
+                jobs[nj].depth = sweep_depth[i];
+                snprintf(names[nj++], sizeof *names, "depth %d", sweep_depth[i]);
+            }
+            double med[SWEEP_MAX_CONFIGS][SWEEP_MAX_REPEATS];
+            double peak[SWEEP_MAX_CONFIGS][SWEEP_MAX_REPEATS];
+            sweep_result res[SWEEP_MAX_CONFIGS];
+            bool failed = false;
+            for (int rep = 0; rep < repeats && !failed; ++rep)
+                for (int j = 0; j < nj && !failed; ++j) {
+                    long kib = 0;
+                    failed = !in_child(sweep_child, &jobs[j], &res[j], sizeof res[j], &kib) ||
+                             !res[j].ok;
+                    med[j][rep] = res[j].median;
+                    peak[j][rep] = (double)kib;
+                    if (!failed && res[j].begins != res[0].begins) {
+                        printf("%-16s %s gives %zu begins, the defaults %zu: events differ\n",
+                               base.spec, names[j], res[j].begins, res[0].begins);
+                        failed = true;
+                    }
+                }
+            if (failed) {
+                printf("%-16s failed\n", base.spec);
+                status = EXIT_FAILURE;
+                continue;
+            }
+            double m[SWEEP_MAX_CONFIGS], pk[SWEEP_MAX_CONFIGS];
+            int best = 1;
+            for (int j = 0; j < nj; ++j) {
+                m[j] = median_of(med[j], repeats);
+                pk[j] = median_of(peak[j], repeats);
+                if (j > 0 && m[j] < m[best])
+                    best = j;
+                printf("%-16s %8zu %-14s %4d %5d %11.3f %9.2f %10.1f %9zu\n", base.spec,
+                       res[j].objects, names[j], res[j].N, res[j].depth, 1e3 * m[j],
+                       res[j].setup, pk[j] / 1024, res[j].begins);
+                fprintf(csv, "%s,%ld,%zu,%s,%d,%d,%d,%d,%.6g,%.4f,%zu,%.0f\n",
+                        SWEEP_FAMILIES[f], sizes[si], res[j].objects, names[j], res[j].N,
+                        res[j].depth, base.steps, repeats, m[j], res[j].setup, res[j].begins,
+                        pk[j]);
+            }
+            printf("%-16s defaults/best (%s): time %.2f, memory %.2f\n", base.spec,
+                   names[best], m[0] / m[best], pk[0] / pk[best]);
+            fflush(stdout);
+        }
+    fclose(csv);
+    puts("(defaults: N and depth chosen by the world; each hand-picked row keeps the other "
+         "automatic; raw figures in bench-sweep.csv)");
+    return status;
+}
+
 typedef struct scene_job {
     const char *scene;
     int N, steps, max_exhaustive;
@@ -273,16 +476,32 @@ static void scene_child(const void *arg, void *out)
 
 int main(int argc, char **argv)
 {
-    int steps = 200, max_exhaustive = 2000, nscenes = 0;
-    const char *scenes[32];
-    bool quick = false, overlap = false;
+    int steps = 200, max_exhaustive = 2000, nscenes = 0, repeats = 3, nsizes = 0;
+    int nfams = 0;
+    const char *scenes[32], *fams[SWEEP_NFAMILIES];
+    long sizes[8];
+    bool quick = false, overlap = false, sweep = false, steps_given = false;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--quick") == 0)
             quick = true;
         else if (strcmp(argv[i], "--overlap") == 0)
             overlap = true;
-        else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc)
+        else if (strcmp(argv[i], "--sweep") == 0)
+            sweep = true;
+        else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc)
+            repeats = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
+            for (char *tok = strtok(argv[++i], ","); tok != NULL && nsizes < 8;
+                 tok = strtok(NULL, ","))
+                sizes[nsizes++] = atol(tok);
+        } else if (strcmp(argv[i], "--families") == 0 && i + 1 < argc) {
+            for (char *tok = strtok(argv[++i], ","); tok != NULL && nfams < (int)SWEEP_NFAMILIES;
+                 tok = strtok(NULL, ","))
+                fams[nfams++] = tok;
+        } else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
             steps = atoi(argv[++i]);
+            steps_given = true;
+        }
         else if (strcmp(argv[i], "--max-exhaustive") == 0 && i + 1 < argc)
             max_exhaustive = atoi(argv[++i]);
         else if ((strncmp(argv[i], "planes:", 7) == 0 || strncmp(argv[i], "gas:", 4) == 0) &&
@@ -290,12 +509,49 @@ int main(int argc, char **argv)
             scenes[nscenes++] = argv[i];
         else {
             fprintf(stderr, "usage: bench-world [--quick] [--overlap] [--steps S] "
-                            "[--max-exhaustive N] [planes:K | gas:N]...\n");
+                            "[--max-exhaustive N] [planes:K | gas:N]...\n"
+                            "       bench-world --sweep [--quick] [--sizes N,...] "
+                            "[--families F,...] [--steps S] [--repeats R]\n");
             return 2;
         }
     }
     if (overlap)
         return overlap_bench(quick);
+    if (sweep) {
+        for (int f = 0; f < nfams; ++f) {
+            bool known = false;
+            for (size_t k = 0; k < SWEEP_NFAMILIES; ++k)
+                known = known || strcmp(fams[f], SWEEP_FAMILIES[k]) == 0;
+            if (!known) {
+                fprintf(stderr, "bench-world: unknown family '%s'\n", fams[f]);
+                return 2;
+            }
+        }
+        for (int z = 0; z < nsizes; ++z)
+            if (sizes[z] < 1 || sizes[z] > 10000000) {
+                fputs("bench-world: --sizes must be 1 to 10000000\n", stderr);
+                return 2;
+            }
+        if (repeats < 1 || repeats > SWEEP_MAX_REPEATS || (steps_given && (steps < 1 ||
+                                                                          steps > 100000))) {
+            fprintf(stderr, "bench-world: --repeats must be 1 to %d, --steps 1 to 100000\n",
+                    SWEEP_MAX_REPEATS);
+            return 2;
+        }
+        if (nsizes == 0) {
+            static const long def_sizes[] = {1000, 10000, 100000, 1000000};
+            nsizes = quick ? 1 : 4;
+            sizes[0] = quick ? 300 : def_sizes[0];
+            for (int z = 1; z < nsizes; ++z)
+                sizes[z] = def_sizes[z];
+        }
+        if (quick) {
+            repeats = 1;
+            steps = 10;
+            steps_given = true;
+        }
+        return sweep_bench(sizes, nsizes, fams, nfams, repeats, steps_given ? steps : 0);
+    }
     if (steps < 1 || steps > 100000) {
         fputs("bench-world: --steps must be 1 to 100000\n", stderr);
         return 2;

@@ -63,11 +63,15 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
 
 /**
  * @brief Make a built-in scene family: `planes:K` (t_K), `gas:N`,
- *        `arms:K` or `keyframes:N`.
+ *        `mixed:N`, `clusters:N`, `static:N`, `escape:N`, `arms:K` or
+ *        `keyframes:N`.
  *
- * - `planes:K` (K 0 to 1000) and `gas:N` (N 1 to 10^7): SCENES.md's
- *   benchmark families, 200 steps with the default world parameters (gas
- *   with its container walls).
+ * - `planes:K` (K 0 to 1000) and `gas:N` (N 1 to 10^7): the report's
+ *   test sets and a gas of oriented boxes, 200 steps with the default
+ *   world parameters (gas with its container walls).
+ * - `mixed:N`, `clusters:N`, `static:N` and `escape:N` (N 1 to 10^7):
+ *   kinds of gas with boxes of sizes over a factor of 8, in dense
+ *   clusters, nine in ten static, and escaping outward without walls.
  * - `arms:K` (K 1 to 8): two robot arms of K links each (box primitives,
  *   length 2) swinging at revolute joints in a bay of six static walls,
  *   with static boxes loose on its floor; every link follows a track with
@@ -80,7 +84,7 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
  *   each other along tracks of 5 random keyframes (ticks 0, 50, ..., 200),
  *   200 steps, effects events and track.
  *
- * noctree-sim(1) gives the exact definitions of arms and keyframes.
+ * noctree-sim(1) gives the exact definition of every family.
  * @param[in]  spec  The family and its size.
  * @param[out] scene Receives the scene on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.
