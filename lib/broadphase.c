@@ -258,6 +258,15 @@ uint32_t noct_bp_new_slot(noctBroadphase *bp)
     return s;
 }
 
+void noct_bp_unuse_slot(noctBroadphase *bp, uint32_t s)
+{
+    NOCT_INVARIANT(s < bp->nslots && !bp->proxy[s].alive && bp->nfree < bp->capslots);
+    if (s + 1 == bp->nslots)
+        --bp->nslots;
+    else
+        bp->free_slots[bp->nfree++] = s;
+}
+
 /*
  * Make slot s (from noct_bp_new_slot) a live proxy with local box mlo, mhi
  * at position pos, and put it in the tree. On failure the slot is free
@@ -759,6 +768,13 @@ static size_t overlapped_leaves(const noct_aabb *o, octNode *n)
 noctStatus noctBroadphaseValidate(const noctBroadphase *bp, noctError *err)
 {
     NOCT_REQUIRE(bp != NULL);
+    /* every slot is live or free, none lost */
+    for (uint32_t f = 0; f < bp->nfree; ++f)
+        if (bp->free_slots[f] >= bp->nslots || bp->proxy[bp->free_slots[f]].alive)
+            return BAD("free slot %u is live or beyond the slots", bp->free_slots[f]);
+    if (bp->alive + bp->nfree != bp->nslots)
+        return BAD("%zu live proxies and %u free slots, but %u slots", bp->alive, bp->nfree,
+                   bp->nslots);
     if (bp->root == NULL)
         return bp->alive == 0 || bp->tree_owed ? NOCT_OK : BAD("proxies but no tree");
     if (NOCT_NODE_PARENT(bp->root) != NULL || octGeneration(bp->root) != 0)

@@ -187,7 +187,7 @@ typedef struct noct_block {
 
 struct noctBroadphase {
     int N, max_depth;         /* in force: as given, or as chosen */
-    bool auto_N, auto_depth;  /* chosen at every build (noct_bp_choose) */
+    bool auto_N, auto_depth;  /* chosen at every build (choose_settings) */
     size_t chosen_for;        /* live proxies at the last choice */
     bool hint;                /* bounds_lo/hi hold a hint for the root */
     double bounds_lo[3], bounds_hi[3];
@@ -423,6 +423,11 @@ bool noct_bp_reserve(noctBroadphase *bp, uint32_t more);
 
 /* A slot for a new proxy, or UINT32_MAX (no memory, or 2^31 slots). */
 uint32_t noct_bp_new_slot(noctBroadphase *bp);
+
+/* Give back slot s from noct_bp_new_slot that never became live, as it
+ * is (a new last slot goes altogether: a client's per-slot arrays may not
+ * reach it); cannot fail. */
+void noct_bp_unuse_slot(noctBroadphase *bp, uint32_t s);
 
 /* Make slot s a live proxy with local box mlo, mhi at position pos and
  * put it in the tree; on failure (NOMEM) the slot is free again. */

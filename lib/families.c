@@ -78,8 +78,8 @@ static double fam_unit_draw(uint64_t *state)
     return (double)(fam_splitmix64(state) >> 11) * 0x1p-53;
 }
 
-/* The gas kinds, in the order of noct_gas_kind: name, whether the
- * container's walls turn the boxes back, and the kind's size limit. */
+/* The gas kinds, in the order of noct_gas_kind: the family's name, and
+ * whether the container's walls turn the boxes back. */
 static const struct {
     const char *name;
     bool walls;

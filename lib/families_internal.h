@@ -2,7 +2,7 @@
 /*
  * Private: the kinds of gas that families.c builds (noct_world_add_gas_kind),
  * for the scene reader, writer and noctSceneFamily(). Never installed.
- * noctree-families(7) defines each kind exactly.
+ * noctree-sim(1), "FAMILIES OF BOXES", defines each kind exactly.
  */
 #ifndef NOCT_LIB_FAMILIES_INTERNAL_H
 #define NOCT_LIB_FAMILIES_INTERNAL_H

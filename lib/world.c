@@ -440,12 +440,7 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
                    : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     if (!reserve_slots(w)) {
-        /* the slot is not live yet: give it back as it is (a new last
-         * slot goes altogether: the world's arrays may not reach it) */
-        if (slot + 1 == w->bp.nslots)
-            --w->bp.nslots;
-        else
-            w->bp.free_slots[w->bp.nfree++] = slot;
+        noct_bp_unuse_slot(&w->bp, slot);
         noctMeshDestroy(rotated);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
@@ -462,16 +457,21 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     p->q = def->transform.q;
     place_mesh(w, slot);
     memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
-    if (!set_spin(w, slot, &def->angular_velocity, false))
+    if (!set_spin(w, slot, &def->angular_velocity, false)) {
+        /* not in the broadphase yet: the slot goes back as it is */
+        noct_bp_unuse_slot(&w->bp, slot);
         st = NOCT_ERR_NOMEM;
-    else
+    } else {
+        /* on failure noct_bp_add gives the slot back itself */
         st = noct_bp_add(&w->bp, slot, o->mlo, o->mhi, w->pos[slot], def->user_data,
                          def->category, def->mask);
+    }
     if (st != NOCT_OK) {
         if (w->spin.w != NULL && !is_identity_quat(&w->spin.w[slot])) {
             w->spin.w[slot] = (noctQuat){0, 0, 0, 1};
             --w->spin.count;
         }
+        p->rotated = NULL;
         noctMeshDestroy(rotated);
         return noct_fail(err, st, -1, 0, "out of memory");
     }

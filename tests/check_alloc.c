@@ -13,7 +13,9 @@
  * Each part of the workload (the octree ADT with neighbor finding, meshes
  * by every constructor, the OFF/OBJ readers, scene files and families, a
  * world stepped, changed and emptied at every accuracy and in every
- * maintenance mode, noctCollide on pairs in contact) is
+ * maintenance mode, the object model (definitions, the setters that
+ * allocate, tracks, spinners, the margin, queries, the scene writer),
+ * noctCollide on pairs in contact) is
  * first run twice without failures: a warm-up that takes glibc's one-time
  * allocations out of the count, then the baseline, which gives the number
  * of points n and the result (a hash of everything the part observed).
@@ -78,6 +80,7 @@
 #include <noctree/narrowphase.h>
 #include <noctree/neighbor.h>
 #include <noctree/octree.h>
+#include <noctree/query.h>
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
@@ -1199,6 +1202,208 @@ out:
     world_meshes_free(&wm);
 }
 
+/* A failed call that says nothing changed: the world valid (its slots
+ * all live or free) and holding the objects it held. */
+static void unchanged(outcome *o, const noctWorld *w, size_t objects, const char *after)
+{
+    must_be_valid(o, w, after);
+    if (noctWorldObjectCount(w) != objects)
+        record(o, K_INVALID, "after %s, %zu objects, not %zu", after,
+               noctWorldObjectCount(w), objects);
+}
+
+/*
+ * The object model beyond noctWorldAdd: objects made from definitions
+ * (meshes turned, box primitives, the first spinner, whose angular
+ * velocity makes the world's array), the setters that allocate (a
+ * turning transform, an angular velocity, a track), a world with a
+ * margin stepped with its tracks and spinners, queries into collecting
+ * arrays, and the scene writer. After every failed call the world must
+ * be valid, with no slot lost, and hold the objects it held; a further
+ * object made afterwards must get a slot within the ones there are.
+ */
+static void part_objects(outcome *o)
+{
+    noctMesh *cube = NULL;
+    noctWorld *w = NULL;
+    noctScene *sc = NULL;
+    noctError err = fresh_err();
+    const double z[3] = {0, 0, 1};
+    phase("objects: noctMeshCreateBox");
+    noctStatus st = noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err);
+    if (!judge(o, "noctMeshCreateBox", st, NOCT_OK, &err, true))
+        goto out;
+    noctWorldDef def = noctDefaultWorldDef();
+    def.effects |= NOCT_EFFECT_SPIN | NOCT_EFFECT_TRACK;
+    def.margin = 0.25;
+    phase("objects: noctWorldCreate");
+    err = fresh_err();
+    st = noctWorldCreate(&def, &w, &err);
+    if (!judge(o, "noctWorldCreate", st, NOCT_OK, &err, true))
+        goto out;
+    enum { NOBJ = 12 };
+    noctObjectId ids[NOBJ];
+    for (int i = 0; i < NOBJ; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        if (i % 3 == 0) {
+            d.mesh = cube;
+        } else {
+            d.half_extents[0] = 0.4;
+            d.half_extents[1] = 0.3;
+            d.half_extents[2] = 0.2;
+        }
+        d.transform.p[0] = 0.7 * i;
+        d.transform.p[1] = 0.3 * (i % 4);
+        if (i % 2)
+            noctQuatFromAxisAngle(z, 30.0 * i, &d.transform.q);
+        if (i == 7) /* the first spinner: the world's array is made */
+            noctQuatFromAxisAngle(z, 10, &d.angular_velocity);
+        d.velocity[0] = 0.05 * (i % 3 - 1);
+        const size_t before = noctWorldObjectCount(w);
+        phase("objects: noctWorldCreateObject %d", i);
+        err = fresh_err();
+        st = noctWorldCreateObject(w, &d, &ids[i], &err);
+        if (!judge(o, "noctWorldCreateObject", st, NOCT_OK, &err, true)) {
+            unchanged(o, w, before, "a failed noctWorldCreateObject");
+            goto out;
+        }
+        mix(o, ids[i].index);
+    }
+    const size_t all = noctWorldObjectCount(w);
+    for (int i = 0; i < NOBJ; i += 2) {
+        noctTransform x;
+        noctWorldGetTransform(w, ids[i], &x);
+        noctQuatFromAxisAngle(z, 45.0 + i, &x.q); /* a new rotation: a new turned mesh */
+        phase("objects: noctWorldSetTransform %d", i);
+        err = fresh_err();
+        st = noctWorldSetTransform(w, ids[i], &x, &err);
+        if (!judge(o, "noctWorldSetTransform", st, NOCT_OK, &err, true)) {
+            unchanged(o, w, all, "a failed noctWorldSetTransform");
+            goto out;
+        }
+    }
+    noctQuat spin;
+    noctQuatFromAxisAngle(z, -5, &spin);
+    phase("objects: noctWorldSetAngularVelocity");
+    err = fresh_err();
+    st = noctWorldSetAngularVelocity(w, ids[3], &spin, &err);
+    if (!judge(o, "noctWorldSetAngularVelocity", st, NOCT_OK, &err, true)) {
+        unchanged(o, w, all, "a failed noctWorldSetAngularVelocity");
+        goto out;
+    }
+    noctKeyframe keys[3];
+    for (int k = 0; k < 3; ++k) {
+        keys[k].tick = (uint64_t)(2 * k);
+        keys[k].x = (noctTransform){{1.0 * k, 2, 0}, {0, 0, 0, 1}};
+        noctQuatFromAxisAngle(z, 60.0 * k, &keys[k].x.q);
+    }
+    phase("objects: noctWorldSetTrack");
+    err = fresh_err();
+    st = noctWorldSetTrack(w, ids[4], keys, 3, &err);
+    if (!judge(o, "noctWorldSetTrack", st, NOCT_OK, &err, true)) {
+        unchanged(o, w, all, "a failed noctWorldSetTrack");
+        goto out;
+    }
+    if (!steps(o, &w, "objects", 6))
+        goto out;
+    const noctPair *p;
+    mix(o, noctWorldNear(w, &p));
+    mix(o, noctWorldColliding(w, &p));
+    /* queries: they only read the world */
+    noctObjectId found[NOBJ];
+    noctObjectBuffer buf = {found, NOBJ, 0};
+    const double lo[3] = {-1, -1, -1}, hi[3] = {4, 1, 1}, at[3] = {0.7, 0.3, 0};
+    const double from[3] = {-2, 0.1, 0.05}, along[3] = {12, 0, 0};
+    phase("objects: noctWorldQueryBox");
+    err = fresh_err();
+    st = noctWorldQueryBox(w, lo, hi, noctDefaultQueryFilter(), noctCollectObjects, &buf, &err);
+    if (!judge(o, "noctWorldQueryBox", st, NOCT_OK, &err, true))
+        goto out;
+    mix(o, buf.count);
+    buf.count = 0;
+    phase("objects: noctWorldQueryPoint");
+    err = fresh_err();
+    st = noctWorldQueryPoint(w, at, noctDefaultQueryFilter(), noctCollectObjects, &buf, &err);
+    if (!judge(o, "noctWorldQueryPoint", st, NOCT_OK, &err, true))
+        goto out;
+    mix(o, buf.count);
+    buf.count = 0;
+    phase("objects: noctWorldQueryNear");
+    err = fresh_err();
+    st = noctWorldQueryNear(w, cube, NULL, &(noctTransform){{2, 0, 0}, {0, 0, 0, 1}}, 0.5,
+                            noctDefaultQueryFilter(), noctCollectObjects, &buf, &err);
+    if (!judge(o, "noctWorldQueryNear", st, NOCT_OK, &err, true))
+        goto out;
+    mix(o, buf.count);
+    noctRayHit hits[NOBJ];
+    noctRayHitBuffer hb = {hits, NOBJ, 0};
+    phase("objects: noctWorldRayCast");
+    err = fresh_err();
+    st = noctWorldRayCast(w, from, along, noctDefaultQueryFilter(), noctCollectRayHits, &hb,
+                          &err);
+    if (!judge(o, "noctWorldRayCast", st, NOCT_OK, &err, true))
+        goto out;
+    mix(o, hb.count);
+    noctRayHit first;
+    bool any = false;
+    phase("objects: noctWorldRayCastClosest");
+    err = fresh_err();
+    st = noctWorldRayCastClosest(w, from, along, noctDefaultQueryFilter(), &first, &any, &err);
+    if (!judge(o, "noctWorldRayCastClosest", st, NOCT_OK, &err, true))
+        goto out;
+    mix(o, any);
+    if (any)
+        mix_double(o, first.fraction);
+    /* removal and a new object in the freed slot: no slot was lost */
+    phase("objects: noctWorldRemove");
+    if (noctWorldRemove(w, ids[5], NULL) != NOCT_OK) {
+        record(o, K_STATUS, "noctWorldRemove rejects a live object");
+        goto out;
+    }
+    noctObjectDef d = noctDefaultObjectDef();
+    d.mesh = cube;
+    noctQuatFromAxisAngle(z, 15, &d.angular_velocity);
+    phase("objects: noctWorldCreateObject into a freed slot");
+    err = fresh_err();
+    st = noctWorldCreateObject(w, &d, &ids[5], &err);
+    if (!judge(o, "noctWorldCreateObject", st, NOCT_OK, &err, true)) {
+        unchanged(o, w, all - 1, "a failed noctWorldCreateObject");
+        goto out;
+    }
+    mix(o, ids[5].index);
+    /* the scene writer */
+    phase("objects: noctSceneFamily");
+    err = fresh_err();
+    st = noctSceneFamily("arms:1", &sc, &err);
+    if (!judge(o, "noctSceneFamily", st, NOCT_OK, &err, true))
+        goto out;
+    alloc_pause(); /* the test's own file */
+    FILE *f = tmpfile();
+    alloc_resume();
+    if (f == NULL) {
+        record(o, K_HARNESS, "tmpfile failed");
+        goto out;
+    }
+    phase("objects: noctSceneWrite");
+    err = fresh_err();
+    st = noctSceneWrite(sc, f, &err);
+    mix(o, (uint64_t)ftell(f));
+    alloc_pause();
+    fclose(f);
+    alloc_resume();
+    /* stdio's buffer is allocated at the first write: its failure is a
+     * failed write, NOCT_ERR_IO, as documented */
+    if (st == NOCT_ERR_IO && g_injected > 0)
+        documented(o);
+    else
+        judge(o, "noctSceneWrite", st, NOCT_OK, &err, false);
+out:
+    phase("objects: destroy");
+    noctSceneDestroy(sc);
+    noctWorldDestroy(w);
+    noctMeshDestroy(cube);
+}
+
 /* Checked once, in the baseline: the exact world splits and merges
  * leaves and its objects collide, or the part would test less than it
  * claims. */
@@ -1924,6 +2129,12 @@ START_TEST(world_levels)
 }
 END_TEST
 
+START_TEST(objects)
+{
+    check_part("objects", part_objects, false, true, ALL);
+}
+END_TEST
+
 START_TEST(collide)
 {
     check_part("collide", part_collide, true, false, 300);
@@ -1995,6 +2206,10 @@ int main(void)
     tc = tcase_create("world-levels");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, world_levels);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("objects");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, objects);
     suite_add_tcase(s, tc);
     tc = tcase_create("collide");
     tcase_set_timeout(tc, 300);
