@@ -349,7 +349,8 @@ static double median_of(double *v, int n)
  * For each family and size: N in {5, 10, 20, 30, 50, 80, 128} at the
  * automatic depth, the depths 6, 8, 10 and 14 at the automatic N, and the
  * defaults (both automatic); each configuration repeats times, the
- * configurations taking turns in every repeat; a row is the median over
+ * configurations taking turns in every repeat, in a new order each time;
+ * a row is the median over
  * the repeats of each run's median step, and the peak memory's median.
  * Under each family and size: the defaults' step time and memory over
  * those of the fastest hand-picked setting (the sweep's best). The events
@@ -407,19 +408,35 @@ static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, i
             double peak[SWEEP_MAX_CONFIGS][SWEEP_MAX_REPEATS];
             sweep_result res[SWEEP_MAX_CONFIGS];
             bool failed = false;
-            for (int rep = 0; rep < repeats && !failed; ++rep)
-                for (int j = 0; j < nj && !failed; ++j) {
+            /* each round in a new order (a seeded shuffle), so that
+             * neither the machine's drift nor a place in the round
+             * favours a configuration */
+            uint64_t seed = 0x5eedu + (uint64_t)si * 131 + f;
+            int order[SWEEP_MAX_CONFIGS];
+            for (int j = 0; j < nj; ++j)
+                order[j] = j;
+            for (int rep = 0; rep < repeats && !failed; ++rep) {
+                for (int j = nj - 1; j > 0; --j) {
+                    seed = seed * 6364136223846793005u + 1442695040888963407u;
+                    const int k = (int)((seed >> 33) % (uint64_t)(j + 1)), t = order[j];
+                    order[j] = order[k];
+                    order[k] = t;
+                }
+                for (int jj = 0; jj < nj && !failed; ++jj) {
+                    const int j = order[jj];
                     long kib = 0;
                     failed = !in_child(sweep_child, &jobs[j], &res[j], sizeof res[j], &kib) ||
                              !res[j].ok;
                     med[j][rep] = res[j].median;
                     peak[j][rep] = (double)kib;
-                    if (!failed && res[j].begins != res[0].begins) {
+                }
+                for (int j = 0; j < nj && !failed; ++j)
+                    if (res[j].begins != res[0].begins) {
                         printf("%-16s %s gives %zu begins, the defaults %zu: events differ\n",
                                base.spec, names[j], res[j].begins, res[0].begins);
                         failed = true;
                     }
-                }
+            }
             if (failed) {
                 printf("%-16s failed\n", base.spec);
                 status = EXIT_FAILURE;
