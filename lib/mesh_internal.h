@@ -164,10 +164,14 @@ noctStatus noct_point_in_solid(const noctMesh *m, const double t[3], const doubl
  * does, in floating point in [0, 1]: 0 when p is in the solid (then
  * *triangle is UINT32_MAX and normal is 0), else where it enters
  * *triangle (the least fraction, ties to the lowest triangle), whose
- * unit outward normal, in floating point, is normal. */
+ * unit outward normal, in floating point, is normal, computed without
+ * overflow or underflow at any size. A triangle without area as placed
+ * (*flat: a shape far from the origin for its size) has the unit vector
+ * against pq as normal, and the fraction where pq passes nearest its
+ * first corner. */
 noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
                             const double q[3], bool *hit, double *fraction,
-                            uint32_t *triangle, double normal[3]);
+                            uint32_t *triangle, double normal[3], bool *flat);
 
 /* Does the separating-axis test on two slots placed at ta and tb prove
  * them more than d apart (on one of its 15 axes, with the allowances of

@@ -1041,6 +1041,49 @@ static double entry_fraction(const double p[3], const double q[3], const double 
     return best;
 }
 
+/* v scaled by the power of two that brings its largest component into
+ * [1/2, 1), exactly (but for subnormal parts of a vector of huge range);
+ * false if v is 0. */
+static bool scale_to_unit_range(const double v[3], double out[3])
+{
+    const double m = noct_max(noct_max(fabs(v[0]), fabs(v[1])), fabs(v[2]));
+    if (!(m > 0))
+        return false;
+    int e;
+    frexp(m, &e);
+    for (int k = 0; k < 3; ++k)
+        out[k] = ldexp(v[k], -e);
+    return true;
+}
+
+/* The unit vector along v into n, from v scaled as above, so that its
+ * length neither overflows nor underflows; false (n = 0) if v is 0. */
+static bool unit_vector(const double v[3], double n[3])
+{
+    double s[3];
+    n[0] = n[1] = n[2] = 0;
+    if (!scale_to_unit_range(v, s))
+        return false;
+    const double len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    for (int k = 0; k < 3; ++k)
+        n[k] = s[k] / len;
+    return true;
+}
+
+/* The unit vector along u x v into n, computed on u and v scaled by
+ * powers of two so that no product overflows or underflows, at any edge
+ * length a mesh may have; false (n = 0) if u x v is 0 as computed: a
+ * triangle without area as placed. */
+static bool unit_cross(const double u[3], const double v[3], double n[3])
+{
+    double us[3], vs[3], c[3];
+    n[0] = n[1] = n[2] = 0;
+    if (!scale_to_unit_range(u, us) || !scale_to_unit_range(v, vs))
+        return false;
+    cross_into(us, vs, c);
+    return unit_vector(c, n);
+}
+
 /* The first triangle segment pq enters, so far. */
 typedef struct segment_entry {
     const double *p, *q;
@@ -1048,6 +1091,7 @@ typedef struct segment_entry {
     double best;
     uint32_t triangle;
     double *normal;
+    bool flat;            /* that triangle has no area as placed */
 } segment_entry;
 
 static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], double c[3])
@@ -1056,30 +1100,49 @@ static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], d
     const int s1 = o3(&e->x, a, b, c, e->p), s2 = o3(&e->x, a, b, c, e->q);
     if (!seg_tri(&e->x, e->p, e->q, s1, s2, a, b, c))
         return false;
-    double u[3], v[3], nn[3];
+    double u[3], v[3], nn[3], d[3];
     for (int k = 0; k < 3; ++k) {
         u[k] = b[k] - a[k];
         v[k] = c[k] - a[k];
+        d[k] = e->q[k] - e->p[k];
     }
-    cross_into(u, v, nn);
-    const double f = entry_fraction(e->p, e->q, a, b, c, nn, s1 == 0 && s2 == 0);
+    const bool area = unit_cross(u, v, nn);
+    double f;
+    if (area) {
+        f = entry_fraction(e->p, e->q, a, b, c, nn, s1 == 0 && s2 == 0);
+    } else {
+        /* a point or a segment as placed (a shape far from the origin
+         * for its size): where pq passes nearest its first corner, which
+         * is within the triangle's extent of the meeting point */
+        double num = 0, den = 0;
+        for (int k = 0; k < 3; ++k) {
+            num += (a[k] - e->p[k]) * d[k];
+            den += d[k] * d[k];
+        }
+        f = den > 0 && num > 0 ? (num < den ? num / den : 1) : 0;
+    }
     if (f < e->best || (f == e->best && i < e->triangle)) {
         e->best = f;
         e->triangle = i;
-        const double len = sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
-        for (int k = 0; k < 3; ++k)
-            e->normal[k] = len > 0 ? nn[k] / len : 0;
+        e->flat = !area;
+        if (area) {
+            memcpy(e->normal, nn, sizeof nn);
+        } else { /* against the segment: a normal a program can use */
+            const double back[3] = {-d[0], -d[1], -d[2]};
+            unit_vector(back, e->normal);
+        }
     }
     return false; /* on: the least fraction */
 }
 
 noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
                             const double q[3], bool *hit, double *fraction,
-                            uint32_t *triangle, double normal[3])
+                            uint32_t *triangle, double normal[3], bool *flat)
 {
     const placed B = {m, {t[0], t[1], t[2]}};
     const exact_ctx x = {NULL};
     *hit = false;
+    *flat = false;
     *triangle = UINT32_MAX;
     normal[0] = normal[1] = normal[2] = 0;
     double slo[3], shi[3];
@@ -1099,9 +1162,10 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
         *fraction = 0;
         return NOCT_OK;
     }
-    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal};
+    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal, false};
     walk_triangles(&B, slo, shi, segment_meets, &e);
     *triangle = e.triangle;
+    *flat = e.flat;
     const double best = e.best;
     if (*triangle != UINT32_MAX) {
         *hit = true;

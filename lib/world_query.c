@@ -340,7 +340,8 @@ static noctStatus ray_test(ray *r, uint32_t s, bool *hit, noctRayHit *h)
     const noctMesh *m = shape_of_object(w, s, &sh);
     double f;
     uint32_t tri;
-    noctStatus st = noct_segment_hit(m, w->pos[s], r->p, r->q, hit, &f, &tri, h->normal);
+    noctStatus st =
+        noct_segment_hit(m, w->pos[s], r->p, r->q, hit, &f, &tri, h->normal, &h->flat);
     if (st != NOCT_OK || !*hit)
         return st;
     h->id = handle(w, s);

@@ -508,6 +508,104 @@ START_TEST(exact_rays_along_faces_and_through_edges)
 }
 END_TEST
 
+/* ---- normals at every scale ------------------------------------------------------------ */
+
+/*
+ * A box primitive (and a box mesh) of half-extent h, turned by 30 degrees
+ * about z, at the origin, from h = 1e-300 to 1e95: a ray along each face
+ * normal (the rotation's columns, either sign) from 3h out enters through
+ * that face at a third of its length, and the hit's normal is unit and
+ * that face's. Then a box far from the origin for its size (half 1/16 at
+ * 6e99), whose placed corners round to one point: the hit is flagged, and
+ * its normal is the unit vector against the ray.
+ */
+START_TEST(ray_normals_at_every_scale)
+{
+    static const double scales[] = {1e-300, 1e-200, 1e-100, 1e-81, 1e-80, 1e-10, 1,
+                                    1e10,   1e77,   5e77,   1e80,  1e95};
+    const double z[3] = {0, 0, 1};
+    noctQuat q;
+    ck_assert_int_eq(noctQuatFromAxisAngle(z, 30, &q), NOCT_OK);
+    double R[9];
+    ck_assert_int_eq(noctQuatToMatrix(&q, R, NULL), NOCT_OK);
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; ++i)
+        for (int kind = 0; kind < 2; ++kind) {
+            const double h = scales[i];
+            noctWorld *w;
+            noctError err;
+            ck_assert_int_eq(noctWorldCreate(&(noctWorldDef){.effects = 0}, &w, &err), NOCT_OK);
+            noctMesh *mesh = NULL;
+            noctObjectDef d = noctDefaultObjectDef();
+            if (kind == 0) {
+                d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = h;
+            } else {
+                ck_assert_int_eq(noctMeshCreateBox(h, h, h, &mesh, &err), NOCT_OK);
+                d.mesh = mesh;
+            }
+            d.transform.q = q;
+            noctObjectId id;
+            ck_assert_msg(noctWorldCreateObject(w, &d, &id, &err) == NOCT_OK, "h %g: %s", h,
+                          err.message);
+            /* along each of the six face normals (the rotation's columns,
+             * either way), from 3h out to 3h beyond */
+            for (int face = 0; face < 6; ++face) {
+                const int c = face / 2;
+                const double sgn = face % 2 ? -1 : 1;
+                double o[3], t[3];
+                for (int k = 0; k < 3; ++k) {
+                    o[k] = 3 * h * sgn * R[3 * k + c];
+                    t[k] = -6 * h * sgn * R[3 * k + c];
+                }
+                noctRayHit hit;
+                bool any = false;
+                ck_assert_int_eq(noctWorldRayCastClosest(w, o, t, noctDefaultQueryFilter(), &hit,
+                                                         &any, &err),
+                                 NOCT_OK);
+                ck_assert_msg(any, "h %g, face %d: no hit", h, face);
+                ck_assert(!hit.flat);
+                double len2 = 0, along = 0;
+                for (int k = 0; k < 3; ++k) {
+                    len2 += hit.normal[k] * hit.normal[k];
+                    along += hit.normal[k] * sgn * R[3 * k + c];
+                }
+                ck_assert_msg(fabs(len2 - 1) <= 1e-14, "h %g, face %d: |normal|^2 = %.17g", h,
+                              face, len2);
+                ck_assert_msg(along >= 1 - 1e-12, "h %g, face %d: normal . face = %.17g", h,
+                              face, along);
+                ck_assert_msg(fabs(hit.fraction - 1.0 / 3) <= 1e-12, "h %g: fraction %.17g", h,
+                              hit.fraction);
+            }
+            noctWorldDestroy(w);
+            noctMeshDestroy(mesh);
+        }
+    /* squashed: half 1/16 at (6e99, 6e99, 6e99) rounds to a point as placed */
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&(noctWorldDef){.effects = 0}, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 0.0625;
+    d.transform.p[0] = d.transform.p[1] = d.transform.p[2] = 6e99;
+    d.transform.q = q;
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, NULL), NOCT_OK);
+    const double o[3] = {6e99, 6e99 - 1e90, 6e99}, t[3] = {0, 2e90, 0};
+    noctRayHit hit;
+    bool any = false;
+    ck_assert_int_eq(noctWorldRayCastClosest(w, o, t, noctDefaultQueryFilter(), &hit, &any,
+                                             NULL),
+                     NOCT_OK);
+    ck_assert(any);
+    ck_assert(hit.flat);
+    ck_assert_msg(hit.normal[0] == 0 && hit.normal[1] == -1 && hit.normal[2] == 0,
+                  "normal (%g %g %g)", hit.normal[0], hit.normal[1], hit.normal[2]);
+    /* the point lies at 6e99; the segment's end o + t is rounded there,
+     * to a unit in the last place of 6e99 */
+    const double want = (6e99 - o[1]) / t[1], ulp = nextafter(6e99, INFINITY) - 6e99;
+    ck_assert_msg(fabs(hit.fraction - want) <= 4 * ulp / t[1], "fraction %.17g, want %.17g",
+                  hit.fraction, want);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 /* ---- arrays, stopping, bad input ------------------------------------------------------- */
 
 static bool stop_at_first(void *context, noctObjectId id, void *user)
@@ -707,6 +805,7 @@ static Suite *queries_suite(void)
     tcase_add_loop_test(tc, answers_do_not_depend_on_the_tree, 0, 1);
     tcase_add_test(tc, exact_points_on_faces_edges_and_corners);
     tcase_add_test(tc, exact_rays_along_faces_and_through_edges);
+    tcase_add_test(tc, ray_normals_at_every_scale);
     tcase_add_test(tc, buffers_stopping_and_bad_input);
     tcase_add_test(tc, queries_from_two_threads);
     suite_add_tcase(s, tc);

@@ -93,7 +93,8 @@ typedef struct noctRayHit {
                              inside. */
     double point[3];    /**< origin + fraction * translation. */
     double normal[3];   /**< The unit outward normal of the triangle it
-                             enters through; 0 when it starts inside. */
+                             enters through, at any size the shapes may
+                             have; 0 when it starts inside; see flat. */
     uint32_t triangle[3]; /**< That triangle's corners, counter-clockwise
                              seen from outside: for a mesh shape, indices
                              of its vertices as given to noctMeshCreate()
@@ -102,6 +103,17 @@ typedef struct noctRayHit {
                              half-extent when bit 2 of k is set (else -x),
                              +y when bit 1 is, +z when bit 0 is. All
                              #NOCT_NO_VERTEX when it starts inside. */
+    bool flat;          /**< The triangle it enters through has no area as
+                             placed: an object far from the origin for its
+                             size rounds to a flat shape, a segment or a
+                             point (transform.h: vertices are placed in
+                             floating point). The hit is still decided
+                             exactly on that placed shape; normal is then
+                             the unit vector against the segment's
+                             direction, and fraction where the segment
+                             passes nearest the triangle's first corner
+                             (within the triangle's tiny extent of where it
+                             meets it). */
 } noctRayHit;
 
 /**
