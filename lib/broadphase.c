@@ -373,14 +373,27 @@ static noct_proxy *lookup(const noctBroadphase *bp, noctProxyId id)
     return &bp->proxy[id.index];
 }
 
-/* Drop the pairs that name proxy s from a sorted list. */
-static void drop_pairs_of(noct_pair_list *l, uint32_t s)
+/*
+ * Removals leave the public pair list as it is and mark it: the first
+ * read after them drops, in one pass, the pairs that name a proxy no
+ * longer live (its slot free, or reused: another generation). So k
+ * removals cost their own unlinking, and the list one pass when it is
+ * next read, not k passes. The list is the broadphase's own (the
+ * readers take a const broadphase only to promise they change nothing a
+ * caller can see).
+ */
+static void drop_removed_pairs(const noctBroadphase *cbp)
 {
+    noctBroadphase *bp = (noctBroadphase *)cbp;
+    if (!bp->pairs_removed)
+        return;
+    noct_pair_list *l = &bp->pairs;
     size_t k = 0;
     for (size_t i = 0; i < l->n; ++i)
-        if (l->p[i].a.index != s && l->p[i].b.index != s)
+        if (lookup(bp, l->p[i].a) != NULL && lookup(bp, l->p[i].b) != NULL)
             l->p[k++] = l->p[i];
     l->n = k;
+    bp->pairs_removed = false;
 }
 
 noctStatus noctBroadphaseRemove(noctBroadphase *bp, noctProxyId id)
@@ -389,7 +402,7 @@ noctStatus noctBroadphaseRemove(noctBroadphase *bp, noctProxyId id)
     if (lookup(bp, id) == NULL)
         return NOCT_ERR_INVALID;
     noct_bp_free_slot(bp, id.index);
-    drop_pairs_of(&bp->pairs, id.index);
+    bp->pairs_removed = bp->pairs.n > 0;
     return NOCT_OK;
 }
 
@@ -546,6 +559,7 @@ noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err)
 {
     NOCT_REQUIRE(bp != NULL);
     bp->pairs.n = 0;
+    bp->pairs_removed = false;
     noctStatus st = NOCT_OK;
     if (bp->tree_owed)
         st = noct_bp_rebuild(bp, 0);
@@ -588,6 +602,7 @@ noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err)
 size_t noctBroadphasePairs(const noctBroadphase *bp, const noctProxyPair **pairs)
 {
     NOCT_REQUIRE(bp != NULL && pairs != NULL);
+    drop_removed_pairs(bp);
     *pairs = bp->pairs.p;
     return bp->pairs.n;
 }
@@ -595,6 +610,7 @@ size_t noctBroadphasePairs(const noctBroadphase *bp, const noctProxyPair **pairs
 size_t noctBroadphaseForEachPair(const noctBroadphase *bp, noctPairFcn *fcn, void *context)
 {
     NOCT_REQUIRE(bp != NULL && fcn != NULL);
+    drop_removed_pairs(bp);
     size_t i = 0;
     while (i < bp->pairs.n) {
         const noctProxyPair *q = &bp->pairs.p[i++];

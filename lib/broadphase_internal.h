@@ -238,6 +238,8 @@ struct noctBroadphase {
     uint32_t *digits;
     uint32_t capdigits;
     noct_pair_list pairs;     /* public: the last noctBroadphaseUpdatePairs */
+    bool pairs_removed;       /* public: proxies were removed since, whose
+                                 pairs the next read drops */
     uint64_t search_epoch;    /* public: searches made */
     double pending_reach;     /* public: the largest travel since then */
     noctBroadphaseCounters c;

@@ -596,6 +596,88 @@ START_TEST(automatic_settings)
 }
 END_TEST
 
+static bool same_id(noctProxyId a, noctProxyId b)
+{
+    return a.index == b.index && a.generation == b.generation;
+}
+
+static bool collect_pair(void *context, noctProxyId a, void *ua, noctProxyId b, void *ub)
+{
+    (void)ua;
+    (void)ub;
+    noctProxyPair **at = context;
+    *(*at)++ = (noctProxyPair){a, b};
+    return true;
+}
+
+/*
+ * Removals between searches: the list then holds the last search's pairs
+ * but those naming a removed proxy, in order, whether it is read by
+ * noctBroadphasePairs() or noctBroadphaseForEachPair(), and whatever was
+ * added in the freed slots meanwhile (new generations, not in the list
+ * until the next search).
+ */
+START_TEST(removals_drop_their_pairs)
+{
+    rng = 0x7e3u;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = 4;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.n = 300;
+    for (int i = 0; i < m.n; ++i)
+        add_one(bp, &m, i, 8);
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    const noctProxyPair *p;
+    const size_t n0 = noctBroadphasePairs(bp, &p);
+    static noctProxyPair before[MAXP * MAXP / 2], got[MAXP * MAXP / 2];
+    ck_assert_uint_lt(n0, sizeof before / sizeof *before);
+    memcpy(before, p, n0 * sizeof *p);
+    size_t nb = n0;
+    for (int round = 0; round < 2; ++round) {
+        for (int i = round; i < m.n; i += 3)
+            if (m.alive[i]) {
+                ck_assert_int_eq(noctBroadphaseRemove(bp, m.id[i]), NOCT_OK);
+                m.alive[i] = false;
+            }
+        for (int i = m.n; i < m.n + 20; ++i) /* into freed slots */
+            add_one(bp, &m, i, 8);
+        m.n += 20;
+        size_t want = 0;
+        for (size_t k = 0; k < nb; ++k) {
+            bool a_live = false, b_live = false;
+            for (int i = 0; i < m.n; ++i) {
+                a_live = a_live || (m.alive[i] && same_id(m.id[i], before[k].a));
+                b_live = b_live || (m.alive[i] && same_id(m.id[i], before[k].b));
+            }
+            if (a_live && b_live)
+                before[want++] = before[k];
+        }
+        /* the first read drops the pairs: one way, then the other */
+        noctProxyPair *at = got;
+        size_t calls = 0, n = 0;
+        if (round == 0)
+            calls = noctBroadphaseForEachPair(bp, collect_pair, &at);
+        n = noctBroadphasePairs(bp, &p);
+        if (round == 1)
+            calls = noctBroadphaseForEachPair(bp, collect_pair, &at);
+        ck_assert_uint_eq(n, want);
+        ck_assert_uint_eq(calls, want);
+        for (size_t k = 0; k < want; ++k) {
+            ck_assert(same_id(p[k].a, before[k].a) && same_id(p[k].b, before[k].b));
+            ck_assert(same_id(got[k].a, before[k].a) && same_id(got[k].b, before[k].b));
+        }
+        ck_assert_uint_lt(want, nb);
+        nb = want;
+    }
+    check_pairs(bp, &m); /* and the next search has every pair again */
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
 START_TEST(leaves_and_counters)
 {
     rng = 77;
@@ -865,6 +947,7 @@ int main(void)
     suite_add_tcase(s, tc);
     tc = tcase_create("tree");
     tcase_add_loop_test(tc, automatic_settings, 0, 2);
+    tcase_add_test(tc, removals_drop_their_pairs);
     tcase_add_test(tc, leaves_and_counters);
     tcase_add_test(tc, fast_path_and_pair_callbacks);
     tcase_add_test(tc, world_broadphase_is_the_objects);

@@ -268,7 +268,9 @@ NOCT_API noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const
  * @post On #NOCT_OK the proxy is gone and its handle is stale; it cannot
  *       fail otherwise but with #NOCT_ERR_INVALID for a stale handle. The
  *       pairs of the last noctBroadphaseUpdatePairs() that named it are
- *       dropped from the list.
+ *       dropped from the list: a removal costs the proxy's own leaves, and
+ *       the next noctBroadphasePairs() or noctBroadphaseForEachPair() one
+ *       pass over the list for all the removals since.
  * @param bp the broadphase.
  * @param id the proxy's handle.
  * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
