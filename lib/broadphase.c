@@ -14,7 +14,6 @@
 #include <noctree/mesh.h>
 
 #include "broadphase_internal.h"
-#include "mesh_internal.h"
 
 bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem)
 {

@@ -17,7 +17,6 @@
 
 #include "families_internal.h"
 #include "internal.h"
-#include "mesh_internal.h"
 #include "world_internal.h"
 
 /* Undo a scene builder's additions after a failure: remove the n objects

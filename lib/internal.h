@@ -19,6 +19,7 @@
 
 #include <noctree/octree.h>
 #include <noctree/octree_inline.h>
+#include <noctree/status.h>
 
 /* A requires clause of the API contract: checked in the defensive build,
  * compiled out (NDEBUG) in the efficient one. */
@@ -57,6 +58,16 @@ octNode *noct_oct_unsplit(octNode *N);
 /* The direction whose axes are those of (x, y, z) that are not zero, on
  * the side of their signs; OCT_OMEGA for (0, 0, 0). */
 octDirection noct_direction_of(int x, int y, int z);
+
+/* Fill err (if not NULL) with status, the index and line (or -1 and 0)
+ * and the formatted message, and return status (status.c): the one way a
+ * layer reports a failure. */
+noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
+                     const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
 
 /* min and max of finite doubles (the library validates coordinates before
  * they get here). Unlike fmin and fmax these compile to one instruction

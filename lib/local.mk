@@ -24,6 +24,7 @@ noctree_sources = \
 	lib/scene_families.c \
 	lib/scene_internal.h \
 	lib/scene_write.c \
+	lib/status.c \
 	lib/transform.c \
 	lib/world.c \
 	lib/world_events.c \

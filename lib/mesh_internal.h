@@ -121,14 +121,6 @@ struct noctMesh {
     bvh_node *nodes;    /* nodes[0] is the root */
 };
 
-/* Fill err (if not NULL) and return status. */
-noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
-                     const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 5, 6)))
-#endif
-    ;
-
 /* The slot of a mesh with a box form (has_box). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 

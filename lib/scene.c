@@ -21,7 +21,6 @@
 
 #include "families_internal.h"
 #include "internal.h"
-#include "mesh_internal.h"
 #include "scene_internal.h"
 #include "world_internal.h"
 

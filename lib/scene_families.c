@@ -15,7 +15,6 @@
 #include <string.h>
 
 #include "internal.h"
-#include "mesh_internal.h"
 #include "scene_internal.h"
 
 #define PI 3.14159265358979323846

@@ -14,7 +14,6 @@
 
 #include "families_internal.h"
 #include "internal.h"
-#include "mesh_internal.h"
 #include "scene_internal.h"
 
 /* x in the fewest significant digits (15 to 17) that read back to it. */
