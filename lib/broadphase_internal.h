@@ -45,6 +45,9 @@ typedef struct noct_cell {
     uint32_t small;      /* leaf: proxies small enough to split for */
     uint32_t stamp_obj;  /* enter check: last (proxy, clock) that queried */
     uint32_t fresh;      /* objs[fresh, count) came since the near pairs */
+    uint32_t unlisted;   /* leaf: sweeps left that keep no near pairs
+                            (the last list grew too long); in the
+                            padding before stamp_step */
     uint64_t stamp_step; /* this node as a neighbor */
     /* Leaf, from its last sweep: every pair of its boxes not in near was
      * at least budget apart (on some axis) then, less twice the reach of

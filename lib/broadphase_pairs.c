@@ -154,6 +154,9 @@ static NOCT_ALWAYS_INLINE bool near_reserve(noctBroadphase *bp, noct_cell *c)
  * swept about once in that many steps, and its near pairs tested in the
  * others. */
 #define NEAR_STEPS 4
+/* Near pairs a leaf keeps at most, per box (plus a few): see search_leaf. */
+#define NEAR_PER_OBJECT 8
+#define UNLISTED_SWEEPS 4
 
 /*
  * The fresh objects of leaf c, which came since its near pairs were made:
@@ -246,8 +249,18 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
             if (c->objs[i] != g[i].id) /* few move: tell only those */
                 noct_leaf_put(bp, c, i, g[i].id, noct_span_of(bp, g[i].id, c));
     }
-    const bool listing = sweep && c->count <= 0x10000;
-    const double m2 = listing ? 2 * NEAR_STEPS * bp->reach : 0;
+    /* Near pairs pay while they are few: when objects move so far for
+     * their leaf that the margin takes in most of its pairs (fast objects
+     * in large leaves), testing them all every search costs more than
+     * sweeping again. So a list that grows past NEAR_PER_OBJECT a box is
+     * dropped at once (the sweep goes on without a margin), and the next
+     * UNLISTED_SWEEPS sweeps keep none; then a list is tried again. */
+    const bool listing = sweep && c->count <= 0x10000 && c->unlisted == 0;
+    if (c->unlisted > 0)
+        --c->unlisted;
+    const uint32_t near_cap = NEAR_PER_OBJECT * c->count + 64;
+    bool listed = listing;
+    double m2 = listing ? 2 * NEAR_STEPS * bp->reach : 0;
     c->nnear = 0;
     /* Meanwhile the least distance apart of the pairs beyond the margin:
      * those the sweep passes over are apart on its axis by at least the
@@ -275,7 +288,12 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
                 apart = noct_min(apart, gap);
                 continue;
             }
-            if (listing) {
+            if (listed && c->nnear == near_cap) {
+                listed = false; /* too many: no list, no margin from here on */
+                m2 = 0;
+                c->nnear = 0;
+            }
+            if (listed) {
                 if (!near_reserve(bp, c))
                     return NOCT_ERR_NOMEM;
                 c->near[c->nnear++] = i | j << 16;
@@ -286,7 +304,9 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
                 return NOCT_ERR_NOMEM;
         }
     }
-    c->budget = !listing ? 0 : c->nnear > 0 ? m2 : apart;
+    if (listing && !listed)
+        c->unlisted = UNLISTED_SWEEPS;
+    c->budget = !listed ? 0 : c->nnear > 0 ? m2 : apart;
     noct_apool_shrink(&bp->near_pool, (void **)&c->near, &c->capnear, c->nnear);
     c->fresh = c->count;
     return NOCT_OK;

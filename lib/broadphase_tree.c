@@ -214,7 +214,7 @@ static void reset_cell(noct_cell *c, const double lo[3], double size)
     NOCT_INVARIANT(c->objs == NULL && c->near == NULL);
     memcpy(c->lo, lo, sizeof c->lo);
     c->size = size;
-    c->count = c->small = c->fresh = c->stamp_obj = 0;
+    c->count = c->small = c->fresh = c->stamp_obj = c->unlisted = 0;
     c->stamp_step = 0;
     c->budget = 0;
     c->nnear = 0;
