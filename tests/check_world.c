@@ -236,6 +236,77 @@ START_TEST(gas_kinds_known_answers)
 }
 END_TEST
 
+/*
+ * The automatic settings are a pure function of what the world holds: two
+ * worlds made alike choose alike, build the same tree (the same splits,
+ * merges, rebuilds and leaves entered, step by step) and give the same
+ * events; and the choice follows the world: a world that grows by more
+ * than a factor of 4 between steps chooses again (a rebuild), one that
+ * grows by less does not for that reason.
+ */
+START_TEST(automatic_settings_are_deterministic)
+{
+    noctWorld *w[2];
+    for (int i = 0; i < 2; ++i) {
+        noctScene *sc;
+        noctError err;
+        ck_assert_int_eq(noctSceneFamily("clusters:3000", &sc, &err), NOCT_OK);
+        ck_assert_int_eq(noctSceneBuild(sc, &w[i], &err), NOCT_OK);
+        noctSceneDestroy(sc);
+    }
+    for (int s = 0; s < 40; ++s) {
+        step_ok(w[0]);
+        step_ok(w[1]);
+        noctWorldCounters c[2];
+        int N[2], depth[2];
+        for (int i = 0; i < 2; ++i) {
+            noctWorldGetCounters(w[i], &c[i]);
+            noctBroadphaseGetSettings(noctWorldBroadphase(w[i]), &N[i], &depth[i]);
+        }
+        ck_assert_int_eq(N[0], 128);
+        ck_assert_int_eq(N[0], N[1]);
+        ck_assert_int_eq(depth[0], depth[1]);
+        ck_assert_uint_eq(c[0].splits, c[1].splits);
+        ck_assert_uint_eq(c[0].merges, c[1].merges);
+        ck_assert_uint_eq(c[0].rebuilds, c[1].rebuilds);
+        ck_assert_uint_eq(c[0].leaves_entered, c[1].leaves_entered);
+        const noctPair *p[2];
+        const size_t n = noctWorldBegan(w[0], &p[0]);
+        ck_assert_uint_eq(noctWorldBegan(w[1], &p[1]), n);
+        ck_assert(n == 0 || memcmp(p[0], p[1], n * sizeof *p[0]) == 0);
+    }
+    validate_ok(w[0]);
+    /* growth: 100 more boxes do not rebuild for the count (the last
+     * choice was made for at least 1 365 of the 3 000: the builds at 1, 5,
+     * 21, 85, 341 and 1 365 added, and any later growth of the root);
+     * 12 500 more (over 4 times any count up to 3 100) do */
+    noctMesh *cube;
+    ck_assert_int_eq(noctMeshCreateBox(0.25, 0.25, 0.25, &cube, NULL), NOCT_OK);
+    noctWorldCounters before, after;
+    const double zero[3] = {0, 0, 0};
+    for (int phase = 0; phase < 2; ++phase) {
+        noctWorldGetCounters(w[0], &before);
+        const int more = phase == 0 ? 100 : 12500;
+        for (int i = 0; i < more; ++i) {
+            /* inside the clusters' container: no root growth */
+            const double at[3] = {1 + (i % 20), 1 + (i / 20 % 20), 1 + (i / 400) * 0.5};
+            noctObjectId id;
+            ck_assert_int_eq(noctWorldAdd(w[0], cube, at, zero, 0, &id, NULL), NOCT_OK);
+        }
+        step_ok(w[0]);
+        noctWorldGetCounters(w[0], &after);
+        if (phase == 0)
+            ck_assert_uint_eq(after.rebuilds, before.rebuilds);
+        else
+            ck_assert_uint_gt(after.rebuilds, before.rebuilds);
+        validate_ok(w[0]);
+    }
+    noctWorldDestroy(w[0]);
+    noctWorldDestroy(w[1]);
+    noctMeshDestroy(cube);
+}
+END_TEST
+
 /* The facing pair of ring r first overlaps at step 51 + 2 r and reverses. */
 START_TEST(planes_timing_and_reversal)
 {
@@ -1421,6 +1492,7 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
     tcase_add_test(tc, root_grows);
+    tcase_add_test(tc, automatic_settings_are_deterministic);
     tcase_add_test(tc, root_face_creeper_grows);
     tcase_add_test(tc, many_partners_sorted);
     tcase_add_test(tc, skipped_leaves_against_brute_force);

@@ -74,15 +74,17 @@ check "bench: nothing on stderr" [ ! -s "$tmp/bench.err" ]
 for title in 'Table 1, reproduced' 'At scale' 'Where the time goes' 'What accuracy costs'; do
     check "bench: section '$title'" grep -q "== $title" "$tmp/bench.txt"
 done
-# Table 1: rows N=5 ... N=big over sets t0 ... t3.
-check "bench: table rows" [ "$(grep -c '^N=\(5\|10\|30\|50\|big\) ' "$tmp/bench.txt")" -eq 10 ]
+# Table 1: rows N=5 ... N=50, the defaults (auto) and N=big over sets t0 ... t3.
+check "bench: table rows" \
+    [ "$(grep -c '^N=\(5\|10\|30\|50\|auto\|big\) ' "$tmp/bench.txt")" -eq 12 ]
 check "bench: set header" grep -q '^set  *t0  *t1  *t2  *t3$' "$tmp/bench.txt"
 check "bench: the verdict line" \
     grep -q '^\(smallest set at which the octree is significantly faster: \|no set at which\)' \
     "$tmp/bench.txt"
-# CSV files: a header and one row per run (4 sets x 5 N x 3 repeats).
-check "bench: table1.csv rows" [ "$(wc -l < "$out/table1.csv")" -eq 61 ]
-check "bench: scale.csv rows" [ "$(wc -l < "$out/scale.csv")" -eq 31 ]
+# CSV files: a header and one row per run (4 sets x 6 settings x 3 repeats;
+# the scale section: 2 sets).
+check "bench: table1.csv rows" [ "$(wc -l < "$out/table1.csv")" -eq 73 ]
+check "bench: scale.csv rows" [ "$(wc -l < "$out/scale.csv")" -eq 37 ]
 check "bench: table1-stats.csv rows" [ "$(wc -l < "$out/table1-stats.csv")" -eq 5 ]
 check "bench: accuracy.csv rows (3 scenes x 6)" [ "$(wc -l < "$out/accuracy.csv")" -eq 19 ]
 check "bench: stages.csv rows" [ "$(wc -l < "$out/stages.csv")" -eq 3 ]

@@ -2,7 +2,8 @@
 /*
  * bench-world: the collision world on the SCENES.md families.
  *
- * For each scene and N: per-step wall time (median and 90th percentile
+ * For each scene and N (5, 10, 30 and 50 at depth 8, and the defaults:
+ * both chosen by the world): per-step wall time (median and 90th percentile
  * over the steps), ns per object per step, setup time, the contact-begin
  * events (which must not depend on N), the peak memory of the run, and the
  * ratio of the exhaustive algorithm's median to this N's. Each run is a
@@ -18,9 +19,13 @@
  *   --overlap: instead, the overlap workloads of world.h's overlap rule
  *   (coincident objects added, 10^5 and 10^6; coincident objects added
  *   and stepped, 10^3 and 10^4, whose every pair collides; a pile of
- *   touching cubes, 10^4 and 10^5) at the defaults, at N = 1 and at
- *   max-depth 40, with time and peak memory; with --quick, small sizes
- *   that only check it runs.
+ *   touching cubes, 10^4 and 10^5) at the defaults (the settings the
+ *   world chose, marked a:), at N = 1 and at max-depth 40, with time and
+ *   peak memory; with --quick, small sizes that only check it runs.
+ *   --sweep: instead, N and the maximum depth over every family of
+ *   noctSceneFamily() at 1 000 to 1 000 000 objects (--sizes, --families,
+ *   --repeats; see sweep_bench()), the defaults marked; writes
+ *   bench-sweep.csv.
  */
 #define _DEFAULT_SOURCE /* wait4(2): the peak memory of one child */
 #include <math.h>
@@ -61,7 +66,7 @@ static result run(const char *scene, int N, int steps)
     result r = {0};
     noctWorldDef def = noctDefaultWorldDef();
     def.N = N;
-    def.max_depth = 8;
+    def.max_depth = N == NOCT_AUTO ? NOCT_AUTO : 8;
     noctMesh *cube = NULL;
     noctError err;
     size_t n = 0;
@@ -146,6 +151,7 @@ static bool in_child(void (*fn)(const void *arg, void *out), const void *arg, vo
 typedef struct overlap_result {
     double add_s, step_s;
     size_t objects, pairs;
+    int N, depth; /* in force at the end */
     int ok;
 } overlap_result;
 
@@ -195,6 +201,7 @@ static overlap_result overlap_run(int kind, size_t n, int N, int depth)
         const noctPair *p;
         r.pairs = noctWorldColliding(w, &p);
     }
+    noctBroadphaseGetSettings(noctWorldBroadphase(w), &r.N, &r.depth);
     noctWorldDestroy(w);
     noctMeshDestroy(cube);
     r.ok = 1;
@@ -219,15 +226,15 @@ static void overlap_child(const void *arg, void *out)
  * are linear. */
 static int overlap_bench(bool quick)
 {
-    static const int configs[][2] = {{10, 10}, {1, 10}, {10, 40}};
+    static const int configs[][2] = {{NOCT_AUTO, NOCT_AUTO}, {1, 10}, {10, 40}};
     static const char *names[] = {"coincident, added", "coincident, added+stepped",
                                   "touching pile"};
     const size_t sizes[3][2] = {{quick ? 1000 : 100000, quick ? 10000 : 1000000},
                                 {quick ? 100 : 1000, quick ? 300 : 10000},
                                 {quick ? 125 : 10000, quick ? 1000 : 100000}};
     printf("\noverlap: work per object (and per colliding pair) at two sizes\n");
-    printf("%-26s %3s %5s %9s %11s %9s %9s %10s %12s\n", "workload", "N", "depth", "objects",
-           "pairs", "add s", "step s", "peak MiB", "ns/(obj+pr)");
+    printf("%-26s %6s %6s %9s %11s %9s %9s %10s %12s\n", "workload", "N", "depth",
+           "objects", "pairs", "add s", "step s", "peak MiB", "ns/(obj+pr)");
     for (int kind = 0; kind < 3; ++kind)
         for (size_t c = 0; c < sizeof configs / sizeof *configs; ++c)
             for (int z = 0; z < 2; ++z) {
@@ -236,13 +243,17 @@ static int overlap_bench(bool quick)
                 long peak = 0;
                 const bool ran = in_child(overlap_child, &job, &r, sizeof r, &peak);
                 if (!ran || !r.ok) {
-                    printf("%-26s %3d %5d   failed\n", names[kind], configs[c][0],
+                    printf("%-26s %6d %6d   failed\n", names[kind], configs[c][0],
                            configs[c][1]);
                     return EXIT_FAILURE;
                 }
-                printf("%-26s %3d %5d %9zu %11zu %9.3f %9.3f %10.1f %12.1f\n", names[kind],
-                       configs[c][0], configs[c][1], r.objects, r.pairs, r.add_s, r.step_s,
-                       (double)peak / 1024,
+                /* the settings in force, "a:" when the world chose them */
+                char nb[16], db[16];
+                snprintf(nb, sizeof nb, "%s%d", configs[c][0] == NOCT_AUTO ? "a:" : "", r.N);
+                snprintf(db, sizeof db, "%s%d", configs[c][1] == NOCT_AUTO ? "a:" : "",
+                         r.depth);
+                printf("%-26s %6s %6s %9zu %11zu %9.3f %9.3f %10.1f %12.1f\n", names[kind], nb,
+                       db, r.objects, r.pairs, r.add_s, r.step_s, (double)peak / 1024,
                        1e9 * (r.add_s + r.step_s) / (double)(r.objects + r.pairs));
             }
     return 0;
@@ -584,7 +595,7 @@ int main(int argc, char **argv)
     }
     if (quick)
         steps = 20;
-    static const int Ns[] = {NOCT_N_EXHAUSTIVE, 5, 10, 30, 50};
+    static const int Ns[] = {NOCT_N_EXHAUSTIVE, 5, 10, 30, 50, NOCT_AUTO};
     FILE *csv = fopen("bench-world.csv", "w");
     if (csv == NULL) {
         perror("bench-world: bench-world.csv");
@@ -603,7 +614,9 @@ int main(int argc, char **argv)
             result r = {0};
             long peak = 0;
             const bool ran = in_child(scene_child, &job, &r, sizeof r, &peak);
-            const char *nname = Ns[ni] == NOCT_N_EXHAUSTIVE ? "big" : NULL;
+            const char *nname = Ns[ni] == NOCT_N_EXHAUSTIVE ? "big"
+                                : Ns[ni] == NOCT_AUTO       ? "auto"
+                                                            : NULL;
             char nbuf[16];
             if (nname == NULL) {
                 snprintf(nbuf, sizeof nbuf, "%d", Ns[ni]);

@@ -60,6 +60,17 @@
  * half as large; after a growth, not for 64 sub-steps, so that objects
  * going to and fro do not rebuild the tree at every step.
  *
+ * **N and the maximum depth** are the world's unless a program gives
+ * them (noctWorldDef, #NOCT_AUTO by default): its broadphase chooses them
+ * whenever it builds the tree, and builds it again when the number of
+ * objects has changed by a factor of 4 since (broadphase.h, "Settings":
+ * N is 128; the depth follows the objects' sizes against the root's). The
+ * choice changes neither the pairs nor the events, only the time and
+ * memory a step takes; noctBroadphaseGetSettings() on
+ * noctWorldBroadphase() tells what is in force. Whether objects move is
+ * not an input: on the mostly static family (nine in ten static) the
+ * best N is where it is for the gas that moves (docs/results.md).
+ *
  * **The overlap rule: bounded work whatever the objects share.** A leaf
  * splits only for objects that a split can separate: it splits when more
  * than N of its objects have boxes no longer, on any axis, than half the
