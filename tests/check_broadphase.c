@@ -120,6 +120,21 @@ static void add_one(noctBroadphase *bp, model *m, int i, double scene)
     m->alive[i] = true;
 }
 
+/* A broadphase at N (the default depth) with n random proxies in a
+ * scene of this size, recorded in *m. */
+static noctBroadphase *filled(int N, int n, double scene, model *m)
+{
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = N;
+    noctBroadphase *bp;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, NULL), NOCT_OK);
+    memset(m, 0, sizeof *m);
+    m->n = n;
+    for (int i = 0; i < n; ++i)
+        add_one(bp, m, i, scene);
+    return bp;
+}
+
 /* Move proxy i: a little, far, out of the scene, or to a new size. */
 static void move_one(noctBroadphase *bp, model *m, int i, double scene)
 {
@@ -308,16 +323,8 @@ static int cmp_u32(const void *x, const void *y)
 START_TEST(queries_against_brute_force)
 {
     rng = 0xfeedu + (uint64_t)_i;
-    noctBroadphaseDef def = noctDefaultBroadphaseDef();
-    def.N = _i == 0 ? 2 : 10;
-    noctBroadphase *bp;
-    noctError err;
-    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
     static model m;
-    memset(&m, 0, sizeof m);
-    m.n = 300;
-    for (int i = 0; i < m.n; ++i)
-        add_one(bp, &m, i, 20);
+    noctBroadphase *bp = filled(_i == 0 ? 2 : 10, 300, 20, &m);
     for (int i = 0; i < m.n; ++i)
         if (i % 3 == 0)
             move_one(bp, &m, i, 20);
@@ -620,16 +627,9 @@ static bool collect_pair(void *context, noctProxyId a, void *ua, noctProxyId b, 
 START_TEST(removals_drop_their_pairs)
 {
     rng = 0x7e3u;
-    noctBroadphaseDef def = noctDefaultBroadphaseDef();
-    def.N = 4;
-    noctBroadphase *bp;
-    noctError err;
-    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
     static model m;
-    memset(&m, 0, sizeof m);
-    m.n = 300;
-    for (int i = 0; i < m.n; ++i)
-        add_one(bp, &m, i, 8);
+    noctBroadphase *bp = filled(4, 300, 8, &m);
+    noctError err;
     ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
     const noctProxyPair *p;
     const size_t n0 = noctBroadphasePairs(bp, &p);

@@ -122,6 +122,27 @@ START_TEST(planes_t20_t30)
 }
 END_TEST
 
+/* Step w steps times, validating every 50th: the contact begins, and a
+ * hash of their sequence (step, a, b) into *hash. */
+static size_t steps_and_hash(noctWorld *w, int steps, uint64_t *hash)
+{
+    size_t begins = 0;
+    uint64_t h = 1469598103934665603u;
+    for (int s = 1; s <= steps; ++s) {
+        step_ok(w);
+        const noctPair *p;
+        const size_t nb = noctWorldBegan(w, &p);
+        begins += nb;
+        for (size_t i = 0; i < nb; ++i)
+            h = ((h ^ (uint64_t)s) * 1099511628211u ^ p[i].a.index ^
+                 ((uint64_t)p[i].b.index << 32)) * 1099511628211u;
+        if (s % 50 == 0)
+            validate_ok(w);
+    }
+    *hash = h;
+    return begins;
+}
+
 /* gas_1000 (SCENES.md): 6 212 contact-begin events in 200 steps, the
  * answer ODE, FCL and a brute-force reference agree on; the same event
  * sequence in both maintenance modes. */
@@ -141,21 +162,8 @@ static size_t run_gas(size_t n, int N, noctMaintenance mode, uint64_t *hash)
     noctError err;
     ck_assert_int_eq(noctWorldCreate(&def, &w, &err), NOCT_OK);
     ck_assert_msg(noctWorldAddGas(w, n, &err) == NOCT_OK, "%s", err.message);
-    size_t begins = 0;
-    uint64_t h = 1469598103934665603u;
-    for (int s = 1; s <= 200; ++s) {
-        step_ok(w);
-        const noctPair *p;
-        size_t nb = noctWorldBegan(w, &p);
-        begins += nb;
-        for (size_t i = 0; i < nb; ++i)
-            h = ((h ^ (uint64_t)s) * 1099511628211u ^ p[i].a.index ^
-                 ((uint64_t)p[i].b.index << 32)) * 1099511628211u;
-        if (s % 50 == 0)
-            validate_ok(w);
-    }
+    const size_t begins = steps_and_hash(w, 200, hash);
     noctWorldDestroy(w);
-    *hash = h;
     return begins;
 }
 
@@ -192,22 +200,9 @@ static size_t run_family(const char *spec, int N, noctMaintenance mode, uint64_t
     def->max_depth = N == NOCT_AUTO ? NOCT_AUTO : 10;
     def->maintenance = mode;
     ck_assert_msg(noctSceneBuild(sc, &w, &err) == NOCT_OK, "%s", err.message);
-    size_t begins = 0;
-    uint64_t h = 1469598103934665603u;
-    for (int s = 1; s <= noctSceneSteps(sc); ++s) {
-        step_ok(w);
-        const noctPair *p;
-        const size_t nb = noctWorldBegan(w, &p);
-        begins += nb;
-        for (size_t i = 0; i < nb; ++i)
-            h = ((h ^ (uint64_t)s) * 1099511628211u ^ p[i].a.index ^
-                 ((uint64_t)p[i].b.index << 32)) * 1099511628211u;
-        if (s % 50 == 0)
-            validate_ok(w);
-    }
+    const size_t begins = steps_and_hash(w, noctSceneSteps(sc), hash);
     noctWorldDestroy(w);
     noctSceneDestroy(sc);
-    *hash = h;
     return begins;
 }
 

@@ -260,6 +260,18 @@ static int overlap_bench(bool quick)
 }
 
 
+/* A CSV file for writing, its header line written; NULL (said why) if it
+ * cannot be opened. */
+static FILE *open_csv(const char *name, const char *header)
+{
+    FILE *f = fopen(name, "w");
+    if (f == NULL)
+        perror(name);
+    else
+        fprintf(f, "%s\n", header);
+    return f;
+}
+
 /* ---- sweep: N and the depth over every family, the automatic choice marked -- */
 
 /* The sweep's families: a name and how its size spec is made for about n
@@ -372,13 +384,10 @@ static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, i
 {
     static const int sweep_N[] = {5, 10, 20, 30, 50, 80, 128};
     static const int sweep_depth[] = {6, 8, 10, 14};
-    FILE *csv = fopen("bench-sweep.csv", "w");
-    if (csv == NULL) {
-        perror("bench-world: bench-sweep.csv");
+    FILE *csv = open_csv("bench-sweep.csv", "family,size,objects,setting,N,depth,steps,repeats,"
+                                            "median_s,setup_s,begins,peak_kib");
+    if (csv == NULL)
         return EXIT_FAILURE;
-    }
-    fprintf(csv, "family,size,objects,setting,N,depth,steps,repeats,median_s,setup_s,begins,"
-                 "peak_kib\n");
     printf("sweep: N and the maximum depth, each row the median of %d interleaved runs\n",
            repeats);
     printf("%-16s %8s %-14s %4s %5s %11s %9s %10s %9s\n", "scene", "objects", "setting", "N",
@@ -596,13 +605,11 @@ int main(int argc, char **argv)
     if (quick)
         steps = 20;
     static const int Ns[] = {NOCT_N_EXHAUSTIVE, 5, 10, 30, 50, NOCT_AUTO};
-    FILE *csv = fopen("bench-world.csv", "w");
-    if (csv == NULL) {
-        perror("bench-world: bench-world.csv");
+    FILE *csv = open_csv("bench-world.csv", "scene,objects,N,steps,median_s,p90_s,"
+                                            "ns_per_object_step,setup_s,begins,peak_kib,"
+                                            "exhaustive_ratio");
+    if (csv == NULL)
         return EXIT_FAILURE;
-    }
-    fprintf(csv, "scene,objects,N,steps,median_s,p90_s,ns_per_object_step,setup_s,"
-                 "begins,peak_kib,exhaustive_ratio\n");
     printf("collision world, %d steps per run, single thread\n", steps);
     printf("%-12s %8s %5s %11s %11s %9s %8s %8s %10s %8s\n", "scene", "objects", "N",
            "median ms", "p90 ms", "ns/obj", "setup s", "begins", "peak MiB",
