@@ -825,7 +825,9 @@ START_TEST(scenes_written_read_back)
              "effects motion events response walls spin track\n",
              off);
     const char *path = write_text("all.scene", text);
-    const char *const specs[] = {"arms:1", "arms:3", "keyframes:25", "gas:40", "planes:1", path};
+    const char *const specs[] = {"arms:1",     "arms:3",       "keyframes:25", "gas:40",
+                                 "mixed:40",   "clusters:40",  "static:40",    "escape:40",
+                                 "planes:1",   path};
     for (size_t i = 0; i < sizeof specs / sizeof *specs; ++i) {
         noctScene *a, *b;
         noctError err;
@@ -840,6 +842,16 @@ START_TEST(scenes_written_read_back)
         ck_assert_msg(st == NOCT_OK, "%s written: %s", specs[i], err.message);
         char *t2 = written(b);
         ck_assert_msg(strcmp(t1, t2) == 0, "%s: written twice, not the same", specs[i]);
+        if (specs[i] != path) /* the defaults, written as such */
+            ck_assert_msg(strstr(t1, "N auto\nmax-depth auto\n") != NULL, "%s:\n%s", specs[i],
+                          t1);
+        if (specs[i] != path && strncmp(specs[i], "arms", 4) != 0 &&
+            strncmp(specs[i], "keyframes", 9) != 0) { /* a family line */
+            char line[48];
+            snprintf(line, sizeof line, "family %.*s %s\n", (int)strcspn(specs[i], ":"),
+                     specs[i], strchr(specs[i], ':') + 1);
+            ck_assert_msg(strstr(t1, line) != NULL, "'%s' not in:\n%s", line, t1);
+        }
         if (specs[i] == path) { /* every attribute, as given */
             static const char *const LINES[] = {
                 "N big\n", "max-depth 12\n", "maintenance rebuild\n", "steps 60\n",
