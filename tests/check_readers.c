@@ -140,7 +140,7 @@ static bool interposed(void)
 
 /* Files are written to a fresh directory of this process, removed at exit. */
 static char tmp_dir[64];
-static char tmp_files[64][160];
+static char tmp_files[256][160]; /* every file of a run without fork(), as under valgrind */
 static size_t tmp_count;
 
 static void remove_temp(void)
