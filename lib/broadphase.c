@@ -15,91 +15,6 @@
 
 #include "broadphase_internal.h"
 
-bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return true;
-    uint32_t c = *cap ? *cap : 4;
-    while (c < need)
-        c *= 2;
-    void *q = realloc(*p, (size_t)c * elem);
-    if (q == NULL)
-        return false;
-    *p = q;
-    *cap = c;
-    return true;
-}
-
-void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap)
-{
-    unsigned k = 0;
-    while (k < NOCT_APOOL_CLASSES && (uint64_t)p->base << k < need)
-        ++k;
-    if (k == NOCT_APOOL_CLASSES)
-        return NULL;
-    *cap = p->base << k;
-    if (p->cls[k].n > 0)
-        return p->cls[k].free[--p->cls[k].n];
-    /* None free: make a sixteenth as many again as there are (at least
-     * two), in one slab, so that a little more demand than ever before
-     * does not allocate at once, and arrays carry no allocator header. */
-    const size_t more = p->cls[k].made / 16 > 2 ? p->cls[k].made / 16 : 2;
-    if (p->cls[k].made + more > p->cls[k].cap) {
-        size_t c = p->cls[k].cap ? 2 * p->cls[k].cap : 16;
-        while (c < p->cls[k].made + more)
-            c *= 2;
-        void **q = realloc(p->cls[k].free, c * sizeof *q);
-        if (q == NULL)
-            return NULL;
-        p->cls[k].free = q;
-        p->cls[k].cap = c;
-    }
-    if (!noct_grow_array((void **)&p->slabs, &p->capslabs, p->nslabs + 1, sizeof *p->slabs))
-        return NULL;
-    const size_t bytes = (size_t)*cap * p->elem;
-    char *slab = malloc(more * bytes);
-    if (slab == NULL)
-        return NULL;
-    p->slabs[p->nslabs++] = slab;
-    for (size_t i = 0; i < more; ++i)
-        p->cls[k].free[p->cls[k].n++] = slab + i * bytes;
-    p->cls[k].made += more;
-    return p->cls[k].free[--p->cls[k].n];
-}
-
-void *noct_apool_take_free(noct_apool *p, uint32_t cap)
-{
-    unsigned k = 0;
-    while (k < NOCT_APOOL_CLASSES && p->base << k != cap)
-        ++k;
-    return k < NOCT_APOOL_CLASSES && p->cls[k].n > 0 ? p->cls[k].free[--p->cls[k].n] : NULL;
-}
-
-void noct_apool_give(noct_apool *p, void *a, uint32_t cap)
-{
-    if (a == NULL)
-        return;
-    unsigned k = 0;
-    while (p->base << k != cap)
-        ++k;
-    NOCT_INVARIANT(k < NOCT_APOOL_CLASSES && p->cls[k].n < p->cls[k].made);
-    p->cls[k].free[p->cls[k].n++] = a;
-}
-
-void noct_apool_free(noct_apool *p)
-{
-    for (size_t i = 0; i < p->nslabs; ++i)
-        free(p->slabs[i]);
-    free(p->slabs);
-    p->slabs = NULL;
-    p->nslabs = p->capslabs = 0;
-    for (unsigned k = 0; k < NOCT_APOOL_CLASSES; ++k) {
-        free(p->cls[k].free);
-        p->cls[k].free = NULL;
-        p->cls[k].n = p->cls[k].cap = p->cls[k].made = 0;
-    }
-}
-
 noctBroadphaseDef noctDefaultBroadphaseDef(void)
 {
     noctBroadphaseDef d;
@@ -206,26 +121,21 @@ void noctBroadphaseDestroy(noctBroadphase *bp)
     free(bp);
 }
 
+NOCT_DEFINE_RESIZE(resize_proxies, noct_proxy)
+NOCT_DEFINE_RESIZE(resize_boxes, noct_aabb)
+NOCT_DEFINE_RESIZE(resize_homes, noct_home)
+NOCT_DEFINE_RESIZE(resize_u32, uint32_t)
+
 /* Every per-slot array to capacity cap; each that grew is kept even if a
  * later one fails. */
 static bool reserve_slots(noctBroadphase *bp, uint32_t cap)
 {
     if (cap <= bp->capslots)
         return true;
-#define GROW(field)                                                             \
-    do {                                                                        \
-        void *q = realloc(bp->field, (size_t)cap * sizeof *bp->field);          \
-        if (q == NULL)                                                          \
-            return false;                                                       \
-        bp->field = q;                                                          \
-    } while (0)
-    GROW(proxy);
-    GROW(box);
-    GROW(home);
-    GROW(gen);
-    GROW(mark);
-    GROW(free_slots);
-#undef GROW
+    if (!resize_proxies(&bp->proxy, cap) || !resize_boxes(&bp->box, cap) ||
+        !resize_homes(&bp->home, cap) || !resize_u32(&bp->gen, cap) ||
+        !resize_u32(&bp->mark, cap) || !resize_u32(&bp->free_slots, cap))
+        return false;
     bp->capslots = cap;
     return true;
 }

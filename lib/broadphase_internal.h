@@ -31,7 +31,9 @@
 
 #include <noctree/broadphase.h>
 
+#include "array.h"
 #include "internal.h"
+#include "pool.h"
 
 typedef struct noct_cell {
     double lo[3];
@@ -127,60 +129,6 @@ typedef struct noct_leaf_box {
     uint32_t id;
 } noct_leaf_box;
 
-/*
- * Arrays pooled by size class: class k holds base << k elements of elem
- * bytes. A list that must grow takes an array of a larger class and gives
- * its own back; a leaf that splits or goes back to the pool gives its
- * lists back. So the arrays of each class in use never outnumber the most
- * ever in use at once, and once that settles nothing is allocated. A
- * class's free stack has room for every array of the class ever made, so
- * giving one back cannot fail.
- */
-#define NOCT_APOOL_CLASSES 28
-typedef struct noct_apool {
-    size_t elem;
-    uint32_t base;
-    struct {
-        void **free;
-        size_t n, cap, made;
-    } cls[NOCT_APOOL_CLASSES];
-    void **slabs;          /* the arrays are made several to a slab */
-    uint32_t nslabs, capslabs;
-} noct_apool;
-
-/* An array of at least need elements, its capacity into *cap; NULL
- * without memory (or beyond the largest class). */
-void *noct_apool_take(noct_apool *p, uint32_t need, uint32_t *cap);
-
-/* A free array of capacity cap (a class's), or NULL if none is free: it
- * never allocates. For lists that shrink, so that the arrays in use
- * follow the lists' sizes now rather than the largest they ever were. */
-void *noct_apool_take_free(noct_apool *p, uint32_t cap);
-
-/* Give back array a of capacity cap (from noct_apool_take; NULL and 0
- * for none); cannot fail. */
-void noct_apool_give(noct_apool *p, void *a, uint32_t cap);
-
-/* Free every array given back. */
-void noct_apool_free(noct_apool *p);
-
-/* A list of n elements in *a (capacity *cap) that has a quarter of its
- * room or less in use moves to a free array of half the capacity, if the
- * pool has one (elem bytes each, first n copied). */
-static inline void noct_apool_shrink(noct_apool *p, void **a, uint32_t *cap, uint32_t n)
-{
-    if (*cap <= p->base || n > *cap / 4)
-        return;
-    void *q = noct_apool_take_free(p, *cap / 2);
-    if (q == NULL)
-        return;
-    if (n > 0)
-        memcpy(q, *a, n * p->elem);
-    noct_apool_give(p, *a, *cap);
-    *a = q;
-    *cap /= 2;
-}
-
 /* Eight sibling nodes and their cells: what a split takes from the pool
  * and a merge gives back. */
 typedef struct noct_block {
@@ -231,7 +179,7 @@ struct noctBroadphase {
     octNode **work;           /* enter check's worklist */
     size_t nwork, capwork;
     noct_leaf_box *gather;    /* pair search scratch */
-    uint32_t capgather;
+    size_t capgather;
     double reach;             /* this search: how far any box may have
                                  moved on an axis since the last, rounding
                                  included */
@@ -239,7 +187,7 @@ struct noctBroadphase {
     noctProxyPair *sorted;    /* radix sort scratch */
     size_t capsorted;
     uint32_t *digits;
-    uint32_t capdigits;
+    size_t capdigits;
     noct_pair_list pairs;     /* public: the last noctBroadphaseUpdatePairs */
     bool pairs_removed;       /* public: proxies were removed since, whose
                                  pairs the next read drops */
@@ -385,15 +333,6 @@ static inline bool noct_may_split(const noctBroadphase *bp, const octNode *leaf)
 static NOCT_ALWAYS_INLINE bool noct_filters_pass(const noct_proxy *a, const noct_proxy *b)
 {
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
-}
-
-/* Room for need elements of size elem in *p (capacity *cap), doubling;
- * false without memory. Inlined: the sweeps call it for every near pair. */
-bool noct_grow_array_slow(void **p, uint32_t *cap, uint32_t need, size_t elem);
-static NOCT_ALWAYS_INLINE bool noct_grow_array(void **p, uint32_t *cap, uint32_t need,
-                                               size_t elem)
-{
-    return need <= *cap || noct_grow_array_slow(p, cap, need, elem);
 }
 
 /* Append p to l, doubling; false without memory. */

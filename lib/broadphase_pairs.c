@@ -17,15 +17,15 @@
 
 /* ---- pair search, events, response ------------------------------------------- */
 
+NOCT_DEFINE_GROW(grow_pairs, noctProxyPair)
+NOCT_DEFINE_RESIZE(resize_pairs, noctProxyPair)
+NOCT_DEFINE_GROW(grow_gather, noct_leaf_box)
+NOCT_DEFINE_GROW(grow_u32, uint32_t)
+
 bool noct_pairs_grow(noct_pair_list *l)
 {
-    const size_t cap = l->cap ? 2 * l->cap : 64;
-    noctProxyPair *q = realloc(l->p, cap * sizeof *q);
-    if (q == NULL)
-        return false;
-    l->p = q;
-    l->cap = cap;
-    return true;
+    /* 64 first, then doubling */
+    return grow_pairs(&l->p, &l->cap, l->cap > 0 ? l->cap + 1 : 64);
 }
 
 int noct_pair_cmp(const void *x, const void *y)
@@ -226,7 +226,7 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
         return NOCT_OK;
     }
     ++bp->c.leaves_visited;
-    if (!noct_grow_array((void **)&bp->gather, &bp->capgather, 2 * c->count, sizeof *bp->gather))
+    if (!grow_gather(&bp->gather, &bp->capgather, 2 * (size_t)c->count))
         return NOCT_ERR_NOMEM;
     noct_leaf_box *g = bp->gather;
     /* The boxes are scattered; search() requested them a leaf ahead. */
@@ -325,10 +325,8 @@ bool noct_bp_sort_tested(noctBroadphase *bp)
     if (n < 2)
         return true;
     if (bp->capsorted < n) {
-        noctProxyPair *q = realloc(bp->sorted, n * sizeof *q);
-        if (q == NULL)
+        if (!resize_pairs(&bp->sorted, n))
             return false;
-        bp->sorted = q;
         bp->capsorted = n;
     }
     unsigned bits = 1;
@@ -336,7 +334,7 @@ bool noct_bp_sort_tested(noctBroadphase *bp)
         ++bits;
     const unsigned low = (bits + 1) / 2;
     const uint32_t buckets = 1u << low;
-    if (!noct_grow_array((void **)&bp->digits, &bp->capdigits, buckets, sizeof *bp->digits))
+    if (!grow_u32(&bp->digits, &bp->capdigits, buckets))
         return false;
     noctProxyPair *from = bp->tested.p, *to = bp->sorted;
     for (unsigned shift = 0; shift < bits; shift += low) {

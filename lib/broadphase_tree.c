@@ -13,6 +13,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,6 +21,11 @@
 #include <noctree/neighbor.h>
 
 #include "broadphase_internal.h"
+
+NOCT_DEFINE_GROW(grow_blocks, noct_block *)
+NOCT_DEFINE_RESIZE(resize_blocks, noct_block *)
+NOCT_DEFINE_GROW(grow_nodes, octNode *)
+NOCT_DEFINE_RESIZE(resize_nodes, octNode *)
 
 /* Is object id in leaf c? Whichever of its spans and the leaf's list is
  * shorter is searched, so that neither a crowded leaf nor an object in
@@ -176,21 +182,13 @@ static noct_block *take_block(noctBroadphase *bp)
         size_t cap = bp->capblocks ? 2 * bp->capblocks : 32;
         while (cap < bp->nblocks + k)
             cap *= 2;
-        noct_block **q = realloc(bp->blocks, 2 * cap * sizeof *q);
-        if (q == NULL)
+        if (cap > SIZE_MAX / 2 || !resize_blocks(&bp->blocks, 2 * cap))
             return NULL;
-        bp->blocks = q;
-        bp->free_blocks = q + cap;
+        bp->free_blocks = bp->blocks + cap;
         bp->capblocks = cap;
     }
-    if (bp->nchunks == bp->capchunks) {
-        const size_t cap = bp->capchunks ? 2 * bp->capchunks : 8;
-        noct_block **q = realloc(bp->chunks, cap * sizeof *q);
-        if (q == NULL)
-            return NULL;
-        bp->chunks = q;
-        bp->capchunks = cap;
-    }
+    if (!grow_blocks(&bp->chunks, &bp->capchunks, bp->nchunks + 1))
+        return NULL;
     noct_block *chunk = calloc(k, sizeof *chunk);
     if (chunk == NULL)
         return NULL;
@@ -442,14 +440,8 @@ static bool insert_below(noctBroadphase *bp, octNode *n, uint32_t id, bool push,
         return true;
     ++bp->c.leaves_entered;
     if (push) {
-        if (bp->nwork == bp->capwork) {
-            size_t cap = bp->capwork ? 2 * bp->capwork : 64;
-            octNode **q = realloc(bp->work, cap * sizeof *q);
-            if (q == NULL)
-                return false;
-            bp->work = q;
-            bp->capwork = cap;
-        }
+        if (!grow_nodes(&bp->work, &bp->capwork, bp->capwork > 0 ? bp->nwork + 1 : 64))
+            return false;
         bp->work[bp->nwork++] = n;
     }
     return add_and_split(bp, n, id);
@@ -874,10 +866,8 @@ static noctStatus enter_phase(noctBroadphase *bp, uint32_t id)
         return insert_below(bp, bp->root, id, false, true) ? NOCT_OK : NOCT_ERR_NOMEM;
     }
     if (bp->capwork < o->nspans) {
-        octNode **q = realloc(bp->work, o->nspans * sizeof *q);
-        if (q == NULL)
+        if (!resize_nodes(&bp->work, o->nspans))
             return NOCT_ERR_NOMEM;
-        bp->work = q;
         bp->capwork = o->nspans;
     }
     for (uint32_t i = 0; i < o->nspans; ++i)

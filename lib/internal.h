@@ -69,6 +69,9 @@ noctStatus noct_fail(noctError *err, noctStatus status, long index, long line,
 #endif
     ;
 
+/* Seconds on the monotonic clock (clock.c), for the counters' timings. */
+double noct_seconds(void);
+
 /* min and max of finite doubles (the library validates coordinates before
  * they get here). Unlike fmin and fmax these compile to one instruction
  * instead of a libm call on the hot paths. */

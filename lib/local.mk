@@ -5,11 +5,15 @@
 
 noctree_sources = \
 	lib/internal.h \
+	lib/array.c lib/array.h \
+	lib/pool.c lib/pool.h \
+	lib/vec3.h \
 	lib/broadphase.c \
 	lib/broadphase_internal.h \
 	lib/broadphase_pairs.c \
 	lib/broadphase_query.c \
 	lib/broadphase_tree.c \
+	lib/clock.c \
 	lib/direction.c \
 	lib/families.c lib/families_internal.h \
 	lib/mesh.c \

@@ -16,6 +16,7 @@
 
 #include "internal.h"
 #include "mesh_internal.h"
+#include "vec3.h"
 #include "predicates.h"
 
 /* Polygons must be planar and convex within this fraction of their size
@@ -75,28 +76,6 @@ bool noctMeshIsConvex(const noctMesh *mesh)
 
 /* ---- small vector helpers -------------------------------------------- */
 
-static void sub3(const double a[3], const double b[3], double out[3])
-{
-    for (int i = 0; i < 3; ++i)
-        out[i] = a[i] - b[i];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static double norm3(const double a[3])
-{
-    return sqrt(dot3(a, a));
-}
 
 /* ---- scaling -------------------------------------------------------------- */
 
@@ -155,7 +134,7 @@ static void unit3(const double d[3], double u[3])
     }
     scaler s = scaler_for(m);
     double x[3] = {scaled(&s, d[0]), scaled(&s, d[1]), scaled(&s, d[2])};
-    double len = norm3(x); /* in [1/2, 2] */
+    double len = noct_norm3(x); /* in [1/2, 2] */
     for (int k = 0; k < 3; ++k)
         u[k] = x[k] / len;
 }
@@ -166,8 +145,8 @@ static void unit_normal(const double p0[3], const double p1[3], const double p2[
                         double n[3])
 {
     double a[3], b[3], c[3];
-    sub3(p1, p0, a);
-    sub3(p2, p0, b);
+    noct_sub3(p1, p0, a);
+    noct_sub3(p2, p0, b);
     double m = noct_max(max_abs3(a), max_abs3(b));
     if (!(m > 0)) {
         n[0] = n[1] = n[2] = 0;
@@ -178,7 +157,7 @@ static void unit_normal(const double p0[3], const double p1[3], const double p2[
         a[k] = scaled(&s, a[k]);
         b[k] = scaled(&s, b[k]);
     }
-    cross3(a, b, c);
+    noct_cross3(a, b, c);
     unit3(c, n);
 }
 
@@ -226,9 +205,9 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
         double a[3], b[3], d[3];
         corner_at(v, idx, 1, &s, a);
         corner_at(v, idx, 2, &s, b);
-        cross3(a, b, normal);
-        sub3(b, a, d);
-        diam2 = noct_max(dot3(d, d), noct_max(dot3(a, a), dot3(b, b)));
+        noct_cross3(a, b, normal);
+        noct_sub3(b, a, d);
+        diam2 = noct_max(noct_dot3(d, d), noct_max(noct_dot3(a, a), noct_dot3(b, b)));
     } else {
         for (uint32_t i = 0; i < n; ++i) {
             double p[3], q[3], d[3];
@@ -239,14 +218,14 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
             normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
             for (uint32_t j = i + 1; j < n; ++j) {
                 corner_at(v, idx, j, &s, q);
-                sub3(p, q, d);
-                diam2 = noct_max(diam2, dot3(d, d));
+                noct_sub3(p, q, d);
+                diam2 = noct_max(diam2, noct_dot3(d, d));
             }
         }
     }
     /* D >= m, scaled to at least 1/2: the tests below are far from
      * underflow, and N at most 2 n D^2 far from overflow. */
-    double nlen = norm3(normal);
+    double nlen = noct_norm3(normal);
     if (!(nlen > POLY_TOLERANCE * diam2))
         return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
                          "polygon %zu has no area (its corners are collinear "
@@ -259,7 +238,7 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
     for (uint32_t i = 1; i < n; ++i) {
         double d[3];
         corner_at(v, idx, i, &s, d);
-        double off = fabs(dot3(d, normal));
+        double off = fabs(noct_dot3(d, normal));
         if (off > POLY_TOLERANCE * diam)
             return noct_fail(err, NOCT_ERR_NONPLANAR, (long)poly, 0,
                              "polygon %zu: vertex %u is %g off the polygon's "
@@ -272,10 +251,10 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
         corner_at(v, idx, i, &s, a);
         corner_at(v, idx, (i + 1) % n, &s, b);
         corner_at(v, idx, (i + 2) % n, &s, c);
-        sub3(b, a, ab);
-        sub3(c, b, bc);
-        cross3(ab, bc, turn);
-        if (dot3(turn, normal) <= POLY_TOLERANCE * diam2)
+        noct_sub3(b, a, ab);
+        noct_sub3(c, b, bc);
+        noct_cross3(ab, bc, turn);
+        if (noct_dot3(turn, normal) <= POLY_TOLERANCE * diam2)
             return noct_fail(err, NOCT_ERR_NONCONVEX, (long)poly, 0,
                              "polygon %zu is not convex at vertex %u", poly,
                              idx[(i + 1) % n]);
@@ -503,7 +482,7 @@ static bool add_direction(double list[][3], size_t *n, const double u[3])
     if (u[0] == 0 && u[1] == 0 && u[2] == 0)
         return true;
     for (size_t i = 0; i < *n; ++i) {
-        double dp = dot3(list[i], u);
+        double dp = noct_dot3(list[i], u);
         if (fabs(fabs(dp) - 1) < 1e-12)
             return true;
     }
@@ -530,7 +509,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         const double *p0 = &m->v[3 * m->tri[3 * t]];
         unit_normal(p0, &m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t + 2]],
                     m->plane[t]);
-        m->plane[t][3] = dot3(m->plane[t], p0);
+        m->plane[t][3] = noct_dot3(m->plane[t], p0);
     }
     for (size_t t = 0; t < m->nt; ++t)
         for (int c = 0; c < 3; ++c)
@@ -558,9 +537,9 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
             convex = false;
         /* An edge between triangles whose planes differ is an edge of the
          * solid, not a diagonal of a (nearly) flat polygon. */
-        if (sat && dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
+        if (sat && noct_dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
             double d[3], u[3];
-            sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
+            noct_sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
             unit3(d, u);
             sat = add_direction(sat_edge, &m->nsat_edges, u);
         }
@@ -590,7 +569,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         a->lo = INFINITY;
         a->hi = -INFINITY;
         for (size_t k = 0; k < m->nv; ++k) {
-            double d = dot3(a->u, &m->v[3 * k]);
+            double d = noct_dot3(a->u, &m->v[3 * k]);
             a->lo = d < a->lo ? d : a->lo;
             a->hi = d > a->hi ? d : a->hi;
         }
@@ -715,20 +694,20 @@ static void box_form_of(const double *v, const double *const d[3], const uint32_
         for (int k = 0; k < 3; ++k)
             c[k] += v[3 * i + k] / 8;
     double dual[3][3]; /* dual[i].d[j] = (i == j) * det */
-    cross3(d[1], d[2], dual[0]);
-    cross3(d[2], d[0], dual[1]);
-    cross3(d[0], d[1], dual[2]);
-    double det = dot3(d[0], dual[0]);
+    noct_cross3(d[1], d[2], dual[0]);
+    noct_cross3(d[2], d[0], dual[1]);
+    noct_cross3(d[0], d[1], dual[2]);
+    double det = noct_dot3(d[0], dual[0]);
     if (!(fabs(det) > 1e-6))
         return;
     double coef[8][3], h[3] = {0, 0, 0};
     unsigned seen = 0;
     for (size_t i = 0; i < 8; ++i) {
         double r[3];
-        sub3(&v[3 * i], c, r);
+        noct_sub3(&v[3 * i], c, r);
         unsigned pattern = 0;
         for (int j = 0; j < 3; ++j) {
-            coef[i][j] = dot3(r, dual[j]) / det;
+            coef[i][j] = noct_dot3(r, dual[j]) / det;
             if (coef[i][j] == 0)
                 return;
             pattern |= (coef[i][j] > 0 ? 1u : 0u) << j;
@@ -760,8 +739,8 @@ static void box_form_of(const double *v, const double *const d[3], const uint32_
     b->size = S + dev;
     b->dev = float_above(dev);
     for (int i = 0; i < 3; ++i)
-        b->own[i] = float_above(fabs(dot3(b->e[i], b->e[0])) + fabs(dot3(b->e[i], b->e[1])) +
-                                fabs(dot3(b->e[i], b->e[2])));
+        b->own[i] = float_above(fabs(noct_dot3(b->e[i], b->e[0])) + fabs(noct_dot3(b->e[i], b->e[1])) +
+                                fabs(noct_dot3(b->e[i], b->e[2])));
     *has_box = true;
 
     /* The dual, for the witness: every triangle on a face of the ideal box
@@ -786,7 +765,7 @@ static void box_form_of(const double *v, const double *const d[3], const uint32_
     }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            eta = fmax(eta, fabs(dot3(x->g[i], b->e[j]) - (i == j)));
+            eta = fmax(eta, fabs(noct_dot3(x->g[i], b->e[j]) - (i == j)));
             for (int k = 0; k < 3; ++k)
                 mag = fmax(mag, fabs(x->g[i][k] * b->e[j][k]));
         }
@@ -1110,8 +1089,8 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
                 a[k] = scaled(&sc, p1[k] - p0[k]);
                 b[k] = scaled(&sc, p2[k] - p0[k]);
             }
-            cross3(a, b, cr);
-            volume += dot3(r, cr);
+            noct_cross3(a, b, cr);
+            volume += noct_dot3(r, cr);
             mag += fabs(r[0]) * (fabs(a[1] * b[2]) + fabs(a[2] * b[1])) +
                    fabs(r[1]) * (fabs(a[2] * b[0]) + fabs(a[0] * b[2])) +
                    fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));

@@ -27,6 +27,7 @@
 
 #include "internal.h"
 #include "mesh_internal.h"
+#include "vec3.h"
 #include "predicates.h"
 
 typedef struct placed {
@@ -1232,11 +1233,6 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
 
 /* ---- distance, for margins (world_near.c, world_query.c) -------------------------- */
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* A lower bound on the distance between two closed triangles that do not
  * meet, proved in floating point: for disjoint convex polytopes the
  * distance is the largest gap between their projections on a unit axis,
@@ -1259,7 +1255,7 @@ static double proved_gap(const double u[3], double a[3][3], double b[3][3], doub
         return 0;
     double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
     for (int i = 0; i < 3; ++i) {
-        const double pa = dot3(u, a[i]), pb = dot3(u, b[i]);
+        const double pa = noct_dot3(u, a[i]), pb = noct_dot3(u, b[i]);
         amax = noct_max(amax, pa);
         amin = noct_min(amin, pa);
         bmax = noct_max(bmax, pb);

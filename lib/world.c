@@ -20,13 +20,6 @@
 
 #include "world_internal.h"
 
-double noct_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* ---- the world and its objects ----------------------------------------------------- */
 
 noctWorldDef noctDefaultWorldDef(void)

@@ -25,6 +25,8 @@
 
 #include "broadphase_internal.h"
 #include "mesh_internal.h"
+#include "vec3.h"
+#include "array.h"
 
 /* What the motion loop reads of an object: one record. */
 typedef struct noct_object {
@@ -53,12 +55,14 @@ typedef struct noct_pose {
 /* Motion: the movers and what a failed step restores. */
 typedef struct noct_motion {
     uint32_t *movers;      /* live moving objects, by slot */
-    uint32_t nmovers, capmovers;
+    uint32_t nmovers;
+    size_t capmovers;
     double vmax;           /* the movers' greatest speed */
     bool stale;            /* objects came or went since movers was made */
     size_t moving;         /* live objects with a non-zero speed */
     uint32_t *slow;        /* movers that failed the fast test */
-    uint32_t nslow, capslow;
+    uint32_t nslow;
+    size_t capslow;
     /* What roll_back restores: per mover, its position before the step,
      * as the bits the motion loop streams out (noct_keep_position), and,
      * for a step of sub-steps, its velocity; and which velocity
@@ -67,7 +71,8 @@ typedef struct noct_motion {
     double (*prevvel)[3];
     uint32_t *flips;       /* movers the walls turned, and which axes */
     uint8_t *flip_axes;
-    uint32_t capprev, nflips;
+    uint32_t nflips;
+    size_t capprev;
 } noct_motion;
 
 /* Events: the colliding pairs now and before, what began and ended. */
@@ -151,7 +156,6 @@ struct noctWorld {
 
 /* ---- world.c -------------------------------------------------------------------- */
 
-double noct_seconds(void);
 
 /* noctWorldCreateObject() for a velocity that is speed * d for a unit d
  * (noctWorldAdd(), the families, scene files): the speed is kept as given,

@@ -17,38 +17,31 @@
 
 #include "world_internal.h"
 
+NOCT_DEFINE_GROW(grow_u32, uint32_t)
+NOCT_DEFINE_RESIZE(resize_u32, uint32_t)
+NOCT_DEFINE_RESIZE(resize_bytes, uint8_t)
+NOCT_DEFINE_RESIZE(resize_ticks, noct_ticks)
+NOCT_DEFINE_RESIZE(resize_vectors, noct_vec3)
+
 /* The live moving objects in slot order, and their greatest speed, after
  * objects came or went; room for as many slow ones. */
 bool noct_world_update_movers(noctWorld *w)
 {
     if (!w->motion.stale)
         return true;
-    uint32_t cap = w->motion.capmovers;
-    if (!noct_grow_array((void **)&w->motion.movers, &cap, (uint32_t)w->motion.moving, sizeof *w->motion.movers))
+    const size_t n = w->motion.moving;
+    if (!grow_u32(&w->motion.movers, &w->motion.capmovers, n) ||
+        !grow_u32(&w->motion.slow, &w->motion.capslow, n))
         return false;
-    w->motion.capmovers = cap;
-    if (!noct_grow_array((void **)&w->motion.slow, &w->motion.capslow, (uint32_t)w->motion.moving, sizeof *w->motion.slow))
-        return false;
-    if (w->motion.capprev < w->motion.moving) {
+    if (w->motion.capprev < n) {
         const bool walls = (w->def.effects & NOCT_EFFECT_WALLS) != 0;
         const bool sub = (w->def.effects & NOCT_EFFECT_SUBSTEP) != 0;
-        int64_t(*p)[3] = realloc(w->motion.prev, w->motion.moving * sizeof *p);
-        if (p != NULL)
-            w->motion.prev = p;
-        double(*v)[3] = p && sub ? realloc(w->motion.prevvel, w->motion.moving * sizeof *v) : NULL;
-        if (v != NULL)
-            w->motion.prevvel = v;
-        uint32_t *f = p && (!sub || v) && walls
-                          ? realloc(w->motion.flips, w->motion.moving * sizeof *f) : NULL;
-        if (f != NULL)
-            w->motion.flips = f;
-        uint8_t *a = f != NULL ? realloc(w->motion.flip_axes, w->motion.moving * sizeof *a)
-                               : NULL;
-        if (a != NULL)
-            w->motion.flip_axes = a;
-        if (p == NULL || (sub && v == NULL) || (walls && (f == NULL || a == NULL)))
+        if (!resize_ticks(&w->motion.prev, n) ||
+            (sub && !resize_vectors(&w->motion.prevvel, n)) ||
+            (walls && (!resize_u32(&w->motion.flips, n) ||
+                       !resize_bytes(&w->motion.flip_axes, n))))
             return false;
-        w->motion.capprev = (uint32_t)w->motion.moving;
+        w->motion.capprev = n;
     }
     w->motion.nmovers = 0;
     w->motion.vmax = 0;
