@@ -477,15 +477,11 @@ noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err)
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "rebuilding the octree: out of memory");
     /* The margins: how far any box moved since the last search, and the
-     * rounding of distances between boxes in the root. */
-    const noct_aabb root = noct_bp_root_box(bp);
-    double r = 0;
-    for (int k = 0; k < 3; ++k)
-        r = noct_max(r, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
-    bp->reach = bp->pending_reach * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
-    st = noct_bp_search(bp);
-    if (st == NOCT_OK && !noct_bp_sort_tested(bp))
-        st = NOCT_ERR_NOMEM;
+     * rounding of distances between boxes in the root. (The frame ticks
+     * after the search here: a public search ends a frame.) */
+    bp->reach = 0;
+    noct_bp_add_reach(bp, bp->pending_reach);
+    st = noct_bp_find_pairs(bp);
     if (st != NOCT_OK) {
         /* the leaves' near pairs may be half made */
         noct_bp_drop_tree(bp);
@@ -501,8 +497,7 @@ noctStatus noctBroadphaseUpdatePairs(noctBroadphase *bp, noctError *err)
     bp->pairs = bp->tested;
     bp->tested = t;
     bp->tested.n = 0;
-    bp->pending_reach = 0;
-    ++bp->search_epoch;
+    noct_bp_end_search(bp);
     ++bp->frame;
     bp->c.pairs += bp->pairs.n;
     return NOCT_OK;

@@ -502,6 +502,33 @@ noctStatus noct_bp_search(noctBroadphase *bp);
 /* Sort bp->tested by its first proxy (stable radix sort). */
 bool noct_bp_sort_tested(noctBroadphase *bp);
 
+/*
+ * The search protocol, which noctBroadphaseUpdatePairs() and the world's
+ * step both follow: a frame begins (the enter check's clock and the frame
+ * tick, the reach from 0); the reach grows by each distance a box may
+ * have travelled since the last search (the world's motion, the program's
+ * moves), with the rounding of the root's coordinates; the pairs are
+ * found; and the search that took in the program's moves says so.
+ */
+void noct_bp_begin_frame(noctBroadphase *bp);
+void noct_bp_add_reach(noctBroadphase *bp, double travel);
+
+/* Every pair within reach, into the found list (noct_bp_found()), sorted
+ * by its first proxy. NOMEM: the leaves' near pairs may be half made. */
+noctStatus noct_bp_find_pairs(noctBroadphase *bp);
+
+static inline const noct_pair_list *noct_bp_found(const noctBroadphase *bp)
+{
+    return &bp->tested;
+}
+
+/* The program's moves since the last search are in this one's reach. */
+static inline double noct_bp_pending_reach(const noctBroadphase *bp)
+{
+    return bp->pending_reach;
+}
+void noct_bp_end_search(noctBroadphase *bp);
+
 /* Sort pairs that are in order of their first proxy by their second. */
 void noct_pairs_sort_partners(noct_pair_list *l);
 

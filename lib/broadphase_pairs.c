@@ -22,6 +22,36 @@ NOCT_DEFINE_RESIZE(resize_pairs, noctProxyPair)
 NOCT_DEFINE_GROW(grow_gather, noct_leaf_box)
 NOCT_DEFINE_GROW(grow_u32, uint32_t)
 
+void noct_bp_begin_frame(noctBroadphase *bp)
+{
+    ++bp->clock;
+    ++bp->frame;
+    bp->reach = 0;
+}
+
+void noct_bp_add_reach(noctBroadphase *bp, double travel)
+{
+    const noct_aabb root = noct_bp_root_box(bp);
+    double r = 0;
+    for (int k = 0; k < 3; ++k)
+        r = noct_max(r, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
+    bp->reach += travel * (1 + 1e-6) + 8 * 0x1p-52 * (isfinite(r) ? r : 0);
+}
+
+noctStatus noct_bp_find_pairs(noctBroadphase *bp)
+{
+    noctStatus st = noct_bp_search(bp);
+    if (st == NOCT_OK && !noct_bp_sort_tested(bp))
+        st = NOCT_ERR_NOMEM;
+    return st;
+}
+
+void noct_bp_end_search(noctBroadphase *bp)
+{
+    bp->pending_reach = 0;
+    ++bp->search_epoch;
+}
+
 bool noct_pairs_grow(noct_pair_list *l)
 {
     /* 64 first, then doubling */

@@ -36,7 +36,9 @@ noctree_sources = \
 	lib/world_motion.c \
 	lib/world_narrow.c \
 	lib/world_near.c \
+	lib/world_object.c \
 	lib/world_query.c \
+	lib/world_step.c \
 	lib/world_track.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)

@@ -1,12 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The world's events and response: the pairs that began and ended
- * colliding, from the sorted colliding lists of this step and the one
- * before, and the report's response to them (SCENES.md's contact-begin
- * rule). They read pair lists and velocities, nothing of the tree or the
- * narrowphase.
+ * The world's events and response: the event records (rotated, diffed,
+ * held and restored), the pairs that began and ended, from the sorted
+ * lists of this step and the one before, and the report's response to
+ * them (a pair that begins colliding turns both objects back). They read
+ * pair lists and velocities, nothing of the tree or the narrowphase.
  */
 #include "config.h"
+
+#include <stdlib.h>
+#include <string.h>
 
 #include "world_internal.h"
 
@@ -33,27 +36,80 @@ noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list
     return NOCT_OK;
 }
 
-noctStatus noct_world_diff_events(noct_events *e, uint64_t *events)
+void noct_record_rotate(noct_event_record *r)
 {
-    const size_t began = e->began.n, ended = e->ended.n;
-    const size_t sbegan = e->sensor_began.n, sended = e->sensor_ended.n;
-    noctStatus st = noct_world_diff_lists(&e->colliding, &e->previous, &e->began, &e->ended);
-    if (st == NOCT_OK && (e->sensing.n > 0 || e->sensing_prev.n > 0))
-        st = noct_world_diff_lists(&e->sensing, &e->sensing_prev, &e->sensor_began, &e->sensor_ended);
-    if (st == NOCT_OK)
-        *events += e->began.n - began + e->ended.n - ended + e->sensor_began.n - sbegan +
-                   e->sensor_ended.n - sended;
+    const noct_pair_list t = r->before;
+    r->before = r->now;
+    r->now = t;
+    r->now.n = 0;
+}
+
+void noct_record_unrotate(noct_event_record *r)
+{
+    const noct_pair_list t = r->now;
+    r->now = r->before;
+    r->before = t;
+}
+
+noctStatus noct_record_diff(noct_event_record *r, uint64_t *events)
+{
+    if (r->now.n == 0 && r->before.n == 0)
+        return NOCT_OK;
+    const size_t began = r->began.n, ended = r->ended.n;
+    noctStatus st = noct_world_diff_lists(&r->now, &r->before, &r->began, &r->ended);
+    if (st == NOCT_OK && events != NULL)
+        *events += r->began.n - began + r->ended.n - ended;
     return st;
+}
+
+NOCT_DEFINE_RESIZE(resize_pairs, noctPair)
+
+bool noct_record_hold(noct_event_record *r)
+{
+    noct_pair_list *h = &r->held;
+    if (h->cap < r->now.n) {
+        if (!resize_pairs(&h->p, r->now.n))
+            return false;
+        h->cap = r->now.n;
+    }
+    if (r->now.n > 0)
+        memcpy(h->p, r->now.p, r->now.n * sizeof *h->p);
+    h->n = r->now.n;
+    return true;
+}
+
+void noct_record_clear(noct_event_record *r)
+{
+    r->began.n = r->ended.n = 0;
+}
+
+void noct_record_fail(noct_event_record *r, bool held)
+{
+    if (held) {
+        const noct_pair_list t = r->now;
+        r->now = r->held;
+        r->held = t;
+    }
+    noct_record_clear(r);
+}
+
+void noct_record_free(noct_event_record *r)
+{
+    free(r->now.p);
+    free(r->before.p);
+    free(r->began.p);
+    free(r->ended.p);
+    free(r->held.p);
 }
 
 noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj)
 {
-    noct_pair_list *c = &e->colliding;
+    noct_pair_list *c = &e->contact.now;
     size_t k = 0;
     for (size_t i = 0; i < c->n; ++i) {
         const noctPair q = c->p[i];
         if (obj[q.a.index].sensor || obj[q.b.index].sensor) {
-            if (!noct_pairs_push(&e->sensing, q))
+            if (!noct_pairs_push(&e->sensor.now, q))
                 return NOCT_ERR_NOMEM;
         } else {
             c->p[k++] = q;
@@ -68,8 +124,9 @@ void noct_world_respond(noct_events *e, noct_object *obj, noctBroadphase *bp, si
 {
     const uint32_t now = noct_bp_new_epoch(bp);
     uint32_t *mark = bp->mark;
-    for (size_t i = from; i < e->began.n; ++i) {
-        const uint32_t ids[2] = {e->began.p[i].a.index, e->began.p[i].b.index};
+    const noct_pair_list *began = &e->contact.began;
+    for (size_t i = from; i < began->n; ++i) {
+        const uint32_t ids[2] = {began->p[i].a.index, began->p[i].b.index};
         for (int s = 0; s < 2; ++s) {
             if (mark[ids[s]] == now)
                 continue;

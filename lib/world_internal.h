@@ -76,14 +76,22 @@ typedef struct noct_motion {
 } noct_motion;
 
 /* Events: the colliding pairs now and before, what began and ended. */
+/*
+ * One kind of pair the world reports (world_events.c): the pairs found
+ * this step (now) and the step before, what began and ended between them
+ * (sorted lists), and what a failed step of sub-steps gives back (held:
+ * now as the step began). A step rotates the record (now becomes before),
+ * finds now, and diffs; a failed step restores it with one call.
+ */
+typedef struct noct_event_record {
+    noct_pair_list now, before, began, ended, held;
+} noct_event_record;
+
 typedef struct noct_events {
-    noct_pair_list colliding, previous, began, ended;
-    noct_pair_list held;   /* the colliding list before a step of sub-steps */
-    /* The same for the pairs of a sensor and an object that is not one. */
-    noct_pair_list sensing, sensing_prev, sensor_began, sensor_ended, sensing_held;
-    /* With a margin: the pairs within it now and before, what began and
-     * ended (world_near.c). */
-    noct_pair_list near, near_prev, near_began, near_ended;
+    noct_event_record contact; /* colliding pairs, neither object a sensor */
+    noct_event_record sensor;  /* colliding pairs of a sensor and another */
+    noct_event_record near;    /* with a margin: the pairs within it
+                                  (world_near.c); never held */
 } noct_events;
 
 /* Angular velocity (#NOCT_EFFECT_SPIN): each moving object's rotation per
@@ -94,7 +102,8 @@ typedef struct noct_spin {
     noctQuat *w;           /* per slot; NULL: every one the identity */
     size_t count;          /* live objects with one not the identity */
     uint32_t *spinners;    /* live moving objects with one, by slot */
-    uint32_t nspinners, cap;
+    uint32_t nspinners;
+    size_t cap;
     bool stale;
 } noct_spin;
 
@@ -154,7 +163,40 @@ struct noctWorld {
                               are added when they are read */
 };
 
+/* A pair list for the program: its pairs and their number. */
+static inline size_t noct_list_out(const noct_pair_list *l, const noctPair **pairs)
+{
+    *pairs = l->p;
+    return l->n;
+}
+
+/* The live object a handle names, or NULL for a stale or unknown one. */
+static inline noct_object *noct_world_lookup(const noctWorld *w, noctObjectId id)
+{
+    if (id.index >= w->bp.nslots || !w->obj[id.index].alive ||
+        w->bp.gen[id.index] != id.generation)
+        return NULL;
+    return &w->obj[id.index];
+}
+
+/* Object s's mesh as made (NULL for a box primitive). */
+static inline const noctMesh *noct_world_shape_of(const noctWorld *w, uint32_t s)
+{
+    return w->obj[s].box ? NULL : w->pose[s].shape.mesh;
+}
+
+static inline bool noct_quat_is_identity(const noctQuat *q)
+{
+    return q->x == 0 && q->y == 0 && q->z == 0 && q->w == 1;
+}
+
 /* ---- world.c -------------------------------------------------------------------- */
+
+/* The world's per-slot arrays to the broadphase's capacity; false without
+ * memory (each that grew is kept). */
+bool noct_world_reserve_slots(noctWorld *w);
+
+/* ---- world_object.c ------------------------------------------------------------- */
 
 
 /* noctWorldCreateObject() for a velocity that is speed * d for a unit d
@@ -179,6 +221,9 @@ void noct_world_unplace(noctWorld *w);
 
 /* Room for n placements this step; false without memory. */
 bool noct_world_reserve_placed(noctWorld *w, uint32_t n);
+
+/* A step that succeeded keeps its placements: the meshes they replaced go. */
+void noct_world_placements_done(noctWorld *w);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 
@@ -214,9 +259,9 @@ noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list
 
 /* ---- world_near.c ------------------------------------------------------------------ */
 
-/* The near pairs after the step's pairs (the colliding list is this
- * step's): near becomes near_prev, the new list is found, and with events
- * its differences. On failure (NOMEM) the lists are as before. */
+/* The near pairs after the step's pairs (the contact record's now is this
+ * step's): the near record is rotated, now is found, and with events its
+ * differences. On failure (NOMEM) now and before are as they were. */
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
@@ -252,12 +297,32 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
 
 /* ---- world_events.c ---------------------------------------------------------------- */
 
-/* began = colliding - previous, ended = previous - colliding (sorted),
- * appended to the lists; the same for the sensor lists. */
-noctStatus noct_world_diff_events(noct_events *e, uint64_t *events);
+/* Before a search: now becomes before, and now is emptied. */
+void noct_record_rotate(noct_event_record *r);
+
+/* A search that failed: now and before as they were before
+ * noct_record_rotate(). */
+void noct_record_unrotate(noct_event_record *r);
+
+/* began += now - before, ended += before - now; *events (if not NULL)
+ * counts them.
+ * NOMEM (the lists keep what they had, and perhaps a part of it). */
+noctStatus noct_record_diff(noct_event_record *r, uint64_t *events);
+
+/* Keep now in held, for a step of sub-steps; false without memory. */
+bool noct_record_hold(noct_event_record *r);
+
+/* began and ended emptied (a step starts; a step failed). */
+void noct_record_clear(noct_event_record *r);
+
+/* A step failed: its events go, and with held (a step of sub-steps, whose
+ * searches replaced now), now is what it was when the step began. */
+void noct_record_fail(noct_event_record *r, bool held);
+
+void noct_record_free(noct_event_record *r);
 
 /* Move the pairs of a sensor and an object that is not one from the
- * colliding list to the sensing list (both stay sorted). */
+ * contact record's now to the sensor record's (both stay sorted). */
 noctStatus noct_world_split_sensors(noct_events *e, const noct_object *obj);
 
 /* The response: every object in a pair that began (from the from'th on)

@@ -67,7 +67,7 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
 /* Are objects i and j near, at the world's level? */
 static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
 {
-    if (listed(&w->events.colliding, i, j))
+    if (listed(&w->events.contact.now, i, j))
         return true;
     if (w->def.accuracy == NOCT_ACCURACY_BOX) {
         const noct_aabb *a = &w->bp.box[i], *b = &w->bp.box[j];
@@ -93,13 +93,9 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
 
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
 {
-    noct_events *e = &w->events;
+    noct_event_record *e = &w->events.near;
     const double d = w->def.margin;
-    noct_pair_list tmp = e->near_prev;
-    e->near_prev = e->near;
-    e->near = tmp;
-    e->near.n = 0;
-    const size_t began = e->near_began.n, ended = e->near_ended.n;
+    noct_record_rotate(e);
     partners p = {0, NULL, 0, 0, false};
     noctStatus st = NOCT_OK;
     for (uint32_t i = 0; i < w->bp.nslots && st == NOCT_OK; ++i) {
@@ -131,46 +127,37 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             if (w->obj[j].sensor || !near(w, i, j, d))
                 continue;
             const noctPair pair = {{i, w->bp.gen[i]}, {j, w->bp.gen[j]}};
-            if (!noct_pairs_push(&e->near, pair)) {
+            if (!noct_pairs_push(&e->now, pair)) {
                 st = NOCT_ERR_NOMEM;
                 break;
             }
         }
     }
     free(p.s);
+    /* near events are not among the counters' events */
     if (st == NOCT_OK && (w->def.effects & NOCT_EFFECT_EVENTS))
-        st = noct_world_diff_lists(&e->near, &e->near_prev, &e->near_began, &e->near_ended);
+        st = noct_record_diff(e, NULL);
     if (st != NOCT_OK) {
-        tmp = e->near;
-        e->near = e->near_prev;
-        e->near_prev = tmp;
-        e->near_began.n = began;
-        e->near_ended.n = ended;
+        noct_record_unrotate(e); /* the failed step clears the events */
         return noct_fail(err, st, -1, 0, "near pairs: %s", noctStatusString(st));
     }
     return NOCT_OK;
 }
 
-static size_t list_of(const noct_pair_list *l, const noctPair **pairs)
-{
-    *pairs = l->p;
-    return l->n;
-}
-
 size_t noctWorldNear(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return list_of(&w->events.near, pairs);
+    return noct_list_out(&w->events.near.now, pairs);
 }
 
 size_t noctWorldNearBegan(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return list_of(&w->events.near_began, pairs);
+    return noct_list_out(&w->events.near.began, pairs);
 }
 
 size_t noctWorldNearEnded(const noctWorld *w, const noctPair **pairs)
 {
     NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return list_of(&w->events.near_ended, pairs);
+    return noct_list_out(&w->events.near.ended, pairs);
 }

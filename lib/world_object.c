@@ -1,0 +1,671 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The world's objects (world.h): definitions, creation and removal, every
+ * setter and getter, and placement: an object's pose (its shape turned by
+ * its rotation, the placed mesh, the box form and local box) and the
+ * placements the step's stages make before the motion (spin, tracks),
+ * which a failed step gives back.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/world.h>
+
+#include "world_internal.h"
+
+NOCT_DEFINE_RESIZE(resize_placed, noct_placed)
+
+/* ---- objects ---------------------------------------------------------------------------- */
+
+noctObjectDef noctDefaultObjectDef(void)
+{
+    noctObjectDef d;
+    memset(&d, 0, sizeof d);
+    d.mesh = NULL;
+    d.transform = noctIdentityTransform();
+    d.type = NOCT_OBJECT_MOVING;
+    d.user_data = NULL;
+    d.category = d.mask = NOCT_FILTER_ALL;
+    d.angular_velocity = (noctQuat){0, 0, 0, 1};
+    return d;
+}
+
+static noctStatus check_velocity(const double v[3], noctError *err)
+{
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(v[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "velocity (%g, %g, %g) is not finite", v[0], v[1], v[2]);
+    return NOCT_OK;
+}
+
+/* A translation as noctTransformCheck() checks it. */
+static noctStatus check_position(const double p[3], noctError *err)
+{
+    for (int k = 0; k < 3; ++k) {
+        if (!isfinite(p[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                             "translation (%g, %g, %g) is not finite", p[0], p[1], p[2]);
+        if (fabs(p[k]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "translation (%g, %g, %g) lies beyond %g", p[0], p[1], p[2],
+                             NOCT_MAX_COORDINATE);
+    }
+    return NOCT_OK;
+}
+
+/* The failure of a handle that names no live object. */
+static noctStatus stale(noctObjectId id, noctError *err)
+{
+    return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                     "stale or unknown object handle (%u, %u)", id.index, id.generation);
+}
+
+static bool known_type(noctObjectType t)
+{
+    return t == NOCT_OBJECT_STATIC || t == NOCT_OBJECT_KINEMATIC || t == NOCT_OBJECT_MOVING;
+}
+
+/* |v|, rounded up a little: the motion's reach and sub-steps take it as
+ * a bound on the distance moved. */
+static double speed_of(const double v[3])
+{
+    const double m = noct_max(noct_max(fabs(v[0]), fabs(v[1])), fabs(v[2]));
+    const double a = v[0] / m, b = v[1] / m, c = v[2] / m; /* no overflow */
+    return m * sqrt(a * a + b * b + c * c) * (1 + 0x1p-40);
+}
+
+/* The mesh of a shape rotated by R: the shape itself for the identity,
+ * else a new rotated copy in *rotated. */
+static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMesh **rotated,
+                               noctError *err)
+{
+    *rotated = NULL;
+    if (shape == NULL || noct_is_identity(R))
+        return NOCT_OK; /* a box primitive's mesh is made when needed */
+    noctStatus st = noct_mesh_rotated(shape, R, rotated, err);
+    if (st != NOCT_OK && err != NULL) {
+        char why[NOCT_ERROR_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        noct_fail(err, st, err->index, 0, "the rotated mesh: %s", why);
+    }
+    return st;
+}
+
+/* The local box of object s's shape turned by R: of the mesh (rotated,
+ * or the shape), or of a box primitive's corners. */
+static void local_box(const noctWorld *w, uint32_t s, const noctMesh *rotated,
+                      const double R[9], double lo[3], double hi[3])
+{
+    if (w->obj[s].box) {
+        noct_box_slot slot;
+        noct_box_slot_of_box(w->pose[s].shape.half, R, &slot, lo, hi);
+        return;
+    }
+    const noctMesh *m = rotated != NULL ? rotated : w->pose[s].shape.mesh;
+    memcpy(lo, m->lo, 3 * sizeof *lo);
+    memcpy(hi, m->hi, 3 * sizeof *hi);
+}
+
+/* An object's placed mesh (a box primitive's, once made: NULL before),
+ * its box form and local box, from its pose. */
+static void place_mesh(noctWorld *w, uint32_t s)
+{
+    const noct_pose *p = &w->pose[s];
+    noct_object *o = &w->obj[s];
+    if (o->box) {
+        w->mesh[s] = p->rotated;
+        double R[9];
+        noctQuatToMatrix(&p->q, R, NULL);
+        noct_box_slot_of_box(p->shape.half, R, &w->slot[s], o->mlo, o->mhi);
+        return;
+    }
+    const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape.mesh;
+    w->mesh[s] = m;
+    memcpy(o->mlo, m->lo, sizeof o->mlo);
+    memcpy(o->mhi, m->hi, sizeof o->mhi);
+    if (m->has_box)
+        noct_box_slot_fill(m, &w->slot[s]);
+    else
+        w->slot[s].has_box = 0;
+}
+
+const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st)
+{
+    if (w->mesh[s] != NULL)
+        return w->mesh[s];
+    noct_pose *p = &w->pose[s];
+    NOCT_INVARIANT(w->obj[s].box && p->rotated == NULL);
+    /* the corners were checked (noct_check_box_corners) when the object
+     * was made or turned */
+    double R[9];
+    noctQuatToMatrix(&p->q, R, NULL);
+    *st = noct_mesh_of_box(p->shape.half, R, &p->rotated, NULL);
+    if (*st != NOCT_OK)
+        return NULL;
+    w->mesh[s] = p->rotated;
+    return p->rotated;
+}
+
+/* Make object o moving at velocity v, or not moving (v kept in its pose). */
+static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const double v[3])
+{
+    noct_object *o = &w->obj[s];
+    const bool was = o->speed > 0;
+    o->type = (uint8_t)type;
+    /* a static or kinematic object keeps its velocity here too, but with
+     * speed 0 neither the motion nor the response reads it */
+    memcpy(o->vel, v, sizeof o->vel);
+    o->speed = type == NOCT_OBJECT_MOVING && (v[0] != 0 || v[1] != 0 || v[2] != 0)
+                   ? speed_of(v)
+                   : 0;
+    const bool is = o->speed > 0;
+    NOCT_INVARIANT(w->motion.moving >= (size_t)was);
+    w->motion.moving = w->motion.moving - was + is;
+    /* the movers list and its greatest speed are made again */
+    w->motion.stale = w->motion.stale || was || is;
+    w->spin.stale = true;
+}
+
+/* An object's velocity: the moving one's, or the one its pose keeps. */
+static const double *velocity_of(const noctWorld *w, uint32_t s)
+{
+    return w->obj[s].vel;
+}
+
+/* Give slot s the angular velocity q (checked), making the per-slot array
+ * when the first one that is not the identity comes; false without
+ * memory (then nothing changed). */
+static bool set_spin(noctWorld *w, uint32_t s, const noctQuat *q, bool was_live)
+{
+    const bool none = noct_quat_is_identity(q);
+    if (w->spin.w == NULL) {
+        if (none)
+            return true;
+        noctQuat *a = malloc(w->capslots * sizeof *a);
+        if (a == NULL)
+            return false;
+        for (uint32_t i = 0; i < w->capslots; ++i)
+            a[i] = (noctQuat){0, 0, 0, 1};
+        w->spin.w = a;
+    }
+    const bool had = was_live && !noct_quat_is_identity(&w->spin.w[s]);
+    w->spin.w[s] = *q;
+    w->spin.count = w->spin.count - had + !none;
+    w->spin.stale = true;
+    return true;
+}
+
+/* An angular velocity as noctQuatToMatrix() checks a rotation. */
+static noctStatus check_spin(const noctQuat *q, noctError *err)
+{
+    double R[9];
+    noctStatus st = noctQuatToMatrix(q, R, err);
+    if (st != NOCT_OK && err != NULL) {
+        char why[NOCT_ERROR_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        noct_fail(err, st, -1, 0, "angular velocity: %s", why);
+    }
+    return st;
+}
+
+noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObjectId *id,
+                                 noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && def != NULL && id != NULL);
+    id->index = id->generation = 0;
+    noctStatus st = noctTransformCheck(&def->transform, err);
+    if (st == NOCT_OK && def->mesh == NULL) {
+        if (def->half_extents[0] == 0 && def->half_extents[1] == 0 &&
+            def->half_extents[2] == 0)
+            return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                             "an object needs a mesh or a box's half-extents");
+        st = noct_check_box_half(def->half_extents, err);
+    }
+    if (st == NOCT_OK)
+        st = check_velocity(def->velocity, err);
+    if (st == NOCT_OK)
+        st = check_spin(&def->angular_velocity, err);
+    if (st != NOCT_OK)
+        return st;
+    if (!known_type(def->type))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d",
+                         (int)def->type);
+    if (def->category == 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                         "an object's category is 0: it could never pair");
+    double R[9];
+    noctQuatToMatrix(&def->transform.q, R, NULL); /* checked above */
+    if (def->mesh == NULL && (st = noct_check_box_corners(def->half_extents, R, err)) != NOCT_OK)
+        return st;
+    noctMesh *rotated;
+    st = rotate_shape(def->mesh, R, &rotated, err);
+    if (st != NOCT_OK)
+        return st;
+    const uint32_t slot = noct_bp_new_slot(&w->bp);
+    if (slot == UINT32_MAX) {
+        noctMeshDestroy(rotated);
+        return w->bp.nslots >= 0x80000000u
+                   ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects")
+                   : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    if (!noct_world_reserve_slots(w)) {
+        noct_bp_unuse_slot(&w->bp, slot);
+        noctMeshDestroy(rotated);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    noct_object *o = &w->obj[slot];
+    memset(o, 0, sizeof *o);
+    noct_pose *p = &w->pose[slot];
+    memset(p, 0, sizeof *p);
+    o->box = def->mesh == NULL;
+    if (o->box)
+        memcpy(p->shape.half, def->half_extents, sizeof p->shape.half);
+    else
+        p->shape.mesh = def->mesh;
+    p->rotated = rotated;
+    p->q = def->transform.q;
+    place_mesh(w, slot);
+    memcpy(w->pos[slot], def->transform.p, sizeof w->pos[slot]);
+    if (!set_spin(w, slot, &def->angular_velocity, false)) {
+        /* not in the broadphase yet: the slot goes back as it is */
+        noct_bp_unuse_slot(&w->bp, slot);
+        st = NOCT_ERR_NOMEM;
+    } else {
+        /* on failure noct_bp_add gives the slot back itself */
+        st = noct_bp_add(&w->bp, slot, o->mlo, o->mhi, w->pos[slot], def->user_data,
+                         def->category, def->mask);
+    }
+    if (st != NOCT_OK) {
+        if (w->spin.w != NULL && !noct_quat_is_identity(&w->spin.w[slot])) {
+            w->spin.w[slot] = (noctQuat){0, 0, 0, 1};
+            --w->spin.count;
+        }
+        p->rotated = NULL;
+        noctMeshDestroy(rotated);
+        return noct_fail(err, st, -1, 0, "out of memory");
+    }
+    o->alive = true;
+    o->sensor = def->sensor;
+    w->nsensors += def->sensor;
+    set_motion(w, slot, def->type, def->velocity);
+    id->index = slot;
+    id->generation = w->bp.gen[slot];
+    return NOCT_OK;
+}
+
+noctStatus noctWorldAdd(noctWorld *w, const noctMesh *mesh, const double position[3],
+                        const double direction[3], double speed, noctObjectId *id,
+                        noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && mesh != NULL && position != NULL && direction != NULL);
+    NOCT_REQUIRE(id != NULL);
+    id->index = id->generation = 0;
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(position[k]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "object position is not finite");
+    if (!isfinite(speed))
+        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0, "object speed is not finite");
+    if (speed < 0)
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "object speed %g is negative",
+                         speed);
+    for (int k = 0; k < 3; ++k)
+        if (fabs(position[k]) > NOCT_MAX_COORDINATE)
+            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
+                             "object position beyond %g", NOCT_MAX_COORDINATE);
+    /* A static object's direction is ignored, whatever it holds. */
+    double unit[3] = {0, 0, 0};
+    if (speed > 0) {
+        for (int k = 0; k < 3; ++k)
+            if (!isfinite(direction[k]))
+                return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
+                                 "object direction is not finite");
+        if (!noct_unit_direction(direction, unit))
+            return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
+                             "a moving object needs a non-zero direction");
+    }
+    noctObjectDef def = noctDefaultObjectDef();
+    def.mesh = mesh;
+    memcpy(def.transform.p, position, sizeof def.transform.p);
+    for (int k = 0; k < 3; ++k)
+        def.velocity[k] = speed * unit[k];
+    return noct_world_add_object(w, &def, speed, id, err);
+}
+
+noctStatus noct_world_add_object(noctWorld *w, const noctObjectDef *def, double speed,
+                                 noctObjectId *id, noctError *err)
+{
+    noctStatus st = noctWorldCreateObject(w, def, id, err);
+    if (st == NOCT_OK && speed > 0 && w->obj[id->index].speed > 0)
+        w->obj[id->index].speed = speed; /* as given: |velocity| within 1e-9 */
+    return st;
+}
+
+noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    noct_object *o = noct_world_lookup(w, id);
+    if (o == NULL)
+        return stale(id, err);
+    set_motion(w, id.index, NOCT_OBJECT_STATIC, velocity_of(w, id.index));
+    noct_bp_free_slot(&w->bp, id.index); /* cannot fail */
+    o->alive = false;
+    NOCT_INVARIANT(w->nsensors >= (size_t)o->sensor);
+    w->nsensors -= o->sensor;
+    o->sensor = false;
+    if (w->spin.w != NULL) {
+        w->spin.count -= !noct_quat_is_identity(&w->spin.w[id.index]);
+        w->spin.w[id.index] = (noctQuat){0, 0, 0, 1};
+        w->spin.stale = true;
+    }
+    noctMeshDestroy(w->pose[id.index].rotated);
+    w->pose[id.index].rotated = NULL;
+    noct_world_drop_track(w, id.index);
+    /* The lists stay: the colliding one holds its pairs, which the next
+     * step's diff ends. */
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransform *x,
+                                 noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL);
+    /* noct_world_lookup() through the proxy, whose line the fast test reads anyway
+     * (a world object is alive when its proxy is: noctWorldValidate()) */
+    const uint32_t s = id.index;
+    if (s >= w->bp.nslots || !w->bp.proxy[s].alive || w->bp.gen[s] != id.generation)
+        return stale(id, err);
+    noct_pose *p = &w->pose[s];
+    /* The same quaternion, bit for bit (a program that only moves the
+     * object): it was checked when it was set, the object keeps its
+     * rotated shape, and the fast test may settle the move at once. */
+    const bool same = memcmp(&x->q, &p->q, sizeof x->q) == 0;
+    noctStatus st = same ? check_position(x->p, err) : noctTransformCheck(x, err);
+    if (st != NOCT_OK)
+        return st;
+    if (same && !w->bp.tree_owed &&
+        noct_bp_move_fast(&w->bp, s, x->p)) {
+        memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+        return NOCT_OK;
+    }
+    double R[9], was[9];
+    bool turned = false;
+    if (!same) {
+        noctQuatToMatrix(&x->q, R, NULL); /* checked above */
+        noctQuatToMatrix(&p->q, was, NULL);
+        turned = memcmp(R, was, sizeof R) != 0;
+    }
+    noctMesh *rotated = p->rotated;
+    if (turned && w->obj[s].box &&
+        (st = noct_check_box_corners(p->shape.half, R, err)) != NOCT_OK)
+        return st;
+    if (turned && (st = rotate_shape(noct_world_shape_of(w, s), R, &rotated, err)) != NOCT_OK)
+        return st;
+    double lo[3], hi[3];
+    if (turned) {
+        local_box(w, s, rotated, R, lo, hi);
+    } else {
+        memcpy(lo, w->obj[s].mlo, sizeof lo);
+        memcpy(hi, w->obj[s].mhi, sizeof hi);
+    }
+    st = noct_bp_move_to(&w->bp, s, lo, hi, x->p);
+    if (st != NOCT_OK) {
+        if (turned && rotated != p->rotated)
+            noctMeshDestroy(rotated);
+        return noct_fail(err, st, (long)s, 0, "moving object %u: out of memory", s);
+    }
+    if (turned) {
+        noctMeshDestroy(p->rotated);
+        p->rotated = rotated;
+        p->q = x->q;
+        place_mesh(w, s);
+    }
+    p->q = x->q;
+    memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetTransform(const noctWorld *w, noctObjectId id, noctTransform *x)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(x->p, w->pos[id.index], sizeof x->p);
+    x->q = w->pose[id.index].q;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetVelocity(noctWorld *w, noctObjectId id, const double velocity[3],
+                                noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && velocity != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    noctStatus st = check_velocity(velocity, err);
+    if (st != NOCT_OK)
+        return st;
+    set_motion(w, id.index, (noctObjectType)w->obj[id.index].type, velocity);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetVelocity(const noctWorld *w, noctObjectId id, double velocity[3])
+{
+    NOCT_REQUIRE(w != NULL && velocity != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    memcpy(velocity, velocity_of(w, id.index), 3 * sizeof *velocity);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetType(noctWorld *w, noctObjectId id, noctObjectType type,
+                            noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    if (!known_type(type))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d", (int)type);
+    double v[3];
+    memcpy(v, velocity_of(w, id.index), sizeof v);
+    set_motion(w, id.index, type, v);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetType(const noctWorld *w, noctObjectId id, noctObjectType *type)
+{
+    NOCT_REQUIRE(w != NULL && type != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    *type = (noctObjectType)w->obj[id.index].type;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetFilter(noctWorld *w, noctObjectId id, uint64_t category, uint64_t mask,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    if (category == 0)
+        return noct_fail(err, NOCT_ERR_INVALID, (long)id.index, 0,
+                         "an object's category is 0: it could never pair");
+    return noctBroadphaseSetFilter(&w->bp, id, category, mask);
+}
+
+noctStatus noctWorldGetFilter(const noctWorld *w, noctObjectId id, uint64_t *category,
+                              uint64_t *mask)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    return noctBroadphaseProxy(&w->bp, id, NULL, NULL, NULL, category, mask);
+}
+
+noctStatus noctWorldSetSensor(noctWorld *w, noctObjectId id, bool sensor, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    noct_object *o = noct_world_lookup(w, id);
+    if (o == NULL)
+        return stale(id, err);
+    w->nsensors = w->nsensors - o->sensor + sensor;
+    o->sensor = sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetSensor(const noctWorld *w, noctObjectId id, bool *sensor)
+{
+    NOCT_REQUIRE(w != NULL && sensor != NULL);
+    const noct_object *o = noct_world_lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    *sensor = o->sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetAngularVelocity(noctWorld *w, noctObjectId id, const noctQuat *q,
+                                       noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && q != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    noctStatus st = check_spin(q, err);
+    if (st != NOCT_OK)
+        return st;
+    if (!set_spin(w, id.index, q, true))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetAngularVelocity(const noctWorld *w, noctObjectId id, noctQuat *q)
+{
+    NOCT_REQUIRE(w != NULL && q != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    *q = w->spin.w != NULL ? w->spin.w[id.index] : (noctQuat){0, 0, 0, 1};
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data,
+                                noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    w->bp.proxy[id.index].user = user_data;
+    return NOCT_OK;
+}
+
+void *noctWorldGetUserData(const noctWorld *w, noctObjectId id)
+{
+    NOCT_REQUIRE(w != NULL);
+    return noct_world_lookup(w, id) != NULL ? w->bp.proxy[id.index].user : NULL;
+}
+
+const noctMesh *noctWorldGetMesh(const noctWorld *w, noctObjectId id)
+{
+    NOCT_REQUIRE(w != NULL);
+    return noct_world_lookup(w, id) != NULL ? noct_world_shape_of(w, id.index) : NULL;
+}
+
+noctStatus noctWorldGetHalfExtents(const noctWorld *w, noctObjectId id, double half[3])
+{
+    NOCT_REQUIRE(w != NULL && half != NULL);
+    if (noct_world_lookup(w, id) == NULL || !w->obj[id.index].box)
+        return NOCT_ERR_INVALID;
+    memcpy(half, w->pose[id.index].shape.half, sizeof w->pose[id.index].shape.half);
+    return NOCT_OK;
+}
+
+/* ---- placements before the motion (spin, tracks) ------------------------------------ */
+
+bool noct_world_reserve_placed(noctWorld *w, uint32_t n)
+{
+    w->nplaced = 0;
+    if (n <= w->capplaced)
+        return true;
+    if (!resize_placed(&w->placed, n))
+        return false;
+    w->capplaced = n;
+    return true;
+}
+
+noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const double p[3],
+                            noctError *err)
+{
+    NOCT_INVARIANT(w->nplaced < w->capplaced);
+    noct_pose *ps = &w->pose[s];
+    noctStatus st = check_position(p, err);
+    double R[9];
+    if (st == NOCT_OK)
+        st = noctQuatToMatrix(q, R, err);
+    if (st != NOCT_OK)
+        return st;
+    /* The same quaternion, bit for bit: the same shape, turned as it is. */
+    const bool same = memcmp(q, &ps->q, sizeof *q) == 0;
+    noctMesh *rotated = ps->rotated;
+    if (!same && w->obj[s].box && (st = noct_check_box_corners(ps->shape.half, R, err)) != NOCT_OK)
+        return st;
+    if (!same && (st = rotate_shape(noct_world_shape_of(w, s), R, &rotated, err)) != NOCT_OK)
+        return st;
+    double lo[3], hi[3];
+    if (same) {
+        memcpy(lo, w->obj[s].mlo, sizeof lo);
+        memcpy(hi, w->obj[s].mhi, sizeof hi);
+    } else {
+        local_box(w, s, rotated, R, lo, hi);
+    }
+    st = noct_bp_move_to(&w->bp, s, lo, hi, p);
+    if (st != NOCT_OK) {
+        if (!same)
+            noctMeshDestroy(rotated);
+        return noct_fail(err, st, (long)s, 0, "placing object %u: out of memory", s);
+    }
+    noct_placed *r = &w->placed[w->nplaced++];
+    r->s = s;
+    r->new_mesh = !same;
+    r->q = ps->q;
+    r->mesh = ps->rotated;
+    memcpy(r->p, w->pos[s], sizeof r->p);
+    ps->rotated = rotated;
+    ps->q = *q;
+    memcpy(w->pos[s], p, sizeof w->pos[s]);
+    if (!same)
+        place_mesh(w, s);
+    return NOCT_OK;
+}
+
+void noct_world_unplace(noctWorld *w)
+{
+    for (uint32_t k = w->nplaced; k-- > 0;) {
+        const noct_placed *r = &w->placed[k];
+        const uint32_t s = r->s;
+        noct_pose *p = &w->pose[s];
+        if (r->new_mesh) {
+            noctMeshDestroy(p->rotated);
+            p->rotated = r->mesh;
+        }
+        p->q = r->q;
+        memcpy(w->pos[s], r->p, sizeof w->pos[s]);
+        place_mesh(w, s);
+        noct_proxy *o = &w->bp.proxy[s];
+        memcpy(o->mlo, w->obj[s].mlo, sizeof o->mlo);
+        memcpy(o->mhi, w->obj[s].mhi, sizeof o->mhi);
+        noct_place_box(o->mlo, o->mhi, w->pos[s], &w->bp.box[s]);
+        noct_forget_home(&w->bp, s);
+    }
+    if (w->nplaced > 0 && w->bp.root != NULL)
+        noct_bp_drop_tree(&w->bp);
+    w->nplaced = 0;
+}
+
+void noct_world_placements_done(noctWorld *w)
+{
+    for (uint32_t k = 0; k < w->nplaced; ++k)
+        if (w->placed[k].new_mesh)
+            noctMeshDestroy(w->placed[k].mesh);
+    w->nplaced = 0;
+}
+
