@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Private: the broadphase's structures, shared by its files and by the
- * world, its client, which moves proxies in bulk on the fast path (the
- * motion loop writes the placed boxes and runs the fast test itself).
- * Never installed.
+ * Private: the broadphase's structures, shared by its files; the world,
+ * its client, reads and writes it through the accessors below and the
+ * noct_bp_* calls only (its motion loop moves proxies in bulk: it writes
+ * the placed boxes and runs the fast test itself). Never installed.
  *
  *   broadphase.c        the public API: proxies, filters, pairs, counters,
  *                       validation, octree access
@@ -195,6 +195,46 @@ struct noctBroadphase {
     double pending_reach;     /* public: the largest travel since then */
     noctBroadphaseCounters c;
 };
+
+/*
+ * What the broadphase's client (the world) reads and writes of it: these
+ * accessors, never the fields. The slots (live or free) are 0 to
+ * noct_bp_slots(); the per-slot arrays (boxes, homes, proxies) are for
+ * the motion's bulk loop, which places boxes and runs the fast test
+ * itself.
+ */
+static inline uint32_t noct_bp_slots(const noctBroadphase *bp) { return bp->nslots; }
+static inline uint32_t noct_bp_capacity(const noctBroadphase *bp) { return bp->capslots; }
+static inline uint32_t noct_bp_free_slots(const noctBroadphase *bp) { return bp->nfree; }
+static inline size_t noct_bp_live(const noctBroadphase *bp) { return bp->alive; }
+static inline uint32_t noct_bp_generation(const noctBroadphase *bp, uint32_t s)
+{
+    return bp->gen[s];
+}
+static inline noct_aabb *noct_bp_box(const noctBroadphase *bp, uint32_t s)
+{
+    return &bp->box[s];
+}
+static inline noct_proxy *noct_bp_proxy(const noctBroadphase *bp, uint32_t s)
+{
+    return &bp->proxy[s];
+}
+static inline noct_aabb *noct_bp_boxes(const noctBroadphase *bp) { return bp->box; }
+static inline noct_home *noct_bp_homes(const noctBroadphase *bp) { return bp->home; }
+static inline noct_proxy *noct_bp_proxies(const noctBroadphase *bp) { return bp->proxy; }
+static inline octNode *noct_bp_root(const noctBroadphase *bp) { return bp->root; }
+static inline bool noct_bp_tree_owed(const noctBroadphase *bp) { return bp->tree_owed; }
+static inline const noctBroadphaseCounters *noct_bp_counters(const noctBroadphase *bp)
+{
+    return &bp->c;
+}
+/* The per-slot stamps, for a use that starts with noct_bp_new_epoch(). */
+static inline uint32_t *noct_bp_marks(const noctBroadphase *bp) { return bp->mark; }
+/* The client rebuilds the tree every step: no merge invariant is kept. */
+static inline void noct_bp_set_rebuild_mode(noctBroadphase *bp, bool on)
+{
+    bp->rebuild_mode = on;
+}
 
 /* The automatic settings (broadphase.h, "Settings"): N, and how many
  * proxies, as a factor of those the settings were chosen for, make them

@@ -77,7 +77,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
         free(w);
         return st;
     }
-    w->bp.rebuild_mode = def->maintenance == NOCT_MAINTAIN_REBUILD;
+    noct_bp_set_rebuild_mode(&w->bp, def->maintenance == NOCT_MAINTAIN_REBUILD);
     w->def = *def;
     *world = w;
     return NOCT_OK;
@@ -88,7 +88,7 @@ void noctWorldDestroy(noctWorld *w)
 {
     if (w == NULL)
         return;
-    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
         if (w->obj[i].alive)
             noctMeshDestroy(w->pose[i].rotated);
     noct_bp_fini(&w->bp);
@@ -117,7 +117,7 @@ _Static_assert(sizeof(noct_pose) == 64, "a pose is one cache line");
 
 bool noct_world_reserve_slots(noctWorld *w)
 {
-    const uint32_t cap = w->bp.capslots;
+    const uint32_t cap = noct_bp_capacity(&w->bp);
     if (cap <= w->capslots)
         return true;
     if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
@@ -149,7 +149,7 @@ noctStatus noctWorldReserve(noctWorld *w, size_t more, noctError *err)
         return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
                          "room for %zu more objects: a world holds at most 2^31", more);
     if (!noct_bp_reserve(&w->bp, (uint32_t)more))
-        return (uint64_t)w->bp.nslots - w->bp.nfree + more > 0x80000000u
+        return (uint64_t)noct_bp_slots(&w->bp) - noct_bp_free_slots(&w->bp) + more > 0x80000000u
                    ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
                                "room for %zu more objects: a world holds at most 2^31",
                                more)
@@ -215,14 +215,14 @@ noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[
 size_t noctWorldObjectCount(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);
-    return w->bp.alive;
+    return noct_bp_live(&w->bp);
 }
 
 void noctWorldGetCounters(const noctWorld *w, noctWorldCounters *counters)
 {
     NOCT_REQUIRE(w != NULL && counters != NULL);
     *counters = w->c;
-    const noctBroadphaseCounters *b = &w->bp.c;
+    const noctBroadphaseCounters *b = noct_bp_counters(&w->bp);
     counters->inside_fast = b->inside_fast;
     counters->leaves_left = b->leaves_left;
     counters->leaves_entered = b->leaves_entered;
@@ -246,7 +246,7 @@ double noctWorldMaxStepRatio(const noctWorld *w)
 octNode *noctWorldRoot(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);
-    return w->bp.root;
+    return noct_bp_root(&w->bp);
 }
 
 const noctBroadphase *noctWorldBroadphase(const noctWorld *w)
@@ -274,8 +274,8 @@ noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
     NOCT_REQUIRE(w != NULL && lo != NULL && hi != NULL);
     if (noct_world_lookup(w, id) == NULL)
         return NOCT_ERR_INVALID;
-    memcpy(lo, w->bp.box[id.index].lo, sizeof w->bp.box[id.index].lo);
-    memcpy(hi, w->bp.box[id.index].hi, sizeof w->bp.box[id.index].hi);
+    memcpy(lo, noct_bp_box(&w->bp, id.index)->lo, sizeof noct_bp_box(&w->bp, id.index)->lo);
+    memcpy(hi, noct_bp_box(&w->bp, id.index)->hi, sizeof noct_bp_box(&w->bp, id.index)->hi);
     return NOCT_OK;
 }
 
@@ -283,8 +283,8 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
     /* the world's own records against the broadphase's proxies */
-    for (uint32_t i = 0; i < w->bp.nslots; ++i) {
-        if (w->obj[i].alive != w->bp.proxy[i].alive)
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i) {
+        if (w->obj[i].alive != noct_bp_proxy(&w->bp, i)->alive)
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u is %s but its proxy is not", i,
                              w->obj[i].alive ? "alive" : "dead");
@@ -308,7 +308,7 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                              "object %u's speed does not match its type and velocity", i);
         noct_aabb b;
         noct_place_box(w->obj[i].mlo, w->obj[i].mhi, w->pos[i], &b);
-        if (memcmp(&b, &w->bp.box[i], sizeof b) != 0)
+        if (memcmp(&b, noct_bp_box(&w->bp, i), sizeof b) != 0)
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u's box is not its proxy's", i);
     }

@@ -123,7 +123,7 @@ void noct_world_respond(noct_events *e, noct_object *obj, noctBroadphase *bp, si
                         uint64_t *reversals)
 {
     const uint32_t now = noct_bp_new_epoch(bp);
-    uint32_t *mark = bp->mark;
+    uint32_t *mark = noct_bp_marks(bp);
     const noct_pair_list *began = &e->contact.began;
     for (size_t i = from; i < began->n; ++i) {
         const uint32_t ids[2] = {began->p[i].a.index, began->p[i].b.index};

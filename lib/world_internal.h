@@ -173,8 +173,8 @@ static inline size_t noct_list_out(const noct_pair_list *l, const noctPair **pai
 /* The live object a handle names, or NULL for a stale or unknown one. */
 static inline noct_object *noct_world_lookup(const noctWorld *w, noctObjectId id)
 {
-    if (id.index >= w->bp.nslots || !w->obj[id.index].alive ||
-        w->bp.gen[id.index] != id.generation)
+    if (id.index >= noct_bp_slots(&w->bp) || !w->obj[id.index].alive ||
+        noct_bp_generation(&w->bp, id.index) != id.generation)
         return NULL;
     return &w->obj[id.index];
 }

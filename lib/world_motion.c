@@ -45,7 +45,7 @@ bool noct_world_update_movers(noctWorld *w)
     }
     w->motion.nmovers = 0;
     w->motion.vmax = 0;
-    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
         if (w->obj[i].alive && w->obj[i].speed > 0) {
             w->motion.movers[w->motion.nmovers++] = i;
             w->motion.vmax = noct_max(w->motion.vmax, w->obj[i].speed);
@@ -97,9 +97,9 @@ static NOCT_ALWAYS_INLINE uint32_t move_all(noctWorld *w, double fraction, bool 
     const double wlo[3] = {w->def.walls_lo[0], w->def.walls_lo[1], w->def.walls_lo[2]};
     const double whi[3] = {w->def.walls_hi[0], w->def.walls_hi[1], w->def.walls_hi[2]};
     noct_object *obj = w->obj;
-    noct_aabb *box = w->bp.box;
-    const noct_home *home = w->bp.home;
-    noct_proxy *proxy = w->bp.proxy;
+    noct_aabb *box = noct_bp_boxes(&w->bp);
+    const noct_home *home = noct_bp_homes(&w->bp);
+    noct_proxy *proxy = noct_bp_proxies(&w->bp);
     double(*pos)[3] = w->pos;
     int64_t(*prev)[3] = w->motion.prev;
     uint32_t *flips = w->motion.flips;
@@ -161,7 +161,7 @@ bool noct_world_movers_escaped(const noctWorld *w)
 {
     const noct_aabb root = noct_bp_root_box(&w->bp);
     for (uint32_t m = 0; m < w->motion.nmovers; ++m)
-        if (!noct_box_within(&w->bp.box[w->motion.movers[m]], &root))
+        if (!noct_box_within(noct_bp_box(&w->bp, w->motion.movers[m]), &root))
             return true;
     return false;
 }
@@ -192,11 +192,11 @@ void noct_world_roll_back(noctWorld *w, bool moved, bool tree_touched)
             memcpy(w->pos[i], w->motion.prev[m], sizeof w->pos[i]);
             if (kept)
                 memcpy(w->obj[i].vel, w->motion.prevvel[m], sizeof w->obj[i].vel);
-            noct_place_box(w->obj[i].mlo, w->obj[i].mhi, w->pos[i], &w->bp.box[i]);
+            noct_place_box(w->obj[i].mlo, w->obj[i].mhi, w->pos[i], noct_bp_box(&w->bp, i));
             noct_forget_home(&w->bp, i);
         }
     }
-    if (tree_touched && w->bp.root != NULL)
+    if (tree_touched && noct_bp_root(&w->bp) != NULL)
         noct_bp_drop_tree(&w->bp);
 }
 
@@ -206,7 +206,7 @@ double noct_world_step_ratio(const noctWorld *w, uint32_t *which)
 {
     double worst = 0;
     *which = UINT32_MAX;
-    for (uint32_t i = 0; i < w->bp.nslots; ++i) {
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i) {
         const noct_object *o = &w->obj[i];
         if (!o->alive || o->speed == 0)
             continue;

@@ -90,8 +90,8 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
      * where in the loop above each would wait behind the box tests. */
     for (size_t i = 0; i < colliding->n; ++i) {
         noctPair *q = &colliding->p[i];
-        q->a.generation = w->bp.gen[q->a.index];
-        q->b.generation = w->bp.gen[q->b.index];
+        q->a.generation = noct_bp_generation(&w->bp, q->a.index);
+        q->b.generation = noct_bp_generation(&w->bp, q->b.index);
     }
     if (level != NOCT_ACCURACY_BOX)
         *(level == NOCT_ACCURACY_CONVEX ? &w->c.narrow.seconds_convex

@@ -70,7 +70,7 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
     if (listed(&w->events.contact.now, i, j))
         return true;
     if (w->def.accuracy == NOCT_ACCURACY_BOX) {
-        const noct_aabb *a = &w->bp.box[i], *b = &w->bp.box[j];
+        const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
         double s = 0, scale = d;
         for (int k = 0; k < 3; ++k) {
             const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
@@ -98,11 +98,11 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     noct_record_rotate(e);
     partners p = {0, NULL, 0, 0, false};
     noctStatus st = NOCT_OK;
-    for (uint32_t i = 0; i < w->bp.nslots && st == NOCT_OK; ++i) {
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp) && st == NOCT_OK; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
             continue;
-        const noct_proxy *o = &w->bp.proxy[i];
-        const noct_aabb *b = &w->bp.box[i];
+        const noct_proxy *o = noct_bp_proxy(&w->bp, i);
+        const noct_aabb *b = noct_bp_box(&w->bp, i);
         double lo[3], hi[3], scale = d;
         for (int k = 0; k < 3; ++k)
             scale = noct_max(scale, noct_max(fabs(b->lo[k]), fabs(b->hi[k])));
@@ -126,7 +126,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             const uint32_t j = p.s[k];
             if (w->obj[j].sensor || !near(w, i, j, d))
                 continue;
-            const noctPair pair = {{i, w->bp.gen[i]}, {j, w->bp.gen[j]}};
+            const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
             if (!noct_pairs_push(&e->now, pair)) {
                 st = NOCT_ERR_NOMEM;
                 break;

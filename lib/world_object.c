@@ -248,7 +248,7 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     const uint32_t slot = noct_bp_new_slot(&w->bp);
     if (slot == UINT32_MAX) {
         noctMeshDestroy(rotated);
-        return w->bp.nslots >= 0x80000000u
+        return noct_bp_slots(&w->bp) >= 0x80000000u
                    ? noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0, "too many objects")
                    : noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
@@ -293,7 +293,7 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     w->nsensors += def->sensor;
     set_motion(w, slot, def->type, def->velocity);
     id->index = slot;
-    id->generation = w->bp.gen[slot];
+    id->generation = noct_bp_generation(&w->bp, slot);
     return NOCT_OK;
 }
 
@@ -376,7 +376,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     /* noct_world_lookup() through the proxy, whose line the fast test reads anyway
      * (a world object is alive when its proxy is: noctWorldValidate()) */
     const uint32_t s = id.index;
-    if (s >= w->bp.nslots || !w->bp.proxy[s].alive || w->bp.gen[s] != id.generation)
+    if (s >= noct_bp_slots(&w->bp) || !noct_bp_proxy(&w->bp, s)->alive || noct_bp_generation(&w->bp, s) != id.generation)
         return stale(id, err);
     noct_pose *p = &w->pose[s];
     /* The same quaternion, bit for bit (a program that only moves the
@@ -386,7 +386,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     noctStatus st = same ? check_position(x->p, err) : noctTransformCheck(x, err);
     if (st != NOCT_OK)
         return st;
-    if (same && !w->bp.tree_owed &&
+    if (same && !noct_bp_tree_owed(&w->bp) &&
         noct_bp_move_fast(&w->bp, s, x->p)) {
         memcpy(w->pos[s], x->p, sizeof w->pos[s]);
         return NOCT_OK;
@@ -554,14 +554,14 @@ noctStatus noctWorldSetUserData(noctWorld *w, noctObjectId id, void *user_data,
     NOCT_REQUIRE(w != NULL);
     if (noct_world_lookup(w, id) == NULL)
         return stale(id, err);
-    w->bp.proxy[id.index].user = user_data;
+    noct_bp_proxy(&w->bp, id.index)->user = user_data;
     return NOCT_OK;
 }
 
 void *noctWorldGetUserData(const noctWorld *w, noctObjectId id)
 {
     NOCT_REQUIRE(w != NULL);
-    return noct_world_lookup(w, id) != NULL ? w->bp.proxy[id.index].user : NULL;
+    return noct_world_lookup(w, id) != NULL ? noct_bp_proxy(&w->bp, id.index)->user : NULL;
 }
 
 const noctMesh *noctWorldGetMesh(const noctWorld *w, noctObjectId id)
@@ -650,13 +650,13 @@ void noct_world_unplace(noctWorld *w)
         p->q = r->q;
         memcpy(w->pos[s], r->p, sizeof w->pos[s]);
         place_mesh(w, s);
-        noct_proxy *o = &w->bp.proxy[s];
+        noct_proxy *o = noct_bp_proxy(&w->bp, s);
         memcpy(o->mlo, w->obj[s].mlo, sizeof o->mlo);
         memcpy(o->mhi, w->obj[s].mhi, sizeof o->mhi);
-        noct_place_box(o->mlo, o->mhi, w->pos[s], &w->bp.box[s]);
+        noct_place_box(o->mlo, o->mhi, w->pos[s], noct_bp_box(&w->bp, s));
         noct_forget_home(&w->bp, s);
     }
-    if (w->nplaced > 0 && w->bp.root != NULL)
+    if (w->nplaced > 0 && noct_bp_root(&w->bp) != NULL)
         noct_bp_drop_tree(&w->bp);
     w->nplaced = 0;
 }

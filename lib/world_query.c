@@ -109,7 +109,7 @@ const noctMesh *noct_world_shape(const noctWorld *w, uint32_t s, noct_shape_view
 
 static noctObjectId handle(const noctWorld *w, uint32_t s)
 {
-    return (noctObjectId){s, w->bp.gen[s]};
+    return (noctObjectId){s, noct_bp_generation(&w->bp, s)};
 }
 
 static noctStatus check_point(const double p[3], const char *what, noctError *err)
@@ -149,7 +149,7 @@ noctStatus noctWorldQueryPoint(const noctWorld *w, const double p[3], noctQueryF
         st = noct_point_in_solid(shape_of_object(w, s, &sh), w->pos[s], p, &inside);
         if (st != NOCT_OK)
             st = numeric(err, s);
-        else if (inside && !fcn(context, handle(w, s), w->bp.proxy[s].user))
+        else if (inside && !fcn(context, handle(w, s), noct_bp_proxy(&w->bp, s)->user))
             break;
     }
     candidates_fini(&c);
@@ -209,7 +209,7 @@ static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const do
         }
         if (st != NOCT_OK)
             st = noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
-        else if (hit && !fcn(context, handle(w, s), w->bp.proxy[s].user))
+        else if (hit && !fcn(context, handle(w, s), noct_bp_proxy(&w->bp, s)->user))
             break;
     }
     candidates_fini(&c);
@@ -345,7 +345,7 @@ static noctStatus ray_test(ray *r, uint32_t s, bool *hit, noctRayHit *h)
     if (st != NOCT_OK || !*hit)
         return st;
     h->id = handle(w, s);
-    h->user_data = w->bp.proxy[s].user;
+    h->user_data = noct_bp_proxy(&w->bp, s)->user;
     h->fraction = f;
     for (int k = 0; k < 3; ++k) {
         h->point[k] = r->p[k] + f * r->d[k];

@@ -38,7 +38,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     noct_record_clear(&w->events.contact);
     noct_record_clear(&w->events.sensor);
     noct_record_clear(&w->events.near);
-    if (w->bp.tree_owed) {
+    if (noct_bp_tree_owed(&w->bp)) {
         noctStatus st = noct_bp_rebuild(&w->bp, 0);
         if (st != NOCT_OK)
             return noct_fail(err, st, -1, 0, "rebuilding the octree: %s",
@@ -137,13 +137,13 @@ static bool update_spinners(noctWorld *w)
     if (!sp->stale)
         return true;
     size_t n = 0;
-    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
         n += w->obj[i].alive && w->obj[i].type == NOCT_OBJECT_MOVING &&
              !noct_quat_is_identity(&sp->w[i]);
     if (!grow_u32(&sp->spinners, &sp->cap, n))
         return false;
     sp->nspinners = 0;
-    for (uint32_t i = 0; i < w->bp.nslots; ++i)
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
         if (w->obj[i].alive && w->obj[i].type == NOCT_OBJECT_MOVING &&
             !noct_quat_is_identity(&sp->w[i]))
             sp->spinners[sp->nspinners++] = i;
@@ -253,7 +253,7 @@ static noctStatus stage_maintenance(noctWorld *w, bool moving)
 {
     noctStatus st = NOCT_OK;
     bool escaped = false;
-    if (w->bp.root != NULL && moving) {
+    if (noct_bp_root(&w->bp) != NULL && moving) {
         if (w->def.maintenance == NOCT_MAINTAIN_REBUILD) {
             escaped = noct_world_movers_escaped(w);
             if (!escaped)

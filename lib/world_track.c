@@ -103,8 +103,8 @@ static noctStatus stale_handle(noctObjectId id, noctError *err)
 
 static bool live(const noctWorld *w, noctObjectId id)
 {
-    return id.index < w->bp.nslots && w->obj[id.index].alive &&
-           w->bp.gen[id.index] == id.generation;
+    return id.index < noct_bp_slots(&w->bp) && w->obj[id.index].alive &&
+           noct_bp_generation(&w->bp, id.index) == id.generation;
 }
 
 /* The per-slot index, to the broadphase's capacity; false without memory. */
