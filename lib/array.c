@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "array.h"
 
@@ -24,5 +25,18 @@ void *noct_grow_block(void *p, size_t *cap, size_t need, size_t elem)
     void *q = noct_resize_block(p, c, elem);
     if (q != NULL)
         *cap = c;
+    return q;
+}
+
+void *noct_grow_local(void *p, const void *local, size_t *cap, size_t need, size_t elem)
+{
+    if (p != local)
+        return noct_grow_block(p, cap, need, elem);
+    size_t c = *cap;
+    void *q = noct_grow_block(NULL, &c, need, elem);
+    if (q != NULL) {
+        memcpy(q, local, *cap * elem);
+        *cap = c;
+    }
     return q;
 }

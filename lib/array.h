@@ -27,6 +27,10 @@
  */
 void *noct_grow_block(void *p, size_t *cap, size_t need, size_t elem);
 
+/* noct_grow_block() for a block that may be the caller's local buffer
+ * (then a new one is made and the *cap elements copied). */
+void *noct_grow_local(void *p, const void *local, size_t *cap, size_t need, size_t elem);
+
 /* The block p resized to exactly n > 0 elements of elem bytes, or NULL
  * (p unchanged) without memory or if n * elem overflows. For arrays that
  * share one capacity. */
@@ -43,6 +47,25 @@ void *noct_resize_block(void *p, size_t n, size_t elem);
         if (need <= *cap)                                                    \
             return true;                                                     \
         void *q = noct_grow_block(*p, cap, need, sizeof(T));                 \
+        if (q == NULL)                                                       \
+            return false;                                                    \
+        *p = (T *)q;                                                         \
+        return true;                                                         \
+    }
+
+/*
+ * static inline bool NAME(T **p, const T *local, size_t *cap, size_t need):
+ * as NOCT_DEFINE_GROW for an array that starts in a buffer of its user's
+ * (on the stack: local, of *cap elements) and moves to the heap when it
+ * outgrows it, its elements copied; free *p only if it is not local.
+ */
+#define NOCT_DEFINE_GROW_LOCAL(name, T)                                      \
+    static NOCT_ALWAYS_INLINE bool name(T **p, const T *local, size_t *cap,  \
+                                        size_t need)                         \
+    {                                                                        \
+        if (need <= *cap)                                                    \
+            return true;                                                     \
+        void *q = noct_grow_local(*p, local, cap, need, sizeof(T));          \
         if (q == NULL)                                                       \
             return false;                                                    \
         *p = (T *)q;                                                         \

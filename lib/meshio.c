@@ -15,6 +15,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "array.h"
 #include "internal.h"
 #include "mesh_internal.h"
 
@@ -39,26 +40,20 @@ static void data_free(mesh_data *d)
     free(d->pline);
 }
 
-/* Make room for need elements of size elem in *p (capacity *cap). */
-static bool grow(void **p, size_t *cap, size_t need, size_t elem)
+NOCT_DEFINE_GROW(grow_doubles, double)
+NOCT_DEFINE_GROW(grow_longs, long)
+NOCT_DEFINE_GROW(grow_u32, uint32_t)
+
+/* The room to ask for need elements: 64 at first. */
+static size_t room(size_t cap, size_t need)
 {
-    if (need <= *cap)
-        return true;
-    size_t cap2 = *cap ? *cap : 64;
-    while (cap2 < need)
-        cap2 *= 2;
-    void *q = realloc(*p, cap2 * elem);
-    if (q == NULL)
-        return false;
-    *p = q;
-    *cap = cap2;
-    return true;
+    return cap == 0 && need < 64 ? 64 : need;
 }
 
 static bool add_vertex(mesh_data *d, const double xyz[3], long line)
 {
-    if (!grow((void **)&d->v, &d->cap_v, 3 * (d->nv + 1), sizeof *d->v) ||
-        !grow((void **)&d->vline, &d->cap_vline, d->nv + 1, sizeof *d->vline))
+    if (!grow_doubles(&d->v, &d->cap_v, room(d->cap_v, 3 * (d->nv + 1))) ||
+        !grow_longs(&d->vline, &d->cap_vline, room(d->cap_vline, d->nv + 1)))
         return false;
     memcpy(&d->v[3 * d->nv], xyz, 3 * sizeof *xyz);
     d->vline[d->nv++] = line;
@@ -67,9 +62,9 @@ static bool add_vertex(mesh_data *d, const double xyz[3], long line)
 
 static bool add_polygon(mesh_data *d, const uint32_t *corners, uint32_t n, long line)
 {
-    if (!grow((void **)&d->sizes, &d->cap_sizes, d->np + 1, sizeof *d->sizes) ||
-        !grow((void **)&d->pline, &d->cap_pline, d->np + 1, sizeof *d->pline) ||
-        !grow((void **)&d->idx, &d->cap_idx, d->ni + n, sizeof *d->idx))
+    if (!grow_u32(&d->sizes, &d->cap_sizes, room(d->cap_sizes, d->np + 1)) ||
+        !grow_longs(&d->pline, &d->cap_pline, room(d->cap_pline, d->np + 1)) ||
+        !grow_u32(&d->idx, &d->cap_idx, room(d->cap_idx, d->ni + n)))
         return false;
     memcpy(&d->idx[d->ni], corners, n * sizeof *corners);
     d->ni += n;
@@ -262,7 +257,7 @@ static noctStatus read_off(reader *r, mesh_data *d, noctError *err)
             st = fail_at(r, err, NOCT_ERR_TOO_LARGE, "too many face corners", NULL);
             break;
         }
-        if (!grow((void **)&corners, &ccap, n, sizeof *corners)) {
+        if (!grow_u32(&corners, &ccap, room(ccap, n))) {
             st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
             break;
         }
@@ -331,7 +326,7 @@ static noctStatus read_obj(reader *r, mesh_data *d, noctError *err)
             char *t;
             while (st == NOCT_OK && (t = token(r)) != NULL) {
                 noctStatus cs;
-                if (!grow((void **)&corners, &ccap, n + 1, sizeof *corners))
+                if (!grow_u32(&corners, &ccap, room(ccap, n + 1)))
                     st = fail_at(r, err, NOCT_ERR_NOMEM, "out of memory", NULL);
                 else if ((cs = obj_corner(t, d->nv, &corners[n])) != NOCT_OK)
                     st = noct_fail(err, cs, (long)d->np, r->line,

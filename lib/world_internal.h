@@ -118,7 +118,8 @@ typedef struct noct_track {
  * (UINT32_MAX: none), made when the first track is set (NULL before). */
 typedef struct noct_tracks {
     noct_track *list;
-    uint32_t n, cap;
+    uint32_t n;
+    size_t cap;
     uint32_t *of;          /* capof entries */
     uint32_t capof;
 } noct_tracks;

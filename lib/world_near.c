@@ -23,21 +23,17 @@ typedef struct partners {
     bool failed;
 } partners;
 
+NOCT_DEFINE_GROW(grow_u32, uint32_t)
+
 static bool take(void *context, noctProxyId id, void *user)
 {
     (void)user;
     partners *p = context;
     if (id.index <= p->self)
         return true;
-    if (p->n == p->cap) {
-        const size_t cap = p->cap ? 2 * p->cap : 16;
-        uint32_t *a = realloc(p->s, cap * sizeof *a);
-        if (a == NULL) {
-            p->failed = true;
-            return false;
-        }
-        p->s = a;
-        p->cap = cap;
+    if (!grow_u32(&p->s, &p->cap, p->cap > 0 ? p->n + 1 : 16)) {
+        p->failed = true;
+        return false;
     }
     p->s[p->n++] = id.index;
     return true;

@@ -40,20 +40,14 @@ static void candidates_fini(candidates *c)
         free(c->s);
 }
 
+NOCT_DEFINE_GROW_LOCAL(grow_candidates, uint32_t)
+NOCT_DEFINE_GROW(grow_hits, noctRayHit)
+
 static bool candidates_push(candidates *c, uint32_t s)
 {
-    if (c->n == c->cap) {
-        const size_t cap = 2 * c->cap;
-        uint32_t *a = c->s == c->local ? malloc(cap * sizeof *a)
-                                       : realloc(c->s, cap * sizeof *a);
-        if (a == NULL) {
-            c->failed = true;
-            return false;
-        }
-        if (c->s == c->local)
-            memcpy(a, c->local, sizeof c->local);
-        c->s = a;
-        c->cap = cap;
+    if (!grow_candidates(&c->s, c->local, &c->cap, c->n + 1)) {
+        c->failed = true;
+        return false;
     }
     c->s[c->n++] = s;
     return true;
@@ -383,16 +377,10 @@ static double ray_visit(void *context, noctProxyId id, void *user, double t)
          * one before it. */
         return noct_min(1, r->best.fraction + r->slack);
     }
-    if (r->n == r->cap) {
-        const size_t cap = r->cap ? 2 * r->cap : 16;
-        noctRayHit *a = realloc(r->hits, cap * sizeof *a);
-        if (a == NULL) {
-            r->st = NOCT_ERR_NOMEM;
-            r->bad = UINT32_MAX;
-            return 0;
-        }
-        r->hits = a;
-        r->cap = cap;
+    if (!grow_hits(&r->hits, &r->cap, r->cap > 0 ? r->n + 1 : 16)) {
+        r->st = NOCT_ERR_NOMEM;
+        r->bad = UINT32_MAX;
+        return 0;
     }
     r->hits[r->n++] = h;
     return 1;

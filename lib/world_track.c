@@ -107,18 +107,20 @@ static bool live(const noctWorld *w, noctObjectId id)
            noct_bp_generation(&w->bp, id.index) == id.generation;
 }
 
+NOCT_DEFINE_GROW(grow_tracks, noct_track)
+NOCT_DEFINE_RESIZE(resize_u32, uint32_t)
+
 /* The per-slot index, to the broadphase's capacity; false without memory. */
 static bool reserve_of(noctWorld *w)
 {
     noct_tracks *t = &w->tracks;
     if (t->of != NULL && w->capslots <= t->capof)
         return true;
-    uint32_t *a = realloc(t->of, (size_t)w->capslots * sizeof *a);
-    if (a == NULL)
+    const uint32_t from = t->of == NULL ? 0 : t->capof;
+    if (!resize_u32(&t->of, w->capslots))
         return false;
-    for (uint32_t i = t->of == NULL ? 0 : t->capof; i < w->capslots; ++i)
-        a[i] = UINT32_MAX;
-    t->of = a;
+    for (uint32_t i = from; i < w->capslots; ++i)
+        t->of[i] = UINT32_MAX;
     t->capof = w->capslots;
     return true;
 }
@@ -182,15 +184,9 @@ noctStatus noctWorldSetTrack(noctWorld *w, noctObjectId id, const noctKeyframe *
     }
     memcpy(copy, keys, n * sizeof *copy);
     uint32_t i = t->of[s];
-    if (i == UINT32_MAX && t->n == t->cap) {
-        const uint32_t cap = t->cap ? 2 * t->cap : 8;
-        noct_track *a = realloc(t->list, cap * sizeof *a);
-        if (a == NULL) {
-            free(copy);
-            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-        }
-        t->list = a;
-        t->cap = cap;
+    if (i == UINT32_MAX && !grow_tracks(&t->list, &t->cap, t->cap > 0 ? t->n + 1 : 8)) {
+        free(copy);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     /* Placed now, at the current tick: as a teleport, through the
      * set-transform path (which checks the pose against the shape). */
