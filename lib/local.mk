@@ -13,6 +13,7 @@ noctree_sources = \
 	lib/broadphase_pairs.c \
 	lib/broadphase_query.c \
 	lib/broadphase_tree.c \
+	lib/bvh.c lib/bvh.h \
 	lib/clock.c \
 	lib/direction.c \
 	lib/families.c lib/families_internal.h \
@@ -20,6 +21,9 @@ noctree_sources = \
 	lib/mesh_internal.h \
 	lib/meshio.c \
 	lib/narrowphase.c \
+	lib/narrowphase_distance.c \
+	lib/narrowphase_internal.h \
+	lib/narrowphase_query.c \
 	lib/neighbor.c \
 	lib/octree.c \
 	lib/predicates.c \

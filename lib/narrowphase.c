@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The narrowphase: the report's hierarchy of partial decision mechanisms.
+ * The narrowphase's collision levels: the report's hierarchy of partial
+ * decision mechanisms (the queries and distances are in
+ * narrowphase_query.c and narrowphase_distance.c).
  *
  * Exact level. Two closed triangle meshes share a point iff a triangle of
  * one meets a triangle of the other, or one solid contains the other (then
@@ -15,231 +17,48 @@
  * placed box of any vertex set is exactly [fl(lo + t), fl(hi + t)]: box
  * tests on placed boxes are exact and conservative without padding.
  */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime(2) */
 #include "config.h"
 
 #include <ccd/ccd.h>
 #include <math.h>
 #include <string.h>
-#include <time.h>
 
 #include <noctree/narrowphase.h>
 
-#include "internal.h"
-#include "mesh_internal.h"
+#include "narrowphase_internal.h"
 #include "vec3.h"
-#include "predicates.h"
 
-typedef struct placed {
-    const noctMesh *m;
-    double t[3];
-} placed;
+/* ---- the boundaries: triangle pairs through the BVHs ---------------------- */
 
-static void place(const placed *o, uint32_t vi, double out[3])
+typedef struct boundary_walk {
+    const placed *A, *B;
+    const exact_ctx *x;
+    noctNarrowStats *st;
+} boundary_walk;
+
+static inline bool boundary_prune(void *context, const bvh_node *na, const bvh_node *nb)
 {
-    const double *v = &o->m->v[3 * vi];
-    out[0] = v[0] + o->t[0];
-    out[1] = v[1] + o->t[1];
-    out[2] = v[2] + o->t[2];
+    const boundary_walk *b = context;
+    if (b->st)
+        ++b->st->bvh_pairs;
+    return !noct_boxes_overlap(na->lo, na->hi, b->A->t, nb->lo, nb->hi, b->B->t);
 }
 
-/* Closed boxes [alo, ahi] + ta and [blo, bhi] + tb overlap. */
-static bool boxes_overlap(const double alo[3], const double ahi[3],
-                          const double ta[3], const double blo[3],
-                          const double bhi[3], const double tb[3])
+static inline bool boundary_pair(void *context, double ta[3][3], double tb[3][3])
 {
-    for (int k = 0; k < 3; ++k)
-        if (ahi[k] + ta[k] < blo[k] + tb[k] || bhi[k] + tb[k] < alo[k] + ta[k])
-            return false;
-    return true;
+    const boundary_walk *b = context;
+    if (b->st)
+        ++b->st->triangle_pairs;
+    return tri_tri(b->x, ta, tb);
 }
 
-/* ---- exact primitives ----------------------------------------------------- */
-
-typedef struct exact_ctx {
-    uint64_t *fallbacks;
-} exact_ctx;
-
-static int o3(const exact_ctx *x, const double a[3], const double b[3],
-              const double c[3], const double d[3])
-{
-    return noct_orient3d(a, b, c, d, x->fallbacks);
-}
-
-/* orient2d of the projections dropping axis k. */
-static int o2(const exact_ctx *x, int k, const double a[3], const double b[3],
-              const double c[3])
-{
-    int i = (k + 1) % 3, j = (k + 2) % 3;
-    double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
-    return noct_orient2d(pa, pb, pc, x->fallbacks);
-}
-
-/* p lies in the closed box of segment ab on the two axes other than k;
- * with p collinear with a and b in that projection this means p is on the
- * projected segment. */
-static bool within_2d(int k, const double p[3], const double a[3], const double b[3])
-{
-    for (int s = 1; s <= 2; ++s) {
-        int i = (k + s) % 3;
-        if (p[i] < noct_min(a[i], b[i]) || p[i] > noct_max(a[i], b[i]))
-            return false;
-    }
-    return true;
-}
-
-/* Closed segments pq and ab meet, in the projection dropping axis k. */
-static bool seg_seg_2d(const exact_ctx *x, int k, const double p[3],
-                       const double q[3], const double a[3], const double b[3])
-{
-    int d1 = o2(x, k, p, q, a), d2 = o2(x, k, p, q, b);
-    int d3 = o2(x, k, a, b, p), d4 = o2(x, k, a, b, q);
-    if (d1 * d2 < 0 && d3 * d4 < 0)
-        return true;
-    return (d1 == 0 && within_2d(k, a, p, q)) || (d2 == 0 && within_2d(k, b, p, q)) ||
-           (d3 == 0 && within_2d(k, p, a, b)) || (d4 == 0 && within_2d(k, q, a, b));
-}
-
-/* Closed segments pq and ab meet, in 3D. */
-static bool seg_seg_3d(const exact_ctx *x, const double p[3], const double q[3],
-                       const double a[3], const double b[3])
-{
-    if (o3(x, p, q, a, b) != 0)
-        return false; /* not coplanar */
-    /* A projection in which the four points are not collinear is one-to-one
-     * on their plane. */
-    for (int k = 0; k < 3; ++k)
-        if (o2(x, k, p, q, a) || o2(x, k, p, q, b) || o2(x, k, a, b, p) ||
-            o2(x, k, a, b, q))
-            return seg_seg_2d(x, k, p, q, a, b);
-    /* All four collinear: compare intervals along an axis that separates
-     * them, or any axis if they all coincide. */
-    int axis = 0;
-    double best = -1;
-    for (int k = 0; k < 3; ++k) {
-        double lo = noct_min(noct_min(p[k], q[k]), noct_min(a[k], b[k]));
-        double hi = noct_max(noct_max(p[k], q[k]), noct_max(a[k], b[k]));
-        if (hi - lo > best) {
-            best = hi - lo;
-            axis = k;
-        }
-    }
-    return noct_max(noct_min(p[axis], q[axis]), noct_min(a[axis], b[axis])) <=
-           noct_min(noct_max(p[axis], q[axis]), noct_max(a[axis], b[axis]));
-}
-
-/* Closed segment pq meets closed triangle abc (any of them degenerate);
- * s1 and s2 are the signs of o3(a, b, c, p) and o3(a, b, c, q). */
-static bool seg_tri(const exact_ctx *x, const double p[3], const double q[3],
-                    int s1, int s2, const double a[3], const double b[3],
-                    const double c[3])
-{
-    if (s1 * s2 > 0)
-        return false;
-    if (s1 != 0 || s2 != 0) {
-        /* pq crosses or touches the plane in one point: is it inside? */
-        int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c), e3 = o3(x, p, q, c, a);
-        return (e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0);
-    }
-    /* Coplanar (or the triangle is degenerate): project on a plane where
-     * the triangle keeps its area. */
-    for (int k = 0; k < 3; ++k) {
-        int area = o2(x, k, a, b, c);
-        if (area == 0)
-            continue;
-        int i1 = o2(x, k, a, b, p), i2 = o2(x, k, b, c, p), i3 = o2(x, k, c, a, p);
-        if (i1 * area >= 0 && i2 * area >= 0 && i3 * area >= 0)
-            return true; /* p inside */
-        return seg_seg_2d(x, k, p, q, a, b) || seg_seg_2d(x, k, p, q, b, c) ||
-               seg_seg_2d(x, k, p, q, c, a);
-    }
-    /* The triangle has collapsed to a segment or a point. */
-    return seg_seg_3d(x, p, q, a, b) || seg_seg_3d(x, p, q, b, c) ||
-           seg_seg_3d(x, p, q, c, a);
-}
-
-/*
- * Closed triangles a and b meet. Each vertex's side of the other
- * triangle's plane is computed once: when all three vertices of one
- * triangle lie strictly on one side of the other's plane, they cannot
- * meet (the common case, six predicates); otherwise an edge of one meets
- * the other triangle, tested with the signs already known.
- */
-static bool tri_tri(const exact_ctx *x, double a[3][3], double b[3][3])
-{
-    int sa[3], sb[3];
-    for (int i = 0; i < 3; ++i)
-        sb[i] = o3(x, a[0], a[1], a[2], b[i]);
-    if (sb[0] == sb[1] && sb[1] == sb[2] && sb[0] != 0)
-        return false;
-    for (int i = 0; i < 3; ++i)
-        sa[i] = o3(x, b[0], b[1], b[2], a[i]);
-    if (sa[0] == sa[1] && sa[1] == sa[2] && sa[0] != 0)
-        return false;
-    for (int e = 0; e < 3; ++e) {
-        int f = (e + 1) % 3;
-        if (seg_tri(x, a[e], a[f], sa[e], sa[f], b[0], b[1], b[2]) ||
-            seg_tri(x, b[e], b[f], sb[e], sb[f], a[0], a[1], a[2]))
-            return true;
-    }
-    return false;
-}
-
-/* ---- BVH pair traversal ----------------------------------------------------- */
-
-#define PAIR_STACK 256
-
+/* Do the boundaries of A and B meet? (Exact; true also if the walk's
+ * stack would overflow, which meshes within the size limits never do.) */
 static bool boundaries_meet(const placed *A, const placed *B, const exact_ctx *x,
                             noctNarrowStats *st)
 {
-    struct { uint32_t a, b; } stack[PAIR_STACK];
-    size_t top = 0;
-    stack[top].a = 0;
-    stack[top++].b = 0;
-    while (top > 0) {
-        --top;
-        const bvh_node *na = &A->m->nodes[stack[top].a];
-        const bvh_node *nb = &B->m->nodes[stack[top].b];
-        if (st)
-            ++st->bvh_pairs;
-        if (!boxes_overlap(na->lo, na->hi, A->t, nb->lo, nb->hi, B->t))
-            continue;
-        if (na->count > 0 && nb->count > 0) {
-            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                double ta[3][3];
-                for (int c = 0; c < 3; ++c)
-                    place(A, A->m->tri[3 * i + c], ta[c]);
-                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
-                    double tb[3][3];
-                    for (int c = 0; c < 3; ++c)
-                        place(B, B->m->tri[3 * j + c], tb[c]);
-                    if (st)
-                        ++st->triangle_pairs;
-                    if (tri_tri(x, ta, tb))
-                        return true;
-                }
-            }
-            continue;
-        }
-        /* Descend into the node with the larger box (or the inner one). */
-        double sa = 0, sb = 0;
-        for (int k = 0; k < 3; ++k) {
-            sa += na->hi[k] - na->lo[k];
-            sb += nb->hi[k] - nb->lo[k];
-        }
-        bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
-        uint32_t ia = stack[top].a, ib = stack[top].b;
-        if (top + 2 > PAIR_STACK)
-            return true; /* unreachable for meshes within the size limits */
-        if (split_a) {
-            stack[top].a = na->first;     stack[top++].b = ib;
-            stack[top].a = na->first + 1; stack[top++].b = ib;
-        } else {
-            stack[top].a = ia; stack[top++].b = nb->first;
-            stack[top].a = ia; stack[top++].b = nb->first + 1;
-        }
-    }
-    return false;
+    boundary_walk b = {A, B, x, st};
+    return noct_bvh_pair_walk(A, B, boundary_prune, boundary_pair, &b);
 }
 
 /* ---- containment ---------------------------------------------------------- */
@@ -252,8 +71,8 @@ static bool boundaries_meet(const placed *A, const placed *B, const exact_ctx *x
  * detected exactly and another q is tried. Degenerate (collapsed) placed
  * triangles enclose nothing and are skipped.
  */
-static noctStatus contains(const placed *B, const double p[3], const exact_ctx *x,
-                           bool *inside)
+noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
+                         bool *inside)
 {
     const noctMesh *m = B->m;
     double lo[3], hi[3];
@@ -285,9 +104,9 @@ static noctStatus contains(const placed *B, const double p[3], const exact_ctx *
         unsigned crossings = 0;
         for (size_t t = 0; t < m->nt && !ambiguous; ++t) {
             double a[3], b[3], c[3];
-            place(B, m->tri[3 * t], a);
-            place(B, m->tri[3 * t + 1], b);
-            place(B, m->tri[3 * t + 2], c);
+            noct_place_vertex(B, m->tri[3 * t], a);
+            noct_place_vertex(B, m->tri[3 * t + 1], b);
+            noct_place_vertex(B, m->tri[3 * t + 2], c);
             int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
             if (s1 == 0 && s2 == 0) {
                 bool flat = true;
@@ -353,7 +172,7 @@ typedef struct placed_vertices {
 static void place_all(const placed *P, placed_vertices *pv)
 {
     for (size_t i = 0; i < P->m->nv; ++i)
-        place(P, (uint32_t)i, pv->v[i]);
+        noct_place_vertex(P, (uint32_t)i, pv->v[i]);
 }
 
 /*
@@ -415,29 +234,6 @@ static bool sat_separated(const placed *A, const placed *B)
             return true;
     }
     return false;
-}
-
-/* The radius of a box with half-edges e on axis u: sum_i |u.e[i]|. */
-static NOCT_ALWAYS_INLINE double box_radius(const double e[3][3], const double u[3])
-{
-    return fabs(u[0] * e[0][0] + u[1] * e[0][1] + u[2] * e[0][2]) +
-           fabs(u[0] * e[1][0] + u[1] * e[1][1] + u[2] * e[1][2]) +
-           fabs(u[0] * e[2][0] + u[1] * e[2][1] + u[2] * e[2][2]);
-}
-
-/* T = fl(c_B + t_B) - fl(c_A + t_A), and the M of the error bounds
- * below: it bounds the sizes, and |t| <= |fl(c + t)| + |c| + rounding. */
-static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double ta[3],
-                                            const noct_box_slot *b, const double tb[3],
-                                            double T[3])
-{
-    double m = 0;
-    for (int k = 0; k < 3; ++k) {
-        const double ca = a->c[k] + ta[k], cb = b->c[k] + tb[k];
-        T[k] = cb - ca;
-        m = noct_max(m, noct_max(fabs(ca), fabs(cb)));
-    }
-    return m + noct_max(a->size, b->size);
 }
 
 /* Is a b == c d exactly? Two-products (fma) away from underflow. */
@@ -763,11 +559,11 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool decided, 
         if (!box_inside(in, out))
             continue;
         double p[3];
-        place(in, in->m->tri[0], p);
+        noct_place_vertex(in, in->m->tri[0], p);
         if (st)
             ++st->containment_tests;
         bool inside;
-        noctStatus s = contains(out, p, &x, &inside);
+        noctStatus s = noct_contains(out, p, &x, &inside);
         if (s != NOCT_OK)
             return s;
         if (inside) {
@@ -797,7 +593,7 @@ static void ccd_support(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
         }
     }
     double p[3];
-    place(o, m->hull[best], p);
+    noct_place_vertex(o, m->hull[best], p);
     ccdVec3Set(out, p[0], p[1], p[2]);
 }
 
@@ -856,14 +652,7 @@ static noctStatus convex_collide(const placed *A, const placed *B, bool *hit,
     return NOCT_OK;
 }
 
-/* ---- the entry point ------------------------------------------------------- */
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+/* ---- the levels in order: noctCollide() ------------------------------------- */
 
 const char *noctAccuracyName(noctAccuracy accuracy)
 {
@@ -883,7 +672,7 @@ static noctStatus collide_levels(const noctMesh *a, const double ta[3], const no
 {
     if (stats)
         ++stats->box_tests;
-    if (!boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb)) {
+    if (!noct_boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb)) {
         if (stats)
             ++stats->box_rejects;
         *colliding = false;
@@ -917,477 +706,6 @@ noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
     return exact_collide(&A, &B, true, colliding, stats);
 }
 
-/* ---- the world's queries (world_query.c) ------------------------------------ */
-
-/* out = a x b; returns |out|_1. */
-static double cross_into(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-    return fabs(out[0]) + fabs(out[1]) + fabs(out[2]);
-}
-
-/* Call fn for each placed triangle of B whose BVH leaf's placed box meets
- * the box [lo, hi] (the placed boxes hold their placed triangles exactly),
- * in the BVH's order, until it returns true; true if one did. */
-typedef bool triangle_fn(void *context, uint32_t i, double a[3], double b[3], double c[3]);
-
-static bool walk_triangles(const placed *B, const double lo[3], const double hi[3],
-                           triangle_fn *fn, void *context)
-{
-    static const double zero[3] = {0, 0, 0};
-    const noctMesh *m = B->m;
-    uint32_t stack[64];
-    size_t top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const bvh_node *n = &m->nodes[stack[--top]];
-        if (!boxes_overlap(n->lo, n->hi, B->t, lo, hi, zero))
-            continue;
-        if (n->count == 0) {
-            /* unreachable: a BVH is at most 33 deep, and the stack holds
-             * one node a level and one more */
-            if (top + 2 > sizeof stack / sizeof *stack)
-                return true;
-            stack[top++] = n->first;
-            stack[top++] = n->first + 1;
-            continue;
-        }
-        for (uint32_t i = n->first; i < n->first + n->count; ++i) {
-            double a[3], b[3], c[3];
-            place(B, m->tri[3 * i], a);
-            place(B, m->tri[3 * i + 1], b);
-            place(B, m->tri[3 * i + 2], c);
-            if (fn(context, i, a, b, c))
-                return true;
-        }
-    }
-    return false;
-}
-
-typedef struct point_on {
-    const double *p;
-    exact_ctx x;
-} point_on;
-
-static bool point_on_triangle(void *context, uint32_t i, double a[3], double b[3], double c[3])
-{
-    (void)i;
-    const point_on *q = context;
-    return o3(&q->x, a, b, c, q->p) == 0 && seg_tri(&q->x, q->p, q->p, 0, 0, a, b, c);
-}
-
-/* Is p on a triangle of B (closed)? */
-static bool on_boundary(const placed *B, const double p[3], const exact_ctx *x)
-{
-    point_on q = {p, *x};
-    return walk_triangles(B, p, p, point_on_triangle, &q);
-}
-
-noctStatus noct_point_in_solid(const noctMesh *m, const double t[3], const double p[3],
-                               bool *inside)
-{
-    const placed B = {m, {t[0], t[1], t[2]}};
-    const exact_ctx x = {NULL};
-    *inside = false;
-    if (!boxes_overlap(m->lo, m->hi, t, p, p, (const double[3]){0, 0, 0}))
-        return NOCT_OK;
-    if (on_boundary(&B, p, &x)) {
-        *inside = true;
-        return NOCT_OK;
-    }
-    return contains(&B, p, &x, inside);
-}
-
-/* Where segment pq, known to meet closed triangle abc and not to start on
- * it, meets it first: the fraction along pq, in floating point, in
- * [0, 1]. Crossing its plane: where the plane's function changes sign.
- * In its plane: the least fraction at which pq meets an edge, in the
- * projection that keeps the triangle's area. */
-static double entry_fraction(const double p[3], const double q[3], const double a[3],
-                             const double b[3], const double c[3], const double n[3], bool flat)
-{
-    double d[3];
-    for (int k = 0; k < 3; ++k)
-        d[k] = q[k] - p[k];
-    if (!flat) {
-        double fp = 0, fq = 0;
-        for (int k = 0; k < 3; ++k) {
-            fp += n[k] * (p[k] - a[k]);
-            fq += n[k] * (q[k] - a[k]);
-        }
-        const double f = fp != fq ? fp / (fp - fq) : 0;
-        return f > 0 ? (f < 1 ? f : 1) : 0;
-    }
-    int drop = 0;
-    for (int k = 1; k < 3; ++k)
-        if (fabs(n[k]) > fabs(n[drop]))
-            drop = k;
-    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
-    const double *const v[3] = {a, b, c};
-    double best = 1;
-    for (int e = 0; e < 3; ++e) {
-        const double *u = v[e], *w = v[(e + 1) % 3];
-        const double ex = w[i] - u[i], ey = w[j] - u[j];
-        const double den = d[i] * ey - d[j] * ex;
-        if (den == 0)
-            continue;
-        const double rx = u[i] - p[i], ry = u[j] - p[j];
-        const double s = (rx * ey - ry * ex) / den;  /* along pq */
-        const double r = (rx * d[j] - ry * d[i]) / den; /* along the edge */
-        if (s >= 0 && s < best && r >= -1e-12 && r <= 1 + 1e-12)
-            best = s;
-    }
-    return best;
-}
-
-/* v scaled by the power of two that brings its largest component into
- * [1/2, 1), exactly (but for subnormal parts of a vector of huge range);
- * false if v is 0. */
-static bool scale_to_unit_range(const double v[3], double out[3])
-{
-    const double m = noct_max(noct_max(fabs(v[0]), fabs(v[1])), fabs(v[2]));
-    if (!(m > 0))
-        return false;
-    int e;
-    frexp(m, &e);
-    for (int k = 0; k < 3; ++k)
-        out[k] = ldexp(v[k], -e);
-    return true;
-}
-
-/* The unit vector along v into n, from v scaled as above, so that its
- * length neither overflows nor underflows; false (n = 0) if v is 0. */
-static bool unit_vector(const double v[3], double n[3])
-{
-    double s[3];
-    n[0] = n[1] = n[2] = 0;
-    if (!scale_to_unit_range(v, s))
-        return false;
-    const double len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-    for (int k = 0; k < 3; ++k)
-        n[k] = s[k] / len;
-    return true;
-}
-
-/* The unit vector along u x v into n, computed on u and v scaled by
- * powers of two so that no product overflows or underflows, at any edge
- * length a mesh may have; false (n = 0) if u x v is 0 as computed: a
- * triangle without area as placed. */
-static bool unit_cross(const double u[3], const double v[3], double n[3])
-{
-    double us[3], vs[3], c[3];
-    n[0] = n[1] = n[2] = 0;
-    if (!scale_to_unit_range(u, us) || !scale_to_unit_range(v, vs))
-        return false;
-    cross_into(us, vs, c);
-    return unit_vector(c, n);
-}
-
-/* The first triangle segment pq enters, so far. */
-typedef struct segment_entry {
-    const double *p, *q;
-    exact_ctx x;
-    double best;
-    uint32_t triangle;
-    double *normal;
-    bool flat;            /* that triangle has no area as placed */
-} segment_entry;
-
-static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], double c[3])
-{
-    segment_entry *e = context;
-    const int s1 = o3(&e->x, a, b, c, e->p), s2 = o3(&e->x, a, b, c, e->q);
-    if (!seg_tri(&e->x, e->p, e->q, s1, s2, a, b, c))
-        return false;
-    double u[3], v[3], nn[3], d[3];
-    for (int k = 0; k < 3; ++k) {
-        u[k] = b[k] - a[k];
-        v[k] = c[k] - a[k];
-        d[k] = e->q[k] - e->p[k];
-    }
-    const bool area = unit_cross(u, v, nn);
-    double f;
-    if (area) {
-        f = entry_fraction(e->p, e->q, a, b, c, nn, s1 == 0 && s2 == 0);
-    } else {
-        /* a point or a segment as placed (a shape far from the origin
-         * for its size): where pq passes nearest its first corner, which
-         * is within the triangle's extent of the meeting point */
-        double num = 0, den = 0;
-        for (int k = 0; k < 3; ++k) {
-            num += (a[k] - e->p[k]) * d[k];
-            den += d[k] * d[k];
-        }
-        f = den > 0 && num > 0 ? (num < den ? num / den : 1) : 0;
-    }
-    if (f < e->best || (f == e->best && i < e->triangle)) {
-        e->best = f;
-        e->triangle = i;
-        e->flat = !area;
-        if (area) {
-            memcpy(e->normal, nn, sizeof nn);
-        } else { /* against the segment: a normal a program can use */
-            const double back[3] = {-d[0], -d[1], -d[2]};
-            unit_vector(back, e->normal);
-        }
-    }
-    return false; /* on: the least fraction */
-}
-
-noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p[3],
-                            const double q[3], bool *hit, double *fraction,
-                            uint32_t *triangle, double normal[3], bool *flat)
-{
-    const placed B = {m, {t[0], t[1], t[2]}};
-    const exact_ctx x = {NULL};
-    *hit = false;
-    *flat = false;
-    *triangle = UINT32_MAX;
-    normal[0] = normal[1] = normal[2] = 0;
-    double slo[3], shi[3];
-    for (int k = 0; k < 3; ++k) {
-        slo[k] = noct_min(p[k], q[k]);
-        shi[k] = noct_max(p[k], q[k]);
-    }
-    static const double zero[3] = {0, 0, 0};
-    if (!boxes_overlap(m->lo, m->hi, t, slo, shi, zero))
-        return NOCT_OK;
-    bool inside;
-    noctStatus st = noct_point_in_solid(m, t, p, &inside);
-    if (st != NOCT_OK)
-        return st;
-    if (inside) {
-        *hit = true;
-        *fraction = 0;
-        return NOCT_OK;
-    }
-    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal, false};
-    walk_triangles(&B, slo, shi, segment_meets, &e);
-    *triangle = e.triangle;
-    *flat = e.flat;
-    const double best = e.best;
-    if (*triangle != UINT32_MAX) {
-        *hit = true;
-        *fraction = best;
-    }
-    return NOCT_OK;
-}
-
-/* ---- box forms apart by more than a distance (margins) ------------------------ */
-
-/* Is the separation of the two box forms along axis u (not unit), gap
- * (their projections' distance, less the allowances, in units of u),
- * more than d? */
-static bool gap_beyond(double gap, const double u[3], double d)
-{
-    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    return gap > d * n * (1 + 0x1p-40);
-}
-
-bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                       const double tb[3], double d)
-{
-    double T[3];
-    const double M = box_offset(a, ta, b, tb, T);
-    const double unit = 256 * 0x1p-53 * M, dev = (double)a->dev + (double)b->dev;
-    double C[3][3], la[3], lb[3];
-    for (int i = 0; i < 3; ++i) {
-        const double *u = a->e[i];
-        la[i] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        for (int j = 0; j < 3; ++j)
-            C[i][j] = u[0] * b->e[j][0] + u[1] * b->e[j][1] + u[2] * b->e[j][2];
-        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)a->own[i] -
-                           (fabs(C[i][0]) + fabs(C[i][1]) + fabs(C[i][2])) - la[i] * dev -
-                           unit * la[i];
-        if (gap_beyond(gap, u, d))
-            return true;
-    }
-    for (int j = 0; j < 3; ++j) {
-        const double *u = b->e[j];
-        lb[j] = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] -
-                           (fabs(C[0][j]) + fabs(C[1][j]) + fabs(C[2][j])) - lb[j] * dev -
-                           unit * lb[j];
-        if (gap_beyond(gap, u, d))
-            return true;
-    }
-    for (int i = 0; i < 3; ++i) {
-        const double *x = a->e[i];
-        for (int j = 0; j < 3; ++j) {
-            const double *y = b->e[j];
-            const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
-                                 x[0] * y[1] - x[1] * y[0]};
-            const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-            if (!(l1 > 1e-6 * la[i] * lb[j]))
-                continue; /* (nearly) parallel edges */
-            const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) -
-                               box_radius(a->e, u) - box_radius(b->e, u) - l1 * dev - unit * l1;
-            if (gap_beyond(gap, u, d))
-                return true;
-        }
-    }
-    return false;
-}
-
-/* ---- distance, for margins (world_near.c, world_query.c) -------------------------- */
-
-/* A lower bound on the distance between two closed triangles that do not
- * meet, proved in floating point: for disjoint convex polytopes the
- * distance is the largest gap between their projections on a unit axis,
- * reached on the axis from one closest point to the other, which is a
- * face normal, the cross product of two edges, the difference of two
- * corners, or the perpendicular from a corner to an edge or from one
- * edge's line to a parallel one's (the same as from one of its corners).
- * The gap on every axis, computed with
- * an allowance for its rounding, bounds the distance from below whatever
- * the axis's own rounding; the largest is the bound, within a few
- * roundings of the distance. (A zero axis is skipped: that only lowers the
- * bound.) */
-/* The gap along u proved: (least of B's projections - greatest of A's,
- * less twice the rounding of either) over |u|, or 0; s bounds every
- * coordinate. */
-static double proved_gap(const double u[3], double a[3][3], double b[3][3], double s)
-{
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    if (!(l1 > 0))
-        return 0;
-    double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
-    for (int i = 0; i < 3; ++i) {
-        const double pa = noct_dot3(u, a[i]), pb = noct_dot3(u, b[i]);
-        amax = noct_max(amax, pa);
-        amin = noct_min(amin, pa);
-        bmax = noct_max(bmax, pb);
-        bmin = noct_min(bmin, pb);
-    }
-    /* each projection errs by at most 4 ulp of l1 s; the difference one
-     * more */
-    const double err = 0x1p-50 * l1 * s;
-    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
-    if (!(gap > 0))
-        return 0;
-    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    return gap / (n * (1 + 0x1p-48));
-}
-
-static double tri_tri_lower_bound(double a[3][3], double b[3][3])
-{
-    double s = 0;
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k)
-            s = noct_max(s, noct_max(fabs(a[i][k]), fabs(b[i][k])));
-    double ea[3][3], eb[3][3];
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) {
-            ea[i][k] = a[(i + 1) % 3][k] - a[i][k];
-            eb[i][k] = b[(i + 1) % 3][k] - b[i][k];
-        }
-    double best = 0, u[3], w[3], v[3];
-    /* face normals */
-    cross_into(ea[0], ea[1], u);
-    best = noct_max(best, proved_gap(u, a, b, s));
-    cross_into(eb[0], eb[1], u);
-    best = noct_max(best, proved_gap(u, a, b, s));
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            /* edge against edge */
-            cross_into(ea[i], eb[j], u);
-            best = noct_max(best, proved_gap(u, a, b, s));
-            /* corner against corner */
-            for (int k = 0; k < 3; ++k)
-                u[k] = b[j][k] - a[i][k];
-            best = noct_max(best, proved_gap(u, a, b, s));
-            /* corner against edge, both ways: (e x (p - q)) x e */
-            for (int k = 0; k < 3; ++k)
-                v[k] = a[i][k] - b[j][k];
-            cross_into(eb[j], v, w);
-            cross_into(w, eb[j], u);
-            best = noct_max(best, proved_gap(u, a, b, s));
-            for (int k = 0; k < 3; ++k)
-                v[k] = b[j][k] - a[i][k];
-            cross_into(ea[i], v, w);
-            cross_into(w, ea[i], u);
-            best = noct_max(best, proved_gap(u, a, b, s));
-        }
-    return best;
-}
-
-/* Squared distance between placed boxes [alo, ahi] + ta and [blo, bhi] + tb. */
-static double box_dist2(const double alo[3], const double ahi[3], const double ta[3],
-                        const double blo[3], const double bhi[3], const double tb[3])
-{
-    double s = 0;
-    for (int k = 0; k < 3; ++k) {
-        const double g = noct_max(noct_max((blo[k] + tb[k]) - (ahi[k] + ta[k]),
-                                           (alo[k] + ta[k]) - (bhi[k] + tb[k])),
-                                  0);
-        s += g * g;
-    }
-    return s;
-}
-
-double noct_distance_slack(const noctMesh *a, const double ta[3], const noctMesh *b,
-                           const double tb[3], double d)
-{
-    double scale = d;
-    for (int k = 0; k < 3; ++k) {
-        scale = noct_max(scale, noct_max(fabs(a->lo[k] + ta[k]), fabs(a->hi[k] + ta[k])));
-        scale = noct_max(scale, noct_max(fabs(b->lo[k] + tb[k]), fabs(b->hi[k] + tb[k])));
-    }
-    return 0x1p-40 * scale;
-}
-
-bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b,
-                        const double tb[3], double d)
-{
-    const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
-    const double reach = d + noct_distance_slack(a, ta, b, tb, d), reach2 = reach * reach;
-    struct { uint32_t a, b; } stack[PAIR_STACK];
-    size_t top = 0;
-    stack[top].a = 0;
-    stack[top++].b = 0;
-    while (top > 0) {
-        --top;
-        const bvh_node *na = &a->nodes[stack[top].a];
-        const bvh_node *nb = &b->nodes[stack[top].b];
-        if (box_dist2(na->lo, na->hi, ta, nb->lo, nb->hi, tb) > reach2)
-            continue;
-        if (na->count > 0 && nb->count > 0) {
-            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                double x[3][3];
-                for (int c = 0; c < 3; ++c)
-                    place(&A, a->tri[3 * i + c], x[c]);
-                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
-                    double y[3][3];
-                    for (int c = 0; c < 3; ++c)
-                        place(&B, b->tri[3 * j + c], y[c]);
-                    if (tri_tri_lower_bound(x, y) <= reach)
-                        return true;
-                }
-            }
-            continue;
-        }
-        double sa = 0, sb = 0;
-        for (int k = 0; k < 3; ++k) {
-            sa += na->hi[k] - na->lo[k];
-            sb += nb->hi[k] - nb->lo[k];
-        }
-        const bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
-        const uint32_t ia = stack[top].a, ib = stack[top].b;
-        if (top + 2 > PAIR_STACK)
-            return true; /* unreachable for meshes within the size limits; never misses */
-        if (split_a) {
-            stack[top].a = na->first;     stack[top++].b = ib;
-            stack[top].a = na->first + 1; stack[top++].b = ib;
-        } else {
-            stack[top].a = ia; stack[top++].b = nb->first;
-            stack[top].a = ia; stack[top++].b = nb->first + 1;
-        }
-    }
-    return false;
-}
-
 noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
                        const double tb[3], noctAccuracy accuracy, bool *colliding,
                        noctNarrowStats *stats)
@@ -1407,12 +725,12 @@ noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
      * vDSO clock reads) costs a few per cent, and only with stats. A
      * world times its whole narrowphase loop instead. */
     bool timed = stats != NULL && accuracy != NOCT_ACCURACY_BOX &&
-                 boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb);
-    double t0 = timed ? now() : 0;
+                 noct_boxes_overlap(a->lo, a->hi, ta, b->lo, b->hi, tb);
+    double t0 = timed ? noct_seconds() : 0;
     noctStatus st = collide_levels(a, ta, b, tb, accuracy, colliding, stats);
     if (timed)
         *(accuracy == NOCT_ACCURACY_CONVEX ? &stats->seconds_convex
-                                           : &stats->seconds_exact) += now() - t0;
+                                           : &stats->seconds_exact) += noct_seconds() - t0;
     return st;
 }
 
