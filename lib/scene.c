@@ -641,10 +641,12 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         }
         long size;
         if ((st = integer(p, f->line_size, f->lo, f->hi, &size)) != NOCT_OK ||
-            (st = end_of_line(p)) != NOCT_OK || (st = count_objects(p, f->objects(size))) != NOCT_OK)
+            (st = end_of_line(p)) != NOCT_OK ||
+            (st = count_objects(p, f->objects(size))) != NOCT_OK)
             return st;
-        return noct_scene_add_family(s, f, size) == NOCT_OK ? NOCT_OK
-                                                            : perr(p, NOCT_ERR_NOMEM, "out of memory");
+        if (noct_scene_add_family(s, f, size) != NOCT_OK)
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
+        return NOCT_OK;
     }
     return perr(p, NOCT_ERR_PARSE, "unknown statement '%s'", kw);
 }
