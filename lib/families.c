@@ -1,15 +1,24 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The benchmark scene families of SCENES.md, built in a world through its
- * public API: the report's planes t_k and the gas of oriented boxes. They
- * are not part of the world's core; the tools, the tests and scene files
- * (noctree-scene(5)) use them. The world only keeps the meshes a family
- * makes (world_internal.h).
+ * The built-in families of SCENES.md and noctree-sim(1), one row each in
+ * FAMILIES below: the report's planes t_k, the gas of oriented boxes and
+ * its kinds (mixed, clusters, static, escape), the robot arms and the
+ * keyframed boxes. Each row has the family's name, its size's range and
+ * its builders (families_internal.h); noctSceneFamily(), the scene files'
+ * 'family' lines (noctree-scene(5)), noctSceneWrite() and noctSceneBuild()
+ * go through the table, and so do the world.h builders kept for
+ * compatibility. Families are not part of the world's core: they build
+ * through its API. The tests check them against an independent
+ * computation.
  */
 #include "config.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,10 +26,52 @@
 
 #include "families_internal.h"
 #include "internal.h"
+#include "scene_internal.h"
 #include "world_internal.h"
 
-/* Undo a scene builder's additions after a failure: remove the n objects
- * it added (removal cannot fail). */
+#define PI 3.14159265358979323846
+
+/* The rows of FAMILIES, in the order of the specs' list. */
+enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_ARMS,
+       FAM_KEYFRAMES, FAM_ROWS };
+
+/* The kinds of gas: SCENES.md's, mixed sizes, dense clusters, mostly
+ * static, escaping outward. */
+enum { GAS_UNIFORM, GAS_MIXED, GAS_CLUSTERS, GAS_STATIC, GAS_ESCAPE };
+
+/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them: the
+ * gas's draws (from 42) and the keyframes' (from 1234). */
+static uint64_t fam_splitmix64(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+static double fam_draw(uint64_t *state)
+{
+    return (double)(fam_splitmix64(state) >> 11) * 0x1p-53;
+}
+
+/* INVALID: f's size (as text) out of its range. */
+static noctStatus fam_range(const noct_family *f, const char *size, noctError *err)
+{
+    return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "%s: %s %s; it must be %ld to %ld", f->name,
+                     size, f->unit, f->lo, f->hi);
+}
+
+static noctStatus fam_check(const noct_family *f, long size, noctError *err)
+{
+    if (size >= f->lo && size <= f->hi)
+        return NOCT_OK;
+    char text[24];
+    snprintf(text, sizeof text, "%ld", size);
+    return fam_range(f, text, err);
+}
+
+/* Undo a builder's additions after a failure: remove the n objects it
+ * added (removal cannot fail). */
 static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, noctStatus st)
 {
     for (size_t i = 0; i < n; ++i)
@@ -29,14 +80,22 @@ static noctStatus fam_unbuild(noctWorld *w, noctObjectId *ids, size_t n, noctSta
     return st;
 }
 
-noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
-                              noctError *err)
+/* ---- the families a scene keeps by name and size ------------------------------- */
+
+static uint64_t fam_planes_objects(long k)
+{
+    return 2 * (uint64_t)(2 * k + 1) * (uint64_t)(2 * k + 1);
+}
+
+static noctStatus fam_planes_add(noctWorld *w, const noct_family *f, long size,
+                                 const noctMesh *unit_cube, noctError *err)
 {
     NOCT_REQUIRE(w != NULL && unit_cube != NULL);
-    if (k < 0 || k > 1000)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "planes: %d rings; it must be 0 to 1000", k);
-    const size_t total = 2 * (size_t)(2 * k + 1) * (size_t)(2 * k + 1);
+    noctStatus st = fam_check(f, size, err);
+    if (st != NOCT_OK)
+        return st;
+    const int k = (int)size;
+    const size_t total = (size_t)fam_planes_objects(size);
     noctObjectId *ids = malloc(total * sizeof *ids);
     if (ids == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
@@ -48,7 +107,7 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                 int r = abs(i) > abs(j) ? abs(i) : abs(j);
                 double x = 3.02 + 0.1 * r;
                 double pos[3] = {side == 0 ? -x : x, 2.0 * i, 2.0 * j};
-                noctStatus st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
+                st = noctWorldAdd(w, unit_cube, pos, dir, 0.05, &ids[n], err);
                 if (st != NOCT_OK)
                     return fam_unbuild(w, ids, n, st);
                 ++n;
@@ -58,118 +117,76 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
     return NOCT_OK;
 }
 
-double noctGasContainerSize(size_t n)
+/* The side of a gas kind's container [0, L]^3 for n boxes. */
+static double fam_container(const noct_family *f, size_t n)
 {
-    return cbrt(10.0 * (double)n);
-}
-
-/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them. */
-static uint64_t fam_splitmix64(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-static double fam_unit_draw(uint64_t *state)
-{
-    return (double)(fam_splitmix64(state) >> 11) * 0x1p-53;
-}
-
-/* The gas kinds, in the order of noct_gas_kind: the family's name, and
- * whether the container's walls turn the boxes back. */
-static const struct {
-    const char *name;
-    bool walls;
-} GAS_KINDS[NOCT_GAS_KINDS] = {
-    {"gas", true}, {"mixed", true}, {"clusters", true}, {"static", true}, {"escape", false},
-};
-
-const char *noct_gas_kind_name(noct_gas_kind kind)
-{
-    return GAS_KINDS[kind].name;
-}
-
-bool noct_gas_kind_walls(noct_gas_kind kind)
-{
-    return GAS_KINDS[kind].walls;
-}
-
-bool noct_gas_kind_of(const char *name, size_t len, noct_gas_kind *kind)
-{
-    for (int k = 0; k < NOCT_GAS_KINDS; ++k)
-        if (strlen(GAS_KINDS[k].name) == len && strncmp(GAS_KINDS[k].name, name, len) == 0) {
-            *kind = (noct_gas_kind)k;
-            return true;
-        }
-    return false;
-}
-
-double noct_gas_kind_container(noct_gas_kind kind, size_t n)
-{
-    /* mixed: the mean volume of a box is E[scale^3] = 4.7625 times the
-     * gas's, so the container holds five times the gas's volume (about
-     * the same tenth filled) */
-    return kind == NOCT_GAS_MIXED ? cbrt(50.0 * (double)n) : noctGasContainerSize(n);
+    return cbrt(f->volume * (double)n);
 }
 
 /* A box's scale in the mixed kind, from its extra draw w. */
-static double mixed_scale(double w)
+static double fam_mixed_scale(double w)
 {
     return w < 0.5 ? 0.5 : w < 0.8 ? 1 : w < 0.95 ? 2 : 4;
 }
 
-noctStatus noct_world_add_gas_kind(noctWorld *w, noct_gas_kind kind, size_t n, noctError *err)
+static uint64_t fam_gas_objects(long n)
 {
-    if (n < 1 || n > 10000000)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "%s: %zu boxes; it must be 1 to 10000000",
-                         noct_gas_kind_name(kind), n);
+    return (uint64_t)n;
+}
+
+static noctStatus fam_gas_add(noctWorld *w, const noct_family *f, long size,
+                              const noctMesh *unit_cube, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    (void)unit_cube;
+    noctStatus st = fam_check(f, size, err);
+    if (st != NOCT_OK)
+        return st;
+    const int kind = f->kind;
+    const size_t n = (size_t)size;
     /* room for them all at once: no per-slot array grows by doubling */
-    noctStatus rst = noctWorldReserve(w, n, err);
-    if (rst != NOCT_OK)
-        return rst;
+    if ((st = noctWorldReserve(w, n, err)) != NOCT_OK)
+        return st;
     const size_t nclusters = (n + 999) / 1000;
     noctObjectId *ids = malloc(n * sizeof *ids);
-    double *cluster = kind == NOCT_GAS_CLUSTERS ? malloc(3 * nclusters * sizeof *cluster) : NULL;
-    if (ids == NULL || (kind == NOCT_GAS_CLUSTERS && cluster == NULL)) {
+    double *cluster = kind == GAS_CLUSTERS ? malloc(3 * nclusters * sizeof *cluster) : NULL;
+    if (ids == NULL || (kind == GAS_CLUSTERS && cluster == NULL)) {
         free(ids);
         free(cluster);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     const double pi = 3.141592653589793;
-    const double lb = noct_gas_kind_container(kind, n);
+    const double lb = fam_container(f, n);
     uint64_t state = 42;
     for (size_t c = 0; c < 3 * nclusters && cluster != NULL; ++c)
-        cluster[c] = lb * fam_unit_draw(&state);
-    noctStatus st = NOCT_OK;
+        cluster[c] = lb * fam_draw(&state);
     size_t i = 0;
     for (; i < n; ++i) {
         double half[3];
         for (int k = 0; k < 3; ++k)
-            half[k] = 0.25 + 0.5 * fam_unit_draw(&state);
-        double u1 = fam_unit_draw(&state), u2 = fam_unit_draw(&state);
-        double u3 = fam_unit_draw(&state);
+            half[k] = 0.25 + 0.5 * fam_draw(&state);
+        double u1 = fam_draw(&state), u2 = fam_draw(&state);
+        double u3 = fam_draw(&state);
         double x = sqrt(1 - u1) * sin(2 * pi * u2), y = sqrt(1 - u1) * cos(2 * pi * u2);
         double z = sqrt(u1) * sin(2 * pi * u3), qw = sqrt(u1) * cos(2 * pi * u3);
         double centre[3];
         for (int k = 0; k < 3; ++k)
-            centre[k] = kind == NOCT_GAS_CLUSTERS
+            centre[k] = kind == GAS_CLUSTERS
                             ? cluster[3 * (i % nclusters) + (size_t)k] +
-                                  15 * (fam_unit_draw(&state) - 0.5)
-                            : lb * fam_unit_draw(&state);
-        double dz = 2 * fam_unit_draw(&state) - 1, phi = 2 * pi * fam_unit_draw(&state);
+                                  15 * (fam_draw(&state) - 0.5)
+                            : lb * fam_draw(&state);
+        double dz = 2 * fam_draw(&state) - 1, phi = 2 * pi * fam_draw(&state);
         double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi), dz};
         double speed = 0.05;
         noctObjectDef d = noctDefaultObjectDef();
-        if (kind == NOCT_GAS_MIXED) {
-            const double s = mixed_scale(fam_unit_draw(&state));
+        if (kind == GAS_MIXED) {
+            const double s = fam_mixed_scale(fam_draw(&state));
             for (int k = 0; k < 3; ++k)
                 half[k] *= s;
-        } else if (kind == NOCT_GAS_STATIC && !(fam_unit_draw(&state) < 0.1)) {
+        } else if (kind == GAS_STATIC && !(fam_draw(&state) < 0.1)) {
             speed = 0;
             d.type = NOCT_OBJECT_STATIC;
-        } else if (kind == NOCT_GAS_ESCAPE) {
+        } else if (kind == GAS_ESCAPE) {
             speed = 0.2;
             for (int k = 0; k < 3; ++k)
                 dir[k] = centre[k] - lb / 2;
@@ -186,7 +203,7 @@ noctStatus noct_world_add_gas_kind(noctWorld *w, noct_gas_kind kind, size_t n, n
         double unit[3];
         if (speed > 0 && !noct_unit_direction(dir, unit)) {
             st = noct_fail(err, NOCT_ERR_NUMERIC, (long)i, 0, "%s: box %zu has no direction",
-                           noct_gas_kind_name(kind), i);
+                           f->name, i);
             break;
         }
         for (int k = 0; k < 3; ++k)
@@ -202,8 +219,318 @@ noctStatus noct_world_add_gas_kind(noctWorld *w, noct_gas_kind kind, size_t n, n
     return NOCT_OK;
 }
 
+/* noctSceneFamily() for planes and the gas kinds: the family kept by
+ * name and size, and a gas kind's container walls. */
+static noctStatus fam_kept_make(noctScene *s, const noct_family *f, long size, noctError *err)
+{
+    if (noct_scene_add_family(s, f, size) != NOCT_OK)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    if (f->walls) {
+        const double lb = fam_container(f, (size_t)size);
+        for (int k = 0; k < 3; ++k) {
+            s->def.walls_lo[k] = 0;
+            s->def.walls_hi[k] = lb;
+        }
+        s->def.effects |= NOCT_EFFECT_WALLS;
+    }
+    return NOCT_OK;
+}
+
+/* ---- arms:K -------------------------------------------------------------------- */
+
+enum { BAY = 1, LOOSE = 2, ARM_A = 4, ARM_B = 8 };
+
+#define ARMS_STEPS 240
+
+static noctStatus fam_add_box(noctScene *s, const char *name, double hx, double hy, double hz)
+{
+    return noct_scene_add_mesh(s, name, NULL, (const double[3]){hx, hy, hz}, NULL);
+}
+
+static noctStatus fam_add_static(noctScene *s, size_t mesh, double x, double y, double z,
+                             uint64_t category, uint64_t mask)
+{
+    scene_object o = noct_scene_object(mesh, (const double[3]){x, y, z});
+    o.type = NOCT_OBJECT_STATIC;
+    o.has_type = true;
+    o.category = category;
+    o.mask = mask;
+    return noct_scene_add_object(s, &o);
+}
+
+/* Joint j of arm a at tick t, in degrees: a triangle wave between its
+ * limits, from the stretched-out end (0) at tick 0. */
+static double fam_joint_angle(int a, int j, uint64_t t)
+{
+    const double period = 40 + 12 * j + 10 * a;
+    const double u = (double)t / period;
+    const double f = u - floor(u);
+    const double tri = 1 - fabs(2 * f - 1);
+    return j == 0 ? 80 * tri : -45 * tri;
+}
+
+static noctStatus fam_arms_make(noctScene *s, const noct_family *f, long k, noctError *err)
+{
+    NOCT_REQUIRE(k >= f->lo && k <= f->hi);
+    (void)f;
+    const double K = (double)k, d = 2 * K - 0.5;
+    s->steps = ARMS_STEPS;
+    s->def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_TRACK;
+    /* meshes: 0 floor, 1 ceiling, 2 x walls, 3 y walls, 4 loose box, 5 link;
+     * the floor as deep as the arms reach below it when they curl */
+    noctStatus st = NOCT_OK;
+    if ((st = fam_add_box(s, "floor", d + 2, 2.5, K)) != NOCT_OK ||
+        (st = fam_add_box(s, "ceiling", d + 2, 2.5, 0.25)) != NOCT_OK ||
+        (st = fam_add_box(s, "xwall", 0.25, 2.5, K + 1.5)) != NOCT_OK ||
+        (st = fam_add_box(s, "ywall", d + 2, 0.25, K + 1.5)) != NOCT_OK ||
+        (st = fam_add_box(s, "loose", 0.3, 0.3, 0.3)) != NOCT_OK ||
+        (st = fam_add_box(s, "link", 1, 0.2, 0.2)) != NOCT_OK)
+        return noct_fail(err, st, -1, 0, "out of memory");
+    const uint64_t arms = ARM_A | ARM_B;
+    /* the bay: floor, ceiling, -x, +x, -y, +y */
+    if ((st = fam_add_static(s, 0, 0, 0, -K, BAY, arms)) != NOCT_OK ||
+        (st = fam_add_static(s, 1, 0, 0, 2 * K + 2.25, BAY, arms)) != NOCT_OK ||
+        (st = fam_add_static(s, 2, -(d + 1.75), 0, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = fam_add_static(s, 2, d + 1.75, 0, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = fam_add_static(s, 3, 0, -2.25, K + 1, BAY, arms)) != NOCT_OK ||
+        (st = fam_add_static(s, 3, 0, 2.25, K + 1, BAY, arms)) != NOCT_OK)
+        return noct_fail(err, st, -1, 0, "out of memory");
+    /* loose boxes on the floor, in the arms' plane and beside it */
+    for (int m = 0; d - 1.5 - 2.5 * m > 1; ++m) {
+        const double x = d - 1.5 - 2.5 * m;
+        if ((st = fam_add_static(s, 4, -x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = fam_add_static(s, 4, x, 0, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = fam_add_static(s, 4, -x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK ||
+            (st = fam_add_static(s, 4, x, 1.2, 0.3, LOOSE, arms)) != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "out of memory");
+    }
+    /* the links, each with a keyframe at every tick: forward kinematics */
+    for (int a = 0; a < 2; ++a) {
+        const double side = a == 0 ? 1 : -1;
+        for (int j = 0; j < (int)k; ++j) {
+            scene_object o = noct_scene_object(5, (const double[3]){0, 0, 0});
+            o.type = NOCT_OBJECT_KINEMATIC;
+            o.has_type = true;
+            o.category = a == 0 ? ARM_A : ARM_B;
+            o.mask = BAY | LOOSE | (a == 0 ? ARM_B : ARM_A);
+            if ((st = noct_scene_add_object(s, &o)) != NOCT_OK)
+                return noct_fail(err, st, -1, 0, "out of memory");
+            for (uint64_t t = 0; t <= ARMS_STEPS; ++t) {
+                double joint[3] = {-side * d, 0, 1}, phi = 0, u[3];
+                for (int i = 0; i <= j; ++i) {
+                    phi += fam_joint_angle(a, i, t);
+                    u[0] = side * cos(phi * PI / 180);
+                    u[1] = 0;
+                    u[2] = sin(phi * PI / 180);
+                    if (i < j)
+                        for (int c = 0; c < 3; ++c)
+                            joint[c] += 2 * u[c];
+                }
+                scene_key key;
+                memset(&key, 0, sizeof key);
+                key.k.tick = t;
+                for (int c = 0; c < 3; ++c)
+                    key.k.x.p[c] = joint[c] + u[c];
+                key.turn = (scene_turn){true, {0, 1, 0}, a == 0 ? -phi : 180 + phi};
+                noctQuatFromAxisAngle(key.turn.axis, key.turn.degrees, &key.k.x.q);
+                if ((st = noct_scene_add_key(s, &key)) != NOCT_OK)
+                    return noct_fail(err, st, -1, 0, "out of memory");
+            }
+        }
+    }
+    return NOCT_OK;
+}
+
+/* ---- keyframes:N ------------------------------------------------------------------- */
+
+#define KEYFRAMES_STEPS 200
+#define KEYFRAMES_KEYS 5
+
+static noctStatus fam_keyframes_make(noctScene *s, const noct_family *f, long n,
+                                     noctError *err)
+{
+    NOCT_REQUIRE(n >= f->lo && n <= f->hi);
+    (void)f;
+    s->steps = KEYFRAMES_STEPS;
+    s->def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_TRACK;
+    const double L = 4 * cbrt((double)n);
+    uint64_t st64 = 1234;
+    noctStatus st;
+    for (long i = 0; i < n; ++i) {
+        double h[3];
+        for (int c = 0; c < 3; ++c)
+            h[c] = 0.25 + 0.5 * fam_draw(&st64);
+        char name[32];
+        snprintf(name, sizeof name, "box%ld", i);
+        if ((st = noct_scene_add_mesh(s, name, NULL, h, NULL)) != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "out of memory");
+        scene_object o = noct_scene_object(s->nmeshes - 1, (const double[3]){0, 0, 0});
+        o.type = NOCT_OBJECT_KINEMATIC;
+        o.has_type = true;
+        if ((st = noct_scene_add_object(s, &o)) != NOCT_OK)
+            return noct_fail(err, st, -1, 0, "out of memory");
+        for (int j = 0; j < KEYFRAMES_KEYS; ++j) {
+            scene_key key;
+            memset(&key, 0, sizeof key);
+            key.k.tick = (uint64_t)(j * (KEYFRAMES_STEPS / (KEYFRAMES_KEYS - 1)));
+            for (int c = 0; c < 3; ++c)
+                key.k.x.p[c] = L * fam_draw(&st64);
+            const double zz = 2 * fam_draw(&st64) - 1, az = 360 * fam_draw(&st64);
+            const double r = sqrt(1 - zz * zz);
+            key.turn = (scene_turn){true, {r * cos(az * PI / 180), r * sin(az * PI / 180), zz},
+                                    360 * fam_draw(&st64) - 180};
+            if (noctQuatFromAxisAngle(key.turn.axis, key.turn.degrees, &key.k.x.q) != NOCT_OK) {
+                /* (never: the axis's z is +-1 when its x and y are 0) */
+                key.turn = (scene_turn){false, {0, 0, 0}, 0};
+                key.k.x.q = (noctQuat){0, 0, 0, 1};
+            }
+            if ((st = noct_scene_add_key(s, &key)) != NOCT_OK)
+                return noct_fail(err, st, -1, 0, "out of memory");
+        }
+    }
+    return NOCT_OK;
+}
+
+/* ---- the table ------------------------------------------------------------------ */
+
+/* One row per family (families_internal.h says what each field means);
+ * the gas kinds' containers hold ten times the volume of n gas boxes,
+ * the mixed kind's fifty (its boxes' mean volume is E[scale^3] = 4.7625
+ * times the gas's, so it is about the same tenth filled). Rows with the
+ * same letter and range next to each other share a clause of the specs'
+ * list. */
+#define FAM_KEPT(row, nm, k, w, v)                                                         \
+    [row] = {.name = nm, .letter = 'N', .lo = 1, .hi = 10000000, .unit = "boxes",         \
+             .kind = k, .walls = w, .volume = v, .line_size = "boxes",                    \
+             .objects = fam_gas_objects, .add = fam_gas_add, .make = fam_kept_make}
+
+static const noct_family FAMILIES[FAM_ROWS] = {
+    [FAM_PLANES] = {.name = "planes", .letter = 'K', .lo = 0, .hi = 1000, .unit = "rings",
+                    .kind = -1, .unit_cube = true, .line_size = "planes rings",
+                    .objects = fam_planes_objects, .add = fam_planes_add,
+                    .make = fam_kept_make},
+    FAM_KEPT(FAM_GAS, "gas", GAS_UNIFORM, true, 10.0),
+    FAM_KEPT(FAM_MIXED, "mixed", GAS_MIXED, true, 50.0),
+    FAM_KEPT(FAM_CLUSTERS, "clusters", GAS_CLUSTERS, true, 10.0),
+    FAM_KEPT(FAM_STATIC, "static", GAS_STATIC, true, 10.0),
+    FAM_KEPT(FAM_ESCAPE, "escape", GAS_ESCAPE, false, 10.0),
+    [FAM_ARMS] = {.name = "arms", .letter = 'K', .lo = 1, .hi = 8, .unit = "links",
+                  .kind = -1, .make = fam_arms_make},
+    [FAM_KEYFRAMES] = {.name = "keyframes", .letter = 'N', .lo = 1, .hi = 100000,
+                       .unit = "boxes", .kind = -1, .make = fam_keyframes_make},
+};
+
+const noct_family *noct_family_find(const char *name, size_t len)
+{
+    for (size_t i = 0; i < FAM_ROWS; ++i)
+        if (strlen(FAMILIES[i].name) == len && strncmp(FAMILIES[i].name, name, len) == 0)
+            return &FAMILIES[i];
+    return NULL;
+}
+
+/* Append to the message in buf (cap bytes, *len used), cut at its end. */
+static void fam_append(char *buf, size_t cap, size_t *len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+static void fam_append(char *buf, size_t cap, size_t *len, const char *fmt, ...)
+{
+    if (*len + 1 >= cap)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    const int n = vsnprintf(buf + *len, cap - *len, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        *len = *len + (size_t)n < cap ? *len + (size_t)n : cap - 1;
+}
+
+/* "a:N with N 1 to 8; b:K, c:K or d:K with K 0 to 9; or e:N with N 1 to 5":
+ * the rows in order, each run of rows with the same letter and range in
+ * one clause. */
+static void fam_spec_list(char *buf, size_t cap)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (size_t i = 0, j; i < FAM_ROWS; i = j) {
+        const noct_family *f = &FAMILIES[i];
+        for (j = i + 1; j < FAM_ROWS && FAMILIES[j].letter == f->letter &&
+                        FAMILIES[j].lo == f->lo && FAMILIES[j].hi == f->hi;
+             ++j)
+            ;
+        if (i > 0)
+            fam_append(buf, cap, &len, "; %s", j == FAM_ROWS ? "or " : "");
+        for (size_t r = i; r < j; ++r)
+            fam_append(buf, cap, &len, "%s%s:%c", r == i ? "" : r + 1 == j ? " or " : ", ",
+                       FAMILIES[r].name, f->letter);
+        fam_append(buf, cap, &len, " with %c %ld to %ld", f->letter, f->lo, f->hi);
+    }
+}
+
+noctStatus noct_family_spec(const char *spec, const noct_family **f, long *size, noctError *err)
+{
+    const char *colon = strchr(spec, ':');
+    char *end = NULL;
+    errno = 0;
+    *size = colon ? strtol(colon + 1, &end, 10) : -1;
+    const bool number = colon && end != colon + 1 && *end == '\0' && errno == 0;
+    *f = number ? noct_family_find(spec, (size_t)(colon - spec)) : NULL;
+    if (*f != NULL && *size >= (*f)->lo && *size <= (*f)->hi)
+        return NOCT_OK;
+    char list[NOCT_ERROR_MESSAGE_SIZE];
+    fam_spec_list(list, sizeof list);
+    return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown scene '%s' (%s)", spec, list);
+}
+
+void noct_family_line_names(char *buf, size_t cap)
+{
+    size_t len = 0, n = 0, last = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < FAM_ROWS; ++i)
+        if (FAMILIES[i].add != NULL)
+            last = i;
+    for (size_t i = 0; i < FAM_ROWS; ++i)
+        if (FAMILIES[i].add != NULL)
+            fam_append(buf, cap, &len, "%s%s", n++ == 0 ? "" : i == last ? " or " : ", ",
+                       FAMILIES[i].name);
+}
+
+noctStatus noct_scene_add_family(noctScene *s, const noct_family *f, long size)
+{
+    NOCT_REQUIRE(f->add != NULL && s->nfamilies < sizeof s->families / sizeof *s->families);
+    if (f->unit_cube && s->unit_cube == NULL) {
+        noctStatus st = noctMeshCreateBox(0.5, 0.5, 0.5, &s->unit_cube, NULL);
+        if (st != NOCT_OK)
+            return st;
+    }
+    s->families[s->nfamilies++] = (scene_family){f, size};
+    return NOCT_OK;
+}
+
+/* ---- world.h's builders, kept until the next SONAME change ------------------------- */
+
+noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && unit_cube != NULL);
+    return fam_planes_add(w, &FAMILIES[FAM_PLANES], k, unit_cube, err);
+}
+
+double noctGasContainerSize(size_t n)
+{
+    return fam_container(&FAMILIES[FAM_GAS], n);
+}
+
 noctStatus noctWorldAddGas(noctWorld *w, size_t n, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
-    return noct_world_add_gas_kind(w, NOCT_GAS_UNIFORM, n, err);
+    const noct_family *f = &FAMILIES[FAM_GAS];
+    if (n > (size_t)f->hi) { /* the size as given, not as a long */
+        char text[24];
+        snprintf(text, sizeof text, "%zu", n);
+        return fam_range(f, text, err);
+    }
+    return fam_gas_add(w, f, (long)n, NULL, err);
 }

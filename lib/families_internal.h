@@ -1,42 +1,66 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Private: the kinds of gas that families.c builds (noct_world_add_gas_kind),
- * for the scene reader, writer and noctSceneFamily(). Never installed.
- * noctree-sim(1), "FAMILIES OF BOXES", defines each kind exactly.
+ * Private: the table of the built-in families (families.c), one row per
+ * family, through which noctSceneFamily(), the scene reader and writer,
+ * noctSceneBuild() and the world.h builders kept for compatibility make
+ * every family. Never installed. noctree-sim(1), "FAMILIES OF BOXES",
+ * defines each family exactly.
+ *
+ * Two sorts of rows: the families a scene keeps as a name and a size and
+ * whose objects the world gets only when the scene is built (planes and
+ * the gas kinds: a gas of 10^6 boxes costs the scene nothing; a scene
+ * file names them on a 'family' line), and the families made of the
+ * scene's own meshes, objects and keyframes (arms, keyframes).
  */
 #ifndef NOCT_LIB_FAMILIES_INTERNAL_H
 #define NOCT_LIB_FAMILIES_INTERNAL_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
+#include <noctree/scene.h>
 #include <noctree/world.h>
 
-/* The gas of SCENES.md and its variants: mixed sizes, dense clusters,
- * mostly static, escaping outward. */
-typedef enum noct_gas_kind {
-    NOCT_GAS_UNIFORM,
-    NOCT_GAS_MIXED,
-    NOCT_GAS_CLUSTERS,
-    NOCT_GAS_STATIC,
-    NOCT_GAS_ESCAPE,
-    NOCT_GAS_KINDS
-} noct_gas_kind;
+typedef struct noct_family noct_family;
 
-/* The kind's family name ("gas", "mixed", ...). */
-const char *noct_gas_kind_name(noct_gas_kind kind);
+struct noct_family {
+    const char *name; /* the NAME of the spec NAME:SIZE */
+    char letter;      /* the size's letter in the specs' list: 'K' or 'N' */
+    long lo, hi;      /* the size's range */
+    const char *unit; /* what the size counts, for the builders' messages */
+    int kind;         /* a gas kind (families.c), or -1 */
+    bool walls;       /* gas kinds: the container's walls turn the boxes back */
+    double volume;    /* gas kinds: the container's volume per box */
+    bool unit_cube;   /* its objects share a unit cube the scene makes */
+    /* Families kept by name and size, else NULL: the size's name in a
+     * scene file's messages, the objects the family adds, and the builder
+     * that adds them to a world (INVALID for a size out of range, NUMERIC,
+     * NOMEM, TOO_LARGE; on failure nothing is added); cube is the scene's
+     * unit cube when the row asks for one. */
+    const char *line_size;
+    uint64_t (*objects)(long size);
+    noctStatus (*add)(noctWorld *w, const noct_family *f, long size, const noctMesh *cube,
+                      noctError *err);
+    /* Make the family of the given size (in range) in a new scene:
+     * noctSceneFamily(). NOMEM. */
+    noctStatus (*make)(noctScene *s, const noct_family *f, long size, noctError *err);
+};
 
-/* The kind whose name is name[0, len), if any. */
-bool noct_gas_kind_of(const char *name, size_t len, noct_gas_kind *kind);
+/* The family named name[0, len), or NULL. */
+const noct_family *noct_family_find(const char *name, size_t len);
 
-/* Whether the kind's boxes bounce off the walls of its container. */
-bool noct_gas_kind_walls(noct_gas_kind kind);
+/* The family and size of spec "NAME:SIZE"; INVALID for an unknown name,
+ * a size that is not an integer or out of range, with the list of the
+ * families and their ranges. */
+noctStatus noct_family_spec(const char *spec, const noct_family **f, long *size, noctError *err);
 
-/* The side of the kind's container [0, L]^3 for n boxes. */
-double noct_gas_kind_container(noct_gas_kind kind, size_t n);
+/* The families a scene file's 'family' line can name, as a list for a
+ * message ("planes, gas, ... or escape"), into buf. */
+void noct_family_line_names(char *buf, size_t cap);
 
-/* Add n boxes of the kind (1 to 10^7) to w. INVALID, NUMERIC, NOMEM; on
- * failure nothing is added. */
-noctStatus noct_world_add_gas_kind(noctWorld *w, noct_gas_kind kind, size_t n, noctError *err);
+/* Keep family f (one with a builder add) of the given size in s, with
+ * the unit cube it needs. NOMEM. */
+noctStatus noct_scene_add_family(noctScene *s, const noct_family *f, long size);
 
 #endif /* NOCT_LIB_FAMILIES_INTERNAL_H */

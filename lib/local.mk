@@ -29,7 +29,6 @@ noctree_sources = \
 	lib/predicates.c \
 	lib/predicates.h \
 	lib/scene.c \
-	lib/scene_families.c \
 	lib/scene_internal.h \
 	lib/scene_write.c \
 	lib/status.c \

@@ -633,25 +633,19 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         char *tok = next(p);
         if (s->nfamilies == sizeof s->families / sizeof *s->families)
             return perr(p, NOCT_ERR_TOO_LARGE, "too many families");
-        scene_family f;
-        noct_gas_kind kind;
-        if (tok != NULL && strcmp(tok, "planes") == 0) {
-            f.kind = -1;
-            st = integer(p, "planes rings", 0, 1000, &f.size);
-        } else if (tok != NULL && noct_gas_kind_of(tok, strlen(tok), &kind)) {
-            f.kind = (int)kind;
-            st = integer(p, "boxes", 1, 10000000, &f.size);
-        } else {
-            return perr(p, NOCT_ERR_INVALID,
-                        "unknown family '%s' (planes, gas, mixed, clusters, static or escape)",
-                        tok ? tok : "");
+        const noct_family *f = tok != NULL ? noct_family_find(tok, strlen(tok)) : NULL;
+        if (f == NULL || f->add == NULL) {
+            char names[128];
+            noct_family_line_names(names, sizeof names);
+            return perr(p, NOCT_ERR_INVALID, "unknown family '%s' (%s)", tok ? tok : "", names);
         }
-        if (st != NOCT_OK || (st = end_of_line(p)) != NOCT_OK ||
-            (st = count_objects(p, f.kind >= 0 ? (uint64_t)f.size
-                                               : 2 * (uint64_t)(2 * f.size + 1) *
-                                                     (uint64_t)(2 * f.size + 1))) != NOCT_OK)
+        long size;
+        if ((st = integer(p, f->line_size, f->lo, f->hi, &size)) != NOCT_OK ||
+            (st = end_of_line(p)) != NOCT_OK ||
+            (st = count_objects(p, f->objects(size))) != NOCT_OK)
             return st;
-        s->families[s->nfamilies++] = f;
+        if (noct_scene_add_family(s, f, size) != NOCT_OK)
+            return perr(p, NOCT_ERR_NOMEM, "out of memory");
         return NOCT_OK;
     }
     return perr(p, NOCT_ERR_PARSE, "unknown statement '%s'", kw);
@@ -734,68 +728,34 @@ noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
 {
     NOCT_REQUIRE(spec != NULL && scene != NULL);
     *scene = NULL;
-    const char *colon = strchr(spec, ':');
-    char *end = NULL;
-    errno = 0;
-    long size = colon ? strtol(colon + 1, &end, 10) : -1;
-    const size_t len = colon ? (size_t)(colon - spec) : 0;
-    const bool number = colon && end != colon + 1 && *end == '\0' && errno == 0;
-    noct_gas_kind kind = NOCT_GAS_UNIFORM;
-    const bool gas = number && noct_gas_kind_of(spec, len, &kind);
-    const bool planes = number && len == 6 && strncmp(spec, "planes", 6) == 0;
-    const bool arms = number && len == 4 && strncmp(spec, "arms", 4) == 0;
-    const bool keyframes = number && len == 9 && strncmp(spec, "keyframes", 9) == 0;
-    if ((!gas && !planes && !arms && !keyframes) || (planes && (size < 0 || size > 1000)) ||
-        (gas && (size < 1 || size > 10000000)) || (arms && (size < 1 || size > 8)) ||
-        (keyframes && (size < 1 || size > 100000)))
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "unknown scene '%s' (planes:K with K 0 to 1000; gas:N, mixed:N, "
-                         "clusters:N, static:N or escape:N with N 1 to 10000000; arms:K with "
-                         "K 1 to 8; or keyframes:N with N 1 to 100000)", spec);
+    const noct_family *f;
+    long size;
+    noctStatus st = noct_family_spec(spec, &f, &size, err);
+    if (st != NOCT_OK)
+        return st;
     noctScene *s = scene_new();
     if (s == NULL)
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    if (arms || keyframes) {
-        noctStatus st = arms ? noct_scene_arms(s, size, err) : noct_scene_keyframes(s, size, err);
-        if (st != NOCT_OK) {
-            noctSceneDestroy(s);
-            return st;
-        }
-        *scene = s;
-        return NOCT_OK;
-    }
-    s->families[s->nfamilies++] = (scene_family){gas ? (int)kind : -1, size};
-    if (gas && noct_gas_kind_walls(kind)) {
-        double lb = noct_gas_kind_container(kind, (size_t)size);
-        for (int k = 0; k < 3; ++k) {
-            s->def.walls_lo[k] = 0;
-            s->def.walls_hi[k] = lb;
-        }
-        s->def.effects |= NOCT_EFFECT_WALLS;
+    if ((st = f->make(s, f, size, err)) != NOCT_OK) {
+        noctSceneDestroy(s);
+        return st;
     }
     *scene = s;
     return NOCT_OK;
 }
 
-noctStatus noctSceneBuild(const noctScene *sc, noctWorld **world, noctError *err)
+noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
 {
-    NOCT_REQUIRE(sc != NULL && world != NULL);
-    noctScene *s = (noctScene *)sc; /* the cube is made once, on demand */
+    NOCT_REQUIRE(s != NULL && world != NULL);
     *world = NULL;
     noctWorld *w;
     noctStatus st = noctWorldCreate(&s->def, &w, err);
     if (st != NOCT_OK)
         return st;
+    /* the families' objects, made now: the scene keeps only their sizes */
     for (size_t i = 0; i < s->nfamilies && st == NOCT_OK; ++i) {
-        if (s->families[i].kind >= 0) {
-            st = noct_world_add_gas_kind(w, (noct_gas_kind)s->families[i].kind,
-                                         (size_t)s->families[i].size, err);
-        } else {
-            if (s->unit_cube == NULL)
-                st = noctMeshCreateBox(0.5, 0.5, 0.5, &s->unit_cube, err);
-            if (st == NOCT_OK)
-                st = noctWorldAddPlanes(w, (int)s->families[i].size, s->unit_cube, err);
-        }
+        const scene_family *f = &s->families[i];
+        st = f->family->add(w, f->family, f->size, s->unit_cube, err);
     }
     if (st == NOCT_OK && s->nobjects > 0)
         st = noctWorldReserve(w, s->nobjects, err);

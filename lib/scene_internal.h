@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: a scene as read (scene.c), made by a family (scene_families.c)
- * or written back (scene_write.c). */
+/* Private: a scene as read (scene.c), made by a family (families.c) or
+ * written back (scene_write.c). */
 #ifndef NOCT_LIB_SCENE_INTERNAL_H
 #define NOCT_LIB_SCENE_INTERNAL_H
 
@@ -48,8 +48,10 @@ typedef struct scene_object {
     size_t first_key, nkeys; /* its keyframes in noctScene.keys */
 } scene_object;
 
+/* A family kept by name and size, whose objects the world gets when the
+ * scene is built (families_internal.h). */
 typedef struct scene_family {
-    int kind;     /* -1 planes, else a noct_gas_kind */
+    const struct noct_family *family;
     long size;
 } scene_family;
 
@@ -64,7 +66,7 @@ struct noctScene {
     size_t nkeys, capkeys;
     scene_family families[16];
     size_t nfamilies;
-    noctMesh *unit_cube; /* for planes families */
+    noctMesh *unit_cube; /* for the families that ask for one (planes) */
 };
 
 /* Add a mesh (m, or NULL for a box primitive of half-extents h; file: the
@@ -81,11 +83,5 @@ noctStatus noct_scene_add_key(noctScene *s, const scene_key *k);
 /* A scene_object with the defaults of an object line: not moving, not
  * turned, moving type, every filter bit. */
 scene_object noct_scene_object(size_t mesh, const double pos[3]);
-
-/* The families made of objects and keyframes (scene_families.c): their
- * meshes, objects, keys, parameters and steps. INVALID for a size out of
- * range, NOMEM. */
-noctStatus noct_scene_arms(noctScene *s, long k, noctError *err);
-noctStatus noct_scene_keyframes(noctScene *s, long n, noctError *err);
 
 #endif /* NOCT_LIB_SCENE_INTERNAL_H */

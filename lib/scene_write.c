@@ -87,10 +87,7 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             fprintf(f, "mesh %s file %s\n", m->name, m->file);
     }
     for (size_t i = 0; i < s->nfamilies; ++i)
-        fprintf(f, "family %s %ld\n",
-                s->families[i].kind < 0 ? "planes"
-                                        : noct_gas_kind_name((noct_gas_kind)s->families[i].kind),
-                s->families[i].size);
+        fprintf(f, "family %s %ld\n", s->families[i].family->name, s->families[i].size);
     for (size_t i = 0; i < s->nobjects; ++i) {
         const scene_object *o = &s->objects[i];
         fprintf(f, "object %s", s->meshes[o->mesh].name);

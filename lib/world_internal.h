@@ -7,7 +7,7 @@
  *   world_motion.c   motion and walls, the movers, a failed step's roll-back
  *   world_narrow.c   narrowphase dispatch of the broadphase's pairs
  *   world_events.c   contact events and the response
- *   families.c       the SCENES.md scene families (not the core)
+ *   families.c       the built-in families, one table (not the core)
  *
  * The world is the broadphase's client: its objects are proxies of the
  * broadphase it embeds (same slots, same handles), whose local boxes are

@@ -60,41 +60,34 @@ typedef struct result {
     int ok;
 } result;
 
-/* Run one configuration; called in a child process. */
-static result run(const char *scene, int N, int steps)
+/* Run one configuration, the family as noctSceneFamily() makes it;
+ * called in a child process. Exhaustive runs above max_exhaustive
+ * objects are skipped (ok = 2). */
+static result run(const char *scene, int N, int steps, int max_exhaustive)
 {
     result r = {0};
-    noctWorldDef def = noctDefaultWorldDef();
-    def.N = N;
-    def.max_depth = N == NOCT_AUTO ? NOCT_AUTO : 8;
-    noctMesh *cube = NULL;
+    noctScene *sc;
     noctError err;
-    size_t n = 0;
-    int k = 0;
-    bool gas = strncmp(scene, "gas:", 4) == 0;
-    if (gas) {
-        n = (size_t)atol(scene + 4);
-        def.effects |= NOCT_EFFECT_WALLS;
-        double lb = noctGasContainerSize(n);
-        for (int a = 0; a < 3; ++a) {
-            def.walls_lo[a] = 0;
-            def.walls_hi[a] = lb;
-        }
-    } else {
-        k = atoi(scene + 7);
+    if (noctSceneFamily(scene, &sc, &err) != NOCT_OK) {
+        fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
+        return r;
     }
+    noctSceneDef(sc)->N = N;
+    noctSceneDef(sc)->max_depth = N == NOCT_AUTO ? NOCT_AUTO : 8;
     double t0 = now();
     noctWorld *w;
-    if (noctWorldCreate(&def, &w, &err) != NOCT_OK ||
-        (gas ? noctWorldAddGas(w, n, &err)
-             : (noctMeshCreateBox(0.5, 0.5, 0.5, &cube, &err) != NOCT_OK
-                    ? NOCT_ERR_INVALID
-                    : noctWorldAddPlanes(w, k, cube, &err))) != NOCT_OK) {
+    if (noctSceneBuild(sc, &w, &err) != NOCT_OK) {
         fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
         return r;
     }
     r.setup = now() - t0;
     r.objects = noctWorldObjectCount(w);
+    if (N == NOCT_N_EXHAUSTIVE && r.objects > (size_t)max_exhaustive) {
+        r.ok = 2;
+        noctWorldDestroy(w);
+        noctSceneDestroy(sc);
+        return r;
+    }
     double *t = malloc((size_t)steps * sizeof *t);
     for (int s = 0; s < steps; ++s) {
         double a = now();
@@ -112,7 +105,7 @@ static result run(const char *scene, int N, int steps)
     r.ok = 1;
     free(t);
     noctWorldDestroy(w);
-    noctMeshDestroy(cube);
+    noctSceneDestroy(sc);
     return r;
 }
 
@@ -498,17 +491,7 @@ static void scene_child(const void *arg, void *out)
 {
     const scene_job *j = arg;
     result *r = out;
-    if (j->N == NOCT_N_EXHAUSTIVE) {
-        const size_t n = strncmp(j->scene, "gas:", 4) == 0
-                             ? (size_t)atol(j->scene + 4)
-                             : (size_t)(2 * (2 * atol(j->scene + 7) + 1) *
-                                        (2 * atol(j->scene + 7) + 1));
-        if (n > (size_t)j->max_exhaustive) {
-            r->ok = 2;
-            return;
-        }
-    }
-    *r = run(j->scene, j->N, j->steps);
+    *r = run(j->scene, j->N, j->steps, j->max_exhaustive);
 }
 
 int main(int argc, char **argv)

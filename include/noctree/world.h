@@ -1064,6 +1064,9 @@ NOCT_API noctStatus noctWorldObjectBox(const noctWorld *world, noctObjectId id,
  *
  * Two planes of axis-aligned unit cubes, each a central cube and @p k
  * rings, moving towards each other at speed 0.05.
+ * @deprecated Use noctSceneFamily() with `planes:K` and noctSceneBuild()
+ *             (scene.h), which build every family; this function builds
+ *             the same objects, and goes at the next SONAME change.
  * @param[in]  world     The world.
  * @param[in]  k         Number of rings, 0 to 1000.
  * @param[in]  unit_cube A cube of edge 1 centred on the origin, such as
@@ -1082,6 +1085,9 @@ NOCT_API noctStatus noctWorldAddPlanes(noctWorld *world, int k,
 
 /**
  * @brief The side of gas_n's cubic container, `cbrt(10 n)`.
+ * @deprecated Use noctSceneFamily() with `gas:N`, whose scene has the
+ *             container as its walls (noctSceneDef()); this function goes
+ *             at the next SONAME change.
  * @param[in] n Number of boxes.
  * @return The container's side length Lb.
  */
@@ -1098,6 +1104,10 @@ NOCT_API double noctGasContainerSize(size_t n);
  * them is reserved at once (noctWorldReserve()). For the scene as
  * defined, create the world with #NOCT_EFFECT_WALLS and the container
  * `[0, noctGasContainerSize(n)]` on every axis.
+ * @deprecated Use noctSceneFamily() with `gas:N` and noctSceneBuild()
+ *             (scene.h), which build every family and give the world its
+ *             container; this function builds the same objects, and goes at
+ *             the next SONAME change.
  * @param[in]  world The world.
  * @param[in]  n     Number of boxes, 1 to 10 000 000.
  * @param[out] err   Receives the details of a failure, or NULL.
