@@ -19,6 +19,7 @@
 
 #include <noctree/scene.h>
 
+#include "array.h"
 #include "families_internal.h"
 #include "internal.h"
 #include "scene_internal.h"
@@ -176,18 +177,16 @@ static char *relative_path(const char *scene_path, const char *file)
     return out;
 }
 
+NOCT_DEFINE_GROW(grow_meshes, scene_mesh)
+NOCT_DEFINE_GROW(grow_objects, scene_object)
+NOCT_DEFINE_GROW(grow_keys, scene_key)
+
 noctStatus noct_scene_add_mesh(noctScene *s, const char *name, noctMesh *m, const double h[3],
                                const char *file)
 {
-    if (s->nmeshes == s->capmeshes) {
-        size_t cap = s->capmeshes ? 2 * s->capmeshes : 8;
-        scene_mesh *q = realloc(s->meshes, cap * sizeof *q);
-        if (q == NULL) {
-            noctMeshDestroy(m);
-            return NOCT_ERR_NOMEM;
-        }
-        s->meshes = q;
-        s->capmeshes = cap;
+    if (!grow_meshes(&s->meshes, &s->capmeshes, s->capmeshes > 0 ? s->nmeshes + 1 : 8)) {
+        noctMeshDestroy(m);
+        return NOCT_ERR_NOMEM;
     }
     scene_mesh *sm = &s->meshes[s->nmeshes];
     memset(sm, 0, sizeof *sm);
@@ -220,14 +219,8 @@ scene_object noct_scene_object(size_t mesh, const double pos[3])
 
 noctStatus noct_scene_add_object(noctScene *s, const scene_object *o)
 {
-    if (s->nobjects == s->capobjects) {
-        size_t cap = s->capobjects ? 2 * s->capobjects : 64;
-        scene_object *q = realloc(s->objects, cap * sizeof *q);
-        if (q == NULL)
-            return NOCT_ERR_NOMEM;
-        s->objects = q;
-        s->capobjects = cap;
-    }
+    if (!grow_objects(&s->objects, &s->capobjects, s->capobjects > 0 ? s->nobjects + 1 : 64))
+        return NOCT_ERR_NOMEM;
     s->objects[s->nobjects++] = *o;
     return NOCT_OK;
 }
@@ -235,14 +228,8 @@ noctStatus noct_scene_add_object(noctScene *s, const scene_object *o)
 /* The last object follows a track: it is kinematic. */
 noctStatus noct_scene_add_key(noctScene *s, const scene_key *k)
 {
-    if (s->nkeys == s->capkeys) {
-        size_t cap = s->capkeys ? 2 * s->capkeys : 64;
-        scene_key *q = realloc(s->keys, cap * sizeof *q);
-        if (q == NULL)
-            return NOCT_ERR_NOMEM;
-        s->keys = q;
-        s->capkeys = cap;
-    }
+    if (!grow_keys(&s->keys, &s->capkeys, s->capkeys > 0 ? s->nkeys + 1 : 64))
+        return NOCT_ERR_NOMEM;
     scene_object *o = &s->objects[s->nobjects - 1];
     if (o->nkeys == 0)
         o->first_key = s->nkeys;
