@@ -8,8 +8,10 @@
  *   broadphase.c        the public API: proxies, filters, pairs, counters,
  *                       validation, octree access
  *   broadphase_tree.c   cells and their pool, split and merge, building
- *                       the tree, maintenance (fast test, leave and enter
- *                       checks)
+ *                       the tree (the automatic settings), proxies in and
+ *                       out
+ *   broadphase_maintain.c  incremental maintenance: the fast test, the
+ *                       leave and enter checks, the root's growth
  *   broadphase_pairs.c  the pair search: sweeps, near pairs, ownership of
  *                       pairs, filters, sorting
  *   broadphase_query.c  box, point and segment queries
@@ -532,6 +534,15 @@ static inline bool noct_in_block(const noct_home *blk, double s, const noct_aabb
             return false;
     return true;
 }
+
+/* The tree's operations that maintenance (broadphase_maintain.c) uses:
+ * add id to every leaf under n that its box overlaps and lacks (all of
+ * them when fresh; newly entered leaves pushed to the worklist with
+ * push), false without memory; remove the object at position i of a leaf
+ * and merge its siblings if they are few enough; make every merge owed. */
+bool noct_bp_insert_below(noctBroadphase *bp, octNode *n, uint32_t id, bool push, bool fresh);
+void noct_bp_leaf_remove_at(noctBroadphase *bp, octNode *leaf, uint32_t i);
+void noct_bp_merge_all(noctBroadphase *bp, octNode *n);
 
 /* ---- broadphase_pairs.c ---------------------------------------------------------- */
 

@@ -10,6 +10,7 @@ noctree_sources = \
 	lib/vec3.h \
 	lib/broadphase.c \
 	lib/broadphase_internal.h \
+	lib/broadphase_maintain.c \
 	lib/broadphase_pairs.c \
 	lib/broadphase_query.c \
 	lib/broadphase_tree.c \
