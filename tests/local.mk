@@ -77,7 +77,8 @@ tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
 
 # Every allocation of a workload fails in turn: the program replaces malloc
 # (so it exits 77, SKIP, under AddressSanitizer or valgrind).
-tests_check_alloc_SOURCES = tests/check_alloc.c $(test_common)
+tests_check_alloc_SOURCES = tests/check_alloc.c tests/testalloc.c tests/testalloc.h \
+	$(test_common)
 tests_check_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
 
@@ -146,7 +147,8 @@ tests_check_broadphase_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIB
 
 # No allocation in the step once sizes settle: counts them (an
 # interposed malloc, so it skips under AddressSanitizer and valgrind).
-tests_check_zero_alloc_SOURCES = tests/check_zero_alloc.c $(test_common)
+tests_check_zero_alloc_SOURCES = tests/check_zero_alloc.c tests/testalloc.c tests/testalloc.h \
+	$(test_common)
 tests_check_zero_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_zero_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
 
@@ -157,7 +159,8 @@ tests_check_zero_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIB
 
 # The readers: NUL bytes, read errors, read-time checks, and allocation
 # failures while reading (its own small interposed malloc).
-tests_check_readers_SOURCES = tests/check_readers.c $(test_common)
+tests_check_readers_SOURCES = tests/check_readers.c tests/testalloc.c tests/testalloc.h \
+	$(test_common)
 tests_check_readers_CFLAGS = $(tests_check_octree_CFLAGS)
 tests_check_readers_LDADD = lib/libnoctree.la $(CHECK_LIBS)
 
@@ -209,7 +212,8 @@ AM_TESTS_ENVIRONMENT = \
 # Valgrind runs the suites in one process (no fork), so the death tests,
 # which abort by design, are left out by their tag; so are the "slow" test
 # cases (whole benchmark scenes), which the other builds run. check-alloc
-# replaces malloc, which valgrind does too: it would only skip (exit 77).
+# and check-zero-alloc replace malloc (testalloc.c), which valgrind does
+# too: they would only skip (exit 77).
 VALGRIND = valgrind
 check-valgrind: $(check_PROGRAMS)
 	@set -e; for t in $(check_PROGRAMS); do \
