@@ -1877,6 +1877,14 @@ START_TEST(collide)
 }
 END_TEST
 
+/* A test case of its own for each part, with time for its runs. */
+static TCase *part_case(Suite *s, const char *name)
+{
+    TCase *tc = tcase_create(name);
+    tcase_set_timeout(tc, 300);
+    suite_add_tcase(s, tc);
+    return tc;
+}
 
 int main(void)
 {
@@ -1888,38 +1896,14 @@ int main(void)
     allocator_init();
     write_files();
     Suite *s = suite_create("alloc");
-    TCase *tc = tcase_create("octree");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, octree);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("meshes");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, meshes);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("readers");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, readers);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("scene");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, scene);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("world");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, world);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("world-levels");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, world_levels);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("objects");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, objects);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("collide");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, collide);
-    suite_add_tcase(s, tc);
+    tcase_add_test(part_case(s, "octree"), octree);
+    tcase_add_test(part_case(s, "meshes"), meshes);
+    tcase_add_test(part_case(s, "readers"), readers);
+    tcase_add_test(part_case(s, "scene"), scene);
+    tcase_add_test(part_case(s, "world"), world);
+    tcase_add_test(part_case(s, "world-levels"), world_levels);
+    tcase_add_test(part_case(s, "objects"), objects);
+    tcase_add_test(part_case(s, "collide"), collide);
     int rc = run_suite(s);
     remove_files();
     return rc;

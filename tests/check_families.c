@@ -1011,6 +1011,36 @@ END_TEST
 
 /* ---- the families against the oracle -------------------------------------------------------- */
 
+/* One tick, the oracle's poses already at it: the world (when there is
+ * one) stepped, its poses and events compared; then the pairs. */
+static void step_and_compare(const view *v, noctWorld *w, uint64_t tick, noctPair **prev,
+                             size_t *nprev, tally *t)
+{
+    if (w != NULL) {
+        noctError err;
+        ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", v->spec,
+                      (unsigned long long)tick, err.message);
+        ck_assert_uint_eq(noctWorldTick(w), tick);
+        compare_poses(v, w, tick, t);
+        compare_events(w, prev, nprev, t);
+    }
+    compare_pairs(v, w, tick, t);
+}
+
+/* The end of a run: its tally printed, the world (when there is one)
+ * validated and destroyed with its scene. */
+static void end_run(const view *v, noctWorld *w, noctScene *scene, noctPair *prev,
+                    const tally *t)
+{
+    print_tally(v->spec, t);
+    if (w != NULL) {
+        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+        noctWorldDestroy(w);
+        noctSceneDestroy(scene);
+    }
+    free(prev);
+}
+
 static void check_arms(int K, bool with_world)
 {
     char spec[32];
@@ -1033,23 +1063,9 @@ static void check_arms(int K, bool with_world)
     }
     for (uint64_t tick = 1; tick <= 240; ++tick) {
         arms_at(&s, tick);
-        if (w != NULL) {
-            noctError err;
-            ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", spec,
-                          (unsigned long long)tick, err.message);
-            ck_assert_uint_eq(noctWorldTick(w), tick);
-            compare_poses(&v, w, tick, &t);
-            compare_events(w, &prev, &nprev, &t);
-        }
-        compare_pairs(&v, w, tick, &t);
+        step_and_compare(&v, w, tick, &prev, &nprev, &t);
     }
-    print_tally(spec, &t);
-    if (w != NULL) {
-        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
-        noctWorldDestroy(w);
-        noctSceneDestroy(scene);
-    }
-    free(prev);
+    end_run(&v, w, scene, prev, &t);
     ck_assert_msg(t.mismatches == 0, "%s: %ld disagreements with the oracle; the first: %s",
                   spec, t.mismatches, t.first);
     /* the scene is not vacuous: its pairs collide and part */
@@ -1115,23 +1131,9 @@ static void check_keyframes(size_t N, bool with_world)
         keyed_at(&s, tick, unsure);
         for (size_t i = 0; i < N; ++i)
             t.unsure_objects += unsure[i];
-        if (w != NULL) {
-            noctError err;
-            ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", spec,
-                          (unsigned long long)tick, err.message);
-            ck_assert_uint_eq(noctWorldTick(w), tick);
-            compare_poses(&v, w, tick, &t);
-            compare_events(w, &prev, &nprev, &t);
-        }
-        compare_pairs(&v, w, tick, &t);
+        step_and_compare(&v, w, tick, &prev, &nprev, &t);
     }
-    print_tally(spec, &t);
-    if (w != NULL) {
-        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
-        noctWorldDestroy(w);
-        noctSceneDestroy(scene);
-    }
-    free(prev);
+    end_run(&v, w, scene, prev, &t);
     free(unsure);
     keyed_free(&s);
     ck_assert_msg(t.mismatches == 0, "%s: %ld disagreements with the oracle; the first: %s",
