@@ -2,13 +2,11 @@
 /*
  * "No abort, ever": every allocation of a scripted workload fails in turn.
  *
- * The program defines malloc, calloc, realloc, free and the rest of the
- * family glibc's manual ("Replacing malloc") lists, forwarding to
- * __libc_malloc and friends. ELF interposition sends every allocation of
- * the process to them: the test's, libnoctree's, GMP's, qhull's, libccd's
- * and glibc's own (fopen, getline, strdup). While a workload runs, each
- * allocation is an allocation point, numbered from 1, and a live block is
- * remembered with its caller until it is freed.
+ * The tests' allocator (testalloc.h) replaces malloc and its family for
+ * the whole process: the test's, libnoctree's, GMP's, qhull's, libccd's
+ * and glibc's own allocations (fopen, getline, strdup). While a workload
+ * runs, each allocation is an allocation point, numbered from 1, and a
+ * live block is remembered with its caller until it is freed.
  *
  * Each part of the workload (the octree ADT with neighbor finding, meshes
  * by every constructor, the OFF/OBJ readers, scene files and families, a
@@ -56,7 +54,7 @@
  * under valgrind, which replaces it behind our back; also if the probe
  * allocation does not reach the harness's malloc.
  */
-#define _GNU_SOURCE /* RTLD_NEXT, dl_iterate_phdr, valloc, pvalloc */
+#define _GNU_SOURCE /* dladdr, dl_iterate_phdr */
 #include <check.h>
 #include <dlfcn.h>
 #include <errno.h>
@@ -64,7 +62,6 @@
 #include <inttypes.h>
 #include <limits.h>
 #include <link.h>
-#include <malloc.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -84,59 +81,13 @@
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
+#include "testalloc.h"
 #include "testutil.h"
 
-#if defined(__SANITIZE_ADDRESS__)
-#  define ALLOC_ASAN 1
-#elif defined(__has_feature)
-#  if __has_feature(address_sanitizer)
-#    define ALLOC_ASAN 1
-#  endif
-#endif
-#ifndef ALLOC_ASAN
-#  define ALLOC_ASAN 0
-#endif
+/* ==== the harness's side of the allocator (testalloc.h) ==================== */
 
-#if defined(__has_include)
-#  if __has_include(<valgrind/valgrind.h>)
-#    include <valgrind/valgrind.h>
-#    define ALLOC_HAVE_VALGRIND_H 1
-#  endif
-#endif
-
-#if !ALLOC_ASAN
-
-/* ==== the interposed allocator ============================================ */
-
-/* Live blocks allocated while the workload runs: an open-addressing table
- * (linear probing, deletion by backward shift) in static storage, since
- * it cannot itself allocate. */
-#define LIVE_BITS 16
-#define LIVE_CAP ((size_t)1 << LIVE_BITS)
-typedef struct live_block {
-    void *p;
-    void *caller;
-} live_block;
-/*
- * The state below changes inside glibc calls that glibc's headers declare
- * __leaf__, which tells the compiler they never call back into this file
- * and so never touch its static variables: not so once this file defines
- * malloc. So the scalars are volatile, and ALLOC_BARRIER() stands around
- * the places where the harness switches counting on and off.
- */
-#define ALLOC_BARRIER() __asm__ __volatile__("" ::: "memory")
-static live_block live[LIVE_CAP];
-static volatile size_t live_n;
-static volatile bool live_overflow;
-
-static volatile bool g_on;             /* allocation points are counted */
-static volatile int g_busy;            /* inside the harness's own bookkeeping */
-static volatile unsigned long g_count; /* points seen in this run */
-static volatile unsigned long g_fail_at; /* the point to fail, 0 for none */
-static volatile bool g_fail_rest;      /* and every later point */
-static volatile bool g_fail_gmp;       /* GMP's allocations are points too */
-static volatile unsigned long g_injected; /* failures handed out in this run */
 static volatile unsigned long g_gmp_seen; /* GMP allocations in this run */
+static volatile bool g_fail_gmp;          /* GMP's allocations are points too */
 static int g_report_fd = -1;  /* the child's pipe to the parent */
 static char g_phase[64];      /* what the workload is doing */
 
@@ -160,71 +111,6 @@ typedef struct inject_rec {
 } inject_rec;
 static inject_rec g_inject;
 
-extern void *__libc_malloc(size_t size);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t size);
-extern void __libc_free(void *p);
-extern void *__libc_memalign(size_t align, size_t size);
-extern void *__libc_valloc(size_t size);
-extern void *__libc_pvalloc(size_t size);
-
-static size_t live_slot(const void *p)
-{
-    uintptr_t x = (uintptr_t)p >> 4;
-    x *= 0x9e3779b97f4a7c15u;
-    return (size_t)(x >> (64 - LIVE_BITS));
-}
-
-static void live_add(void *p, void *caller)
-{
-    if (live_n + 1 >= LIVE_CAP / 2) {
-        live_overflow = true; /* the check then fails; the table stays sound */
-        return;
-    }
-    size_t i = live_slot(p);
-    while (live[i].p != NULL)
-        i = (i + 1) & (LIVE_CAP - 1);
-    live[i].p = p;
-    live[i].caller = caller;
-    ++live_n;
-}
-
-static void live_remove(void *p)
-{
-    if (live_n == 0)
-        return;
-    size_t i = live_slot(p);
-    while (live[i].p != p) {
-        if (live[i].p == NULL)
-            return; /* allocated outside a run */
-        i = (i + 1) & (LIVE_CAP - 1);
-    }
-    /* Backward shift: move later entries of the probe chain into the hole
-     * when their home slot does not lie between the hole and them. */
-    size_t hole = i;
-    for (size_t j = (i + 1) & (LIVE_CAP - 1); live[j].p != NULL; j = (j + 1) & (LIVE_CAP - 1)) {
-        size_t home = live_slot(live[j].p);
-        bool stays = hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
-        if (!stays) {
-            live[hole] = live[j];
-            hole = j;
-        }
-    }
-    live[hole].p = NULL;
-    live[hole].caller = NULL;
-    --live_n;
-}
-
-/* Empty the table; it is empty already but after a leak, and clearing a
- * clean table would only copy its pages in each child process. */
-static void live_reset(void)
-{
-    if (live_n > 0 || live_overflow)
-        memset(live, 0, sizeof live);
-    live_n = 0;
-    live_overflow = false;
-}
-
 static bool in_gmp(const void *caller)
 {
     uintptr_t a = (uintptr_t)caller;
@@ -244,8 +130,22 @@ static profile_entry profile[512];
 static size_t profile_n;
 static bool g_profile;
 
-static void profile_add(void *caller)
+/* The allocator's filter: GMP's allocations are points only when asked. */
+static bool is_point(void *caller)
 {
+    if (in_gmp(caller)) {
+        ++g_gmp_seen;
+        if (!g_fail_gmp)
+            return false;
+    }
+    return true;
+}
+
+/* At each point: the profile, when asked. */
+static void on_point(void *caller)
+{
+    if (!g_profile)
+        return;
     for (size_t i = 0; i < profile_n; ++i)
         if (profile[i].caller == caller && strcmp(profile[i].phase, g_phase) == 0) {
             ++profile[i].count;
@@ -258,145 +158,17 @@ static void profile_add(void *caller)
     }
 }
 
-/* Is this allocation a point, and does it fail? */
-static bool point_fails(void *caller)
+/* At the run's first injected failure: the record, sent at once. */
+static void on_first_failure(unsigned long k)
 {
-    if (!g_on || g_busy)
-        return false;
-    if (in_gmp(caller)) {
-        ++g_gmp_seen;
-        if (!g_fail_gmp)
-            return false;
+    g_inject.type = REC_INJECT;
+    g_inject.k = k;
+    memcpy(g_inject.phase, g_phase, sizeof g_phase);
+    g_inject.nframes = backtrace(g_inject.frames, MAX_FRAMES);
+    if (g_report_fd >= 0) {
+        ssize_t w = write(g_report_fd, &g_inject, sizeof g_inject);
+        (void)w;
     }
-    unsigned long k = ++g_count;
-    if (g_profile)
-        profile_add(caller);
-    if (g_fail_at == 0 || k < g_fail_at || (k > g_fail_at && !g_fail_rest))
-        return false;
-    if (g_injected++ == 0) {
-        ++g_busy;
-        g_inject.type = REC_INJECT;
-        g_inject.k = k;
-        memcpy(g_inject.phase, g_phase, sizeof g_phase);
-        g_inject.nframes = backtrace(g_inject.frames, MAX_FRAMES);
-        if (g_report_fd >= 0) {
-            ssize_t w = write(g_report_fd, &g_inject, sizeof g_inject);
-            (void)w;
-        }
-        --g_busy;
-    }
-    errno = ENOMEM;
-    return true;
-}
-
-static void *track(void *p, void *caller)
-{
-    if (p != NULL && g_on && !g_busy)
-        live_add(p, caller);
-    return p;
-}
-
-void *malloc(size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_malloc(size), caller);
-}
-
-void *calloc(size_t n, size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_calloc(n, size), caller);
-}
-
-void *realloc(void *p, size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (p != NULL && size == 0) { /* glibc frees p */
-        live_remove(p);
-        return __libc_realloc(p, 0);
-    }
-    if (point_fails(caller))
-        return NULL; /* p stays allocated, as realloc promises */
-    void *q = __libc_realloc(p, size);
-    if (q != NULL && p != NULL)
-        live_remove(p);
-    return track(q, caller);
-}
-
-void *reallocarray(void *p, size_t n, size_t size)
-{
-    if (size != 0 && n > SIZE_MAX / size) {
-        errno = ENOMEM;
-        return NULL;
-    }
-    return realloc(p, n * size);
-}
-
-void free(void *p)
-{
-    if (p == NULL)
-        return;
-    live_remove(p);
-    __libc_free(p);
-}
-
-void *memalign(size_t align, size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_memalign(align, size), caller);
-}
-
-void *aligned_alloc(size_t align, size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_memalign(align, size), caller);
-}
-
-int posix_memalign(void **out, size_t align, size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (align < sizeof(void *) || (align & (align - 1)) != 0)
-        return EINVAL;
-    if (point_fails(caller))
-        return ENOMEM;
-    void *p = track(__libc_memalign(align, size), caller);
-    if (p == NULL)
-        return ENOMEM;
-    *out = p;
-    return 0;
-}
-
-void *valloc(size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_valloc(size), caller);
-}
-
-void *pvalloc(size_t size)
-{
-    void *caller = __builtin_return_address(0);
-    if (point_fails(caller))
-        return NULL;
-    return track(__libc_pvalloc(size), caller);
-}
-
-/* The blocks are glibc's, so glibc's answer is right; found once, before
- * any run, since dlsym may allocate. */
-static size_t (*libc_usable_size)(void *);
-
-size_t malloc_usable_size(void *p)
-{
-    return p != NULL && libc_usable_size != NULL ? libc_usable_size(p) : 0;
 }
 
 static int find_gmp(struct dl_phdr_info *info, size_t size, void *data)
@@ -418,52 +190,22 @@ static int find_gmp(struct dl_phdr_info *info, size_t size, void *data)
 
 static void allocator_init(void)
 {
-    void *sym = dlsym(RTLD_NEXT, "malloc_usable_size");
-    memcpy(&libc_usable_size, &sym, sizeof sym);
     dl_iterate_phdr(find_gmp, NULL);
     /* backtrace() loads libgcc's unwinder (allocating) on first use. */
     void *frames[4];
     (void)backtrace(frames, 4);
+    alloc_set_hooks(is_point, on_point, on_first_failure);
 }
 
-/* Start counting; with fail_at > 0, fail that point (and with rest every
- * later one). */
-static void alloc_begin(unsigned long fail_at, bool rest, bool fail_gmp)
+/* Start a run: every point counted and its live blocks tracked; with
+ * fail_at > 0, fail that point (and with rest every later one). */
+static void run_begin(unsigned long fail_at, bool rest, bool fail_gmp)
 {
-    live_reset();
-    g_count = 0;
-    g_injected = 0;
     g_gmp_seen = 0;
-    g_fail_at = fail_at;
-    g_fail_rest = rest;
     g_fail_gmp = fail_gmp;
     memset(&g_inject, 0, sizeof g_inject);
     g_phase[0] = '\0';
-    ALLOC_BARRIER();
-    g_on = true;
-    ALLOC_BARRIER();
-}
-
-static void alloc_end(void)
-{
-    ALLOC_BARRIER();
-    g_on = false;
-    ALLOC_BARRIER();
-}
-
-/* Set-up and checks inside a run that should neither count nor fail. */
-static void alloc_pause(void)
-{
-    ALLOC_BARRIER();
-    ++g_busy;
-    ALLOC_BARRIER();
-}
-
-static void alloc_resume(void)
-{
-    ALLOC_BARRIER();
-    --g_busy;
-    ALLOC_BARRIER();
+    alloc_begin(&(alloc_plan){.fail_at = fail_at, .fail_rest = rest, .track = true});
 }
 
 static void phase(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -584,7 +326,7 @@ static bool judge(outcome *o, const char *call, noctStatus st, noctStatus expect
                  noctStatusString(st), noctStatusString(err->status));
         return true;
     }
-    if (st == NOCT_ERR_NOMEM && g_injected > 0) {
+    if (st == NOCT_ERR_NOMEM && alloc_failures() > 0) {
         if (!nomem_documented)
             record(o, K_STATUS, "%s returned NOCT_ERR_NOMEM, which its documentation "
                  "does not list", call);
@@ -594,10 +336,10 @@ static bool judge(outcome *o, const char *call, noctStatus st, noctStatus expect
         documented(o);
         return false;
     }
-    record(o, g_injected > 0 ? K_STATUS : K_HARNESS,
+    record(o, alloc_failures() > 0 ? K_STATUS : K_HARNESS,
          "%s returned %s (%s), expected %s%s", call, noctStatusString(st),
          err != NULL && err->status == st ? err->message : "no message",
-         noctStatusString(expect), g_injected > 0 ? " or NOCT_ERR_NOMEM" : "");
+         noctStatusString(expect), alloc_failures() > 0 ? " or NOCT_ERR_NOMEM" : "");
     return false;
 }
 
@@ -1393,7 +1135,7 @@ static void part_objects(outcome *o)
     alloc_resume();
     /* stdio's buffer is allocated at the first write: its failure is a
      * failed write, NOCT_ERR_IO, as documented */
-    if (st == NOCT_ERR_IO && g_injected > 0)
+    if (st == NOCT_ERR_IO && alloc_failures() > 0)
         documented(o);
     else
         judge(o, "noctSceneWrite", st, NOCT_OK, &err, false);
@@ -1638,24 +1380,18 @@ static void run_part(part_fn *fn, unsigned long fail_at, bool rest, bool fail_gm
         trace_n = 0;
     o->type = REC_DONE;
     o->digest = 1469598103934665603u;
-    alloc_begin(fail_at, rest, fail_gmp);
+    run_begin(fail_at, rest, fail_gmp);
     fn(o);
     alloc_end();
-    o->points = g_count;
-    o->injected = g_injected;
+    o->points = alloc_points();
+    o->injected = alloc_failures();
     o->gmp_seen = g_gmp_seen;
-    o->leaks = live_n;
-    if (live_overflow)
+    o->leaks = alloc_live(o->leak_callers, 3);
+    if (alloc_live_overflowed())
         record(o, K_HARNESS, "the harness's table of live blocks overflowed");
-    if (live_n > 0) {
-        size_t found = 0;
-        for (size_t i = 0; i < LIVE_CAP && found < 3; ++i)
-            if (live[i].p != NULL)
-                o->leak_callers[found++] = live[i].caller;
+    if (o->leaks > 0)
         record(o, K_LEAK, "%zu block%s still allocated after everything was destroyed",
-             live_n, live_n == 1 ? "" : "s");
-    }
-    live_reset();
+             o->leaks, o->leaks == 1 ? "" : "s");
 }
 
 /* ---- symbols, for the report ---- */
@@ -2141,82 +1877,34 @@ START_TEST(collide)
 }
 END_TEST
 
-/* Why the harness cannot run here, or NULL. */
-static const char *skip_reason(void)
+/* A test case of its own for each part, with time for its runs. */
+static TCase *part_case(Suite *s, const char *name)
 {
-    if (ALLOC_ASAN)
-        return "built with AddressSanitizer, which owns malloc";
-#ifdef ALLOC_HAVE_VALGRIND_H
-    if (RUNNING_ON_VALGRIND)
-        return "running under valgrind, which replaces malloc";
-#endif
-    const char *pre = getenv("LD_PRELOAD");
-    if (pre != NULL && strstr(pre, "vgpreload") != NULL)
-        return "running under valgrind, which replaces malloc";
-    /* The probe: an allocation must reach the harness's malloc. */
-    void *(*volatile alloc)(size_t) = malloc;
-    alloc_begin(0, false, false);
-    void *p = alloc(24);
-    alloc_end();
-    bool seen = g_count == 1 && live_n == 1;
-    free(p);
-    live_reset();
-    if (!seen)
-        return "malloc does not reach the harness's allocator (another allocator is "
-               "interposed)";
-    return NULL;
+    TCase *tc = tcase_create(name);
+    tcase_set_timeout(tc, 300);
+    suite_add_tcase(s, tc);
+    return tc;
 }
-
-#endif /* !ALLOC_ASAN */
 
 int main(void)
 {
-#if ALLOC_ASAN
-    puts("skipped: built with AddressSanitizer, which owns malloc");
-    return 77;
-#else
-    allocator_init();
-    const char *why = skip_reason();
+    const char *why = alloc_unavailable();
     if (why != NULL) {
         printf("skipped: %s\n", why);
         return 77;
     }
+    allocator_init();
     write_files();
     Suite *s = suite_create("alloc");
-    TCase *tc = tcase_create("octree");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, octree);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("meshes");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, meshes);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("readers");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, readers);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("scene");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, scene);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("world");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, world);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("world-levels");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, world_levels);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("objects");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, objects);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("collide");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, collide);
-    suite_add_tcase(s, tc);
+    tcase_add_test(part_case(s, "octree"), octree);
+    tcase_add_test(part_case(s, "meshes"), meshes);
+    tcase_add_test(part_case(s, "readers"), readers);
+    tcase_add_test(part_case(s, "scene"), scene);
+    tcase_add_test(part_case(s, "world"), world);
+    tcase_add_test(part_case(s, "world-levels"), world_levels);
+    tcase_add_test(part_case(s, "objects"), objects);
+    tcase_add_test(part_case(s, "collide"), collide);
     int rc = run_suite(s);
     remove_files();
     return rc;
-#endif
 }

@@ -407,17 +407,10 @@ typedef struct keyed {
     obb *box;
 } keyed;
 
-static uint64_t splitmix(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
+/* A uniform long double in [0, 1): splitmix64's top 53 bits. */
 static ld draw(uint64_t *state)
 {
-    return (ld)(splitmix(state) >> 11) * 0x1p-53L;
+    return (ld)(test_rand(state) >> 11) * 0x1p-53L;
 }
 
 static void keyed_init(keyed *s, size_t n)
@@ -756,11 +749,6 @@ static void compare_objects(const view *v, const noctWorld *w)
 
 /* ---- the oracle on its own ------------------------------------------------------------------ */
 
-static ld uniform_ld(uint64_t *state)
-{
-    return (ld)(test_rand(state) >> 11) * 0x1p-53L;
-}
-
 START_TEST(sat_closed_form)
 {
     obb a, b;
@@ -824,17 +812,17 @@ START_TEST(sat_against_clipping)
         obb box[2];
         for (int o = 0; o < 2; ++o) {
             obb *b = &box[o];
-            obb_set(b, 0, 0, 0, 0.1L + 1.4L * uniform_ld(&st), 0.1L + 1.4L * uniform_ld(&st),
-                    0.1L + 1.4L * uniform_ld(&st));
+            obb_set(b, 0, 0, 0, 0.1L + 1.4L * draw(&st), 0.1L + 1.4L * draw(&st),
+                    0.1L + 1.4L * draw(&st));
             for (int k = 0; k < 3; ++k)
-                b->c[k] = o ? 5 * uniform_ld(&st) - 2.5L : 0;
+                b->c[k] = o ? 5 * draw(&st) - 2.5L : 0;
             const int how = round % 4;
             ld axis[3] = {0, 1, 0}, q[4];
             if (how == 0)
                 for (int k = 0; k < 3; ++k)
-                    axis[k] = 2 * uniform_ld(&st) - 1;
+                    axis[k] = 2 * draw(&st) - 1;
             if (how != 3 && norm3(axis) > 0.01L) {
-                quat_axis_angle(axis, 360 * uniform_ld(&st) - 180, q);
+                quat_axis_angle(axis, 360 * draw(&st) - 180, q);
                 obb_rotate(b, q);
             }
         }
@@ -981,7 +969,7 @@ START_TEST(keyframes_closed_form)
     keyed_init(&s, 20);
     /* the first draws of splitmix64 from 1234, by the spec's formula */
     uint64_t st = 1234;
-    const ld h0 = 0.25L + 0.5L * (ld)(splitmix(&st) >> 11) * 0x1p-53L;
+    const ld h0 = 0.25L + 0.5L * (ld)(test_rand(&st) >> 11) * 0x1p-53L;
     ck_assert(s.h[0][0] == h0);
     ck_assert(4 * cbrtl(20) > 10.857L && 4 * cbrtl(20) < 10.858L);
     bool unsure[20];
@@ -1023,6 +1011,36 @@ END_TEST
 
 /* ---- the families against the oracle -------------------------------------------------------- */
 
+/* One tick, the oracle's poses already at it: the world (when there is
+ * one) stepped, its poses and events compared; then the pairs. */
+static void step_and_compare(const view *v, noctWorld *w, uint64_t tick, noctPair **prev,
+                             size_t *nprev, tally *t)
+{
+    if (w != NULL) {
+        noctError err;
+        ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", v->spec,
+                      (unsigned long long)tick, err.message);
+        ck_assert_uint_eq(noctWorldTick(w), tick);
+        compare_poses(v, w, tick, t);
+        compare_events(w, prev, nprev, t);
+    }
+    compare_pairs(v, w, tick, t);
+}
+
+/* The end of a run: its tally printed, the world (when there is one)
+ * validated and destroyed with its scene. */
+static void end_run(const view *v, noctWorld *w, noctScene *scene, noctPair *prev,
+                    const tally *t)
+{
+    print_tally(v->spec, t);
+    if (w != NULL) {
+        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+        noctWorldDestroy(w);
+        noctSceneDestroy(scene);
+    }
+    free(prev);
+}
+
 static void check_arms(int K, bool with_world)
 {
     char spec[32];
@@ -1045,23 +1063,9 @@ static void check_arms(int K, bool with_world)
     }
     for (uint64_t tick = 1; tick <= 240; ++tick) {
         arms_at(&s, tick);
-        if (w != NULL) {
-            noctError err;
-            ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", spec,
-                          (unsigned long long)tick, err.message);
-            ck_assert_uint_eq(noctWorldTick(w), tick);
-            compare_poses(&v, w, tick, &t);
-            compare_events(w, &prev, &nprev, &t);
-        }
-        compare_pairs(&v, w, tick, &t);
+        step_and_compare(&v, w, tick, &prev, &nprev, &t);
     }
-    print_tally(spec, &t);
-    if (w != NULL) {
-        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
-        noctWorldDestroy(w);
-        noctSceneDestroy(scene);
-    }
-    free(prev);
+    end_run(&v, w, scene, prev, &t);
     ck_assert_msg(t.mismatches == 0, "%s: %ld disagreements with the oracle; the first: %s",
                   spec, t.mismatches, t.first);
     /* the scene is not vacuous: its pairs collide and part */
@@ -1127,23 +1131,9 @@ static void check_keyframes(size_t N, bool with_world)
         keyed_at(&s, tick, unsure);
         for (size_t i = 0; i < N; ++i)
             t.unsure_objects += unsure[i];
-        if (w != NULL) {
-            noctError err;
-            ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s step %llu: %s", spec,
-                          (unsigned long long)tick, err.message);
-            ck_assert_uint_eq(noctWorldTick(w), tick);
-            compare_poses(&v, w, tick, &t);
-            compare_events(w, &prev, &nprev, &t);
-        }
-        compare_pairs(&v, w, tick, &t);
+        step_and_compare(&v, w, tick, &prev, &nprev, &t);
     }
-    print_tally(spec, &t);
-    if (w != NULL) {
-        ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
-        noctWorldDestroy(w);
-        noctSceneDestroy(scene);
-    }
-    free(prev);
+    end_run(&v, w, scene, prev, &t);
     free(unsure);
     keyed_free(&s);
     ck_assert_msg(t.mismatches == 0, "%s: %ld disagreements with the oracle; the first: %s",

@@ -27,44 +27,10 @@
 static uint64_t rng;
 static double uniform(void)
 {
-    return (double)(test_rand(&rng) >> 11) * 0x1p-53;
+    return test_uniform(&rng);
 }
 
 /* ---- meshes ------------------------------------------------------------------ */
-
-/* An L-shaped prism: the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2) less (1,1),
- * z from -1/2 to 1/2; non-convex, its faces convex polygons. */
-static noctMesh *make_ell(void)
-{
-    static const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-    double v[36];
-    for (int i = 0; i < 12; ++i) {
-        v[3 * i] = P[i % 6][0] - 1;
-        v[3 * i + 1] = P[i % 6][1] - 1;
-        v[3 * i + 2] = i < 6 ? -0.5 : 0.5;
-    }
-    uint32_t sizes[10], idx[40];
-    size_t n = 0, k = 0;
-    const uint32_t faces[4][4] = {{6, 7, 8, 9}, {6, 9, 10, 11}, {0, 3, 2, 1}, {0, 5, 4, 3}};
-    for (int f = 0; f < 4; ++f) {
-        sizes[n++] = 4;
-        for (int c = 0; c < 4; ++c)
-            idx[k++] = faces[f][c];
-    }
-    for (uint32_t i = 0; i < 6; ++i) {
-        const uint32_t j = (i + 1) % 6;
-        sizes[n++] = 4;
-        idx[k++] = i;
-        idx[k++] = j;
-        idx[k++] = j + 6;
-        idx[k++] = i + 6;
-    }
-    noctMesh *m;
-    noctError err;
-    ck_assert_msg(noctMeshCreate(v, 12, sizes, n, idx, &m, &err) == NOCT_OK, "%s", err.message);
-    ck_assert(!noctMeshIsConvex(m));
-    return m;
-}
 
 static noctMesh *make_box(double hx, double hy, double hz)
 {
@@ -305,10 +271,7 @@ END_TEST
 static uint64_t gas_state;
 static double gas_draw(void) /* SCENES.md: splitmix64, then 53 bits */
 {
-    uint64_t z = (gas_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+    return test_uniform(&gas_state);
 }
 
 /* gas is built of box primitives turned by its quaternions: their
@@ -377,20 +340,6 @@ typedef struct model {
     noctPair pairs[MAXO * MAXO / 2], sense[MAXO * MAXO / 2];
 } model;
 
-static void random_quat(noctQuat *q)
-{
-    double c[4], l;
-    do {
-        l = 0;
-        for (int k = 0; k < 4; ++k) {
-            c[k] = 2 * uniform() - 1;
-            l += c[k] * c[k];
-        }
-    } while (l < 0.01 || l > 1);
-    l = sqrt(l);
-    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
-}
-
 static uint64_t random_bits(void)
 {
     return uniform() < 0.6 ? NOCT_FILTER_ALL : (uint64_t)1 << (int)(3 * uniform());
@@ -403,7 +352,7 @@ static void random_place(noctTransform *x)
     if (uniform() < 0.15)
         x->q = (noctQuat){0, 0, 0, 1};
     else
-        random_quat(&x->q);
+        test_random_quat(&rng, &x->q);
 }
 
 static void add_random(noctWorld *w, model *m, int i)
@@ -542,7 +491,7 @@ static void drive(noctWorld *w, model *m)
             for (int k = 0; k < 3; ++k)
                 m->x[i].p[k] += 0.1 * (uniform() - 0.5);
             if (uniform() < 0.3)
-                random_quat(&m->x[i].q);
+                test_random_quat(&rng, &m->x[i].q);
             ck_assert_msg(noctWorldSetTransform(w, m->id[i], &m->x[i], &err) == NOCT_OK, "%s",
                           err.message);
         } else if (u < 0.03) { /* a teleport, anywhere */

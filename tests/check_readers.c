@@ -8,13 +8,13 @@
  *    would reject is reported at read time, at a line;
  *  - directions of any finite non-zero size are directions;
  *  - running out of memory while reading is NOCT_ERR_NOMEM, never a file
- *    read short with NOCT_OK: allocations are made to fail by a malloc
- *    interposed in this program (glibc only; skipped, saying so, under
+ *    read short with NOCT_OK: allocations are made to fail by the tests'
+ *    allocator, testalloc.h (glibc only; skipped, saying so, under
  *    AddressSanitizer and wherever the interposition is not in force).
  * The oracles are the files' own contents: the line each was built to
  * fail at, and the objects and vertices it lists.
  */
-#define _GNU_SOURCE /* getline; the __libc_* allocator entry points */
+#define _GNU_SOURCE /* getline */
 #include <check.h>
 #include <errno.h>
 #include <math.h>
@@ -30,110 +30,34 @@
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
+#include "testalloc.h"
 #include "testutil.h"
 
-/* ---- an allocator that fails on demand ------------------------------------------ */
-
-#if defined(__SANITIZE_ADDRESS__)
-#  define READERS_ASAN 1
-#elif defined(__has_feature)
-#  if __has_feature(address_sanitizer)
-#    define READERS_ASAN 1
-#  endif
-#endif
-
-/* AddressSanitizer owns malloc (defining it here would clash with its
- * interceptors), and the __libc_* entry points are glibc's. */
-#if !defined(READERS_ASAN) && defined(__GLIBC__)
-#  define READERS_INTERPOSE 1
-#endif
+/* ---- an allocator that fails on demand (testalloc.h) ------------------------------ */
 
 /* Allocations counted while armed; the fail_nth-th of them fails (1 is the
- * first; 0 never), and so does every one larger than fail_above. */
-static struct {
-    bool armed;
-    unsigned long count, fail_nth;
-    size_t fail_above;
-    unsigned long failed;
-} alloc_ctl = {false, 0, 0, SIZE_MAX, 0};
-
-#ifdef READERS_INTERPOSE
-extern void *__libc_malloc(size_t size);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t size);
-extern void __libc_free(void *p);
-
-static bool alloc_fails(size_t size)
-{
-    if (!alloc_ctl.armed)
-        return false;
-    ++alloc_ctl.count;
-    if (alloc_ctl.count == alloc_ctl.fail_nth || size > alloc_ctl.fail_above) {
-        ++alloc_ctl.failed;
-        errno = ENOMEM;
-        return true;
-    }
-    return false;
-}
-
-void *malloc(size_t size)
-{
-    return alloc_fails(size) ? NULL : __libc_malloc(size);
-}
-
-void *calloc(size_t n, size_t size)
-{
-    size_t total;
-    if (__builtin_mul_overflow(n, size, &total))
-        total = SIZE_MAX;
-    return alloc_fails(total) ? NULL : __libc_calloc(n, size);
-}
-
-void *realloc(void *p, size_t size)
-{
-    return alloc_fails(size) ? NULL : __libc_realloc(p, size);
-}
-
-void free(void *p)
-{
-    __libc_free(p);
-}
-#endif
-
+ * first; 0 never), and so does every one larger than fail_above (SIZE_MAX:
+ * none). */
 static void alloc_arm(unsigned long fail_nth, size_t fail_above)
 {
-    alloc_ctl.count = alloc_ctl.failed = 0;
-    alloc_ctl.fail_nth = fail_nth;
-    alloc_ctl.fail_above = fail_above;
-    alloc_ctl.armed = true;
+    alloc_begin(&(alloc_plan){.fail_at = fail_nth,
+                              .fail_above = fail_above == SIZE_MAX ? 0 : fail_above});
 }
 
 static void alloc_disarm(void)
 {
-    alloc_ctl.armed = false;
+    alloc_end();
 }
 
-/* Whether the malloc above is the one the program and the library call:
- * not under AddressSanitizer, nor where a tool (valgrind) replaces it in
- * the executable too. Says why when it is not. */
+/* Whether the tests' allocator is the one the program and the library
+ * call: not under AddressSanitizer, nor where a tool (valgrind) replaces
+ * malloc in the executable too. Says why when it is not. */
 static bool interposed(void)
 {
-#ifdef READERS_INTERPOSE
-    void *(*volatile call)(size_t) = malloc; /* not folded by the compiler */
-    alloc_arm(1, SIZE_MAX);
-    void *p = call(16);
-    alloc_disarm();
-    if (p == NULL && alloc_ctl.failed == 1)
-        return true;
-    free(p);
-    fprintf(stderr, "check-readers: malloc is not this program's (valgrind?): "
-                    "allocation failure tests skipped\n");
-    return false;
-#else
-    fprintf(stderr, "check-readers: built with AddressSanitizer or without glibc: "
-                    "allocation failure tests skipped\n");
-    return false;
-#endif
+    const char *why = alloc_unavailable();
+    if (why != NULL)
+        fprintf(stderr, "check-readers: %s: allocation failure tests skipped\n", why);
+    return why == NULL;
 }
 
 /* ---- files ------------------------------------------------------------------------ */
@@ -632,7 +556,7 @@ START_TEST(getline_nomem_is_nomem)
     alloc_arm(0, limit);
     noctStatus st = noctSceneRead(spath, &sc, &err);
     alloc_disarm();
-    ck_assert_uint_gt(alloc_ctl.failed, 0);
+    ck_assert_uint_gt(alloc_failures(), 0);
     ck_assert_msg(st == NOCT_ERR_NOMEM, "scene: got %s (%s)", noctStatusString(st),
                   err.message);
     ck_assert_ptr_null(sc);
@@ -695,7 +619,7 @@ START_TEST(every_allocation_failing)
         alloc_arm(n, SIZE_MAX);
         noctStatus st = noctSceneRead(path, &sc, &err);
         alloc_disarm();
-        bool failed = alloc_ctl.failed > 0;
+        bool failed = alloc_failures() > 0;
         if (st == NOCT_OK) {
             ++ok;
             noctWorld *w;
@@ -736,7 +660,7 @@ START_TEST(every_allocation_failing_mesh)
             alloc_arm(n, SIZE_MAX);
             noctStatus st = noctMeshRead(paths[i], &m, &err);
             alloc_disarm();
-            bool failed = alloc_ctl.failed > 0;
+            bool failed = alloc_failures() > 0;
             if (st == NOCT_OK) {
                 ck_assert_uint_eq(noctMeshVertexCount(m), 4);
                 ck_assert_uint_eq(noctMeshTriangleCount(m), 4);

@@ -23,21 +23,7 @@ static uint64_t rng = 0x7ac5u;
 
 static double uniform(void)
 {
-    return (double)(test_rand(&rng) >> 11) * 0x1p-53;
-}
-
-static void random_quat(noctQuat *q)
-{
-    double c[4], l;
-    do {
-        l = 0;
-        for (int k = 0; k < 4; ++k) {
-            c[k] = 2 * uniform() - 1;
-            l += c[k] * c[k];
-        }
-    } while (l < 0.01 || l > 1);
-    l = sqrt(l);
-    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
+    return test_uniform(&rng);
 }
 
 /* n keyframes at increasing ticks from first, random poses near the
@@ -53,7 +39,7 @@ static void random_keys(noctKeyframe *k, size_t n, uint64_t first)
         if (i > 0 && uniform() < 0.25)
             k[i].x.q = k[i - 1].x.q;
         else
-            random_quat(&k[i].x.q);
+            test_random_quat(&rng, &k[i].x.q);
     }
 }
 

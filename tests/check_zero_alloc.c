@@ -2,10 +2,10 @@
 /*
  * No allocation in the step once sizes settle (issue 17).
  *
- * The program defines malloc and its family, forwarding to glibc's
- * __libc_malloc and friends, and counts the calls made while counting is
- * on, with the caller of the first few. Each test warms a workload up,
- * then counts the allocations of a stretch of steps, which must be none:
+ * The tests' allocator (testalloc.h) counts the allocations made while
+ * counting is on, with the caller of the first few. Each test warms a
+ * workload up, then counts the allocations of a stretch of steps, which
+ * must be none:
  * the octree's nodes and cells come from the broadphase's pool, leaf lists
  * and every scratch array keep their capacity. The stretches are chosen so
  * that the trees split and merge leaves throughout (the counters prove
@@ -15,11 +15,9 @@
  * Skipped (exit status 77) under AddressSanitizer and valgrind, which own
  * malloc, as check-alloc is.
  */
-#define _GNU_SOURCE /* dladdr, RTLD_DEFAULT */
+#define _GNU_SOURCE /* dladdr */
 #include <check.h>
 #include <dlfcn.h>
-#include <errno.h>
-#include <malloc.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,145 +27,36 @@
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
+#include "testalloc.h"
 #include "testutil.h"
 
-#if defined(__SANITIZE_ADDRESS__)
-#  define ZA_ASAN 1
-#elif defined(__has_feature)
-#  if __has_feature(address_sanitizer)
-#    define ZA_ASAN 1
-#  endif
-#endif
-#ifndef ZA_ASAN
-#  define ZA_ASAN 0
-#endif
-
-#if !ZA_ASAN
-
-/* ---- the counting allocator ------------------------------------------------ */
-
-static volatile int g_counting;
-static unsigned long g_allocs;
-#define MAX_CALLERS 8
-static void *g_callers[MAX_CALLERS];
-
-extern void *__libc_malloc(size_t size);
-extern void *__libc_calloc(size_t n, size_t size);
-extern void *__libc_realloc(void *p, size_t size);
-extern void __libc_free(void *p);
-extern void *__libc_memalign(size_t align, size_t size);
-extern void *__libc_valloc(size_t size);
-extern void *__libc_pvalloc(size_t size);
-
-static void count(void *caller)
-{
-    if (!g_counting)
-        return;
-    if (g_allocs < MAX_CALLERS)
-        g_callers[g_allocs] = caller;
-    ++g_allocs;
-}
-
-void *malloc(size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_malloc(size);
-}
-
-void *calloc(size_t n, size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_calloc(n, size);
-}
-
-void *realloc(void *p, size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_realloc(p, size);
-}
-
-void *reallocarray(void *p, size_t n, size_t size)
-{
-    if (size != 0 && n > SIZE_MAX / size) {
-        errno = ENOMEM;
-        return NULL;
-    }
-    count(__builtin_return_address(0));
-    return __libc_realloc(p, n * size);
-}
-
-void free(void *p)
-{
-    __libc_free(p);
-}
-
-void *memalign(size_t align, size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_memalign(align, size);
-}
-
-void *aligned_alloc(size_t align, size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_memalign(align, size);
-}
-
-int posix_memalign(void **out, size_t align, size_t size)
-{
-    if (align < sizeof(void *) || (align & (align - 1)) != 0)
-        return EINVAL;
-    count(__builtin_return_address(0));
-    void *p = __libc_memalign(align, size);
-    if (p == NULL)
-        return ENOMEM;
-    *out = p;
-    return 0;
-}
-
-void *valloc(size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_valloc(size);
-}
-
-void *pvalloc(size_t size)
-{
-    count(__builtin_return_address(0));
-    return __libc_pvalloc(size);
-}
-
-static size_t (*libc_usable_size)(void *);
-
-size_t malloc_usable_size(void *p)
-{
-    return p != NULL && libc_usable_size != NULL ? libc_usable_size(p) : 0;
-}
+/* ---- counting the allocations (testalloc.h) ---------------------------------- */
 
 static void counting_on(void)
 {
-    g_allocs = 0;
-    g_counting = 1;
+    alloc_begin(&(alloc_plan){0});
 }
 
 /* Stop counting; print the callers of the first allocations, if any. */
 static unsigned long counting_off(const char *what)
 {
-    g_counting = 0;
-    for (unsigned long i = 0; i < g_allocs && i < MAX_CALLERS; ++i) {
+    alloc_end();
+    const unsigned long allocs = alloc_points();
+    for (unsigned long i = 0; i < allocs && i < ALLOC_CALLERS; ++i) {
+        void *caller = alloc_caller(i);
         Dl_info info;
-        if (dladdr(g_callers[i], &info) != 0 && info.dli_sname != NULL)
+        if (dladdr(caller, &info) != 0 && info.dli_sname != NULL)
             printf("%s: allocation %lu from %s+%#lx in %s\n", what, i + 1, info.dli_sname,
-                   (unsigned long)((const char *)g_callers[i] - (const char *)info.dli_saddr),
+                   (unsigned long)((const char *)caller - (const char *)info.dli_saddr),
                    info.dli_fname);
-        else if (dladdr(g_callers[i], &info) != 0)
+        else if (dladdr(caller, &info) != 0)
             printf("%s: allocation %lu from %s+%#lx (addr2line -e it)\n", what, i + 1,
                    info.dli_fname,
-                   (unsigned long)((const char *)g_callers[i] - (const char *)info.dli_fbase));
+                   (unsigned long)((const char *)caller - (const char *)info.dli_fbase));
         else
-            printf("%s: allocation %lu from %p\n", what, i + 1, g_callers[i]);
+            printf("%s: allocation %lu from %p\n", what, i + 1, caller);
     }
-    return g_allocs;
+    return allocs;
 }
 
 /* ---- the workloads ----------------------------------------------------------- */
@@ -402,34 +291,10 @@ START_TEST(broadphase_frames)
 }
 END_TEST
 
-/* Why the test cannot run here, or NULL. */
-static const char *skip_reason(void)
-{
-    const char *pre = getenv("LD_PRELOAD");
-    if (pre != NULL && strstr(pre, "vgpreload") != NULL)
-        return "running under valgrind, which replaces malloc";
-    void *(*volatile alloc)(size_t) = malloc;
-    counting_on();
-    void *p = alloc(24);
-    const unsigned long n = g_allocs;
-    g_counting = 0;
-    free(p);
-    return n == 1 ? NULL
-                  : "malloc does not reach the test's allocator (another allocator is "
-                    "interposed)";
-}
-
-#endif /* !ZA_ASAN */
 
 int main(void)
 {
-#if ZA_ASAN
-    puts("skipped: built with AddressSanitizer, which owns malloc");
-    return 77;
-#else
-    void *sym = dlsym(RTLD_NEXT, "malloc_usable_size");
-    memcpy(&libc_usable_size, &sym, sizeof sym);
-    const char *why = skip_reason();
+    const char *why = alloc_unavailable();
     if (why != NULL) {
         printf("skipped: %s\n", why);
         return 77;
@@ -443,5 +308,4 @@ int main(void)
     tcase_add_test(tc, driven_frames);
     suite_add_tcase(s, tc);
     return run_suite(s);
-#endif
 }

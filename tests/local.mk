@@ -2,169 +2,189 @@
 # make check: the Check suites against both libraries, the export list and
 # the in-lining check. make check-valgrind: the suites under valgrind.
 
-test_common = tests/testutil.c tests/testutil.h tests/short_names.c
+# Each Check suite is built twice, against the defensive library and (its
+# -efficient twin, with NOCT_EFFICIENT, so the accessors are inline)
+# against the efficient one; check-predicates only against the first.
+suites = tests/check-octree tests/check-octree-efficient \
+	tests/check-neighbor tests/check-neighbor-efficient \
+	tests/check-narrowphase tests/check-narrowphase-efficient \
+	tests/check-predicates tests/check-world tests/check-world-efficient \
+	tests/check-alloc tests/check-alloc-efficient \
+	tests/check-zero-alloc tests/check-zero-alloc-efficient \
+	tests/check-broadphase tests/check-broadphase-efficient \
+	tests/check-objects tests/check-objects-efficient \
+	tests/check-queries tests/check-queries-efficient \
+	tests/check-tracks tests/check-tracks-efficient \
+	tests/check-near tests/check-near-efficient \
+	tests/check-families tests/check-families-efficient \
+	tests/check-readers tests/check-readers-efficient
 
+# The suites' kit, built once per flavour: the RNG, the tree validation
+# walk and mirror model, the L mesh (testutil), the ideal geometry of
+# random rotated scenes (testgeom) and the short direction names. And the
+# tests' allocator (testalloc: counts allocations and fails them on
+# demand), for the three suites that replace malloc.
 if HAVE_CHECK
-check_PROGRAMS += tests/check-octree tests/check-octree-efficient \
-	tests/check-neighbor tests/check-neighbor-efficient \
-	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient \
-	tests/check-alloc tests/check-alloc-efficient \
-	tests/check-zero-alloc tests/check-zero-alloc-efficient \
-	tests/check-broadphase tests/check-broadphase-efficient \
-	tests/check-objects tests/check-objects-efficient \
-	tests/check-queries tests/check-queries-efficient \
-	tests/check-tracks tests/check-tracks-efficient \
-	tests/check-near tests/check-near-efficient \
-	tests/check-families tests/check-families-efficient \
-	tests/check-readers tests/check-readers-efficient
-TESTS += tests/check-octree tests/check-octree-efficient \
-	tests/check-neighbor tests/check-neighbor-efficient \
-	tests/check-narrowphase tests/check-narrowphase-efficient \
-	tests/check-predicates tests/check-world tests/check-world-efficient \
-	tests/check-alloc tests/check-alloc-efficient \
-	tests/check-zero-alloc tests/check-zero-alloc-efficient \
-	tests/check-broadphase tests/check-broadphase-efficient \
-	tests/check-objects tests/check-objects-efficient \
-	tests/check-queries tests/check-queries-efficient \
-	tests/check-tracks tests/check-tracks-efficient \
-	tests/check-near tests/check-near-efficient \
-	tests/check-families tests/check-families-efficient \
-	tests/check-readers tests/check-readers-efficient
+check_PROGRAMS += $(suites)
+TESTS += $(suites)
+check_LTLIBRARIES = tests/libtestkit.la tests/libtestkit-efficient.la \
+	tests/libtestalloc.la
 endif
+tests_libtestkit_la_SOURCES = tests/testutil.c tests/testutil.h tests/testgeom.c \
+	tests/testgeom.h tests/short_names.c
+tests_libtestkit_la_CFLAGS = $(check_cflags)
+tests_libtestkit_efficient_la_SOURCES = $(tests_libtestkit_la_SOURCES)
+tests_libtestkit_efficient_la_CPPFLAGS = $(efficient_cppflags)
+tests_libtestkit_efficient_la_CFLAGS = $(check_cflags)
+tests_libtestalloc_la_SOURCES = tests/testalloc.c tests/testalloc.h
 
-tests_check_octree_SOURCES = tests/check_octree.c $(test_common)
-tests_check_octree_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS)
-tests_check_octree_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+check_cflags = $(AM_CFLAGS) $(CHECK_CFLAGS)
+efficient_cppflags = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+check_ldadd = tests/libtestkit.la lib/libnoctree.la $(CHECK_LIBS)
+efficient_ldadd = tests/libtestkit-efficient.la lib/libnoctree-efficient.la $(CHECK_LIBS)
 
-tests_check_octree_efficient_SOURCES = $(tests_check_octree_SOURCES)
-tests_check_octree_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_octree_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_octree_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# Per suite, what it tests; then its defensive build and its twin.
 
-tests_check_neighbor_SOURCES = tests/check_neighbor.c $(test_common)
-tests_check_neighbor_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_neighbor_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-octree: the octree ADT (octree.h), each operation's ensures clauses
+# on real trees, random operation sequences against a mirror model.
+tests_check_octree_SOURCES = tests/check_octree.c
+tests_check_octree_CFLAGS = $(check_cflags)
+tests_check_octree_LDADD = $(check_ldadd)
+tests_check_octree_efficient_SOURCES = tests/check_octree.c
+tests_check_octree_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_octree_efficient_CFLAGS = $(check_cflags)
+tests_check_octree_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_neighbor_efficient_SOURCES = $(tests_check_neighbor_SOURCES)
-tests_check_neighbor_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_neighbor_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_neighbor_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# check-neighbor: neighbor finding (neighbor.h) against the geometry of
+# the cells and against walks of the tree.
+tests_check_neighbor_SOURCES = tests/check_neighbor.c
+tests_check_neighbor_CFLAGS = $(check_cflags)
+tests_check_neighbor_LDADD = $(check_ldadd)
+tests_check_neighbor_efficient_SOURCES = tests/check_neighbor.c
+tests_check_neighbor_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_neighbor_efficient_CFLAGS = $(check_cflags)
+tests_check_neighbor_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_narrowphase_SOURCES = tests/check_narrowphase.c $(test_common)
-tests_check_narrowphase_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_narrowphase_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-narrowphase: meshes and the narrowphase (mesh.h, narrowphase.h) on
+# hard cases of known answer and against exact and brute-force oracles.
+tests_check_narrowphase_SOURCES = tests/check_narrowphase.c
+tests_check_narrowphase_CFLAGS = $(check_cflags)
+tests_check_narrowphase_LDADD = $(check_ldadd)
+tests_check_narrowphase_efficient_SOURCES = tests/check_narrowphase.c
+tests_check_narrowphase_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_narrowphase_efficient_CFLAGS = $(check_cflags)
+tests_check_narrowphase_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_narrowphase_efficient_SOURCES = $(tests_check_narrowphase_SOURCES)
-tests_check_narrowphase_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_narrowphase_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_narrowphase_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-# The private predicates, tested through a test-only build of their source.
+# check-predicates: the private exact predicates, through a test-only build
+# of lib/predicates.c, against integer and GMP arithmetic (no twin).
 tests_check_predicates_SOURCES = tests/check_predicates.c lib/predicates.c \
-	lib/predicates.h $(test_common)
-tests_check_predicates_CFLAGS = $(tests_check_octree_CFLAGS) $(GMP_CFLAGS)
-tests_check_predicates_LDADD = lib/libnoctree.la $(GMP_LIBS) $(CHECK_LIBS)
+	lib/predicates.h
+tests_check_predicates_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_predicates_LDADD = $(check_ldadd) $(GMP_LIBS)
 
-tests_check_world_SOURCES = tests/check_world.c $(test_common)
-tests_check_world_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_world_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-world: the collision world (world.h) against the planes scenes'
+# closed-form event counts, brute force, and across N and maintenance.
+tests_check_world_SOURCES = tests/check_world.c
+tests_check_world_CFLAGS = $(check_cflags)
+tests_check_world_LDADD = $(check_ldadd)
+tests_check_world_efficient_SOURCES = tests/check_world.c
+tests_check_world_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_world_efficient_CFLAGS = $(check_cflags)
+tests_check_world_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_world_efficient_SOURCES = $(tests_check_world_SOURCES)
-tests_check_world_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_world_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_world_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# check-alloc: every allocation of a workload fails in turn, and nothing
+# aborts or leaks (replaces malloc, so it exits 77, SKIP, under
+# AddressSanitizer or valgrind).
+tests_check_alloc_SOURCES = tests/check_alloc.c
+tests_check_alloc_CFLAGS = $(check_cflags)
+tests_check_alloc_LDADD = tests/libtestalloc.la $(check_ldadd)
+tests_check_alloc_efficient_SOURCES = tests/check_alloc.c
+tests_check_alloc_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_alloc_efficient_CFLAGS = $(check_cflags)
+tests_check_alloc_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 
-# Every allocation of a workload fails in turn: the program replaces malloc
-# (so it exits 77, SKIP, under AddressSanitizer or valgrind).
-tests_check_alloc_SOURCES = tests/check_alloc.c $(test_common)
-tests_check_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-objects: a world that programs drive (world.h, transform.h):
+# quaternions, rotated scenes and object kinds against the test's model.
+tests_check_objects_SOURCES = tests/check_objects.c
+tests_check_objects_CFLAGS = $(check_cflags)
+tests_check_objects_LDADD = $(check_ldadd)
+tests_check_objects_efficient_SOURCES = tests/check_objects.c
+tests_check_objects_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_objects_efficient_CFLAGS = $(check_cflags)
+tests_check_objects_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_alloc_efficient_SOURCES = $(tests_check_alloc_SOURCES)
-tests_check_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# check-queries: the world's queries (query.h) against a brute force over
+# the ideal geometry (testgeom), also from several threads.
+tests_check_queries_SOURCES = tests/check_queries.c
+tests_check_queries_CFLAGS = $(check_cflags) -pthread
+tests_check_queries_LDADD = $(check_ldadd) -lpthread
+tests_check_queries_efficient_SOURCES = tests/check_queries.c
+tests_check_queries_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_queries_efficient_CFLAGS = $(check_cflags) -pthread
+tests_check_queries_efficient_LDADD = $(efficient_ldadd) -lpthread
 
-tests_check_objects_SOURCES = tests/check_objects.c $(test_common)
-tests_check_objects_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_objects_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-tracks: tracks (NOCT_EFFECT_TRACK) against the test's own
+# interpolation, and the events of worlds that follow them.
+tests_check_tracks_SOURCES = tests/check_tracks.c
+tests_check_tracks_CFLAGS = $(check_cflags)
+tests_check_tracks_LDADD = $(check_ldadd)
+tests_check_tracks_efficient_SOURCES = tests/check_tracks.c
+tests_check_tracks_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_tracks_efficient_CFLAGS = $(check_cflags)
+tests_check_tracks_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_objects_efficient_SOURCES = $(tests_check_objects_SOURCES)
-tests_check_objects_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_objects_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_objects_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# check-near: the margin and the near queries against the test's own
+# distances between the ideal solids (testgeom).
+tests_check_near_SOURCES = tests/check_near.c
+tests_check_near_CFLAGS = $(check_cflags)
+tests_check_near_LDADD = $(check_ldadd)
+tests_check_near_efficient_SOURCES = tests/check_near.c
+tests_check_near_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_near_efficient_CFLAGS = $(check_cflags)
+tests_check_near_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_queries_SOURCES = tests/check_queries.c tests/testgeom.c tests/testgeom.h \
-	$(test_common)
-tests_check_queries_CFLAGS = $(tests_check_octree_CFLAGS) -pthread
-tests_check_queries_LDADD = lib/libnoctree.la $(CHECK_LIBS) -lpthread
+# check-families: the scene families arms:K and keyframes:N against the
+# test's own long double geometry (forward kinematics, interpolation,
+# oriented boxes).
+tests_check_families_SOURCES = tests/check_families.c
+tests_check_families_CFLAGS = $(check_cflags)
+tests_check_families_LDADD = $(check_ldadd)
+tests_check_families_efficient_SOURCES = tests/check_families.c
+tests_check_families_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_families_efficient_CFLAGS = $(check_cflags)
+tests_check_families_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_queries_efficient_SOURCES = $(tests_check_queries_SOURCES)
-tests_check_queries_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_queries_efficient_CFLAGS = $(tests_check_octree_CFLAGS) -pthread
-tests_check_queries_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS) -lpthread
+# check-broadphase: the broadphase on its own (broadphase.h) against an
+# all-pairs test of random boxes, with its queries and filters.
+tests_check_broadphase_SOURCES = tests/check_broadphase.c
+tests_check_broadphase_CFLAGS = $(check_cflags)
+tests_check_broadphase_LDADD = $(check_ldadd)
+tests_check_broadphase_efficient_SOURCES = tests/check_broadphase.c
+tests_check_broadphase_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_broadphase_efficient_CFLAGS = $(check_cflags)
+tests_check_broadphase_efficient_LDADD = $(efficient_ldadd)
 
-tests_check_tracks_SOURCES = tests/check_tracks.c $(test_common)
-tests_check_tracks_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_tracks_LDADD = lib/libnoctree.la $(CHECK_LIBS)
+# check-zero-alloc: no allocation in the step once sizes settle (counts
+# them with the tests' allocator, so it skips under AddressSanitizer and
+# valgrind).
+tests_check_zero_alloc_SOURCES = tests/check_zero_alloc.c
+tests_check_zero_alloc_CFLAGS = $(check_cflags)
+tests_check_zero_alloc_LDADD = tests/libtestalloc.la $(check_ldadd)
+tests_check_zero_alloc_efficient_SOURCES = tests/check_zero_alloc.c
+tests_check_zero_alloc_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_zero_alloc_efficient_CFLAGS = $(check_cflags)
+tests_check_zero_alloc_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 
-tests_check_tracks_efficient_SOURCES = $(tests_check_tracks_SOURCES)
-tests_check_tracks_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_tracks_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_tracks_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-tests_check_near_SOURCES = tests/check_near.c tests/testgeom.c tests/testgeom.h \
-	$(test_common)
-tests_check_near_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_near_LDADD = lib/libnoctree.la $(CHECK_LIBS)
-
-tests_check_near_efficient_SOURCES = $(tests_check_near_SOURCES)
-tests_check_near_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_near_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_near_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-# The scene families arms:K and keyframes:N against the test's own long
-# double geometry (forward kinematics, interpolation, oriented boxes).
-tests_check_families_SOURCES = tests/check_families.c $(test_common)
-tests_check_families_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_families_LDADD = lib/libnoctree.la $(CHECK_LIBS)
-
-tests_check_families_efficient_SOURCES = $(tests_check_families_SOURCES)
-tests_check_families_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_families_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_families_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-tests_check_broadphase_SOURCES = tests/check_broadphase.c $(test_common)
-tests_check_broadphase_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_broadphase_LDADD = lib/libnoctree.la $(CHECK_LIBS)
-
-tests_check_broadphase_efficient_SOURCES = $(tests_check_broadphase_SOURCES)
-tests_check_broadphase_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_broadphase_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_broadphase_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-# No allocation in the step once sizes settle: counts them (an
-# interposed malloc, so it skips under AddressSanitizer and valgrind).
-tests_check_zero_alloc_SOURCES = tests/check_zero_alloc.c $(test_common)
-tests_check_zero_alloc_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_zero_alloc_LDADD = lib/libnoctree.la $(CHECK_LIBS)
-
-tests_check_zero_alloc_efficient_SOURCES = $(tests_check_zero_alloc_SOURCES)
-tests_check_zero_alloc_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_zero_alloc_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_zero_alloc_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
-
-# The readers: NUL bytes, read errors, read-time checks, and allocation
-# failures while reading (its own small interposed malloc).
-tests_check_readers_SOURCES = tests/check_readers.c $(test_common)
-tests_check_readers_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_readers_LDADD = lib/libnoctree.la $(CHECK_LIBS)
-
-tests_check_readers_efficient_SOURCES = $(tests_check_readers_SOURCES)
-tests_check_readers_efficient_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
-tests_check_readers_efficient_CFLAGS = $(tests_check_octree_CFLAGS)
-tests_check_readers_efficient_LDADD = lib/libnoctree-efficient.la $(CHECK_LIBS)
+# check-readers: the scene, OFF and OBJ readers on NUL bytes, read errors,
+# read-time checks, and allocations failing while reading (the tests'
+# allocator; those tests skip, saying so, where it is not in force).
+tests_check_readers_SOURCES = tests/check_readers.c
+tests_check_readers_CFLAGS = $(check_cflags)
+tests_check_readers_LDADD = tests/libtestalloc.la $(check_ldadd)
+tests_check_readers_efficient_SOURCES = tests/check_readers.c
+tests_check_readers_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_readers_efficient_CFLAGS = $(check_cflags)
+tests_check_readers_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh
@@ -209,7 +229,8 @@ AM_TESTS_ENVIRONMENT = \
 # Valgrind runs the suites in one process (no fork), so the death tests,
 # which abort by design, are left out by their tag; so are the "slow" test
 # cases (whole benchmark scenes), which the other builds run. check-alloc
-# replaces malloc, which valgrind does too: it would only skip (exit 77).
+# and check-zero-alloc replace malloc (testalloc.c), which valgrind does
+# too: they would only skip (exit 77).
 VALGRIND = valgrind
 check-valgrind: $(check_PROGRAMS)
 	@set -e; for t in $(check_PROGRAMS); do \

@@ -12,7 +12,7 @@ uint64_t rng = 0x51ed2701u;
 
 double uniform(void)
 {
-    return (double)(test_rand(&rng) >> 11) * 0x1p-53;
+    return test_uniform(&rng);
 }
 
 /* ---- the scenes' ideal geometry ---------------------------------------------- */
@@ -42,16 +42,7 @@ void quat_matrix(const noctQuat *q, long double R[9])
 
 void random_quat(noctQuat *q)
 {
-    double c[4], l;
-    do {
-        l = 0;
-        for (int k = 0; k < 4; ++k) {
-            c[k] = 2 * uniform() - 1;
-            l += c[k] * c[k];
-        }
-    } while (l < 0.01 || l > 1);
-    l = sqrt(l);
-    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
+    test_random_quat(&rng, q);
 }
 
 /* p in the object's frame: R^T (p - t). */
@@ -229,36 +220,6 @@ int ideal_ray(const ideal *g, const double p[3], const double d[3], long double 
 }
 
 /* ---- building scenes --------------------------------------------------------------- */
-
-noctMesh *make_ell(void)
-{
-    static const double P[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-    double v[36];
-    for (int i = 0; i < 12; ++i) {
-        v[3 * i] = P[i % 6][0] - 1;
-        v[3 * i + 1] = P[i % 6][1] - 1;
-        v[3 * i + 2] = i < 6 ? -0.5 : 0.5;
-    }
-    uint32_t sizes[10], idx[40];
-    size_t n = 0, k = 0;
-    const uint32_t faces[4][4] = {{6, 7, 8, 9}, {6, 9, 10, 11}, {0, 3, 2, 1}, {0, 5, 4, 3}};
-    for (int f = 0; f < 4; ++f) {
-        sizes[n++] = 4;
-        for (int c = 0; c < 4; ++c)
-            idx[k++] = faces[f][c];
-    }
-    for (uint32_t i = 0; i < 6; ++i) {
-        const uint32_t j = (i + 1) % 6;
-        sizes[n++] = 4;
-        idx[k++] = i;
-        idx[k++] = j;
-        idx[k++] = j + 6;
-        idx[k++] = i + 6;
-    }
-    noctMesh *m;
-    ck_assert_int_eq(noctMeshCreate(v, 12, sizes, n, idx, &m, NULL), NOCT_OK);
-    return m;
-}
 
 double world_margin = 0;
 

@@ -14,6 +14,8 @@
 
 #include <noctree.h>
 
+#include "testutil.h" /* make_ell */
+
 #define MAXO 48
 #define MARGIN 1e-9L
 
@@ -66,7 +68,6 @@ int obb_meet(const obb *a, const obb *b);
 int union_meet(const ideal *a, const ideal *b);
 int ideal_ray(const ideal *g, const double p[3], const double d[3], long double *s,
               long double normal[3], bool *sharp);
-noctMesh *make_ell(void);
 noctWorld *new_world(int N, noctAccuracy accuracy);
 uint64_t random_bits(void);
 void random_scene(scene *s, int n, int N, noctAccuracy accuracy, noctMesh *ell);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Helpers shared by the Check suites: a seeded RNG, the whole-tree
- * validation walk and a mirror model of a tree's shape and data. They use
- * only the public API, so they check the library from the outside. */
+ * validation walk, a mirror model of a tree's shape and data, and a
+ * non-convex mesh. They use only the public API, so they check the
+ * library from the outside. */
 #ifndef NOCT_TESTS_TESTUTIL_H
 #define NOCT_TESTS_TESTUTIL_H
 
@@ -10,7 +11,9 @@
 
 #include <check.h>
 
+#include <noctree/mesh.h>
 #include <noctree/octree.h>
+#include <noctree/transform.h>
 
 /* An assertion for hot loops. Check records every *passing* ck_assert (a
  * write to its pipe), which dominates tests that check millions of facts;
@@ -26,10 +29,21 @@
  * the process exit status: EXIT_SUCCESS iff every test passed. */
 int run_suite(Suite *suite);
 
-/* splitmix64: small, seedable, identical on every platform. */
+/* splitmix64: small, seedable, identical on every platform. The tests'
+ * own copy, so that they do not depend on the library's. */
 uint64_t test_rand(uint64_t *state);
 /* Uniform integer in [0, n). */
 size_t test_rand_below(uint64_t *state, size_t n);
+/* Uniform double in [0, 1): the top 53 bits of test_rand(). */
+double test_uniform(uint64_t *state);
+/* A random unit quaternion: a uniform point of the 4-ball (away from its
+ * centre) scaled to length 1; draws from test_uniform(state). */
+void test_random_quat(uint64_t *state, noctQuat *q);
+
+/* An L-shaped prism: the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2) less
+ * (1,1), z from -1/2 to 1/2; non-convex, its faces convex polygons. Fails
+ * the running test unless the library makes it and finds it non-convex. */
+noctMesh *make_ell(void);
 
 /* Walk the subtree rooted at top and fail the running test unless:
  * parent and child links agree, each child's type is its slot, generation

@@ -20,10 +20,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include <noctree/scene.h>
 #include <noctree/world.h>
+
+#include "benchutil.h"
 
 typedef struct lib {
     const char *path;
@@ -36,19 +37,6 @@ typedef struct lib {
     size_t (*began)(const noctWorld *, const noctPair **);
     void (*destroy)(noctWorld *);
 } lib;
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
 
 /* Object pointers to function pointers: POSIX allows it for dlsym. */
 #define SYM(l, field, name)                                                       \
@@ -104,25 +92,27 @@ static int run(lib *ab, const char *spec, int steps_opt)
     for (int s = 0; s < steps && ok; ++s) {
         for (int turn = 0; turn < 2 && ok; ++turn) {
             const int i = (s + turn) % 2;
-            const double t0 = now();
+            const double t0 = tool_now();
             if (ab[i].step(world[i], &err) != NOCT_OK) {
                 fprintf(stderr, "bench-ab: %s step %d with %s: %s\n", spec, s, ab[i].path,
                         err.message);
                 ok = 0;
             }
-            t[i][s] = now() - t0;
+            t[i][s] = tool_now() - t0;
             const noctPair *p;
             begins[i] += ab[i].began(world[i], &p);
         }
         ratio[s] = t[1][s] / t[0][s];
     }
     if (ok) {
-        qsort(t[0], (size_t)steps, sizeof(double), cmp_double);
-        qsort(t[1], (size_t)steps, sizeof(double), cmp_double);
-        qsort(ratio, (size_t)steps, sizeof(double), cmp_double);
+        const size_t n = (size_t)steps;
+        tool_sort(t[0], n);
+        tool_sort(t[1], n);
+        tool_sort(ratio, n);
         printf("%-14s %6d %12.3f %12.3f %8.3f   %.3f-%.3f %10zu%s\n", spec, steps,
-               1e3 * t[0][steps / 2], 1e3 * t[1][steps / 2], ratio[steps / 2],
-               ratio[steps / 4], ratio[3 * steps / 4], begins[0],
+               1e3 * tool_rank(t[0], n, 1, 2), 1e3 * tool_rank(t[1], n, 1, 2),
+               tool_rank(ratio, n, 1, 2), tool_rank(ratio, n, 1, 4),
+               tool_rank(ratio, n, 3, 4), begins[0],
                begins[0] == begins[1] ? "" : "  EVENTS DIFFER");
         fflush(stdout);
         ok = begins[0] == begins[1];

@@ -17,26 +17,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+
+#include "benchutil.h"
 
 static uint64_t rng_state = 2026;
 
 static double urand(void)
 {
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
-
-static double now_ns(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+    return (double)(tool_rand(&rng_state) >> 11) * 0x1p-53;
 }
 
 static void die(const char *what, noctStatus st, const noctError *err)
@@ -122,12 +113,6 @@ static double bound_radius(const noctMesh *m)
     return sqrt(r);
 }
 
-static int cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
 int main(int argc, char **argv)
 {
     bool quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
@@ -150,12 +135,10 @@ int main(int argc, char **argv)
     };
     const size_t nscenes = sizeof scenes / sizeof *scenes;
     const int repeats = quick ? 1 : 5;
-    FILE *csv = fopen("bench-narrowphase.csv", "w");
-    if (csv == NULL) {
-        perror("bench-narrowphase: bench-narrowphase.csv");
+    FILE *csv = tool_open_csv("bench-narrowphase.csv", "scene,triangles,level,ns_per_pair,"
+                              "false_collisions,missed_collisions,pairs,gmp_fallbacks");
+    if (csv == NULL)
         return EXIT_FAILURE;
-    }
-    fprintf(csv, "scene,triangles,level,ns_per_pair,false_collisions,missed_collisions,pairs,gmp_fallbacks\n");
     printf("narrowphase: the cost of accuracy on near-contact pairs (median of %d)\n",
            repeats);
     printf("%-12s %6s %-7s %12s %9s %9s %7s %9s\n", "scene", "tris", "level",
@@ -185,7 +168,7 @@ int main(int argc, char **argv)
             size_t fp = 0, fn = 0;
             noctNarrowStats stats = {0};
             for (int r = 0; r < repeats; ++r) {
-                double t0 = now_ns();
+                double t0 = tool_now();
                 for (size_t i = 0; i < npairs; ++i) {
                     bool hit;
                     st = noctCollide(sc->a, ta, sc->b, tb[i], (noctAccuracy)level, &hit,
@@ -199,10 +182,10 @@ int main(int argc, char **argv)
                         fn += !hit && exact[i];
                     }
                 }
-                times[r] = (now_ns() - t0) / (double)npairs;
+                times[r] = 1e9 * (tool_now() - t0) / (double)npairs;
             }
-            qsort(times, (size_t)repeats, sizeof *times, cmp_double);
-            double ns = times[repeats / 2];
+            tool_sort(times, (size_t)repeats);
+            double ns = tool_rank(times, (size_t)repeats, 1, 2);
             const char *name = noctAccuracyName((noctAccuracy)level);
             printf("%-12s %6zu %-7s %12.0f %9zu %9zu %7zu %9llu\n", sc->name, tris, name,
                    ns, fp, fn, npairs, (unsigned long long)stats.exact_fallbacks);

@@ -18,10 +18,11 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 
 #include <noctree/neighbor.h>
 #include <noctree/octree.h>
+
+#include "benchutil.h"
 
 #ifdef NOCT_EFFICIENT
 #  define FLAVOUR "efficient"
@@ -33,21 +34,7 @@ static volatile uintptr_t sink;
 
 static double now_ns(void)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+    return 1e9 * tool_now();
 }
 
 /* Split breadth-first down to depth; returns the number of splits. The
@@ -87,10 +74,7 @@ static uint64_t rng_state = 42;
 
 static uint64_t rng(void)
 {
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
+    return tool_rand(&rng_state);
 }
 
 /* A random tree of depth 8: full to depth 3, then random leaves split. */
@@ -231,7 +215,7 @@ int main(int argc, char **argv)
     }
 
     for (int o = 0; o < NOPS; ++o) {
-        printf("%s,%s,%.2f,%zu\n", FLAVOUR, names[o], median(t[o], repeats),
+        printf("%s,%s,%.2f,%zu\n", FLAVOUR, names[o], tool_median(t[o], (size_t)repeats),
                ops[o]);
         free(t[o]);
     }

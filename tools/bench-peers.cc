@@ -79,7 +79,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cerrno>
 #include <cinttypes>
 #include <cstdint>
@@ -97,13 +96,14 @@
 #include <noctree/query.h>
 #include <noctree/world.h>
 
+#include "benchutil.h"
+
 namespace {
 
+// The clock and the statistics are the benchmark programs' (benchutil.h).
 double now()
 {
-    return std::chrono::duration<double>(
-               std::chrono::steady_clock::now().time_since_epoch())
-        .count();
+    return tool_now();
 }
 
 // ---- the scenes, from SCENES.md -------------------------------------------
@@ -300,10 +300,10 @@ struct Options {
 // Per-step times into a result.
 void summarize(std::vector<double> &t, Result &r)
 {
-    std::sort(t.begin(), t.end());
+    tool_sort(t.data(), t.size());
     r.steps = static_cast<int>(t.size());
-    r.median = t.empty() ? 0 : t[t.size() / 2];
-    r.p90 = t.empty() ? 0 : t[std::min(t.size() - 1, t.size() * 9 / 10)];
+    r.median = t.empty() ? 0 : tool_rank(t.data(), t.size(), 1, 2);
+    r.p90 = t.empty() ? 0 : tool_rank(t.data(), t.size(), 9, 10);
     r.ok = !t.empty();
 }
 
@@ -802,9 +802,7 @@ bool run_child(const char *spec, int lib, const Options &o, Result &r, long &pea
 
 double median_of(std::vector<double> v)
 {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    return tool_median(v.data(), v.size());
 }
 
 bool parse_int(const char *s, long lo, long hi, long *out)

@@ -35,24 +35,12 @@
 #include <sys/resource.h>
 #include <sys/time.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
+#include "benchutil.h"
 
 typedef struct result {
     double median, p90, setup;
@@ -74,13 +62,13 @@ static result run(const char *scene, int N, int steps, int max_exhaustive)
     }
     noctSceneDef(sc)->N = N;
     noctSceneDef(sc)->max_depth = N == NOCT_AUTO ? NOCT_AUTO : 8;
-    double t0 = now();
+    double t0 = tool_now();
     noctWorld *w;
     if (noctSceneBuild(sc, &w, &err) != NOCT_OK) {
         fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
         return r;
     }
-    r.setup = now() - t0;
+    r.setup = tool_now() - t0;
     r.objects = noctWorldObjectCount(w);
     if (N == NOCT_N_EXHAUSTIVE && r.objects > (size_t)max_exhaustive) {
         r.ok = 2;
@@ -90,18 +78,18 @@ static result run(const char *scene, int N, int steps, int max_exhaustive)
     }
     double *t = malloc((size_t)steps * sizeof *t);
     for (int s = 0; s < steps; ++s) {
-        double a = now();
+        double a = tool_now();
         if (noctWorldStep(w, &err) != NOCT_OK) {
             fprintf(stderr, "bench-world: %s: %s\n", scene, err.message);
             return r;
         }
-        t[s] = now() - a;
+        t[s] = tool_now() - a;
         const noctPair *p;
         r.begins += noctWorldBegan(w, &p);
     }
-    qsort(t, (size_t)steps, sizeof *t, cmp_double);
-    r.median = t[steps / 2];
-    r.p90 = t[(steps * 9) / 10 < steps ? (steps * 9) / 10 : steps - 1];
+    tool_sort(t, (size_t)steps);
+    r.median = tool_rank(t, (size_t)steps, 1, 2);
+    r.p90 = tool_rank(t, (size_t)steps, 9, 10);
     r.ok = 1;
     free(t);
     noctWorldDestroy(w);
@@ -171,7 +159,7 @@ static overlap_result overlap_run(int kind, size_t n, int N, int depth)
     if (kind == 2)
         n = k * k * k;
     const double zero[3] = {0, 0, 0};
-    double t0 = now();
+    double t0 = tool_now();
     for (size_t i = 0; i < n; ++i) {
         const double at[3] = {kind == 2 ? (double)(i % k) : 0.25,
                               kind == 2 ? (double)(i / k % k) : 0.25,
@@ -182,15 +170,15 @@ static overlap_result overlap_run(int kind, size_t n, int N, int depth)
             return r;
         }
     }
-    r.add_s = now() - t0;
+    r.add_s = tool_now() - t0;
     r.objects = n;
     if (kind > 0) {
-        t0 = now();
+        t0 = tool_now();
         if (noctWorldStep(w, &err) != NOCT_OK) {
             fprintf(stderr, "bench-world: step: %s\n", err.message);
             return r;
         }
-        r.step_s = now() - t0;
+        r.step_s = tool_now() - t0;
         const noctPair *p;
         r.pairs = noctWorldColliding(w, &p);
     }
@@ -253,18 +241,6 @@ static int overlap_bench(bool quick)
 }
 
 
-/* A CSV file for writing, its header line written; NULL (said why) if it
- * cannot be opened. */
-static FILE *open_csv(const char *name, const char *header)
-{
-    FILE *f = fopen(name, "w");
-    if (f == NULL)
-        perror(name);
-    else
-        fprintf(f, "%s\n", header);
-    return f;
-}
-
 /* ---- sweep: N and the depth over every family, the automatic choice marked -- */
 
 /* The sweep's families: a name and how its size spec is made for about n
@@ -325,37 +301,31 @@ static void sweep_child(const void *arg, void *out)
     }
     noctSceneDef(sc)->N = j->N;
     noctSceneDef(sc)->max_depth = j->depth;
-    double t0 = now();
+    double t0 = tool_now();
     if (noctSceneBuild(sc, &w, &err) != NOCT_OK) {
         fprintf(stderr, "bench-world: %s: %s\n", j->spec, err.message);
         return;
     }
-    r->setup = now() - t0;
+    r->setup = tool_now() - t0;
     r->objects = noctWorldObjectCount(w);
     double *t = malloc((size_t)j->steps * sizeof *t);
     for (int s = 0; s < j->steps; ++s) {
-        double a = now();
+        double a = tool_now();
         if (noctWorldStep(w, &err) != NOCT_OK) {
             fprintf(stderr, "bench-world: %s: %s\n", j->spec, err.message);
             return;
         }
-        t[s] = now() - a;
+        t[s] = tool_now() - a;
         const noctPair *p;
         r->begins += noctWorldBegan(w, &p);
     }
-    qsort(t, (size_t)j->steps, sizeof *t, cmp_double);
-    r->median = t[j->steps / 2];
+    tool_sort(t, (size_t)j->steps);
+    r->median = tool_rank(t, (size_t)j->steps, 1, 2);
     noctBroadphaseGetSettings(noctWorldBroadphase(w), &r->N, &r->depth);
     free(t);
     noctWorldDestroy(w);
     noctSceneDestroy(sc);
     r->ok = 1;
-}
-
-static double median_of(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 #define SWEEP_MAX_CONFIGS 16
@@ -377,8 +347,8 @@ static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, i
 {
     static const int sweep_N[] = {5, 10, 20, 30, 50, 80, 128};
     static const int sweep_depth[] = {6, 8, 10, 14};
-    FILE *csv = open_csv("bench-sweep.csv", "family,size,objects,setting,N,depth,steps,repeats,"
-                                            "median_s,setup_s,begins,peak_kib");
+    FILE *csv = tool_open_csv("bench-sweep.csv", "family,size,objects,setting,N,depth,steps,"
+                                                 "repeats,median_s,setup_s,begins,peak_kib");
     if (csv == NULL)
         return EXIT_FAILURE;
     printf("sweep: N and the maximum depth, each row the median of %d interleaved runs\n",
@@ -458,8 +428,8 @@ static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, i
             double m[SWEEP_MAX_CONFIGS], pk[SWEEP_MAX_CONFIGS];
             int best = 1;
             for (int j = 0; j < nj; ++j) {
-                m[j] = median_of(med[j], repeats);
-                pk[j] = median_of(peak[j], repeats);
+                m[j] = tool_median(med[j], (size_t)repeats);
+                pk[j] = tool_median(peak[j], (size_t)repeats);
                 if (j > 0 && m[j] < m[best])
                     best = j;
                 printf("%-16s %8zu %-14s %4d %5d %11.3f %9.2f %10.1f %9zu\n", base.spec,
@@ -588,9 +558,9 @@ int main(int argc, char **argv)
     if (quick)
         steps = 20;
     static const int Ns[] = {NOCT_N_EXHAUSTIVE, 5, 10, 30, 50, NOCT_AUTO};
-    FILE *csv = open_csv("bench-world.csv", "scene,objects,N,steps,median_s,p90_s,"
-                                            "ns_per_object_step,setup_s,begins,peak_kib,"
-                                            "exhaustive_ratio");
+    FILE *csv = tool_open_csv("bench-world.csv", "scene,objects,N,steps,median_s,p90_s,"
+                                                 "ns_per_object_step,setup_s,begins,peak_kib,"
+                                                 "exhaustive_ratio");
     if (csv == NULL)
         return EXIT_FAILURE;
     printf("collision world, %d steps per run, single thread\n", steps);

@@ -29,6 +29,7 @@
 
 #include <noctree.h>
 
+#include "benchutil.h"
 #include "toolutil.h"
 
 static const char usage[] =
@@ -72,10 +73,7 @@ static uint64_t rng_state = 0x6e6f637472656521u;
 
 static uint64_t rng_next(void)
 {
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
+    return tool_rand(&rng_state);
 }
 
 static size_t rng_below(size_t n)
@@ -92,20 +90,14 @@ static void shuffle(size_t *v, size_t n)
     }
 }
 
-static int cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
+/* The median of v[0 .. n), n at most 64, leaving v as it is. */
 static double median(const double *v, size_t n)
 {
     double t[64];
     if (n == 0 || n > 64)
         return NAN;
     memcpy(t, v, n * sizeof *t);
-    qsort(t, n, sizeof *t, cmp_double);
-    return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+    return tool_median(t, n);
 }
 
 /* Half the range, relative to the median. */
@@ -132,7 +124,7 @@ static void bootstrap_ratio(const double *a, const double *b, size_t n, double c
         }
         r[k] = median(ra, n) / median(rb, n);
     }
-    qsort(r, B, sizeof *r, cmp_double);
+    tool_sort(r, B);
     ci[0] = r[(int)(0.025 * B)];
     ci[1] = r[(int)(0.975 * B) - 1];
 }

@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include <noctree/world.h>
 
@@ -150,13 +149,6 @@ char *tool_with_extension(const char *path, const char *ext)
         strcpy(s + keep, ext);
     }
     return s;
-}
-
-double tool_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* A bar is drawn and its line not yet ended. */

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * What the command-line tools share: usage errors, number and option
- * parsing, a clock and the progress bar. Not part of the library.
+ * parsing, scene arguments and the progress bar (benchutil.h: the clock
+ * and the statistics). Not part of the library.
  */
 #ifndef NOCT_TOOLS_TOOLUTIL_H
 #define NOCT_TOOLS_TOOLUTIL_H
@@ -60,9 +61,6 @@ const char *tool_format_double(double x, char buf[32]);
  * starts the component; without one, EXT is added. A string from malloc,
  * or NULL when memory runs out. */
 char *tool_with_extension(const char *path, const char *ext);
-
-/* Seconds on a monotonic clock. */
-double tool_now(void);
 
 /* Draw "[####    ]  40% label" on stderr when it is a terminal and bars
  * are on; done == total ends the line. */
