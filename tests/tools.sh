@@ -134,4 +134,91 @@ check "octprint on a turned scene exits 0" [ $? -eq 0 ]
 check "octprint: the turned scene's 4 objects at step 10" \
     grep -q 'turned.scene, N = 2, max depth [0-9]* (auto), step 10: 4 objects' "$tmp/turned.txt"
 
+# ---- octprint --broadphase: a bare broadphase of a box file ---------------
+
+# Boxes 0 and 1 overlap on [0.5, 1]^3; box 2 is 3 away from both.
+cat > "$tmp/three.boxes" <<'BOXES'
+# lo_x lo_y lo_z hi_x hi_y hi_z
+0 0 0  1 1 1
+0.5 0.5 0.5  2 2 2   # overlaps the first
+
+5 5 5 6 6 6
+BOXES
+"$octprint" --broadphase "$tmp/three.boxes" > "$tmp/bp.txt" 2> "$tmp/err"
+check "octprint --broadphase exits 0" [ $? -eq 0 ]
+check "octprint --broadphase: nothing on stderr" [ ! -s "$tmp/err" ]
+check "octprint --broadphase: header names the file, the settings chosen and 3 boxes" \
+    grep -q "^# $tmp/three.boxes (broadphase), N = 128 (auto), max depth [0-9]* (auto): 3 boxes;" \
+    "$tmp/bp.txt"
+# N = 128 holds 3 boxes in the root: one leaf with all three.
+check "octprint --broadphase: the defaults' tree is one leaf" [ "$(wc -l < "$tmp/bp.txt")" -eq 2 ]
+check "octprint --broadphase: the root holds boxes 0 1 2" \
+    grep -q '^OMEGA 0: .*; objects 0 1 2$' "$tmp/bp.txt"
+# N = 1 splits the root: 1 + 8k nodes of which 1 + 7k leaves; box 2 alone
+# in its leaves (a cube that meets box 2 and another is 4 wide or more, and
+# holds two boxes at most a quarter of its size: it splits, far above the
+# maximum depth 6); boxes 0 and 1 together in the leaves of their common
+# cube [0.5, 1]^3, and either may be alone elsewhere.
+"$octprint" --N 1 --max-depth 6 --broadphase "$tmp/three.boxes" --dot "$tmp/bp.dot" \
+    --svg "$tmp/bp.svg" --slice z=0.75 > "$tmp/bp1.txt"
+check "octprint --broadphase --N 1 exits 0" [ $? -eq 0 ]
+check "octprint --broadphase --N 1: header" \
+    grep -q "^# $tmp/three.boxes (broadphase), N = 1, max depth 6: 3 boxes;" "$tmp/bp1.txt"
+nodes=$(($(wc -l < "$tmp/bp1.txt") - 1))
+leaves=$(awk 'NR > 1 { match($0, /^ */); d[NR] = RLENGTH } END {
+    for (i = 2; i <= NR; ++i) n += !(i < NR && d[i + 1] > d[i]); print n }' "$tmp/bp1.txt")
+full=$(grep -c '; objects' "$tmp/bp1.txt")
+check "octprint --broadphase --N 1: the root split ($nodes nodes)" [ "$nodes" -gt 1 ]
+check "octprint --broadphase --N 1: 1 + 8k nodes ($nodes)" [ $((nodes % 8)) -eq 1 ]
+check "octprint --broadphase --N 1: 1 + 7k leaves ($leaves of $nodes)" \
+    [ $((leaves - 1)) -eq $(((nodes - 1) / 8 * 7)) ]
+check "octprint --broadphase --N 1: box 2 in no leaf with another" \
+    [ "$(grep '; objects' "$tmp/bp1.txt" |
+         grep -cEv '; objects (0|1|0 1|1 0|2)$')" -eq 0 ]
+check "octprint --broadphase --N 1: box 2 in a leaf" grep -q '; objects 2$' "$tmp/bp1.txt"
+check "octprint --broadphase --N 1: boxes 0 and 1 in a leaf" \
+    grep -Eq '; objects (0 1|1 0)$' "$tmp/bp1.txt"
+check "octprint --broadphase: dot has one node per tree node" \
+    [ "$(grep -c '^  n[0-9]* \[label' "$tmp/bp.dot")" -eq "$nodes" ]
+check "octprint --broadphase: dot has a box per leaf ($full with boxes)" \
+    [ "$(grep -c 'shape=box' "$tmp/bp.dot")" -eq "$leaves" ]
+# z = 0.75 cuts boxes 0 and 1, not 2.
+check "octprint --broadphase: the slice draws boxes 0 and 1" \
+    [ "$(grep -o '<title>object [0-9]*' "$tmp/bp.svg" | tr '\n' ' ')" = \
+      "<title>object 0 <title>object 1 " ]
+# The same boxes as a world's box primitives make the same tree.
+cat > "$tmp/three.scene" <<'SCENE'
+mesh a box 0.5 0.5 0.5
+mesh b box 0.75 0.75 0.75
+object a 0.5 0.5 0.5
+object b 1.25 1.25 1.25
+object a 5.5 5.5 5.5
+SCENE
+"$octprint" --N 1 --max-depth 6 "$tmp/three.scene" | tail -n +2 > "$tmp/world1.txt"
+check "octprint --broadphase: the tree of a world of the same boxes" \
+    sh -c "tail -n +2 '$tmp/bp1.txt' | cmp -s - '$tmp/world1.txt'"
+check "octprint --broadphase -: standard input" \
+    sh -c "'$octprint' --N 1 --max-depth 6 --broadphase - < '$tmp/three.boxes' | tail -n +2 |
+           cmp -s - '$tmp/world1.txt'"
+# Bad box files: the file, the line and the problem, exit status 2.
+bad_boxes() { # NAME CONTENT PATTERN
+    printf "$2" > "$tmp/$1"
+    expect_prog "$octprint" 2 "^octprint: $tmp/$1$3" --broadphase "$tmp/$1"
+}
+bad_boxes short.boxes '0 0 0 1 1 1\n0 0 0 1 1\n' ':2: 5 numbers, want 6'
+bad_boxes long.boxes '0 0 0 1 1 1 1\n' ':1: more than 6 numbers'
+bad_boxes word.boxes '# ok\n0 0 0 1 one 1\n' ":2: 'one' is not a number"
+bad_boxes glued.boxes '0 0 0 1 1 1x\n' ":1: '1x' is not a number"
+bad_boxes nan.boxes '0 0 0 1 1 1\n\n0 0 NaN 1 1 1\n' ':3: .*NaN'
+bad_boxes inf.boxes '0 0 0 inf 1 1\n' ':1: .*infinite'
+bad_boxes range.boxes '0 0 0 1e999 1 1\n' ':1: .*out of range'
+bad_boxes inverted.boxes '0 0 0 1 1 1\n0 2 0 1 3 1\n0 3 0 1 1 1\n' ':3: inverted box: lo_y 3 > hi_y 1'
+bad_boxes far.boxes '0 0 0 1 1 1e300\n' ':1: .*beyond'
+bad_boxes empty.boxes '# no boxes\n\n' ': no boxes'
+expect_prog "$octprint" 2 "^octprint: $tmp/none.boxes: No such file" --broadphase "$tmp/none.boxes"
+expect_prog "$octprint" 2 '^octprint: --step needs a scene' --broadphase "$tmp/three.boxes" --step 1
+expect_prog "$octprint" 2 '^octprint: give a scene or --broadphase FILE, not both' \
+    --broadphase "$tmp/three.boxes" --scene planes:1
+expect_prog "$octprint" 2 'unknown option or missing value' --broadphase
+
 finish tools

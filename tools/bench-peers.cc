@@ -28,7 +28,10 @@
  * the same axis-aligned boxes (each body's world-space bounding box): the
  * bodies move and bounce, each library updates its broadphase and counts
  * the overlapping pairs, with no narrowphase and no response. Their pair
- * totals must agree.
+ * totals must agree. With --broadphase --disputed they run side by side in
+ * one process with an exact sweep over the boxes, and every pair that
+ * they do not all give is printed with its boxes and the reason (see
+ * run_disputed()).
  *
  * With --driven libnoctree runs twice on every scene, its runs taking
  * turns with the others: as always, with the world's built-in motion
@@ -62,9 +65,9 @@
  * with ours; Bullet's are printed beside them, with a line when they
  * differ (its tolerances decide touching boxes and grazing rays).
  *
- * Usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]] [--steps S]
- *                    [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE]
- *                    [SCENE...]
+ * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q]]
+ *                    [--steps S] [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST]
+ *                    [--csv FILE] [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
 #include <btBulletCollisionCommon.h>
@@ -738,6 +741,313 @@ Result run_bp_ode(Scene &s, const Options &o, bool sap, bool gas)
     return r;
 }
 
+// ---- the disputed pairs (--broadphase --disputed) ---------------------------
+//
+// Why the bare broadphases' pair totals differ: one process runs
+// libnoctree's broadphase, FCL's dynamic AABB tree and ODE's sweep and
+// prune on the same moving boxes as --broadphase does, and also finds the
+// overlapping pairs exactly: a sweep over the boxes sorted by their low x
+// that tests lo_a <= hi_b && lo_b <= hi_a on every axis, in the boxes' own
+// doubles (closed boxes: touching counts). Every pair that the four do not
+// all give is printed with both boxes, each library's answer and the
+// reason; at the end, each library's total and how many of its pairs were
+// wrong or missing, and whether FCL's and ODE's boxes (fcl::AABB,
+// dGeomGetAABB()) were bit for bit the boxes given to libnoctree.
+//
+// ODE's sweep and prune (0.16, collision_sapspace.cpp, BoxPruning) keeps
+// its sort axis (the first of dSAP_AXES_XYZ, x, for gas; y for the
+// planes) in single precision: each box's low end is stored as a float to
+// be radix-sorted, and the sweep compares it with the other box's high end
+// rounded to float too, so two boxes whose ends on that axis round to the
+// same float count as touching there. The other two axes it compares in
+// doubles. ode_sap_test() replays that test.
+
+// A box as its library holds it: lo[3], hi[3].
+struct Box6 {
+    double lo[3], hi[3];
+};
+
+Box6 body_box(const Body &b)
+{
+    double c[3], e[3];
+    world_box(b, c, e);
+    return {{c[0] - e[0], c[1] - e[1], c[2] - e[2]}, {c[0] + e[0], c[1] + e[1], c[2] + e[2]}};
+}
+
+bool boxes_overlap(const Box6 &a, const Box6 &b)
+{
+    for (int k = 0; k < 3; ++k)
+        if (!(a.lo[k] <= b.hi[k] && b.lo[k] <= a.hi[k]))
+            return false;
+    return true;
+}
+
+// ODE's test as its sweep and prune makes it: the sort axis in floats.
+bool ode_sap_test(const Box6 &a, const Box6 &b, int sort_axis)
+{
+    for (int k = 0; k < 3; ++k) {
+        const float alo = static_cast<float>(a.lo[k]), ahi = static_cast<float>(a.hi[k]);
+        const float blo = static_cast<float>(b.lo[k]), bhi = static_cast<float>(b.hi[k]);
+        const bool o = k == sort_axis ? alo <= bhi && blo <= ahi
+                                      : a.lo[k] <= b.hi[k] && b.lo[k] <= a.hi[k];
+        if (!o)
+            return false;
+    }
+    return true;
+}
+
+// The exact pairs: boxes sorted by low x (copied in that order, so that
+// the sweep reads memory in order), each against those after it whose low
+// x is within its high x, tested on every axis; sorted keys out.
+struct Sorted {
+    Box6 box;
+    uint32_t index;
+};
+
+void exact_pairs(const std::vector<Box6> &box, std::vector<Sorted> &sorted,
+                 std::vector<uint64_t> &out)
+{
+    out.clear();
+    sorted.resize(box.size());
+    for (size_t i = 0; i < box.size(); ++i)
+        sorted[i] = {box[i], static_cast<uint32_t>(i)};
+    std::sort(sorted.begin(), sorted.end(),
+              [](const Sorted &x, const Sorted &y) { return x.box.lo[0] < y.box.lo[0]; });
+    for (size_t i = 0; i < sorted.size(); ++i) {
+        const Box6 &a = sorted[i].box;
+        for (size_t j = i + 1; j < sorted.size() && sorted[j].box.lo[0] <= a.hi[0]; ++j)
+            if (boxes_overlap(a, sorted[j].box))
+                out.push_back(key(sorted[i].index, sorted[j].index));
+    }
+    std::sort(out.begin(), out.end());
+}
+
+bool noct_collect(void *context, noctProxyId, void *user_a, noctProxyId, void *user_b)
+{
+    static_cast<std::vector<uint64_t> *>(context)->push_back(
+        key(reinterpret_cast<uintptr_t>(user_a), reinterpret_cast<uintptr_t>(user_b)));
+    return true;
+}
+
+bool fcl_collect(fcl::CollisionObjectd *a, fcl::CollisionObjectd *b, void *data)
+{
+    static_cast<std::vector<uint64_t> *>(data)->push_back(
+        key(reinterpret_cast<uintptr_t>(a->getUserData()),
+            reinterpret_cast<uintptr_t>(b->getUserData())));
+    return false; // go on
+}
+
+void ode_collect(void *data, dGeomID a, dGeomID b)
+{
+    static_cast<std::vector<uint64_t> *>(data)->push_back(
+        key(reinterpret_cast<uintptr_t>(dGeomGetData(a)),
+            reinterpret_cast<uintptr_t>(dGeomGetData(b))));
+}
+
+// Why the libraries disagree on a pair: each axis's gap, and ODE's floats.
+void print_dispute(const char *spec, int step, uint64_t p, const Box6 &a, const Box6 &b,
+                   const bool has[4], int sort_axis)
+{
+    static const char *const name[4] = {"exact", "libnoctree", "fcl-dtree", "ode-sap"};
+    static const char axis[3] = {'x', 'y', 'z'};
+    const unsigned ia = static_cast<unsigned>(p >> 32), ib = static_cast<unsigned>(p);
+    std::printf("%s step %d: boxes %u and %u %s; given by", spec, step, ia, ib,
+                has[0] ? "overlap" : "are disjoint");
+    for (int l = 1; l < 4; ++l)
+        if (has[l])
+            std::printf(" %s", name[l]);
+    std::printf("; not by");
+    for (int l = 1; l < 4; ++l)
+        if (!has[l])
+            std::printf(" %s", name[l]);
+    std::putchar('\n');
+    for (const Box6 *q : {&a, &b})
+        std::printf("  box %u: lo %.17g %.17g %.17g  hi %.17g %.17g %.17g\n",
+                    q == &a ? ia : ib, q->lo[0], q->lo[1], q->lo[2], q->hi[0], q->hi[1],
+                    q->hi[2]);
+    for (int k = 0; k < 3; ++k) {
+        // The gap between the facing ends, the larger of the two: > 0
+        // apart, 0 touching, < 0 overlapping.
+        const double ga = b.lo[k] - a.hi[k], gb = a.lo[k] - b.hi[k];
+        const bool a_first = ga >= gb;
+        const double hi = a_first ? a.hi[k] : b.hi[k], lo = a_first ? b.lo[k] : a.lo[k];
+        const double gap = a_first ? ga : gb;
+        std::printf("  %c: hi of %u %.17g, lo of %u %.17g: %s %.3g", axis[k], a_first ? ia : ib,
+                    hi, a_first ? ib : ia, lo,
+                    gap > 0 ? "apart by" : gap == 0 ? "touching," : "overlapping by",
+                    gap > 0 ? gap : -gap);
+        if (k == sort_axis)
+            std::printf("; ODE's sort axis, in floats: %.9g and %.9g%s",
+                        static_cast<double>(static_cast<float>(hi)),
+                        static_cast<double>(static_cast<float>(lo)),
+                        gap > 0 && static_cast<float>(lo) <= static_cast<float>(hi)
+                            ? ", the same float: ODE calls them touching"
+                            : "");
+        std::putchar('\n');
+    }
+}
+
+bool run_disputed(const char *spec, const Options &o)
+{
+    bool gas;
+    long size;
+    if (!parse_scene(spec, &gas, &size))
+        return false;
+    Scene s = make_scene(gas, size);
+    const size_t n = s.body.size();
+    const int sort_axis = gas ? 0 : 1; // dSAP_AXES_XYZ or dSAP_AXES_YZX, as run_bp_ode()
+    std::vector<Box6> box(n);
+    for (size_t i = 0; i < n; ++i)
+        box[i] = body_box(s.body[i]);
+
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = o.N;
+    noctBroadphase *bp;
+    noctError err;
+    if (noctBroadphaseCreate(&def, &bp, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s\n", err.message);
+        return false;
+    }
+    std::vector<noctProxyId> id(n);
+    for (size_t i = 0; i < n; ++i)
+        if (noctBroadphaseAdd(bp, box[i].lo, box[i].hi, reinterpret_cast<void *>(i),
+                              NOCT_FILTER_ALL, NOCT_FILTER_ALL, &id[i], &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s\n", err.message);
+            noctBroadphaseDestroy(bp);
+            return false;
+        }
+
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
+    std::vector<fcl::CollisionObjectd *> raw;
+    double c[3], e[3];
+    for (size_t i = 0; i < n; ++i) {
+        world_box(s.body[i], c, e);
+        auto shape = std::make_shared<fcl::Boxd>(2 * e[0], 2 * e[1], 2 * e[2]);
+        obj.emplace_back(new fcl::CollisionObjectd(shape, fcl::Matrix3d::Identity(),
+                                                   fcl::Vector3d(c[0], c[1], c[2])));
+        obj.back()->setUserData(reinterpret_cast<void *>(i));
+        raw.push_back(obj.back().get());
+    }
+    fcl::DynamicAABBTreeCollisionManagerd mgr;
+    mgr.registerObjects(raw);
+    mgr.setup();
+
+    dInitODE2(0);
+    dSpaceID space = dSweepAndPruneSpaceCreate(nullptr, gas ? dSAP_AXES_XYZ : dSAP_AXES_YZX);
+    std::vector<dGeomID> geom;
+    for (size_t i = 0; i < n; ++i) {
+        world_box(s.body[i], c, e);
+        dGeomID g = dCreateBox(space, 2 * e[0], 2 * e[1], 2 * e[2]);
+        dGeomSetPosition(g, c[0], c[1], c[2]);
+        dGeomSetData(g, reinterpret_cast<void *>(i));
+        geom.push_back(g);
+    }
+
+    std::printf("bench-peers --broadphase --disputed: %s, %d steps: the pairs that libnoctree "
+                "(N = %s), FCL and\nODE's sweep and prune do not all give, against the exact "
+                "pairs (closed boxes in doubles)\n",
+                spec, o.steps, o.N == NOCT_AUTO ? "auto" : std::to_string(o.N).c_str());
+    // pairs[0] exact, then libnoctree, FCL, ODE.
+    std::vector<uint64_t> pairs[4];
+    std::vector<Sorted> sorted;
+    size_t total[4] = {}, extra[4] = {}, missed[4] = {}, replay_wrong = 0;
+    size_t fcl_box_differs = 0, ode_box_differs = 0, shown = 0;
+    const size_t show_max = 100;
+    bool ok = true;
+    for (int step = 1; step <= o.steps && ok; ++step) {
+        move_bodies(s);
+        for (size_t i = 0; i < n; ++i) {
+            box[i] = body_box(s.body[i]);
+            world_box(s.body[i], c, e);
+            if (noctBroadphaseMove(bp, id[i], box[i].lo, box[i].hi, &err) != NOCT_OK) {
+                std::fprintf(stderr, "bench-peers: %s\n", err.message);
+                ok = false;
+                break;
+            }
+            raw[i]->setTranslation(fcl::Vector3d(c[0], c[1], c[2]));
+            raw[i]->computeAABB();
+            dGeomSetPosition(geom[i], c[0], c[1], c[2]);
+        }
+        if (!ok || noctBroadphaseUpdatePairs(bp, &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s\n", err.message);
+            ok = false;
+            break;
+        }
+        for (std::vector<uint64_t> &v : pairs)
+            v.clear();
+        exact_pairs(box, sorted, pairs[0]);
+        noctBroadphaseForEachPair(bp, noct_collect, &pairs[1]);
+        mgr.update();
+        mgr.collide(&pairs[2], fcl_collect);
+        dSpaceCollide(space, &pairs[3], ode_collect);
+        for (int l = 0; l < 4; ++l)
+            total[l] += pairs[l].size(); // as --broadphase counts them
+        for (int l = 1; l < 4; ++l) {
+            std::sort(pairs[l].begin(), pairs[l].end());
+            // A pair given twice would be a wrong pair too.
+            const size_t before = pairs[l].size();
+            pairs[l].erase(std::unique(pairs[l].begin(), pairs[l].end()), pairs[l].end());
+            extra[l] += before - pairs[l].size();
+        }
+        // The boxes the peers hold, against ours, bit for bit.
+        for (size_t i = 0; i < n; ++i) {
+            const fcl::AABBd &fb = raw[i]->getAABB();
+            dReal ob[6];
+            dGeomGetAABB(geom[i], ob);
+            bool fd = false, od = false;
+            for (int k = 0; k < 3; ++k) {
+                fd = fd || fb.min_[k] != box[i].lo[k] || fb.max_[k] != box[i].hi[k];
+                od = od || ob[2 * k] != box[i].lo[k] || ob[2 * k + 1] != box[i].hi[k];
+            }
+            fcl_box_differs += fd;
+            ode_box_differs += od;
+        }
+        // Every pair that one of the four gives and another does not.
+        std::vector<uint64_t> all;
+        for (const std::vector<uint64_t> &v : pairs)
+            all.insert(all.end(), v.begin(), v.end());
+        std::sort(all.begin(), all.end());
+        for (size_t i = 0; i < all.size();) {
+            size_t j = i;
+            while (j < all.size() && all[j] == all[i])
+                ++j;
+            if (j - i < 4) { // not in all four lists
+                const uint64_t p = all[i];
+                const Box6 &a = box[p >> 32], &b = box[p & 0xffffffffu];
+                bool has[4];
+                for (int l = 0; l < 4; ++l)
+                    has[l] = std::binary_search(pairs[l].begin(), pairs[l].end(), p);
+                for (int l = 1; l < 4; ++l) {
+                    extra[l] += has[l] && !has[0];
+                    missed[l] += !has[l] && has[0];
+                }
+                replay_wrong += ode_sap_test(a, b, sort_axis) != has[3];
+                if (shown++ < show_max)
+                    print_dispute(spec, step, p, a, b, has, sort_axis);
+            }
+            i = j;
+        }
+    }
+    if (shown > show_max)
+        std::printf("(%zu more disputed pairs not shown)\n", shown - show_max);
+    static const char *const name[4] = {"exact", "libnoctree", "fcl-dtree", "ode-sap"};
+    std::printf("%s, %d steps: %zu disputed pairs; exact pairs %zu", spec, o.steps, shown,
+                total[0]);
+    for (int l = 1; l < 4; ++l)
+        std::printf("; %s %zu (%zu wrong, %zu missing)", name[l], total[l], extra[l], missed[l]);
+    std::printf("\n%s: ODE's test replayed (sort axis in floats, the others in doubles) "
+                "disagrees with ODE on %zu of the %zu disputed pairs\n",
+                spec, replay_wrong, shown);
+    std::printf("%s: boxes different from libnoctree's: FCL %zu, ODE %zu of %zu (%zu boxes, "
+                "%d steps)\n",
+                spec, fcl_box_differs, ode_box_differs, n * static_cast<size_t>(o.steps), n,
+                o.steps);
+    dSpaceDestroy(space);
+    dCloseODE();
+    noctBroadphaseDestroy(bp);
+    return ok && extra[1] == 0 && missed[1] == 0;
+}
+
 // The runs, in the order they take turns and are printed: libnoctree's
 // built-in motion first (every x is over it), the driven world next to it.
 enum { NOCTREE, DRIVEN, FCL_DTREE, ODE_SAP, ODE_HASH, NLIBS };
@@ -818,9 +1128,9 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 
 void usage(FILE *f)
 {
-    std::fputs("usage: bench-peers [--quick] [--broadphase | --driven | --queries [Q]]\n"
-               "                   [--steps S] [--repeats R]\n"
-               "                   [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
+    std::fputs("usage: bench-peers [--quick] [--broadphase [--disputed] | --driven |\n"
+               "                   --queries [Q]] [--steps S] [--repeats R] [--N N|auto]\n"
+               "                   [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
                "libnoctree,noct-driven,fcl-dtree,ode-sap,ode-hash (default\n"
@@ -830,6 +1140,11 @@ void usage(FILE *f)
                "--broadphase: the bare broadphases on the scenes' boxes, pairs of\n"
                "overlapping boxes only (no narrowphase, no response); the pairs\n"
                "column is their total over the steps, and must agree.\n"
+               "--broadphase --disputed: on each scene (default gas:100000), runs\n"
+               "libnoctree, fcl-dtree and ode-sap side by side in one process with\n"
+               "the exact pairs (closed boxes in doubles) and prints every pair they\n"
+               "do not all give, with both boxes and the reason; exit status 1 if\n"
+               "libnoctree's pairs are not the exact ones.\n"
                "--driven: also run noct-driven, libnoctree's world without its motion\n"
                "effect, driven by the program: it moves every object each step with\n"
                "noctWorldSetTransform() to the positions the built-in motion gives,\n"
@@ -1101,7 +1416,7 @@ int main(int argc, char **argv)
     Options o;
     std::vector<const char *> scenes;
     bool use[NLIBS] = {true, false, true, true, false};
-    bool quick = false, driven = false;
+    bool quick = false, driven = false, disputed = false;
     long queries = 0;
     const char *csv_path = nullptr;
     for (int i = 1; i < argc; ++i) {
@@ -1112,6 +1427,8 @@ int main(int argc, char **argv)
             quick = true;
         } else if (std::strcmp(a, "--broadphase") == 0) {
             o.broadphase = true;
+        } else if (std::strcmp(a, "--disputed") == 0) {
+            disputed = true;
         } else if (std::strcmp(a, "--driven") == 0) {
             driven = true;
         } else if (std::strcmp(a, "--queries") == 0) {
@@ -1173,6 +1490,19 @@ int main(int argc, char **argv)
             usage(stderr);
             return 2;
         }
+    }
+    if (disputed) {
+        if (!o.broadphase || driven || quick || queries > 0) {
+            std::fprintf(stderr, "bench-peers: --disputed goes with --broadphase only\n");
+            usage(stderr);
+            return 2;
+        }
+        if (scenes.empty())
+            scenes = {"gas:100000"};
+        bool all = true;
+        for (const char *spec : scenes)
+            all = run_disputed(spec, o) && all;
+        return all ? 0 : 1;
     }
     const std::string n_name = o.N == NOCT_AUTO ? std::string("auto") : std::to_string(o.N);
     if (queries > 0) {

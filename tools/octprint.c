@@ -5,10 +5,12 @@
  * octPrint (child type, generation, the node's cube and a leaf's objects),
  * and on request Graphviz dot of the tree and an SVG slice of the cells
  * with the objects' boxes drawn in (as the report's Figures 5 to 7).
- * See octprint(1).
+ * With --broadphase it does the same for a bare broadphase (broadphase.h)
+ * holding the boxes of a box file, with no world. See octprint(1).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,9 +22,14 @@
 static const char usage[] =
     "usage: octprint [OPTIONS] SCENE-FILE\n"
     "       octprint [OPTIONS] --scene planes:K|gas:N\n"
-    "Print a scene's N-objects octree after a number of steps.\n"
+    "       octprint [OPTIONS] --broadphase BOX-FILE\n"
+    "Print a scene's N-objects octree after a number of steps, or that of a\n"
+    "bare broadphase holding the boxes of a box file.\n"
     "\n"
     "  --scene FAMILY     a built-in scene: planes:K or gas:N\n"
+    "  --broadphase FILE  a bare broadphase (no world) of the file's boxes: one\n"
+    "                     box a line, 'lo_x lo_y lo_z hi_x hi_y hi_z', '#' starts\n"
+    "                     a comment; '-' reads standard input; no --step\n"
     "  --step S           run S steps first (default 0: the tree as built)\n"
     "  --N N|big|auto     most objects per octree leaf\n"
     "  --max-depth D|auto deepest octree level, 1 to 40\n"
@@ -64,11 +71,11 @@ static bool close_checked(FILE *f, const char *path)
 
 /* ---- Graphviz dot ----------------------------------------------------------- */
 
-static void dot_node(FILE *f, const noctWorld *w, octNode *n, unsigned long *next,
+static void dot_node(FILE *f, const noctBroadphase *bp, octNode *n, unsigned long *next,
                      unsigned long parent)
 {
     unsigned long me = (*next)++;
-    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
+    size_t count = noctBroadphaseCell(bp, n, NULL, NULL, NULL, 0);
     if (octIsSplit(n))
         fprintf(f, "  n%lu [label=\"%s\\ng%d\"];\n", me, octDirToStr(octChildType(n)),
                 octGeneration(n));
@@ -81,17 +88,17 @@ static void dot_node(FILE *f, const noctWorld *w, octNode *n, unsigned long *nex
         fprintf(f, "  n%lu -> n%lu;\n", parent, me);
     if (octIsSplit(n))
         for (int i = 0; i < 8; ++i)
-            dot_node(f, w, octChild(n, (octDirection)(OCT_LDB + i)), next, me);
+            dot_node(f, bp, octChild(n, (octDirection)(OCT_LDB + i)), next, me);
 }
 
-static bool write_dot(const char *path, const noctWorld *w, const char *title)
+static bool write_dot(const char *path, const noctBroadphase *bp, const char *title)
 {
     FILE *f = open_or_stdout(path);
     if (f == NULL)
         return false;
     unsigned long next = 0;
     fprintf(f, "digraph octree {\n  label=\"%s\";\n  node [fontsize=10];\n", title);
-    dot_node(f, w, noctWorldRoot(w), &next, 0);
+    dot_node(f, bp, noctBroadphaseRoot(bp), &next, 0);
     fprintf(f, "}\n");
     return close_checked(f, path);
 }
@@ -115,15 +122,15 @@ static double sy(const slice *s, double y)
 }
 
 /* Leaves cut by the plane, as rectangles. */
-static void svg_cells(FILE *f, const noctWorld *w, octNode *n, const slice *s)
+static void svg_cells(FILE *f, const noctBroadphase *bp, octNode *n, const slice *s)
 {
     double lo[3], size;
-    size_t count = noctWorldCell(w, n, lo, &size, NULL, 0);
+    size_t count = noctBroadphaseCell(bp, n, lo, &size, NULL, 0);
     if (s->at < lo[s->axis] || s->at > lo[s->axis] + size)
         return;
     if (octIsSplit(n)) {
         for (int i = 0; i < 8; ++i)
-            svg_cells(f, w, octChild(n, (octDirection)(OCT_LDB + i)), s);
+            svg_cells(f, bp, octChild(n, (octDirection)(OCT_LDB + i)), s);
         return;
     }
     fprintf(f, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.3f\" height=\"%.3f\" fill=\"%s\" "
@@ -134,9 +141,9 @@ static void svg_cells(FILE *f, const noctWorld *w, octNode *n, const slice *s)
             count);
 }
 
-/* An object of the tree with its box. */
+/* An object (a proxy) of the tree with its box. */
 typedef struct obj_box {
-    noctObjectId id;
+    noctProxyId id;
     double lo[3], hi[3];
 } obj_box;
 
@@ -147,15 +154,15 @@ typedef struct obj_list {
 } obj_list;
 
 /* Append the objects of the leaves below n (with repeats). */
-static void gather_objects(const noctWorld *w, octNode *n, obj_list *l)
+static void gather_objects(const noctBroadphase *bp, octNode *n, obj_list *l)
 {
     if (octIsSplit(n)) {
         for (int i = 0; i < 8; ++i)
-            gather_objects(w, octChild(n, (octDirection)(OCT_LDB + i)), l);
+            gather_objects(bp, octChild(n, (octDirection)(OCT_LDB + i)), l);
         return;
     }
-    size_t count = noctWorldCell(w, n, NULL, NULL, NULL, 0);
-    noctObjectId *ids = malloc((count + 1) * sizeof *ids);
+    size_t count = noctBroadphaseCell(bp, n, NULL, NULL, NULL, 0);
+    noctProxyId *ids = malloc((count + 1) * sizeof *ids);
     if (l->n + count > l->cap) {
         size_t cap = 2 * (l->n + count) + 16;
         obj_box *v = realloc(l->v, cap * sizeof *v);
@@ -169,7 +176,7 @@ static void gather_objects(const noctWorld *w, octNode *n, obj_list *l)
         free(ids);
         return;
     }
-    noctWorldCell(w, n, NULL, NULL, ids, count);
+    noctBroadphaseCell(bp, n, NULL, NULL, ids, count);
     for (size_t i = 0; i < count; ++i)
         l->v[l->n++].id = ids[i];
     free(ids);
@@ -182,10 +189,10 @@ static int cmp_obj(const void *x, const void *y)
 }
 
 /* Every object of the tree once, with its box; false if out of memory. */
-static bool tree_objects(const noctWorld *w, obj_list *l)
+static bool tree_objects(const noctBroadphase *bp, obj_list *l)
 {
     *l = (obj_list){0};
-    gather_objects(w, noctWorldRoot(w), l);
+    gather_objects(bp, noctBroadphaseRoot(bp), l);
     if (l->failed)
         return false;
     if (l->n > 0)
@@ -193,20 +200,21 @@ static bool tree_objects(const noctWorld *w, obj_list *l)
     size_t m = 0;
     for (size_t i = 0; i < l->n; ++i)
         if ((m == 0 || l->v[m - 1].id.index != l->v[i].id.index) &&
-            noctWorldObjectBox(w, l->v[i].id, l->v[i].lo, l->v[i].hi) == NOCT_OK)
+            noctBroadphaseProxy(bp, l->v[i].id, l->v[i].lo, l->v[i].hi, NULL, NULL, NULL) ==
+                NOCT_OK)
             l->v[m++] = l->v[i];
     l->n = m;
     return true;
 }
 
-static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
+static bool write_svg(const char *path, const noctBroadphase *bp, int axis, double at,
                       bool at_given, const char *title)
 {
     static const char *names = "xyz";
     double lo[3], size, olo[3] = {1e308, 1e308, 1e308}, ohi[3] = {-1e308, -1e308, -1e308};
-    noctWorldCell(w, noctWorldRoot(w), lo, &size, NULL, 0);
+    noctBroadphaseCell(bp, noctBroadphaseRoot(bp), lo, &size, NULL, 0);
     obj_list objs;
-    if (!tree_objects(w, &objs)) {
+    if (!tree_objects(bp, &objs)) {
         free(objs.v);
         tool_error("out of memory");
         return false;
@@ -244,7 +252,7 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
                "<rect width=\"800\" height=\"860\" fill=\"white\"/>\n"
                "<clipPath id=\"view\"><rect x=\"20\" y=\"20\" width=\"760\" "
                "height=\"760\"/></clipPath>\n<g clip-path=\"url(#view)\">\n");
-    svg_cells(f, w, noctWorldRoot(w), &s);
+    svg_cells(f, bp, noctBroadphaseRoot(bp), &s);
     /* The object boxes the plane cuts. */
     for (size_t i = 0; i < objs.n; ++i) {
         const obj_box *o = &objs.v[i];
@@ -264,15 +272,106 @@ static bool write_svg(const char *path, const noctWorld *w, int axis, double at,
     return close_checked(f, path);
 }
 
+/* ---- a bare broadphase from a box file (--broadphase) ------------------------ */
+
+/*
+ * Add the boxes of a box file to bp: one box a line, "lo_x lo_y lo_z hi_x
+ * hi_y hi_z" (closed; lo <= hi on every axis), '#' to the end of a line a
+ * comment, blank lines skipped; "-" reads standard input. Box k (from 0,
+ * in the file's order) is proxy k of the new broadphase. Returns 0, or 2
+ * after printing "FILE:LINE: problem" (or "FILE: problem").
+ */
+static int read_boxes(const char *path, noctBroadphase *bp, size_t *count)
+{
+    static const char axes[] = "xyz";
+    const char *name = strcmp(path, "-") == 0 ? "(stdin)" : path;
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
+    if (f == NULL) {
+        tool_error("%s: %s", name, strerror(errno));
+        return 2;
+    }
+    char *line = NULL;
+    size_t cap = 0;
+    long lineno = 0;
+    int status = 0;
+    *count = 0;
+    while (status == 0 && getline(&line, &cap, f) >= 0) {
+        ++lineno;
+        char *hash = strchr(line, '#');
+        if (hash != NULL)
+            *hash = '\0';
+        double v[6];
+        int n = 0;
+        char *save = NULL;
+        for (char *tok = strtok_r(line, " \t\r\n\v\f", &save); tok != NULL && status == 0;
+             tok = strtok_r(NULL, " \t\r\n\v\f", &save)) {
+            char *end;
+            errno = 0;
+            double x = strtod(tok, &end);
+            if (n == 6) {
+                tool_error("%s:%ld: more than 6 numbers (lo_x lo_y lo_z hi_x hi_y hi_z)", name,
+                           lineno);
+                status = 2;
+            } else if (end == tok || *end != '\0') {
+                tool_error("%s:%ld: '%s' is not a number", name, lineno, tok);
+                status = 2;
+            } else if (isnan(x)) {
+                tool_error("%s:%ld: '%s': a coordinate is not a number (NaN)", name, lineno, tok);
+                status = 2;
+            } else if (isinf(x)) {
+                tool_error("%s:%ld: '%s': a coordinate is infinite or out of range", name,
+                           lineno, tok);
+                status = 2;
+            } else {
+                v[n++] = x;
+            }
+        }
+        if (status != 0 || n == 0)
+            continue;
+        if (n < 6) {
+            tool_error("%s:%ld: %d number%s, want 6 (lo_x lo_y lo_z hi_x hi_y hi_z)", name,
+                       lineno, n, n == 1 ? "" : "s");
+            status = 2;
+            continue;
+        }
+        for (int k = 0; k < 3 && status == 0; ++k)
+            if (v[k] > v[k + 3]) {
+                tool_error("%s:%ld: inverted box: lo_%c %.17g > hi_%c %.17g", name, lineno,
+                           axes[k], v[k], axes[k], v[k + 3]);
+                status = 2;
+            }
+        noctProxyId id;
+        noctError err;
+        if (status == 0 && noctBroadphaseAdd(bp, v, v + 3, NULL, NOCT_FILTER_ALL,
+                                             NOCT_FILTER_ALL, &id, &err) != NOCT_OK) {
+            tool_error("%s:%ld: %s", name, lineno, err.message);
+            status = 2;
+        }
+        *count += status == 0;
+    }
+    if (status == 0 && ferror(f)) {
+        tool_error("%s: read error", name);
+        status = 2;
+    }
+    if (status == 0 && *count == 0) {
+        tool_error("%s: no boxes", name);
+        status = 2;
+    }
+    free(line);
+    if (f != stdin)
+        fclose(f);
+    return status;
+}
+
 /* ---- main ------------------------------------------------------------------------- */
 
 int main(int argc, char **argv)
 {
     tool_name = "octprint";
     tool_scene_args sa = {0};
-    const char *dot = NULL, *svg = NULL, *opt_slice = NULL;
+    const char *dot = NULL, *svg = NULL, *opt_slice = NULL, *boxes = NULL;
     long steps = 0;
-    bool text = true;
+    bool text = true, steps_given = false;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         bool has = i + 1 < argc;
@@ -290,9 +389,14 @@ int main(int argc, char **argv)
             svg = argv[++i];
         } else if (strcmp(a, "--slice") == 0 && has) {
             opt_slice = argv[++i];
+        } else if (strcmp(a, "--broadphase") == 0 && has) {
+            if (boxes != NULL)
+                return tool_usage_error("more than one --broadphase file: '%s'", argv[i + 1]);
+            boxes = argv[++i];
         } else if (strcmp(a, "--step") == 0 && has) {
             if (!tool_parse_long(argv[++i], 0, 10000000, &steps))
                 return tool_usage_error("--step must be 0 to 10000000, not '%s'", argv[i]);
+            steps_given = true;
         } else {
             int took = tool_scene_arg(&sa, argc, argv, &i);
             if (took < 0)
@@ -312,47 +416,90 @@ int main(int argc, char **argv)
     }
     if (dot && svg && strcmp(dot, "-") == 0 && strcmp(svg, "-") == 0)
         return tool_usage_error("--dot and --svg cannot both write to stdout");
+    if (boxes != NULL && (sa.family != NULL || sa.file != NULL))
+        return tool_usage_error("give a scene or --broadphase FILE, not both");
+    if (boxes != NULL && steps_given)
+        return tool_usage_error("--step needs a scene: a bare broadphase does not move");
 
-    noctScene *scene;
+    noctScene *scene = NULL;
+    noctWorld *w = NULL;
+    noctBroadphase *own = NULL; /* the bare broadphase of --broadphase */
+    const noctBroadphase *bp;
     noctError err;
-    int bad = tool_scene_load(&sa, &scene);
-    if (bad)
-        return bad;
-    noctWorldDef *def = noctSceneDef(scene);
-    noctWorld *w;
-    if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
-        tool_error("%s", err.message);
-        noctSceneDestroy(scene);
-        return 2;
-    }
     int status = 0;
-    for (long s = 1; s <= steps && status == 0; ++s)
-        if (noctWorldStep(w, &err) != NOCT_OK) {
-            tool_error("step %ld: %s", s, err.message);
-            status = 1;
+    size_t objects;
+    const char *source;
+    bool auto_N, auto_depth;
+    if (boxes != NULL) {
+        noctBroadphaseDef bdef = noctDefaultBroadphaseDef();
+        if (sa.set_N)
+            bdef.N = sa.N;
+        if (sa.set_depth)
+            bdef.max_depth = sa.depth;
+        if (noctBroadphaseCreate(&bdef, &own, &err) != NOCT_OK) {
+            tool_error("%s", err.message);
+            return 2;
         }
-    /* the settings in force, and whether the world chose them */
+        int bad = read_boxes(boxes, own, &objects);
+        if (bad) {
+            noctBroadphaseDestroy(own);
+            return bad;
+        }
+        bp = own;
+        source = strcmp(boxes, "-") == 0 ? "(stdin)" : boxes;
+        auto_N = bdef.N == NOCT_AUTO;
+        auto_depth = bdef.max_depth == NOCT_AUTO;
+    } else {
+        int bad = tool_scene_load(&sa, &scene);
+        if (bad)
+            return bad;
+        noctWorldDef *def = noctSceneDef(scene);
+        if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
+            tool_error("%s", err.message);
+            noctSceneDestroy(scene);
+            return 2;
+        }
+        for (long s = 1; s <= steps && status == 0; ++s)
+            if (noctWorldStep(w, &err) != NOCT_OK) {
+                tool_error("step %ld: %s", s, err.message);
+                status = 1;
+            }
+        bp = noctWorldBroadphase(w);
+        objects = noctWorldObjectCount(w);
+        source = sa.family ? sa.family : sa.file;
+        auto_N = def->N == NOCT_AUTO;
+        auto_depth = def->max_depth == NOCT_AUTO;
+    }
+    /* the settings in force, and whether the world or broadphase chose them */
     int N, depth;
-    noctBroadphaseGetSettings(noctWorldBroadphase(w), &N, &depth);
-    char title[256], nb[16];
+    noctBroadphaseGetSettings(bp, &N, &depth);
+    char title[256], nb[16], when[32] = "";
     snprintf(nb, sizeof nb, "%d", N);
-    snprintf(title, sizeof title, "%s, N = %s%s, max depth %d%s, step %ld",
-             sa.family ? sa.family : sa.file, N == NOCT_N_EXHAUSTIVE ? "big" : nb,
-             def->N == NOCT_AUTO ? " (auto)" : "", depth,
-             def->max_depth == NOCT_AUTO ? " (auto)" : "", steps);
+    if (w != NULL)
+        snprintf(when, sizeof when, ", step %ld", steps);
+    snprintf(title, sizeof title, "%s%s, N = %s%s, max depth %d%s%s", source,
+             w != NULL ? "" : " (broadphase)", N == NOCT_N_EXHAUSTIVE ? "big" : nb,
+             auto_N ? " (auto)" : "", depth, auto_depth ? " (auto)" : "", when);
     if (status == 0 && text) {
-        printf("# %s: %zu objects; each line: child type, generation: cube (low corner, "
-               "edge) and a leaf's objects\n", title, noctWorldObjectCount(w));
-        if (!octPrint(noctWorldRoot(w), noctWorldPrintCell, stdout) || fflush(stdout) != 0) {
+        if (w != NULL)
+            printf("# %s: %zu objects; each line: child type, generation: cube (low corner, "
+                   "edge) and a leaf's objects\n", title, objects);
+        else
+            printf("# %s: %zu boxes; each line: child type, generation: cube (low corner, "
+                   "edge) and a leaf's objects (boxes, from 0 in the file's order)\n",
+                   title, objects);
+        if (!octPrint(noctBroadphaseRoot(bp), noctBroadphasePrintCell, stdout) ||
+            fflush(stdout) != 0) {
             tool_error("write error on stdout");
             status = 1;
         }
     }
-    if (status == 0 && dot && !write_dot(dot, w, title))
+    if (status == 0 && dot && !write_dot(dot, bp, title))
         status = 1;
-    if (status == 0 && svg && !write_svg(svg, w, axis, at, opt_slice != NULL, title))
+    if (status == 0 && svg && !write_svg(svg, bp, axis, at, opt_slice != NULL, title))
         status = 1;
     noctWorldDestroy(w);
     noctSceneDestroy(scene);
+    noctBroadphaseDestroy(own);
     return status;
 }
