@@ -13,12 +13,14 @@ noctree_sources = \
 	lib/broadphase_maintain.c \
 	lib/broadphase_pairs.c \
 	lib/broadphase_query.c \
+	lib/box_form.c \
 	lib/broadphase_tree.c \
 	lib/bvh.c lib/bvh.h \
 	lib/clock.c \
 	lib/direction.c \
 	lib/families.c lib/families_internal.h \
 	lib/mesh.c \
+	lib/mesh_box.c \
 	lib/mesh_internal.h \
 	lib/meshio.c \
 	lib/narrowphase.c \
@@ -31,6 +33,7 @@ noctree_sources = \
 	lib/predicates.h \
 	lib/scene.c \
 	lib/scene_internal.h \
+	lib/scene_records.c \
 	lib/scene_write.c \
 	lib/status.c \
 	lib/transform.c \

@@ -26,10 +26,6 @@
 /* The enclosed volume must exceed this fraction of the bounding box's
  * (times 6: the sum of the fan's determinants is 6 times the volume). */
 #define VOLUME_TOLERANCE 1e-12
-/* A built-in box's smallest half-extent is at least this fraction of its
- * largest: a rectangle a by b >= 2^-29 a has corners that turn by
- * ab >= 1.8e-9 (a^2 + b^2), well over the polygon tolerance. */
-#define BOX_MIN_RATIO 0x1p-29
 
 void noctMeshDestroy(noctMesh *mesh)
 {
@@ -73,70 +69,7 @@ bool noctMeshIsConvex(const noctMesh *mesh)
     return mesh->convex;
 }
 
-/* ---- small vector helpers -------------------------------------------- */
-
-
-/* ---- scaling -------------------------------------------------------------- */
-
-/*
- * The checks compute on differences of coordinates, which a translation
- * that keeps every coordinate exact leaves unchanged, multiplied by the
- * power of two 2^-e that brings the largest to [1/2, 1). Their products
- * of two or three then neither overflow nor underflow where it matters,
- * whatever the mesh's size and place, and so the checks' rounding is
- * relative to the polygon's or the mesh's own size. The scaling is exact
- * except for parts under 2^-1022 of the largest, far below any tolerance.
- */
-typedef struct scaler {
-    double s0, s1; /* s0 s1 = 2^-e, each a normal power of two */
-    int e;
-} scaler;
-
-/* 2^k, for k in [-1022, 1023]. */
-static double pow2(int k)
-{
-    uint64_t bits = (uint64_t)(k + 1023) << 52;
-    double x;
-    memcpy(&x, &bits, sizeof x);
-    return x;
-}
-
-/* The scaler for magnitudes up to m, finite and positive. A subnormal m
- * needs a factor past the doubles (up to 2^1073), hence two. */
-static scaler scaler_for(double m)
-{
-    scaler s;
-    frexp(m, &s.e); /* m = f 2^e, f in [1/2, 1), e in [-1073, 1024] */
-    int k = -s.e, k0 = k / 2;
-    s.s0 = pow2(k0);
-    s.s1 = pow2(k - k0);
-    return s;
-}
-
-static inline double scaled(const scaler *s, double x)
-{
-    return x * s->s0 * s->s1;
-}
-
-static double max_abs3(const double a[3])
-{
-    return noct_max(fabs(a[0]), noct_max(fabs(a[1]), fabs(a[2])));
-}
-
-/* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
-static void unit3(const double d[3], double u[3])
-{
-    double m = max_abs3(d);
-    if (!(m > 0)) {
-        u[0] = u[1] = u[2] = 0;
-        return;
-    }
-    scaler s = scaler_for(m);
-    double x[3] = {scaled(&s, d[0]), scaled(&s, d[1]), scaled(&s, d[2])};
-    double len = noct_norm3(x); /* in [1/2, 2] */
-    for (int k = 0; k < 3; ++k)
-        u[k] = x[k] / len;
-}
+/* ---- scaling (vec3.h) --------------------------------------------------- */
 
 /* The unit normal (p1 - p0) x (p2 - p0) / |...|, or 0 if the triangle has
  * none, from the scaled edge vectors: independent of its size and place. */
@@ -146,29 +79,29 @@ static void unit_normal(const double p0[3], const double p1[3], const double p2[
     double a[3], b[3], c[3];
     noct_sub3(p1, p0, a);
     noct_sub3(p2, p0, b);
-    double m = noct_max(max_abs3(a), max_abs3(b));
+    double m = noct_max(noct_max_abs3(a), noct_max_abs3(b));
     if (!(m > 0)) {
         n[0] = n[1] = n[2] = 0;
         return;
     }
-    scaler s = scaler_for(m);
+    noct_scaler s = noct_scaler_for(m);
     for (int k = 0; k < 3; ++k) {
-        a[k] = scaled(&s, a[k]);
-        b[k] = scaled(&s, b[k]);
+        a[k] = noct_scaled(&s, a[k]);
+        b[k] = noct_scaled(&s, b[k]);
     }
     noct_cross3(a, b, c);
-    unit3(c, n);
+    noct_unit3(c, n);
 }
 
 /* ---- polygon checks ---------------------------------------------------- */
 
 /* Corner i of a polygon relative to its corner 0, scaled. */
-static void corner_at(const double *v, const uint32_t *idx, uint32_t i, const scaler *s,
+static void corner_at(const double *v, const uint32_t *idx, uint32_t i, const noct_scaler *s,
                       double out[3])
 {
     const double *p = &v[3 * idx[i]], *o = &v[3 * idx[0]];
     for (int k = 0; k < 3; ++k)
-        out[k] = scaled(s, p[k] - o[k]);
+        out[k] = noct_scaled(s, p[k] - o[k]);
 }
 
 /*
@@ -198,7 +131,7 @@ static noctStatus check_polygon(const double *v, const uint32_t *idx,
     if (!(m > 0))
         return noct_fail(err, NOCT_ERR_DEGENERATE, (long)poly, 0,
                          "polygon %zu has no area (its corners coincide)", poly);
-    const scaler s = scaler_for(m);
+    const noct_scaler s = noct_scaler_for(m);
     double normal[3] = {0, 0, 0}, diam2 = 0;
     if (n == 3) {
         double a[3], b[3], d[3];
@@ -408,7 +341,7 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         if (sat && noct_dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
             double d[3], u[3];
             noct_sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
-            unit3(d, u);
+            noct_unit3(d, u);
             sat = add_direction(sat_edge, &m->nsat_edges, u);
         }
     }
@@ -460,7 +393,7 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
     if (!m->convex && m->nv > HULL_MIN_VERTICES) {
         /* qhull's tolerances follow the magnitude of the coordinates it
          * is given: it gets the vertices relative to the mesh's least
-         * corner and scaled to its size (see scaler), so that the hull
+         * corner and scaled to its size (see noct_scaler), so that the hull
          * depends on neither the mesh's place nor its size. */
         double *rel = malloc(3 * m->nv * sizeof *rel);
         if (rel == NULL)
@@ -476,10 +409,10 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
             double emax = 0;
             for (int k = 0; k < 3; ++k)
                 emax = noct_max(emax, m->hi[k] - m->lo[k]);
-            const scaler sc = scaler_for(emax);
+            const noct_scaler sc = noct_scaler_for(emax);
             for (size_t i = 0; i < m->nv; ++i)
                 for (int k = 0; k < 3; ++k)
-                    rel[3 * i + k] = scaled(&sc, m->v[3 * i + k] - m->lo[k]);
+                    rel[3 * i + k] = noct_scaled(&sc, m->v[3 * i + k] - m->lo[k]);
             qhT qh_storage, *qh = &qh_storage;
             char cmd[] = "qhull";
             qh_zero(qh, quiet);
@@ -531,281 +464,6 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
     }
     return NOCT_OK;
 }
-
-/* ---- box form --------------------------------------------------------------- */
-
-/*
- * Describe a mesh of 8 vertices with 3 face and 3 edge directions as a
- * parallelepiped (mesh_internal.h), if its vertices are the 8 corners
- * along its edge directions within a tiny deviation. Only a description
- * the filter can trust is kept: dev bounds the exact deviation of every
- * vertex coordinate from its corner, the rounding of its computation
- * included (3 additions and a difference of magnitudes at most S: well
- * under 8 half-ulps of S).
- */
-/* The least float at or above x (x >= 0; +inf past the floats). */
-static float float_above(double x)
-{
-    float f = (float)x;
-    return (double)f < x ? nextafterf(f, INFINITY) : f;
-}
-
-/* The box form of 8 vertices v (and its dual, if every one of the nt
- * triangles tri lies on a face of the ideal box), given three unit edge
- * directions d: see box_form and box_dual. */
-static void box_form_of(const double *v, const double *const d[3], const uint32_t *tri,
-                        size_t nt, box_form *b, bool *has_box, box_dual *x, bool *has_dual)
-{
-    *has_box = *has_dual = false;
-    double c[3] = {0, 0, 0};
-    for (size_t i = 0; i < 8; ++i)
-        for (int k = 0; k < 3; ++k)
-            c[k] += v[3 * i + k] / 8;
-    double dual[3][3]; /* dual[i].d[j] = (i == j) * det */
-    noct_cross3(d[1], d[2], dual[0]);
-    noct_cross3(d[2], d[0], dual[1]);
-    noct_cross3(d[0], d[1], dual[2]);
-    double det = noct_dot3(d[0], dual[0]);
-    if (!(fabs(det) > 1e-6))
-        return;
-    double coef[8][3], h[3] = {0, 0, 0};
-    unsigned seen = 0;
-    for (size_t i = 0; i < 8; ++i) {
-        double r[3];
-        noct_sub3(&v[3 * i], c, r);
-        unsigned pattern = 0;
-        for (int j = 0; j < 3; ++j) {
-            coef[i][j] = noct_dot3(r, dual[j]) / det;
-            if (coef[i][j] == 0)
-                return;
-            pattern |= (coef[i][j] > 0 ? 1u : 0u) << j;
-            h[j] += fabs(coef[i][j]) / 8;
-        }
-        seen |= 1u << pattern;
-    }
-    if (seen != 0xffu)
-        return; /* not one vertex at each corner */
-    memcpy(b->c, c, sizeof c);
-    for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k)
-            b->e[j][k] = h[j] * d[j][k];
-    double dev = 0, S = 0, V = 0;
-    for (size_t i = 0; i < 8; ++i)
-        for (int k = 0; k < 3; ++k) {
-            double corner = c[k], mag = fabs(c[k]);
-            for (int j = 0; j < 3; ++j) {
-                corner += coef[i][j] > 0 ? b->e[j][k] : -b->e[j][k];
-                mag += fabs(b->e[j][k]);
-            }
-            dev = fmax(dev, fabs(v[3 * i + k] - corner));
-            S = fmax(S, mag);
-            V = fmax(V, fabs(v[3 * i + k]));
-        }
-    dev = dev * (1 + 0x1p-50) + 8 * 0x1p-53 * (S + V);
-    if (!(dev <= 1e-9 * fmax(h[0], fmax(h[1], h[2]))))
-        return; /* too far from a box to be worth the description */
-    b->size = S + dev;
-    b->dev = float_above(dev);
-    for (int i = 0; i < 3; ++i)
-        b->own[i] = float_above(fabs(noct_dot3(b->e[i], b->e[0])) + fabs(noct_dot3(b->e[i], b->e[1])) +
-                                fabs(noct_dot3(b->e[i], b->e[2])));
-    *has_box = true;
-
-    /* The dual, for the witness: every triangle on a face of the ideal box
-     * (its three corners agree in one sign), and a well-conditioned box. */
-    for (size_t t = 0; t < nt; ++t) {
-        unsigned agree = 7;
-        for (int corner = 1; corner < 3; ++corner) {
-            const double *q = coef[tri[3 * t + corner]];
-            const double *q0 = coef[tri[3 * t]];
-            for (int j = 0; j < 3; ++j)
-                if ((q[j] > 0) != (q0[j] > 0))
-                    agree &= ~(1u << j);
-        }
-        if (agree == 0)
-            return;
-    }
-    double eta = 0, mag = 0, gmax = 0;
-    for (int i = 0; i < 3; ++i) {
-        for (int k = 0; k < 3; ++k)
-            x->g[i][k] = dual[i][k] / (det * h[i]);
-        gmax = fmax(gmax, fabs(x->g[i][0]) + fabs(x->g[i][1]) + fabs(x->g[i][2]));
-    }
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            eta = fmax(eta, fabs(noct_dot3(x->g[i], b->e[j]) - (i == j)));
-            for (int k = 0; k < 3; ++k)
-                mag = fmax(mag, fabs(x->g[i][k] * b->e[j][k]));
-        }
-    eta = eta * (1 + 0x1p-50) + 16 * 0x1p-53 * 3 * mag;
-    if (!(eta <= 1e-14))
-        return;
-    x->eta = eta;
-    x->gmax = gmax * (1 + 0x1p-50);
-    x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
-    *has_dual = true;
-}
-
-static void compute_box_form(noctMesh *m)
-{
-    m->has_box = m->has_dual = false;
-    if (m->nv != 8 || m->nsat_faces != 3 || m->nsat_edges != 3)
-        return;
-    const double *const d[3] = {m->axis[3].u, m->axis[4].u, m->axis[5].u};
-    box_form_of(m->v, d, m->tri, m->nt, &m->box, &m->has_box, &m->dual, &m->has_dual);
-}
-
-void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s)
-{
-    const box_form *b = &m->box;
-    memcpy(s->c, b->c, sizeof s->c);
-    memcpy(s->e, b->e, sizeof s->e);
-    s->size = b->size;
-    memcpy(s->own, b->own, sizeof s->own);
-    s->dev = b->dev;
-    s->shrink = m->has_dual ? m->dual.shrink : INFINITY;
-    s->has_box = m->has_box;
-}
-
-/* A box's 8 corners, bit 2: +x, bit 1: +y, bit 0: +z, and its 12
- * triangles, outward. */
-static const uint32_t BOX_TRIANGLES[36] = {
-    0, 1, 3, 0, 3, 2, /* -x */ 4, 6, 7, 4, 7, 5, /* +x */
-    0, 4, 5, 0, 5, 1, /* -y */ 2, 3, 7, 2, 7, 6, /* +y */
-    0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
-};
-
-void noct_box_corners(const double half[3], const double R[9], double v[24])
-{
-    for (int i = 0; i < 8; ++i) {
-        const double local[3] = {(i & 4) ? half[0] : -half[0], (i & 2) ? half[1] : -half[1],
-                                 (i & 1) ? half[2] : -half[2]};
-        noct_rotate(R, local, &v[3 * i]);
-    }
-}
-
-void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot *s,
-                          double lo[3], double hi[3])
-{
-    double v[24];
-    noct_box_corners(half, R, v);
-    noct_box_slot_of_corners(v, R, s, lo, hi);
-}
-
-void noct_box_slot_of_corners(const double v[24], const double R[9], noct_box_slot *s,
-                              double lo[3], double hi[3])
-{
-    for (int k = 0; k < 3; ++k) {
-        lo[k] = hi[k] = v[k];
-        for (int i = 1; i < 8; ++i) {
-            lo[k] = noct_min(lo[k], v[3 * i + k]);
-            hi[k] = noct_max(hi[k], v[3 * i + k]);
-        }
-    }
-    /* the edge directions: R's columns, made unit */
-    double u[3][3];
-    for (int j = 0; j < 3; ++j) {
-        const double col[3] = {R[j], R[3 + j], R[6 + j]};
-        unit3(col, u[j]);
-    }
-    const double *const d[3] = {u[0], u[1], u[2]};
-    box_form b;
-    box_dual x;
-    bool has_box, has_dual;
-    box_form_of(v, d, BOX_TRIANGLES, 12, &b, &has_box, &x, &has_dual);
-    memcpy(s->c, b.c, sizeof s->c);
-    memcpy(s->e, b.e, sizeof s->e);
-    s->size = b.size;
-    memcpy(s->own, b.own, sizeof s->own);
-    s->dev = b.dev;
-    s->shrink = has_dual ? x.shrink : INFINITY;
-    s->has_box = has_box;
-}
-
-noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **mesh,
-                            noctError *err)
-{
-    double v[24];
-    noct_box_corners(half, R, v);
-    static const uint32_t sizes[12] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
-    return noctMeshCreate(v, 8, sizes, 12, BOX_TRIANGLES, mesh, err);
-}
-
-void noct_box_view(const double v[24], noctMesh *view, bvh_node *leaf)
-{
-    static const uint32_t HULL[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-    memset(view, 0, sizeof *view);
-    memset(leaf, 0, sizeof *leaf);
-    view->nv = 8;
-    view->v = (double *)v;                /* read only, as the view's contract */
-    view->nt = 12;
-    view->tri = (uint32_t *)BOX_TRIANGLES; /* the same */
-    view->nhull = 8;
-    view->hull = (uint32_t *)HULL;
-    for (int k = 0; k < 3; ++k) {
-        view->lo[k] = view->hi[k] = v[k];
-        double sum = 0;
-        for (int i = 0; i < 8; ++i) {
-            view->lo[k] = noct_min(view->lo[k], v[3 * i + k]);
-            view->hi[k] = noct_max(view->hi[k], v[3 * i + k]);
-            sum += v[3 * i + k];
-        }
-        view->centre[k] = sum / 8;
-        leaf->lo[k] = view->lo[k];
-        leaf->hi[k] = view->hi[k];
-    }
-    leaf->count = 12;
-    view->nnodes = 1;
-    view->nodes = leaf;
-}
-
-noctStatus noct_check_box_corners(const double half[3], const double R[9], noctError *err)
-{
-    double v[24];
-    noct_box_corners(half, R, v);
-    for (int i = 0; i < 24; ++i)
-        if (!(fabs(v[i]) <= NOCT_MAX_COORDINATE))
-            return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
-                             "box half-extents (%g, %g, %g) as turned put a corner beyond the "
-                             "coordinate limit of %g",
-                             half[0], half[1], half[2], NOCT_MAX_COORDINATE);
-    return NOCT_OK;
-}
-
-noctStatus noct_check_box_half(const double half[3], noctError *err)
-{
-    for (int i = 0; i < 3; ++i)
-        if (!isfinite(half[i]))
-            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
-                             "box half-extents (%g, %g, %g) are not finite", half[0], half[1],
-                             half[2]);
-    double hmax = fmax(half[0], fmax(half[1], half[2]));
-    double hmin = fmin(half[0], fmin(half[1], half[2]));
-    /* Below the normal doubles, the rotated corners would lose their
-     * precision: a corner is rounded to within 2^-1074 at best. */
-    if (!(hmin >= DBL_MIN))
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "box half-extents (%g, %g, %g) must be positive and at least %g",
-                         half[0], half[1], half[2], DBL_MIN);
-    /* A corner has a coordinate of at least hmax / sqrt(3): past this,
-     * beyond the limit. */
-    if (hmax > 2 * NOCT_MAX_COORDINATE)
-        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
-                         "box half-extents (%g, %g, %g) put its corners beyond the "
-                         "coordinate limit of %g",
-                         half[0], half[1], half[2], NOCT_MAX_COORDINATE);
-    if (hmin / BOX_MIN_RATIO < hmax)
-        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
-                         "box half-extents (%g, %g, %g): too thin, the least is under 2^-29 "
-                         "of the largest",
-                         half[0], half[1], half[2]);
-    return NOCT_OK;
-}
-
-_Static_assert(sizeof(noct_box_slot) == 128, "a box slot is two cache lines");
-
-_Static_assert(offsetof(noctMesh, box) + sizeof(box_form) <= 64 * NOCT_MESH_BOX_LINES,
-               "the box form and the flags fit NOCT_MESH_BOX_LINES lines");
 
 /* ---- packing ----------------------------------------------------------------- */
 
@@ -929,7 +587,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         }
     /* Fan triangulation, and the signed volume to fix the orientation:
      * 6 V = sum over the triangles of det(p0 - lo, p1 - p0, p2 - p0), on
-     * differences scaled to the mesh's size (see scaler). Its rounding is
+     * differences scaled to the mesh's size (see noct_scaler). Its rounding is
      * bounded by (ntri + 16) half-ulps of the sum of the terms'
      * magnitudes (the differences, the cross product, the dot product and
      * the sum), and underflow adds under 64 2^-1075 a triangle; a volume
@@ -940,7 +598,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         ext[k] = m->hi[k] - m->lo[k];
         emax = noct_max(emax, ext[k]);
     }
-    const scaler sc = scaler_for(emax > 0 ? emax : 1);
+    const noct_scaler sc = noct_scaler_for(emax > 0 ? emax : 1);
     double volume = 0, mag = 0;
     size_t t = 0;
     for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
@@ -953,9 +611,9 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
                          *p2 = &m->v[3 * tri[2]];
             double r[3], a[3], b[3], cr[3];
             for (int k = 0; k < 3; ++k) {
-                r[k] = scaled(&sc, p0[k] - m->lo[k]);
-                a[k] = scaled(&sc, p1[k] - p0[k]);
-                b[k] = scaled(&sc, p2[k] - p0[k]);
+                r[k] = noct_scaled(&sc, p0[k] - m->lo[k]);
+                a[k] = noct_scaled(&sc, p1[k] - p0[k]);
+                b[k] = noct_scaled(&sc, p2[k] - p0[k]);
             }
             noct_cross3(a, b, cr);
             volume += noct_dot3(r, cr);
@@ -964,7 +622,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
                    fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));
         }
     }
-    double box = scaled(&sc, ext[0]) * scaled(&sc, ext[1]) * scaled(&sc, ext[2]);
+    double box = noct_scaled(&sc, ext[0]) * noct_scaled(&sc, ext[1]) * noct_scaled(&sc, ext[2]);
     double rounding = (double)(ntri + 16) * 0x1p-53 * mag + (double)ntri * 0x1p-1068;
     if (!(fabs(volume) > VOLUME_TOLERANCE * box) || !(fabs(volume) > rounding))
         st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
@@ -982,7 +640,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
     if (st == NOCT_OK)
         st = compute_convexity(m, err);
     if (st == NOCT_OK)
-        compute_box_form(m);
+        noct_mesh_box_form(m);
     if (st == NOCT_OK)
         st = compute_hull(m, err);
     if (st != NOCT_OK) {
@@ -991,78 +649,4 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
     }
     *mesh = pack(m);
     return NOCT_OK;
-}
-
-static bool positive_finite(double x)
-{
-    return isfinite(x) && x > 0;
-}
-
-noctStatus noctMeshCreateBox(double hx, double hy, double hz, noctMesh **mesh,
-                             noctError *err)
-{
-    NOCT_REQUIRE(mesh != NULL);
-    *mesh = NULL;
-    if (!isfinite(hx) || !isfinite(hy) || !isfinite(hz))
-        return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
-                         "box half-extents (%g, %g, %g) are not finite", hx, hy, hz);
-    if (!positive_finite(hx) || !positive_finite(hy) || !positive_finite(hz))
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "box half-extents (%g, %g, %g) must be positive", hx, hy, hz);
-    double hmax = fmax(hx, fmax(hy, hz)), hmin = fmin(hx, fmin(hy, hz));
-    if (hmax > NOCT_MAX_COORDINATE)
-        return noct_fail(err, NOCT_ERR_TOO_LARGE, -1, 0,
-                         "box half-extents (%g, %g, %g): beyond the coordinate "
-                         "limit of %g", hx, hy, hz, NOCT_MAX_COORDINATE);
-    if (hmin / BOX_MIN_RATIO < hmax) /* hmin 2^29 is exact */
-        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
-                         "box half-extents (%g, %g, %g): too thin, the least is "
-                         "under 2^-29 of the largest", hx, hy, hz);
-    double v[24];
-    for (int i = 0; i < 8; ++i) { /* bit 2: +x, bit 1: +y, bit 0: +z */
-        v[3 * i] = (i & 4) ? hx : -hx;
-        v[3 * i + 1] = (i & 2) ? hy : -hy;
-        v[3 * i + 2] = (i & 1) ? hz : -hz;
-    }
-    static const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
-    static const uint32_t quads[24] = {
-        0, 1, 3, 2, /* -x */ 4, 6, 7, 5, /* +x */
-        0, 4, 5, 1, /* -y */ 2, 3, 7, 6, /* +y */
-        0, 2, 6, 4, /* -z */ 1, 5, 7, 3, /* +z */
-    };
-    return noctMeshCreate(v, 8, sizes, 6, quads, mesh, err);
-}
-
-noctStatus noctMeshCreateOrientedBox(const double half[3],
-                                     const double rotation[9], noctMesh **mesh,
-                                     noctError *err)
-{
-    NOCT_REQUIRE(half != NULL && rotation != NULL && mesh != NULL);
-    *mesh = NULL;
-    for (int i = 0; i < 9; ++i)
-        if (!isfinite(rotation[i]))
-            return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
-                             "oriented box: a rotation entry is not finite");
-    noctStatus st = noct_check_box_half(half, err);
-    if (st != NOCT_OK)
-        return st;
-    /* R^T R = I and det R = +1, within 1e-9. */
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            double sum = 0;
-            for (int k = 0; k < 3; ++k)
-                sum += rotation[3 * k + i] * rotation[3 * k + j];
-            if (fabs(sum - (i == j)) > 1e-9)
-                return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                                 "oriented box: the rotation is not "
-                                 "orthonormal");
-        }
-    const double *r = rotation;
-    double det = r[0] * (r[4] * r[8] - r[5] * r[7]) -
-                 r[1] * (r[3] * r[8] - r[5] * r[6]) +
-                 r[2] * (r[3] * r[7] - r[4] * r[6]);
-    if (det < 0)
-        return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
-                         "oriented box: the rotation is a reflection");
-    return noct_mesh_of_box(half, rotation, mesh, err);
 }

@@ -121,7 +121,17 @@ struct noctMesh {
     bvh_node *nodes;    /* nodes[0] is the root */
 };
 
-/* The slot of a mesh with a box form (has_box). */
+/* The box form of 8 vertices v (and its dual, if every one of the nt
+ * triangles tri lies on a face of the ideal box), given three unit edge
+ * directions d: see box_form and box_dual (box_form.c). */
+void noct_box_form_of(const double *v, const double *const d[3], const uint32_t *tri,
+                      size_t nt, box_form *b, bool *has_box, box_dual *x, bool *has_dual);
+
+/* m's box form and dual (has_box, has_dual), from its vertices and its
+ * filter's directions (box_form.c). */
+void noct_mesh_box_form(noctMesh *m);
+
+/* The slot of a mesh with a box form (has_box) (mesh_box.c). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 
 /* The oriented-box test on two slots placed at ta and tb: -1 when it

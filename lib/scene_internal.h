@@ -1,6 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: a scene as read (scene.c), made by a family (families.c) or
- * written back (scene_write.c). */
+/*
+ * Private: a scene, never installed.
+ *
+ *   scene_records.c  its records: the world definition, meshes, objects,
+ *                    keyframes, and its end
+ *   families.c       the built-in families, one table (families_internal.h)
+ *   scene.c          scene files read, families named, scenes built
+ *   scene_write.c    scenes written back as files
+ */
 #ifndef NOCT_LIB_SCENE_INTERNAL_H
 #define NOCT_LIB_SCENE_INTERNAL_H
 
@@ -68,6 +75,12 @@ struct noctScene {
     size_t nfamilies;
     noctMesh *unit_cube; /* for the families that ask for one (planes) */
 };
+
+/* ---- scene_records.c ---- */
+
+/* A scene with the defaults (the world's, 200 steps) and nothing in it;
+ * NULL without memory. */
+noctScene *noct_scene_new(void);
 
 /* Add a mesh (m, or NULL for a box primitive of half-extents h; file: the
  * path it was read from, or NULL for a box); takes m, destroying it on

@@ -184,24 +184,3 @@ void noct_rotate(const double R[9], const double v[3], double out[3])
         out[i] = (a + b) + c;
     }
 }
-
-noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **out,
-                             noctError *err)
-{
-    *out = NULL;
-    double *v = malloc(3 * m->nv * sizeof *v);
-    uint32_t *sizes = malloc(m->nt * sizeof *sizes);
-    if (v == NULL || sizes == NULL) {
-        free(v);
-        free(sizes);
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    }
-    for (size_t i = 0; i < m->nv; ++i)
-        noct_rotate(R, &m->v[3 * i], &v[3 * i]);
-    for (size_t i = 0; i < m->nt; ++i)
-        sizes[i] = 3;
-    noctStatus st = noctMeshCreate(v, m->nv, sizes, m->nt, m->tri, out, err);
-    free(v);
-    free(sizes);
-    return st;
-}

@@ -9,6 +9,9 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
+
+#include "internal.h"
 
 /* A 3-vector as an array element type: resizable arrays of vectors
  * (array.h) and the motion's saved positions. */
@@ -36,6 +39,68 @@ static inline double noct_dot3(const double a[3], const double b[3])
 static inline double noct_norm3(const double a[3])
 {
     return sqrt(noct_dot3(a, a));
+}
+
+/* ---- scaling by powers of two ------------------------------------------------ */
+
+/*
+ * The mesh checks compute on differences of coordinates, which a translation
+ * that keeps every coordinate exact leaves unchanged, multiplied by the
+ * power of two 2^-e that brings the largest to [1/2, 1). Their products
+ * of two or three then neither overflow nor underflow where it matters,
+ * whatever the mesh's size and place, and so the checks' rounding is
+ * relative to the polygon's or the mesh's own size. The scaling is exact
+ * except for parts under 2^-1022 of the largest, far below any tolerance.
+ */
+typedef struct noct_scaler {
+    double s0, s1; /* s0 s1 = 2^-e, each a normal power of two */
+    int e;
+} noct_scaler;
+
+/* 2^k, for k in [-1022, 1023]. */
+static inline double noct_pow2(int k)
+{
+    uint64_t bits = (uint64_t)(k + 1023) << 52;
+    double x;
+    memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
+/* The scaler for magnitudes up to m, finite and positive. A subnormal m
+ * needs a factor past the doubles (up to 2^1073), hence two. */
+static inline noct_scaler noct_scaler_for(double m)
+{
+    noct_scaler s;
+    frexp(m, &s.e); /* m = f 2^e, f in [1/2, 1), e in [-1073, 1024] */
+    int k = -s.e, k0 = k / 2;
+    s.s0 = noct_pow2(k0);
+    s.s1 = noct_pow2(k - k0);
+    return s;
+}
+
+static inline double noct_scaled(const noct_scaler *s, double x)
+{
+    return x * s->s0 * s->s1;
+}
+
+static inline double noct_max_abs3(const double a[3])
+{
+    return noct_max(fabs(a[0]), noct_max(fabs(a[1]), fabs(a[2])));
+}
+
+/* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
+static inline void noct_unit3(const double d[3], double u[3])
+{
+    double m = noct_max_abs3(d);
+    if (!(m > 0)) {
+        u[0] = u[1] = u[2] = 0;
+        return;
+    }
+    noct_scaler s = noct_scaler_for(m);
+    double x[3] = {noct_scaled(&s, d[0]), noct_scaled(&s, d[1]), noct_scaled(&s, d[2])};
+    double len = noct_norm3(x); /* in [1/2, 2] */
+    for (int k = 0; k < 3; ++k)
+        u[k] = x[k] / len;
 }
 
 #endif /* NOCT_LIB_VEC3_H */

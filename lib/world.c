@@ -16,11 +16,6 @@
 
 #include "world_internal.h"
 
-NOCT_DEFINE_RESIZE(resize_objects, noct_object)
-NOCT_DEFINE_RESIZE(resize_vectors, noct_vec3)
-NOCT_DEFINE_RESIZE(resize_meshes, const noctMesh *)
-NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
-
 /* ---- the world ------------------------------------------------------------------------ */
 
 noctWorldDef noctDefaultWorldDef(void)
@@ -114,33 +109,6 @@ void noctWorldDestroy(noctWorld *w)
 }
 
 _Static_assert(sizeof(noct_pose) == 64, "a pose is one cache line");
-
-bool noct_world_reserve_slots(noctWorld *w)
-{
-    const uint32_t cap = noct_bp_capacity(&w->bp);
-    if (cap <= w->capslots)
-        return true;
-    if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
-        !resize_meshes(&w->mesh, cap) || (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)))
-        return false;
-    /* aligned, so not realloc: a pose is one cache line */
-    noct_pose *poses = aligned_alloc(64, cap * sizeof *poses);
-    if (poses == NULL)
-        return false;
-    if (w->capslots > 0)
-        memcpy(poses, w->pose, w->capslots * sizeof *poses);
-    free(w->pose);
-    w->pose = poses;
-    noct_box_slot *slots = aligned_alloc(64, cap * sizeof *slots);
-    if (slots == NULL)
-        return false;
-    if (w->capslots > 0)
-        memcpy(slots, w->slot, w->capslots * sizeof *slots);
-    free(w->slot);
-    w->slot = slots;
-    w->capslots = cap;
-    return true;
-}
 
 noctStatus noctWorldReserve(noctWorld *w, size_t more, noctError *err)
 {

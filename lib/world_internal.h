@@ -191,13 +191,14 @@ static inline bool noct_quat_is_identity(const noctQuat *q)
     return q->x == 0 && q->y == 0 && q->z == 0 && q->w == 1;
 }
 
-/* ---- world.c -------------------------------------------------------------------- */
+/* ---- world_object.c ------------------------------------------------------------- */
 
 /* The world's per-slot arrays to the broadphase's capacity; false without
  * memory (each that grew is kept). */
 bool noct_world_reserve_slots(noctWorld *w);
 
-/* ---- world_object.c ------------------------------------------------------------- */
+/* Object s is gone: its track goes too. */
+void noct_world_drop_track(noctWorld *w, uint32_t s);
 
 
 /* noctWorldCreateObject() for a velocity that is speed * d for a unit d
@@ -231,9 +232,6 @@ void noct_world_placements_done(noctWorld *w);
 /* Place every tracked object at its track's pose at tick (the step's);
  * on failure give the placements back (noct_world_unplace()). */
 noctStatus noct_world_stage_tracks(noctWorld *w, uint64_t tick, noctError *err);
-
-/* Object s is gone: its track goes too. */
-void noct_world_drop_track(noctWorld *w, uint32_t s);
 
 void noct_world_free_tracks(noctWorld *w);
 

@@ -16,9 +16,57 @@
 
 #include "world_internal.h"
 
+NOCT_DEFINE_RESIZE(resize_objects, noct_object)
+NOCT_DEFINE_RESIZE(resize_vectors, noct_vec3)
+NOCT_DEFINE_RESIZE(resize_meshes, const noctMesh *)
+NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
+
 NOCT_DEFINE_RESIZE(resize_placed, noct_placed)
 
 /* ---- objects ---------------------------------------------------------------------------- */
+
+bool noct_world_reserve_slots(noctWorld *w)
+{
+    const uint32_t cap = noct_bp_capacity(&w->bp);
+    if (cap <= w->capslots)
+        return true;
+    if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
+        !resize_meshes(&w->mesh, cap) || (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)))
+        return false;
+    /* aligned, so not realloc: a pose is one cache line */
+    noct_pose *poses = aligned_alloc(64, cap * sizeof *poses);
+    if (poses == NULL)
+        return false;
+    if (w->capslots > 0)
+        memcpy(poses, w->pose, w->capslots * sizeof *poses);
+    free(w->pose);
+    w->pose = poses;
+    noct_box_slot *slots = aligned_alloc(64, cap * sizeof *slots);
+    if (slots == NULL)
+        return false;
+    if (w->capslots > 0)
+        memcpy(slots, w->slot, w->capslots * sizeof *slots);
+    free(w->slot);
+    w->slot = slots;
+    w->capslots = cap;
+    return true;
+}
+
+/* The object's track goes with it (world_track.c keeps the tracks). */
+void noct_world_drop_track(noctWorld *w, uint32_t s)
+{
+    noct_tracks *t = &w->tracks;
+    if (t->of == NULL || s >= t->capof || t->of[s] == UINT32_MAX)
+        return;
+    const uint32_t i = t->of[s];
+    free(t->list[i].keys);
+    t->of[s] = UINT32_MAX;
+    /* the last track takes its place */
+    if (i != --t->n) {
+        t->list[i] = t->list[t->n];
+        t->of[t->list[i].slot] = i;
+    }
+}
 
 noctObjectDef noctDefaultObjectDef(void)
 {

@@ -125,21 +125,6 @@ static bool reserve_of(noctWorld *w)
     return true;
 }
 
-void noct_world_drop_track(noctWorld *w, uint32_t s)
-{
-    noct_tracks *t = &w->tracks;
-    if (t->of == NULL || s >= t->capof || t->of[s] == UINT32_MAX)
-        return;
-    const uint32_t i = t->of[s];
-    free(t->list[i].keys);
-    t->of[s] = UINT32_MAX;
-    /* the last track takes its place */
-    if (i != --t->n) {
-        t->list[i] = t->list[t->n];
-        t->of[t->list[i].slot] = i;
-    }
-}
-
 void noct_world_free_tracks(noctWorld *w)
 {
     for (uint32_t i = 0; i < w->tracks.n; ++i)

@@ -1,0 +1,135 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Box forms (mesh_internal.h): a mesh of 8 vertices, 3 face and 3 edge
+ * directions described as a parallelepiped that the exact level's filter
+ * can trust, and the dual that bounds how far its triangles may lie from
+ * the ideal box's faces. Geometry only: mesh.c asks it of every mesh it
+ * makes, mesh_box.c of every box primitive.
+ */
+#include "config.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "internal.h"
+#include "mesh_internal.h"
+#include "vec3.h"
+
+/*
+ * Describe a mesh of 8 vertices with 3 face and 3 edge directions as a
+ * parallelepiped (mesh_internal.h), if its vertices are the 8 corners
+ * along its edge directions within a tiny deviation. Only a description
+ * the filter can trust is kept: dev bounds the exact deviation of every
+ * vertex coordinate from its corner, the rounding of its computation
+ * included (3 additions and a difference of magnitudes at most S: well
+ * under 8 half-ulps of S).
+ */
+/* The least float at or above x (x >= 0; +inf past the floats). */
+static float float_above(double x)
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+void noct_box_form_of(const double *v, const double *const d[3], const uint32_t *tri,
+                      size_t nt, box_form *b, bool *has_box, box_dual *x, bool *has_dual)
+{
+    *has_box = *has_dual = false;
+    double c[3] = {0, 0, 0};
+    for (size_t i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k)
+            c[k] += v[3 * i + k] / 8;
+    double dual[3][3]; /* dual[i].d[j] = (i == j) * det */
+    noct_cross3(d[1], d[2], dual[0]);
+    noct_cross3(d[2], d[0], dual[1]);
+    noct_cross3(d[0], d[1], dual[2]);
+    double det = noct_dot3(d[0], dual[0]);
+    if (!(fabs(det) > 1e-6))
+        return;
+    double coef[8][3], h[3] = {0, 0, 0};
+    unsigned seen = 0;
+    for (size_t i = 0; i < 8; ++i) {
+        double r[3];
+        noct_sub3(&v[3 * i], c, r);
+        unsigned pattern = 0;
+        for (int j = 0; j < 3; ++j) {
+            coef[i][j] = noct_dot3(r, dual[j]) / det;
+            if (coef[i][j] == 0)
+                return;
+            pattern |= (coef[i][j] > 0 ? 1u : 0u) << j;
+            h[j] += fabs(coef[i][j]) / 8;
+        }
+        seen |= 1u << pattern;
+    }
+    if (seen != 0xffu)
+        return; /* not one vertex at each corner */
+    memcpy(b->c, c, sizeof c);
+    for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+            b->e[j][k] = h[j] * d[j][k];
+    double dev = 0, S = 0, V = 0;
+    for (size_t i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k) {
+            double corner = c[k], mag = fabs(c[k]);
+            for (int j = 0; j < 3; ++j) {
+                corner += coef[i][j] > 0 ? b->e[j][k] : -b->e[j][k];
+                mag += fabs(b->e[j][k]);
+            }
+            dev = fmax(dev, fabs(v[3 * i + k] - corner));
+            S = fmax(S, mag);
+            V = fmax(V, fabs(v[3 * i + k]));
+        }
+    dev = dev * (1 + 0x1p-50) + 8 * 0x1p-53 * (S + V);
+    if (!(dev <= 1e-9 * fmax(h[0], fmax(h[1], h[2]))))
+        return; /* too far from a box to be worth the description */
+    b->size = S + dev;
+    b->dev = float_above(dev);
+    for (int i = 0; i < 3; ++i)
+        b->own[i] = float_above(fabs(noct_dot3(b->e[i], b->e[0])) + fabs(noct_dot3(b->e[i], b->e[1])) +
+                                fabs(noct_dot3(b->e[i], b->e[2])));
+    *has_box = true;
+
+    /* The dual, for the witness: every triangle on a face of the ideal box
+     * (its three corners agree in one sign), and a well-conditioned box. */
+    for (size_t t = 0; t < nt; ++t) {
+        unsigned agree = 7;
+        for (int corner = 1; corner < 3; ++corner) {
+            const double *q = coef[tri[3 * t + corner]];
+            const double *q0 = coef[tri[3 * t]];
+            for (int j = 0; j < 3; ++j)
+                if ((q[j] > 0) != (q0[j] > 0))
+                    agree &= ~(1u << j);
+        }
+        if (agree == 0)
+            return;
+    }
+    double eta = 0, mag = 0, gmax = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k)
+            x->g[i][k] = dual[i][k] / (det * h[i]);
+        gmax = fmax(gmax, fabs(x->g[i][0]) + fabs(x->g[i][1]) + fabs(x->g[i][2]));
+    }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            eta = fmax(eta, fabs(noct_dot3(x->g[i], b->e[j]) - (i == j)));
+            for (int k = 0; k < 3; ++k)
+                mag = fmax(mag, fabs(x->g[i][k] * b->e[j][k]));
+        }
+    eta = eta * (1 + 0x1p-50) + 16 * 0x1p-53 * 3 * mag;
+    if (!(eta <= 1e-14))
+        return;
+    x->eta = eta;
+    x->gmax = gmax * (1 + 0x1p-50);
+    x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
+    *has_dual = true;
+}
+
+void noct_mesh_box_form(noctMesh *m)
+{
+    m->has_box = m->has_dual = false;
+    if (m->nv != 8 || m->nsat_faces != 3 || m->nsat_edges != 3)
+        return;
+    const double *const d[3] = {m->axis[3].u, m->axis[4].u, m->axis[5].u};
+    noct_box_form_of(m->v, d, m->tri, m->nt, &m->box, &m->has_box, &m->dual, &m->has_dual);
+}
