@@ -158,8 +158,9 @@ bool noct_bvh_box_walk(const noct_placed_mesh *B, const double lo[3], const doub
         if (!noct_boxes_overlap(n->lo, n->hi, B->t, lo, hi, zero))
             continue;
         if (n->count == 0) {
-            /* unreachable: a BVH is at most 33 deep, and the stack holds
-             * one node a level and one more */
+            /* a BVH is at most 33 deep, and the stack holds one node a
+             * level and one more: the overflow cannot happen */
+            NOCT_INVARIANT(top + 2 <= sizeof stack / sizeof *stack);
             if (top + 2 > sizeof stack / sizeof *stack)
                 return true;
             stack[top++] = n->first;

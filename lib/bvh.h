@@ -113,8 +113,9 @@ static NOCT_ALWAYS_INLINE bool noct_bvh_pair_walk(const noct_placed_mesh *A,
         }
         const bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
         const uint32_t ia = stack[top].a, ib = stack[top].b;
+        NOCT_INVARIANT(top + 2 <= NOCT_BVH_PAIR_STACK);
         if (top + 2 > NOCT_BVH_PAIR_STACK)
-            return true;
+            return true; /* the conservative answer */
         if (split_a) {
             stack[top].a = na->first;     stack[top++].b = ib;
             stack[top].a = na->first + 1; stack[top++].b = ib;

@@ -274,6 +274,17 @@ static bool exact_diffs(const double *const p[], int n, int dim, exact_int diff[
     return true;
 }
 
+/* The sign for an input that is not finite: the library validates every
+ * coordinate before it gets here, so this cannot happen; an invariant in
+ * the defensive build (assert, as NOCT_INVARIANT: this file is also built
+ * alone for its tests), and 0, the conservative answer (degenerate: the
+ * callers then take the points as touching), in the efficient one. */
+static int not_finite(void)
+{
+    assert(!"an orientation of points that are not finite");
+    return 0;
+}
+
 int noct_orient2d_exact(const double a[2], const double b[2], const double c[2])
 {
     const double *p[3] = {a, b, c};
@@ -283,7 +294,7 @@ int noct_orient2d_exact(const double a[2], const double b[2], const double c[2])
     for (int i = 0; i < 4; ++i)
         diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
     if (!exact_diffs(p, 3, 2, diff))
-        return 0;
+        return not_finite();
     /* diff = {acx, acy, bcx, bcy}; det = acx bcy - acy bcx */
     exact_mul(&l, &diff[0], &diff[3]);
     exact_mul(&r, &diff[1], &diff[2]);
@@ -304,7 +315,7 @@ int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
     for (int i = 0; i < 9; ++i)
         diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
     if (!exact_diffs(p, 4, 3, diff))
-        return 0;
+        return not_finite();
     /* diff[3 i + k] is coordinate k of p[i] - d. With x, y, z for the
      * coordinates: det = sum over the cyclic (i, j, k) of
      * z_i (x_j y_k - x_k y_j). The running sum alternates between two

@@ -9,7 +9,9 @@
  * on buffers on the stack), which is exact for any finite doubles and
  * allocates nothing, so it can neither fail nor abort. *fallbacks, if not
  * NULL, counts the exact recomputations. An input that is not finite has
- * no exact sign: the exact path then returns 0.
+ * no exact sign: that is a bug of the caller (the library validates every
+ * coordinate), an invariant in the defensive build; the exact path then
+ * returns 0.
  */
 #ifndef NOCT_LIB_PREDICATES_H
 #define NOCT_LIB_PREDICATES_H
