@@ -90,18 +90,27 @@ static NOCT_ALWAYS_INLINE double position_bound(double m, double t, bool up, boo
     return (double)NAN;
 }
 
+/* The cell of proxy o's smallest leaf; NULL if it has none. */
+static NOCT_ALWAYS_INLINE const noct_cell *smallest_leaf(const noct_proxy *o)
+{
+    if (o->nspans == 0)
+        return NULL;
+    const noct_cell *small = noct_cell_of(o->spans[0].leaf);
+    for (uint32_t i = 1; i < o->nspans; ++i)
+        if (noct_cell_of(o->spans[i].leaf)->size < small->size)
+            small = noct_cell_of(o->spans[i].leaf);
+    return small;
+}
+
 /* The home block of object id while its leaves are those box b overlaps
  * (b: its box when they were last made so), as the positions that keep
  * its box in it. */
 bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, noct_home *h)
 {
     const noct_proxy *o = &bp->proxy[id];
-    if (o->nspans == 0)
+    const noct_cell *small = smallest_leaf(o);
+    if (small == NULL)
         return false;
-    const noct_cell *small = noct_cell_of(o->spans[0].leaf);
-    for (uint32_t i = 1; i < o->nspans; ++i)
-        if (noct_cell_of(o->spans[i].leaf)->size < small->size)
-            small = noct_cell_of(o->spans[i].leaf);
     const double s = small->size;
     const noct_aabb root = noct_bp_root_box(bp);
     for (int k = 0; k < 3; ++k) {
@@ -136,12 +145,9 @@ bool noct_bp_block_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
                       double *size)
 {
     const noct_proxy *o = &bp->proxy[id];
-    if (o->nspans == 0)
+    const noct_cell *small = smallest_leaf(o);
+    if (small == NULL)
         return false;
-    const noct_cell *small = noct_cell_of(o->spans[0].leaf);
-    for (uint32_t i = 1; i < o->nspans; ++i)
-        if (noct_cell_of(o->spans[i].leaf)->size < small->size)
-            small = noct_cell_of(o->spans[i].leaf);
     const double s = small->size;
     const noct_aabb root = noct_bp_root_box(bp);
     for (int k = 0; k < 3; ++k) {

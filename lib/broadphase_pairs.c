@@ -168,15 +168,10 @@ static NOCT_ALWAYS_INLINE bool near_reserve(noctBroadphase *bp, noct_cell *c)
 {
     if (c->nnear < c->capnear)
         return true;
-    uint32_t cap;
-    uint32_t *q = noct_apool_take(&bp->near_pool, c->nnear + 1, &cap);
-    if (q == NULL)
+    void *a = c->near;
+    if (!noct_apool_grow(&bp->near_pool, &a, &c->capnear, c->nnear))
         return false;
-    if (c->nnear > 0)
-        memcpy(q, c->near, c->nnear * sizeof *q);
-    noct_apool_give(&bp->near_pool, c->near, c->capnear);
-    c->near = q;
-    c->capnear = cap;
+    c->near = a;
     return true;
 }
 

@@ -113,15 +113,10 @@ static bool spans_reserve(noctBroadphase *bp, noct_proxy *o)
 {
     if (o->nspans < o->capspans)
         return true;
-    uint32_t cap;
-    noct_span *q = noct_apool_take(&bp->spans_pool, o->nspans + 1, &cap);
-    if (q == NULL)
+    void *a = o->spans;
+    if (!noct_apool_grow(&bp->spans_pool, &a, &o->capspans, o->nspans))
         return false;
-    if (o->nspans > 0)
-        memcpy(q, o->spans, o->nspans * sizeof *q);
-    noct_apool_give(&bp->spans_pool, o->spans, o->capspans);
-    o->spans = q;
-    o->capspans = cap;
+    o->spans = a;
     return true;
 }
 

@@ -11,6 +11,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "internal.h"
+
 /*
  * Arrays pooled by size class: class k holds base << k elements of elem
  * bytes. A list that must grow takes an array of a larger class and gives
@@ -47,6 +49,24 @@ void noct_apool_give(noct_apool *p, void *a, uint32_t cap);
 
 /* Free every array given back. */
 void noct_apool_free(noct_apool *p);
+
+/* Room for n + 1 elements in the list *a of capacity *cap with n in use:
+ * an array of a larger class from the pool, the n copied, the old one
+ * given back; false without memory (nothing changed). */
+static NOCT_ALWAYS_INLINE bool noct_apool_grow(noct_apool *p, void **a, uint32_t *cap,
+                                               uint32_t n)
+{
+    uint32_t c;
+    void *q = noct_apool_take(p, n + 1, &c);
+    if (q == NULL)
+        return false;
+    if (n > 0)
+        memcpy(q, *a, n * p->elem);
+    noct_apool_give(p, *a, *cap);
+    *a = q;
+    *cap = c;
+    return true;
+}
 
 /* A list of n elements in *a (capacity *cap) that has a quarter of its
  * room or less in use moves to a free array of half the capacity, if the
