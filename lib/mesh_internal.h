@@ -1,6 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* Private: the layout of a mesh, shared by mesh.c, meshio.c and
- * narrowphase.c. */
+/*
+ * Private: the layout of a mesh, shared by the files that make meshes
+ * (mesh.c: checks, hull, packing; box_form.c: box forms; mesh_box.c: box
+ * primitives and turned meshes; meshio.c: OFF and OBJ; bvh.c: the
+ * hierarchy) and those that read them (narrowphase*.c, the world).
+ * Never installed.
+ */
 #ifndef NOCT_LIB_MESH_INTERNAL_H
 #define NOCT_LIB_MESH_INTERNAL_H
 

@@ -3,11 +3,20 @@
  * Private: the world's structures, shared by its stage files. Never
  * installed.
  *
- *   world.c          the public API, and the step as its stages in order
+ *   world.c          create, destroy, reserve, what the world tells,
+ *                    validation
+ *   world_object.c   the object API: definitions, setters and getters,
+ *                    removal; placement (poses, the step's placements)
+ *   world_step.c     noctWorldStep() and its stages in the order they run
  *   world_motion.c   motion and walls, the movers, a failed step's roll-back
  *   world_narrow.c   narrowphase dispatch of the broadphase's pairs
- *   world_events.c   contact events and the response
- *   families.c       the built-in families, one table (not the core)
+ *   world_events.c   the event records, sensors and the response
+ *   world_near.c     the margin's near pairs
+ *   world_track.c    keyframe tracks
+ *   world_query.c    the queries (query.h)
+ *
+ * The files call one way: world.c and world_step.c call the stage files
+ * and world_object.c, which calls none of them.
  *
  * The world is the broadphase's client: its objects are proxies of the
  * broadphase it embeds (same slots, same handles), whose local boxes are
