@@ -168,8 +168,10 @@ static double enter_at(const double o[3], const double d[3], const double lo[3],
  *     entered after t. Per axis: for d > 0 take x_k the largest double in
  *     [B.lo, B.hi] with f_k(x_k) <= t (B.lo is one); for d < 0 the
  *     smallest; for d = 0, o_k (in B). Let C be the leaf whose closed cube
- *     holds the point x and which, where x_k is not B's far face, reaches
- *     past x_k in the direction of d. Then f_k(C.lo) <= f_k(x_k) <= t (for
+ *     holds the point x and which, on the axes where x_k is not B's far
+ *     face (B.hi for d > 0), reaches past x_k in the direction of d (the
+ *     leaves tile the root, which holds B, so there is one: the leaf of
+ *     the points just past x). Then f_k(C.lo) <= f_k(x_k) <= t (for
  *     d > 0), and f_k(C.hi) >= t: either C.hi >= B.hi, or C.hi is a double
  *     in (x_k, B.hi] and f_k(C.hi) > t by the choice of x_k; d < 0 is the
  *     mirror. C holds x, a point of B, so it lists B (leaves list exactly
