@@ -144,84 +144,211 @@ static double enter_at(const double o[3], const double d[3], const double lo[3],
     return t0;
 }
 
-typedef struct ray_hit {
-    double t;
-    uint32_t id;
-} ray_hit;
+/*
+ * The walk. Cells come out of a heap in order of their entry fractions
+ * (a split node's children go in as it comes out, and none is entered
+ * before its parent), so leaves come in order of entry. A leaf's boxes
+ * go into a second heap in order of (t, index), and a hit goes to fcn as
+ * soon as no cell still to come can hold one before it: when its t is
+ * below E, the least entry in the cell heap. The walk ends when E is
+ * beyond the clip, the largest fraction fcn left.
+ *
+ * Why no rounding margin is needed. For an axis with d != 0, enter_at
+ * takes fl(fl(x - o) / d) at each face x of a box, a monotone function
+ * f_k of x (rounding is monotone; f_k decreases for d < 0), so a box's
+ * computed slab on that axis is [f_k(lo), f_k(hi)] (or reversed). Hence:
+ *
+ * (a) A cube within another (its faces within the other's, as doubles)
+ *     is entered no earlier and left no later: a child's entry is at
+ *     least its parent's, and a cell that is not met has no descendant
+ *     that is. Cell corners are exact (NOCT_CELL_RESOLUTION), so children
+ *     lie within their parents and the leaves tile the root.
+ * (b) A box B the segment meets at a computed t is listed by a leaf C
+ *     with entry(C) <= t <= exit(C), where the walk gets before any cell
+ *     entered after t. Per axis: for d > 0 take x_k the largest double in
+ *     [B.lo, B.hi] with f_k(x_k) <= t (B.lo is one); for d < 0 the
+ *     smallest; for d = 0, o_k (in B). Let C be the leaf whose closed cube
+ *     holds the point x and which, on the axes where x_k is not B's far
+ *     face (B.hi for d > 0), reaches past x_k in the direction of d (the
+ *     leaves tile the root, which holds B, so there is one: the leaf of
+ *     the points just past x). Then f_k(C.lo) <= f_k(x_k) <= t (for
+ *     d > 0), and f_k(C.hi) >= t: either C.hi >= B.hi, or C.hi is a double
+ *     in (x_k, B.hi] and f_k(C.hi) > t by the choice of x_k; d < 0 is the
+ *     mirror. C holds x, a point of B, so it lists B (leaves list exactly
+ *     the boxes that overlap them, and the root holds every box:
+ *     noctBroadphaseValidate()), and by (a) its ancestors are met too,
+ *     entered no later than C.
+ *
+ * So when the least entry left is E, every box met at a t < E has been
+ * gathered, and a hit with t < E is the next, in (t, index) order, of
+ * all the hits: the output is that of gathering every leaf and sorting,
+ * bit for bit. Copies of a box in several leaves: every leaf entered at
+ * or before its t adds a copy with the same t while the first still
+ * waits (it waits until E > t), so the copies leave the heap one after
+ * another and all but the first are dropped; a leaf entered after the
+ * box's t skips it, since the leaf C of (b) came before. The clip only
+ * shrinks, so cells and boxes entered after it are never taken: nothing
+ * in them could be reported.
+ */
 
-/* Hits gather in a buffer on the stack (a ray through a few leaves meets
- * a few dozen boxes), then on the heap. */
+/* A hit (t, proxy index) or a cell (entry, node), in a heap by (t, key):
+ * a key breaks ties between hits; between cells the order of equal
+ * entries does not matter. */
+typedef struct ray_item {
+    double t;
+    uintptr_t key;
+} ray_item;
+
+static inline bool ray_before(const ray_item *a, const ray_item *b)
+{
+    return a->t < b->t || (a->t == b->t && a->key < b->key);
+}
+
+/* A binary min-heap, first in a buffer on the stack, then on the heap. */
+typedef struct ray_heap {
+    ray_item *a, *local;
+    size_t n, cap;
+} ray_heap;
+
+/* false without memory */
+static bool ray_push(ray_heap *h, ray_item x)
+{
+    if (h->n == h->cap) {
+        const size_t cap = 2 * h->cap;
+        ray_item *q = h->a == h->local ? malloc(cap * sizeof *q) : realloc(h->a, cap * sizeof *q);
+        if (q == NULL)
+            return false;
+        if (h->a == h->local)
+            memcpy(q, h->local, h->n * sizeof *q);
+        h->a = q;
+        h->cap = cap;
+    }
+    size_t i = h->n++;
+    while (i > 0 && ray_before(&x, &h->a[(i - 1) / 2])) {
+        h->a[i] = h->a[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    h->a[i] = x;
+    return true;
+}
+
+/* The least item; the heap is not empty. */
+static ray_item ray_pop(ray_heap *h)
+{
+    const ray_item top = h->a[0], x = h->a[--h->n];
+    size_t i = 0;
+    for (size_t c = 1; c < h->n; c = 2 * i + 1) {
+        if (c + 1 < h->n && ray_before(&h->a[c + 1], &h->a[c]))
+            ++c;
+        if (!ray_before(&h->a[c], &x))
+            break;
+        h->a[i] = h->a[c];
+        i = c;
+    }
+    h->a[i] = x;
+    return top;
+}
+
+/* Room on the stack: a segment's cell heap holds about three cells per
+ * level of the tree, and its hit heap the boxes of a few leaves. */
+#define RAY_LOCAL_CELLS 96
 #define RAY_LOCAL_HITS 64
 
 typedef struct ray_query {
     const noctBroadphase *bp;
     double o[3], d[3];
     noctQueryFilter filter;
-    ray_hit *hit; /* local, or from the heap */
-    size_t n, cap;
-    ray_hit local[RAY_LOCAL_HITS];
+    noctRayFcn *fcn;
+    void *context;
+    double max;    /* the clip */
+    ray_item last; /* the last hit handed out (t < 0: none yet) */
+    ray_heap cells, hits;
+    ray_item local_cells[RAY_LOCAL_CELLS], local_hits[RAY_LOCAL_HITS];
 } ray_query;
 
-static int cmp_hit(const void *x, const void *y)
-{
-    const ray_hit *a = x, *b = y;
-    if (a->t != b->t)
-        return a->t < b->t ? -1 : 1;
-    return (a->id > b->id) - (a->id < b->id);
-}
-
-static bool ray_list(ray_query *rq, const uint32_t *ids, uint32_t n);
-
-/* Gather the proxies of the leaves the segment passes through; false
- * without memory. */
-static bool ray_node(ray_query *rq, const octNode *n)
-{
-    const noct_cell *c = noct_cell_of(n);
-    const double hi[3] = {c->lo[0] + c->size, c->lo[1] + c->size, c->lo[2] + c->size};
-    if (enter_at(rq->o, rq->d, c->lo, hi, 1) < 0)
-        return true;
-    if (NOCT_NODE_IS_SPLIT(n)) {
-        for (int i = 0; i < 8; ++i)
-            if (!ray_node(rq, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i))))
-                return false;
-        return true;
-    }
-    return ray_list(rq, c->objs, c->count);
-}
-
-/* Gather the proxies of list ids[0..n) that the segment meets. */
-static bool ray_list(ray_query *rq, const uint32_t *ids, uint32_t n)
+/* Add the hits of list ids[0..n) (NULL: every live slot) of a leaf
+ * entered at entry; false without memory. A box entered before the leaf
+ * came from an earlier one; one entered after the clip cannot count. */
+static bool ray_gather(ray_query *rq, const uint32_t *ids, uint32_t n, double entry)
 {
     const noctBroadphase *bp = rq->bp;
     for (uint32_t j = 0; j < n; ++j) {
         const uint32_t id = ids != NULL ? ids[j] : j;
         if (ids == NULL && !bp->proxy[id].alive)
             continue;
-        const double t = enter_at(rq->o, rq->d, bp->box[id].lo, bp->box[id].hi, 1);
-        if (t < 0 || !passes(&bp->proxy[id], rq->filter))
+        /* -1 for a box not met: below entry, which is at least 0 */
+        const double t = enter_at(rq->o, rq->d, bp->box[id].lo, bp->box[id].hi, rq->max);
+        if (t < entry || !passes(&bp->proxy[id], rq->filter))
             continue;
-        if (rq->n == rq->cap) {
-            const size_t cap = 2 * rq->cap;
-            ray_hit *q = rq->hit == rq->local ? malloc(cap * sizeof *q)
-                                              : realloc(rq->hit, cap * sizeof *q);
-            if (q == NULL)
-                return false;
-            if (rq->hit == rq->local)
-                memcpy(q, rq->local, sizeof rq->local);
-            rq->hit = q;
-            rq->cap = cap;
-        }
-        rq->hit[rq->n++] = (ray_hit){t, id};
+        if (!ray_push(&rq->hits, (ray_item){t, id}))
+            return false;
     }
     return true;
 }
 
+/* Hand fcn the hits before E; false when the query is over (fcn
+ * stopped it, or the next hit is beyond the clip). */
+static bool ray_flush(ray_query *rq, double E)
+{
+    const noctBroadphase *bp = rq->bp;
+    while (rq->hits.n > 0 && rq->hits.a[0].t < E) {
+        const ray_item h = ray_pop(&rq->hits);
+        if (h.t == rq->last.t && h.key == rq->last.key)
+            continue; /* a copy from another leaf */
+        if (h.t > rq->max)
+            return false;
+        NOCT_INVARIANT(rq->last.t < 0 || ray_before(&rq->last, &h));
+        rq->last = h;
+        const uint32_t id = (uint32_t)h.key;
+        const double r =
+            rq->fcn(rq->context, (noctProxyId){id, bp->gen[id]}, bp->proxy[id].user, h.t);
+        if (!(r > 0))
+            return false; /* 0 (or NaN) stops */
+        rq->max = noct_min(rq->max, r);
+    }
+    return true;
+}
+
+/* The walk from the root; false without memory. */
+static bool ray_walk(ray_query *rq)
+{
+    const noct_cell *rc = noct_cell_of(rq->bp->root);
+    const double rhi[3] = {rc->lo[0] + rc->size, rc->lo[1] + rc->size, rc->lo[2] + rc->size};
+    const double t = enter_at(rq->o, rq->d, rc->lo, rhi, rq->max);
+    if (t >= 0 && !ray_push(&rq->cells, (ray_item){t, (uintptr_t)rq->bp->root}))
+        return false;
+    while (rq->cells.n > 0) {
+        if (!ray_flush(rq, rq->cells.a[0].t))
+            return true;
+        if (rq->cells.a[0].t > rq->max)
+            break; /* no hit left, and none in the cells to come, is in the clip */
+        const ray_item e = ray_pop(&rq->cells);
+        const octNode *n = (const octNode *)e.key;
+        const noct_cell *c = noct_cell_of(n);
+        if (!NOCT_NODE_IS_SPLIT(n)) {
+            if (!ray_gather(rq, c->objs, c->count, e.t))
+                return false;
+            continue;
+        }
+        for (int i = 0; i < 8; ++i) {
+            const octNode *kid = NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i));
+            const noct_cell *kc = noct_cell_of(kid);
+            const double hi[3] = {kc->lo[0] + kc->size, kc->lo[1] + kc->size,
+                                  kc->lo[2] + kc->size};
+            const double tk = enter_at(rq->o, rq->d, kc->lo, hi, rq->max);
+            if (tk >= 0 && !ray_push(&rq->cells, (ray_item){tk, (uintptr_t)kid}))
+                return false;
+        }
+    }
+    ray_flush(rq, INFINITY);
+    return true;
+}
+
 /*
- * The proxies along the segment: gathered from every leaf it passes
- * through, sorted by entry and index (a proxy in several leaves comes
- * out of each with the same t, so its copies are next to each other),
- * then handed to fcn in order while their t is within the clipped
- * segment.
+ * The proxies along the segment, in order, from a walk of the leaves in
+ * order of entry that stops at the first leaf entered beyond the clip
+ * (see "The walk" above). It reads the broadphase only: its scratch is
+ * its own.
  */
 noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3],
                                  const double translation[3], noctQueryFilter filter,
@@ -236,31 +363,25 @@ noctStatus noctBroadphaseRayCast(const noctBroadphase *bp, const double origin[3
     memcpy(rq.o, origin, sizeof rq.o);
     memcpy(rq.d, translation, sizeof rq.d);
     rq.filter = filter;
-    rq.hit = rq.local;
-    rq.n = 0;
-    rq.cap = RAY_LOCAL_HITS;
-    /* without a tree (a failure tore it down), every proxy is asked */
-    if (!(bp->root != NULL ? ray_node(&rq, bp->root) : ray_list(&rq, NULL, bp->nslots))) {
-        if (rq.hit != rq.local)
-            free(rq.hit);
-        return NOCT_ERR_NOMEM;
+    rq.fcn = fcn;
+    rq.context = context;
+    rq.max = 1;
+    rq.last = (ray_item){-1, 0};
+    rq.cells = (ray_heap){rq.local_cells, rq.local_cells, 0, RAY_LOCAL_CELLS};
+    rq.hits = (ray_heap){rq.local_hits, rq.local_hits, 0, RAY_LOCAL_HITS};
+    bool ok;
+    if (bp->root != NULL) {
+        ok = ray_walk(&rq);
+    } else {
+        /* No tree (a failure tore it down): every proxy is asked, as
+         * from one leaf entered at 0. */
+        ok = ray_gather(&rq, NULL, bp->nslots, 0);
+        if (ok)
+            ray_flush(&rq, INFINITY);
     }
-    if (rq.n > 1)
-        qsort(rq.hit, rq.n, sizeof *rq.hit, cmp_hit);
-    double max = 1;
-    for (size_t i = 0; i < rq.n; ++i) {
-        if (i > 0 && rq.hit[i].id == rq.hit[i - 1].id && rq.hit[i].t == rq.hit[i - 1].t)
-            continue;
-        if (rq.hit[i].t > max)
-            break;
-        const uint32_t id = rq.hit[i].id;
-        const double r = fcn(context, (noctProxyId){id, bp->gen[id]}, bp->proxy[id].user,
-                             rq.hit[i].t);
-        if (!(r > 0))
-            break; /* 0 (or NaN) stops */
-        max = noct_min(max, r);
-    }
-    if (rq.hit != rq.local)
-        free(rq.hit);
-    return NOCT_OK;
+    if (rq.cells.a != rq.local_cells)
+        free(rq.cells.a);
+    if (rq.hits.a != rq.local_hits)
+        free(rq.hits.a);
+    return ok ? NOCT_OK : NOCT_ERR_NOMEM;
 }

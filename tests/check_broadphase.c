@@ -13,6 +13,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+#  include <malloc.h> /* mallinfo2 */
+#endif
 
 #include <noctree/broadphase.h>
 #include <noctree/mesh.h>
@@ -423,6 +426,374 @@ START_TEST(queries_against_brute_force)
             ck_assert_int_eq(s.calls, 1);
         }
     }
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+/* ---- segments: the ordered walk against a sorted scan ------------------------------ */
+
+/*
+ * What a ray callback returns, so that the test can replay it: every hit
+ * (1); the closest (t, clipping there, plus a slack); stop at the k-th
+ * call (0, or NaN); clip at the k-th call's t, then return 7 (more than
+ * the segment: no change).
+ */
+enum { RAY_ALL, RAY_CLOSEST, RAY_STOP, RAY_NAN, RAY_CLIP_ONCE, RAY_POLICIES };
+
+typedef struct ray_log {
+    int policy, k;
+    double slack;
+    int calls;
+    uint32_t idx[MAXP], gen[MAXP];
+    double t[MAXP];
+} ray_log;
+
+static double ray_answer(const ray_log *r, int call, double t)
+{
+    switch (r->policy) {
+    case RAY_CLOSEST:
+        return t + r->slack;
+    case RAY_STOP:
+        return call == r->k ? 0 : 1;
+    case RAY_NAN:
+        return call == r->k ? NAN : 1;
+    case RAY_CLIP_ONCE:
+        return call == r->k ? t : 7;
+    default:
+        return 1;
+    }
+}
+
+static double on_ray_logged(void *ctx, noctProxyId id, void *user, double t)
+{
+    (void)user;
+    ray_log *r = ctx;
+    if (r->calls == MAXP)
+        return 0; /* (more calls than proxies: the comparison fails) */
+    r->idx[r->calls] = id.index;
+    r->gen[r->calls] = id.generation;
+    r->t[r->calls] = t;
+    ++r->calls;
+    return ray_answer(r, r->calls, t);
+}
+
+typedef struct ray_want {
+    double t;
+    int slot;
+    uint32_t index;
+} ray_want;
+
+static int cmp_ray_want(const void *x, const void *y)
+{
+    const ray_want *a = x, *b = y;
+    if (a->t != b->t)
+        return a->t < b->t ? -1 : 1;
+    return (a->index > b->index) - (a->index < b->index);
+}
+
+/* The cast against the brute force: every live proxy the filter passes,
+ * entered at slab_enter's t, sorted by (t, index), replayed through the
+ * policy with the clip the documentation describes. Returns the hits
+ * the segment meets (before any clip). */
+static int check_ray(noctBroadphase *bp, const model *m, const double o[3], const double d[3],
+                     noctQueryFilter f, int policy, int k, double slack)
+{
+    static ray_want want[MAXP];
+    int nw = 0;
+    for (int i = 0; i < m->n; ++i) {
+        if (!m->alive[i] || !(m->cat[i] & f.mask) || !(f.category & m->mask[i]))
+            continue;
+        const double t = slab_enter(o, d, m->lo[i], m->hi[i]);
+        if (t >= 0)
+            want[nw++] = (ray_want){t, i, m->id[i].index};
+    }
+    qsort(want, (size_t)nw, sizeof *want, cmp_ray_want);
+    static ray_log got;
+    memset(&got, 0, sizeof got);
+    got.policy = policy;
+    got.k = k;
+    got.slack = slack;
+    ck_assert_int_eq(noctBroadphaseRayCast(bp, o, d, f, on_ray_logged, &got), NOCT_OK);
+    /* the replay */
+    ray_log replay = {.policy = policy, .k = k, .slack = slack};
+    double max = 1;
+    int n = 0;
+    while (n < nw && want[n].t <= max) {
+        ++n;
+        const double r = ray_answer(&replay, n, want[n - 1].t);
+        if (!(r > 0))
+            break;
+        max = r < max ? r : max;
+    }
+    ck_assert_msg(got.calls == n,
+                  "segment (%a %a %a) + (%a %a %a), policy %d: %d calls, expected %d of %d",
+                  o[0], o[1], o[2], d[0], d[1], d[2], policy, got.calls, n, nw);
+    for (int c = 0; c < n; ++c) {
+        const int i = want[c].slot;
+        ck_assert_msg(got.idx[c] == m->id[i].index && got.gen[c] == m->id[i].generation &&
+                          got.t[c] == want[c].t,
+                      "call %d: proxy %u at %a, expected %u at %a (policy %d)", c, got.idx[c],
+                      got.t[c], m->id[i].index, want[c].t, policy);
+    }
+    return nw;
+}
+
+/* Up to MAX_LEAVES leaf cubes of the tree, sampled. */
+#define MAX_LEAVES 256
+typedef struct leaf_set {
+    int n, seen;
+    double lo[MAX_LEAVES][3], size[MAX_LEAVES];
+} leaf_set;
+
+static void gather_leaves(const noctBroadphase *bp, const octNode *n, leaf_set *s)
+{
+    if (octIsSplit(n)) {
+        for (int i = 0; i < 8; ++i)
+            gather_leaves(bp, octChild(n, (octDirection)(OCT_LDB + i)), s);
+        return;
+    }
+    int at = s->n < MAX_LEAVES ? s->n++ : (int)((s->seen + 1) * uniform());
+    ++s->seen;
+    if (at < MAX_LEAVES)
+        noctBroadphaseCell(bp, n, s->lo[at], &s->size[at], NULL, 0);
+}
+
+/* The configurations of rays_against_brute_force: N, depth, and where
+ * the scene lies (offset) and how large its unit is. Unit 0: 2^-24 of
+ * the offset (a scene that still splits), -1: 256 ulps of it (a leaf or
+ * two, every t rounded). */
+static const struct {
+    int N, depth;
+    double offset, unit;
+} RAY_CONFIG[] = {
+    {1, 40, 0, 1},          {2, 10, 0, 1},           {10, NOCT_AUTO, 0, 1},
+    {NOCT_AUTO, NOCT_AUTO, 0, 1}, {2, 40, 0, 1e-300},  {2, 40, 0, 1e97},
+    {2, 40, 3e12, 0},       {1, 40, -7.25e15, 0},    {2, 40, 1e90, 0},
+    {2, 40, -1048576.1, -1}, {10, 40, 9e99, -1},
+};
+
+/* A point of the scene: offset + unit x, x in [0, 20). */
+#define RAY_SCENE 20
+
+START_TEST(rays_against_brute_force)
+{
+    const double offset = RAY_CONFIG[_i].offset;
+    double unit = RAY_CONFIG[_i].unit;
+    const double ulp = nextafter(fabs(offset), INFINITY) - fabs(offset);
+    if (unit == 0)
+        unit = fabs(offset) * 0x1p-24;
+    else if (unit < 0)
+        unit = 256 * ulp / RAY_SCENE;
+    rng = 0x5a9e + (uint64_t)_i;
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = RAY_CONFIG[_i].N;
+    def.max_depth = RAY_CONFIG[_i].depth;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    static model m;
+    memset(&m, 0, sizeof m);
+    m.n = 400;
+    for (int i = 0; i < m.n; ++i) {
+        double lo[3], hi[3];
+        random_box(lo, hi, RAY_SCENE);
+        for (int k = 0; k < 3; ++k) {
+            m.lo[i][k] = offset + unit * lo[k];
+            m.hi[i][k] = offset + unit * hi[k];
+        }
+        m.cat[i] = random_bits();
+        m.mask[i] = random_bits();
+        ck_assert_int_eq(noctBroadphaseAdd(bp, m.lo[i], m.hi[i], NULL, m.cat[i], m.mask[i],
+                                           &m.id[i], &err),
+                         NOCT_OK);
+        m.alive[i] = true;
+    }
+    int met = 0, clipped = 0, through_corners = 0;
+    for (int round = 0; round < 4; ++round) {
+        /* some proxies move, some go and come back (new generations) */
+        for (int i = 0; i < m.n; ++i) {
+            const double u = uniform();
+            if (u < 0.1 && m.alive[i]) {
+                ck_assert_int_eq(noctBroadphaseRemove(bp, m.id[i]), NOCT_OK);
+                m.alive[i] = false;
+            } else if (u < 0.2 && !m.alive[i]) {
+                ck_assert_int_eq(noctBroadphaseAdd(bp, m.lo[i], m.hi[i], NULL, m.cat[i],
+                                                   m.mask[i], &m.id[i], &err),
+                                 NOCT_OK);
+                m.alive[i] = true;
+            } else if (u < 0.4 && m.alive[i]) {
+                const double step = unit * floor(16 * (uniform() - 0.5)) / 8;
+                for (int k = 0; k < 3; ++k) {
+                    m.lo[i][k] += step;
+                    m.hi[i][k] += step;
+                }
+                ck_assert_int_eq(noctBroadphaseMove(bp, m.id[i], m.lo[i], m.hi[i], &err),
+                                 NOCT_OK);
+            }
+        }
+        ck_assert_msg(noctBroadphaseValidate(bp, &err) == NOCT_OK, "invalid: %s", err.message);
+        static leaf_set leaves;
+        leaves.n = leaves.seen = 0;
+        gather_leaves(bp, noctBroadphaseRoot(bp), &leaves);
+        for (int q = 0; q < 150; ++q) {
+            double o[3], d[3];
+            const int kind = q % 9, a = (int)(3 * uniform());
+            const int leaf = (int)(leaves.n * uniform());
+            const double *cl = leaves.lo[leaf], cs = leaves.size[leaf];
+            const int slot = (int)(m.n * uniform());
+            for (int k = 0; k < 3; ++k) {
+                o[k] = offset + unit * RAY_SCENE * uniform();
+                d[k] = unit * RAY_SCENE * (uniform() - 0.5);
+            }
+            switch (kind) {
+            case 1: /* along an edge of a leaf, past its corners */
+                for (int k = 0; k < 3; ++k) {
+                    o[k] = cl[k] + (uniform() < 0.5 ? 0 : cs);
+                    d[k] = 0;
+                }
+                o[a] = cl[a] - cs;
+                d[a] = 3 * cs;
+                break;
+            case 2: /* in the plane of a leaf's face */
+                o[a] = cl[a] + (uniform() < 0.5 ? 0 : cs);
+                d[a] = 0;
+                break;
+            case 3: /* through a leaf's corner, with dyadic steps: exactly */
+                for (int k = 0; k < 3; ++k) {
+                    const double v = cs * floor(8 * uniform() - 4) / 4;
+                    o[k] = cl[k] + (k == a ? cs : 0) - v;
+                    d[k] = 2 * v;
+                }
+                ++through_corners;
+                break;
+            case 4: /* zero length, at a box's corner, a leaf's corner or anywhere */
+                for (int k = 0; k < 3; ++k) {
+                    if (q % 3 == 0)
+                        o[k] = m.lo[slot][k];
+                    else if (q % 3 == 1)
+                        o[k] = cl[k];
+                    d[k] = 0;
+                }
+                break;
+            case 5: /* parallel to an axis */
+                for (int k = 0; k < 3; ++k)
+                    d[k] = k == a ? d[k] : 0;
+                break;
+            case 6: /* in the plane of a box's face */
+                o[a] = m.hi[slot][a];
+                d[a] = 0;
+                break;
+            case 7: /* across the whole scene, corner to corner */
+                for (int k = 0; k < 3; ++k) {
+                    o[k] = offset + unit * (k == a ? RAY_SCENE : -1);
+                    d[k] = unit * (RAY_SCENE + 1) * (k == a ? -1 : 1);
+                }
+                break;
+            case 8: /* from inside a box */
+                for (int k = 0; k < 3; ++k)
+                    o[k] = m.lo[slot][k] + (m.hi[slot][k] - m.lo[slot][k]) * uniform();
+                break;
+            default:
+                break;
+            }
+            const noctQueryFilter f =
+                q % 4 == 0 ? (noctQueryFilter){random_bits(), random_bits()}
+                           : noctDefaultQueryFilter();
+            const int policy = q % RAY_POLICIES;
+            const int k = 1 + (int)(4 * uniform());
+            const double slack = uniform() < 0.5 ? 0 : 0x1p-10 * uniform();
+            const int n = check_ray(bp, &m, o, d, f, policy, k, slack);
+            met += n;
+            clipped += n > 1 && policy != RAY_ALL;
+            /* and every hit, whatever the policy drew */
+            if (policy != RAY_ALL)
+                check_ray(bp, &m, o, d, f, RAY_ALL, 0, 0);
+        }
+    }
+    /* the rays met boxes, many of them, and the clips cut lists short */
+    ck_assert_int_gt(met, 500);
+    ck_assert_int_gt(clipped, 50);
+    ck_assert_int_gt(through_corners, 40);
+    noctBroadphaseDestroy(bp);
+}
+END_TEST
+
+/* The heap in use (glibc's mallinfo2, 2.33 on; valgrind's malloc reports
+ * 0 there, and then the test cannot look). */
+static size_t heap_in_use(void)
+{
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+    const struct mallinfo2 mi = mallinfo2();
+    return mi.uordblks + mi.hblkhd;
+#else
+    return 0;
+#endif
+}
+
+typedef struct first_call {
+    int calls;
+    double t;
+    size_t heap; /* in use at the first call */
+} first_call;
+
+static double on_ray_closest(void *ctx, noctProxyId id, void *user, double t)
+{
+    (void)id;
+    (void)user;
+    first_call *f = ctx;
+    if (f->calls++ == 0) {
+        f->heap = heap_in_use();
+        f->t = t;
+    }
+    return t;
+}
+
+/*
+ * The walk hands out a hit as soon as no leaf still to come can hold one
+ * before it, and a closest cast ends there: a segment along a row of
+ * five hundred boxes gets its one call before the query has gathered more
+ * than a few leaves (it holds no heap memory then, where gathering every
+ * box first takes 16 bytes for each).
+ */
+START_TEST(rays_stop_early)
+{
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    def.N = 2;
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    enum { ROW = 500 };
+    for (int i = 0; i < ROW; ++i) {
+        const double lo[3] = {i, 0, 0}, hi[3] = {i + 0.5, 0.5, 0.5};
+        noctProxyId id;
+        ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, NOCT_FILTER_ALL, NOCT_FILTER_ALL,
+                                           &id, &err),
+                         NOCT_OK);
+        ck_assert_uint_eq(id.index, (uint32_t)i);
+    }
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    const double o[3] = {-1, 0.25, 0.25}, d[3] = {ROW + 2, 0, 0};
+    /* every hit, in order */
+    static ray_log all;
+    memset(&all, 0, sizeof all);
+    all.policy = RAY_ALL;
+    ck_assert_int_eq(noctBroadphaseRayCast(bp, o, d, noctDefaultQueryFilter(), on_ray_logged,
+                                           &all),
+                     NOCT_OK);
+    ck_assert_int_eq(all.calls, ROW);
+    for (int c = 0; c < ROW; ++c)
+        ck_assert(all.idx[c] == (uint32_t)c && all.t[c] == (c + 1.0) / (ROW + 2));
+    /* the closest: one call, the first box */
+    first_call f = {0, 0, 0};
+    const size_t before = heap_in_use();
+    ck_assert_int_eq(noctBroadphaseRayCast(bp, o, d, noctDefaultQueryFilter(), on_ray_closest,
+                                           &f),
+                     NOCT_OK);
+    ck_assert_int_eq(f.calls, 1);
+    ck_assert(f.t == 1.0 / (ROW + 2));
+    if (before > 0) /* (not under valgrind) */
+        ck_assert_msg(f.heap == before, "%zu bytes of heap in use at the first call",
+                      f.heap - before);
     noctBroadphaseDestroy(bp);
 }
 END_TEST
@@ -944,6 +1315,9 @@ int main(void)
     tcase_set_timeout(tc, 300);
     tcase_add_loop_test(tc, pairs_against_brute_force, 0, 20);
     tcase_add_loop_test(tc, queries_against_brute_force, 0, 2);
+    tcase_add_loop_test(tc, rays_against_brute_force, 0,
+                        (int)(sizeof RAY_CONFIG / sizeof *RAY_CONFIG));
+    tcase_add_test(tc, rays_stop_early);
     suite_add_tcase(s, tc);
     tc = tcase_create("tree");
     tcase_add_loop_test(tc, automatic_settings, 0, 2);

@@ -13,6 +13,7 @@
  *
  * Usage: bench-world [--quick] [--overlap] [--steps S] [--max-exhaustive N]
  *                    [SCENE...]
+ *        bench-world --rays Q [--repeats R] [gas:N...]
  *   SCENE is planes:K or gas:N (default planes:10 planes:30 planes:100
  *   planes:300 gas:10000 gas:100000, which takes several minutes; rows
  *   are printed as they finish; --quick: planes:3 gas:200, 20 steps).
@@ -22,6 +23,8 @@
  *   touching cubes, 10^4 and 10^5) at the defaults (the settings the
  *   world chose, marked a:), at N = 1 and at max-depth 40, with time and
  *   peak memory; with --quick, small sizes that only check it runs.
+ *   --rays Q: instead, Q segments across each gas scene's container
+ *   (default gas:10000 gas:100000), closest and all hits (rays_bench()).
  *   --sweep: instead, N and the maximum depth over every family of
  *   noctSceneFamily() at 1 000 to 1 000 000 objects (--sizes, --families,
  *   --repeats; see sweep_bench()), the defaults marked; writes
@@ -37,6 +40,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <noctree/query.h>
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
@@ -450,6 +454,91 @@ static int sweep_bench(const long *sizes, int nsizes, const char *const *fams, i
     return status;
 }
 
+/* ---- rays: segments across a whole gas container ----------------------------- */
+
+/* For each gas scene, q segments from a random point of the container's
+ * face x = 0 to one of the face x = side (so each crosses every layer of
+ * the gas), cast as noctWorldRayCastClosest() and as noctWorldRayCast()
+ * (every hit): us per segment (median of the repeats) and the hits found.
+ * A closest cast should cost about what the gas before its first hit
+ * costs, however long the segment. */
+static bool count_ray_hit(void *context, const noctRayHit *hit)
+{
+    (void)hit;
+    ++*(size_t *)context;
+    return true;
+}
+
+static int rays_bench(const char *const *scenes, int nscenes, int q, int repeats)
+{
+    printf("segments across the container, %d per scene, median of %d runs\n", q, repeats);
+    printf("%-12s %8s %-8s %10s %10s\n", "scene", "objects", "cast", "us each", "found");
+    for (int s = 0; s < nscenes; ++s) {
+        if (strncmp(scenes[s], "gas:", 4) != 0) {
+            fprintf(stderr, "bench-world: --rays runs on gas scenes only: %s\n", scenes[s]);
+            return EXIT_FAILURE;
+        }
+        const size_t n = (size_t)atol(scenes[s] + 4);
+        const double side = noctGasContainerSize(n);
+        noctScene *sc;
+        noctWorld *w;
+        noctError err;
+        if (noctSceneFamily(scenes[s], &sc, &err) != NOCT_OK ||
+            noctSceneBuild(sc, &w, &err) != NOCT_OK) {
+            fprintf(stderr, "bench-world: %s: %s\n", scenes[s], err.message);
+            return EXIT_FAILURE;
+        }
+        noctSceneDestroy(sc);
+        double *seg = malloc((size_t)q * 6 * sizeof *seg), times[2][16];
+        if (seg == NULL)
+            return EXIT_FAILURE;
+        uint64_t st = 12345;
+        for (int i = 0; i < 6 * q; ++i) {
+            st = st * 6364136223846793005u + 1442695040888963407u;
+            seg[i] = side * (double)(st >> 11) * 0x1p-53;
+        }
+        for (int i = 0; i < q; ++i) { /* (0, y, z) to (side, y', z') */
+            double *g = seg + 6 * i;
+            g[0] = 0;
+            g[3] = side;
+            g[4] -= g[1];
+            g[5] -= g[2];
+        }
+        const noctQueryFilter all = noctDefaultQueryFilter();
+        size_t found[2] = {0, 0};
+        bool ok = true;
+        for (int r = 0; r < repeats; ++r) {
+            found[0] = found[1] = 0;
+            double t = now();
+            for (int i = 0; i < q; ++i) {
+                noctRayHit h;
+                bool any;
+                ok = ok && noctWorldRayCastClosest(w, seg + 6 * i, seg + 6 * i + 3, all, &h,
+                                                   &any, &err) == NOCT_OK;
+                found[0] += any;
+            }
+            times[0][r] = now() - t;
+            t = now();
+            for (int i = 0; i < q; ++i)
+                ok = ok && noctWorldRayCast(w, seg + 6 * i, seg + 6 * i + 3, all,
+                                            count_ray_hit, &found[1], &err) == NOCT_OK;
+            times[1][r] = now() - t;
+        }
+        noctWorldDestroy(w);
+        free(seg);
+        if (!ok) {
+            fprintf(stderr, "bench-world: %s: %s\n", scenes[s], err.message);
+            return EXIT_FAILURE;
+        }
+        for (int c = 0; c < 2; ++c) {
+            qsort(times[c], (size_t)repeats, sizeof **times, cmp_double);
+            printf("%-12s %8zu %-8s %10.2f %10zu\n", scenes[s], n, c ? "all" : "closest",
+                   1e6 * times[c][repeats / 2] / q, found[c]);
+        }
+    }
+    return EXIT_SUCCESS;
+}
+
 typedef struct scene_job {
     const char *scene;
     int N, steps, max_exhaustive;
@@ -471,6 +560,7 @@ int main(int argc, char **argv)
     const char *scenes[32], *fams[SWEEP_NFAMILIES];
     long sizes[8];
     bool quick = false, overlap = false, sweep = false, steps_given = false;
+    int rays = 0;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--quick") == 0)
             quick = true;
@@ -478,6 +568,8 @@ int main(int argc, char **argv)
             overlap = true;
         else if (strcmp(argv[i], "--sweep") == 0)
             sweep = true;
+        else if (strcmp(argv[i], "--rays") == 0 && i + 1 < argc)
+            rays = atoi(argv[++i]);
         else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc)
             repeats = atoi(argv[++i]);
         else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
@@ -501,12 +593,22 @@ int main(int argc, char **argv)
             fprintf(stderr, "usage: bench-world [--quick] [--overlap] [--steps S] "
                             "[--max-exhaustive N] [planes:K | gas:N]...\n"
                             "       bench-world --sweep [--quick] [--sizes N,...] "
-                            "[--families F,...] [--steps S] [--repeats R]\n");
+                            "[--families F,...] [--steps S] [--repeats R]\n"
+                            "       bench-world --rays Q [--repeats R] [gas:N]...\n");
             return 2;
         }
     }
     if (overlap)
         return overlap_bench(quick);
+    if (rays != 0) {
+        if (rays < 1 || repeats < 1 || repeats > 15) {
+            fputs("bench-world: --rays must be at least 1, --repeats 1 to 15\n", stderr);
+            return 2;
+        }
+        static const char *def_gas[] = {"gas:10000", "gas:100000"};
+        return nscenes > 0 ? rays_bench(scenes, nscenes, rays, repeats)
+                           : rays_bench(def_gas, 2, rays, repeats);
+    }
     if (sweep) {
         for (int f = 0; f < nfams; ++f) {
             bool known = false;

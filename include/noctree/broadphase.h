@@ -438,7 +438,9 @@ typedef double noctRayFcn(void *context, noctProxyId id, void *user_data, double
  *       whose box the segment meets at a fraction t in [0, max], where
  *       max starts at 1 and is what fcn last returned (if less); in order
  *       of t, ties in order of index. Returns #NOCT_OK, or
- *       #NOCT_ERR_NONFINITE with no call made, or #NOCT_ERR_NOMEM.
+ *       #NOCT_ERR_NONFINITE with no call made, or #NOCT_ERR_NOMEM,
+ *       possibly after calls for the proxies first along the segment
+ *       (each is handed out as soon as none can come before it).
  * @param bp the broadphase.
  * @param origin where the segment starts.
  * @param translation the segment, from origin to its end.
