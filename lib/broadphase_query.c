@@ -210,19 +210,13 @@ typedef struct ray_heap {
     size_t n, cap;
 } ray_heap;
 
+NOCT_DEFINE_GROW_LOCAL(grow_items, ray_item)
+
 /* false without memory */
 static bool ray_push(ray_heap *h, ray_item x)
 {
-    if (h->n == h->cap) {
-        const size_t cap = 2 * h->cap;
-        ray_item *q = h->a == h->local ? malloc(cap * sizeof *q) : realloc(h->a, cap * sizeof *q);
-        if (q == NULL)
-            return false;
-        if (h->a == h->local)
-            memcpy(q, h->local, h->n * sizeof *q);
-        h->a = q;
-        h->cap = cap;
-    }
+    if (!grow_items(&h->a, h->local, &h->cap, h->n + 1))
+        return false;
     size_t i = h->n++;
     while (i > 0 && ray_before(&x, &h->a[(i - 1) / 2])) {
         h->a[i] = h->a[(i - 1) / 2];

@@ -509,7 +509,7 @@ static int rays_bench(const char *const *scenes, int nscenes, int q, int repeats
         bool ok = true;
         for (int r = 0; r < repeats; ++r) {
             found[0] = found[1] = 0;
-            double t = now();
+            double t = tool_now();
             for (int i = 0; i < q; ++i) {
                 noctRayHit h;
                 bool any;
@@ -517,12 +517,12 @@ static int rays_bench(const char *const *scenes, int nscenes, int q, int repeats
                                                    &any, &err) == NOCT_OK;
                 found[0] += any;
             }
-            times[0][r] = now() - t;
-            t = now();
+            times[0][r] = tool_now() - t;
+            t = tool_now();
             for (int i = 0; i < q; ++i)
                 ok = ok && noctWorldRayCast(w, seg + 6 * i, seg + 6 * i + 3, all,
                                             count_ray_hit, &found[1], &err) == NOCT_OK;
-            times[1][r] = now() - t;
+            times[1][r] = tool_now() - t;
         }
         noctWorldDestroy(w);
         free(seg);
@@ -531,9 +531,8 @@ static int rays_bench(const char *const *scenes, int nscenes, int q, int repeats
             return EXIT_FAILURE;
         }
         for (int c = 0; c < 2; ++c) {
-            qsort(times[c], (size_t)repeats, sizeof **times, cmp_double);
             printf("%-12s %8zu %-8s %10.2f %10zu\n", scenes[s], n, c ? "all" : "closest",
-                   1e6 * times[c][repeats / 2] / q, found[c]);
+                   1e6 * tool_median(times[c], (size_t)repeats) / q, found[c]);
         }
     }
     return EXIT_SUCCESS;
