@@ -102,6 +102,18 @@ static NOCT_ALWAYS_INLINE const noct_cell *smallest_leaf(const noct_proxy *o)
     return small;
 }
 
+/* The lattice lines *lo and *hi around box b on axis k of the cells of
+ * small's size; false for a block that reaches out of the root, as one
+ * does when the box touches the root's face: then a box inside it could
+ * be outside the root (maintain() relies on it). NaN fails too. */
+static NOCT_ALWAYS_INLINE bool lattice_around(const noct_cell *small, const noct_aabb *root,
+                                              const noct_aabb *b, int k, double *lo, double *hi)
+{
+    *lo = lattice_beyond(small->lo[k], small->size, b->lo[k], false);
+    *hi = lattice_beyond(small->lo[k], small->size, b->hi[k], true);
+    return *lo >= root->lo[k] && *hi <= root->hi[k];
+}
+
 /* The home block of object id while its leaves are those box b overlaps
  * (b: its box when they were last made so), as the positions that keep
  * its box in it. */
@@ -114,12 +126,8 @@ bool noct_bp_home_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b, 
     const double s = small->size;
     const noct_aabb root = noct_bp_root_box(bp);
     for (int k = 0; k < 3; ++k) {
-        const double lo = lattice_beyond(small->lo[k], s, b->lo[k], false);
-        const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
-        /* No block that reaches out of the root, as one does when the box
-         * touches the root's face: then a box inside it could be outside
-         * the root (maintain() relies on it). NaN fails too. */
-        if (!(lo >= root.lo[k] && hi <= root.hi[k]))
+        double lo, hi;
+        if (!lattice_around(small, &root, b, k, &lo, &hi))
             return false;
         /* The box's low side in (lo, lo + s], its high side in
          * [hi - s, hi); the lattice points next to lo and hi are exact. */
@@ -150,14 +158,9 @@ bool noct_bp_block_of(const noctBroadphase *bp, uint32_t id, const noct_aabb *b,
         return false;
     const double s = small->size;
     const noct_aabb root = noct_bp_root_box(bp);
-    for (int k = 0; k < 3; ++k) {
-        const double lo = lattice_beyond(small->lo[k], s, b->lo[k], false);
-        const double hi = lattice_beyond(small->lo[k], s, b->hi[k], true);
-        if (!(lo >= root.lo[k] && hi <= root.hi[k]))
-            return false; /* NaN too */
-        blk->lo[k] = lo;
-        blk->hi[k] = hi;
-    }
+    for (int k = 0; k < 3; ++k)
+        if (!lattice_around(small, &root, b, k, &blk->lo[k], &blk->hi[k]))
+            return false;
     *size = s;
     return true;
 }
