@@ -874,11 +874,7 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         bool has = i + 1 < argc;
         long v;
-        if (strcmp(a, "--help") == 0) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (strcmp(a, "--version") == 0) {
-            printf("noctree-bench %s\n", NOCT_VERSION_STRING);
+        if (tool_help_or_version(a, usage)) {
             return 0;
         } else if (strcmp(a, "--quick") == 0) {
             opt.quick = true;

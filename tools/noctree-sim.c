@@ -247,11 +247,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         bool has_value = i + 1 < argc;
-        if (strcmp(a, "--help") == 0) {
-            fputs(usage, stdout);
-            return 0;
-        } else if (strcmp(a, "--version") == 0) {
-            printf("noctree-sim %s\n", NOCT_VERSION_STRING);
+        if (tool_help_or_version(a, usage)) {
             return 0;
         } else if (strcmp(a, "--events") == 0) {
             events = true;

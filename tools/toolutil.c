@@ -8,11 +8,23 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <noctree/version.h>
 #include <noctree/world.h>
 
 #include "toolutil.h"
 
 const char *tool_name = "noctree";
+
+bool tool_help_or_version(const char *arg, const char *usage)
+{
+    if (strcmp(arg, "--help") == 0)
+        fputs(usage, stdout);
+    else if (strcmp(arg, "--version") == 0)
+        printf("%s %s\n", tool_name, NOCT_VERSION_STRING);
+    else
+        return false;
+    return true;
+}
 
 int tool_usage_error(const char *fmt, ...)
 {

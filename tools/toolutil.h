@@ -19,6 +19,10 @@ extern const char *tool_name;
  * exit status for bad usage or input. */
 int tool_usage_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* --help (usage on stdout) and --version ("NAME VERSION"): true if arg is
+ * one of them, printed; the program then exits 0. */
+bool tool_help_or_version(const char *arg, const char *usage);
+
 /* Print "NAME: message" on stderr. */
 void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
