@@ -127,33 +127,33 @@ static int crossed(octDirection i, octDirection o, int v[3])
     return n;
 }
 
-START_TEST(table_common_face_from_geometry)
+/* table(i, o) for directions i from first, against the geometry: the
+ * direction of the axes that i crosses out of octant o when they are
+ * `axes` in number, else OMEGA. */
+static void check_common_table(int first, int axes,
+                               octDirection (*table)(octDirection, octDirection),
+                               const char *name)
 {
-    for (int i = OCT_LD; i <= OCT_RUF; ++i) {
+    for (int i = first; i <= OCT_RUF; ++i) {
         for (int o = OCT_LDB; o <= OCT_RUF; ++o) {
             int v[3];
             int n = crossed((octDirection)i, (octDirection)o, v);
-            octDirection want = n == 1 ? dir_from_vector(v) : OCT_OMEGA;
-            ck_assert_msg(octCommonFace((octDirection)i, (octDirection)o) == want,
-                          "COMMON_FACE(%s, %s)", octDirToStr((octDirection)i),
-                          octDirToStr((octDirection)o));
+            octDirection want = n == axes ? dir_from_vector(v) : OCT_OMEGA;
+            ck_assert_msg(table((octDirection)i, (octDirection)o) == want, "%s(%s, %s)", name,
+                          octDirToStr((octDirection)i), octDirToStr((octDirection)o));
         }
     }
+}
+
+START_TEST(table_common_face_from_geometry)
+{
+    check_common_table(OCT_LD, 1, octCommonFace, "COMMON_FACE");
 }
 END_TEST
 
 START_TEST(table_common_edge_from_geometry)
 {
-    for (int i = OCT_LDB; i <= OCT_RUF; ++i) {
-        for (int o = OCT_LDB; o <= OCT_RUF; ++o) {
-            int v[3];
-            int n = crossed((octDirection)i, (octDirection)o, v);
-            octDirection want = n == 2 ? dir_from_vector(v) : OCT_OMEGA;
-            ck_assert_msg(octCommonEdge((octDirection)i, (octDirection)o) == want,
-                          "COMMON_EDGE(%s, %s)", octDirToStr((octDirection)i),
-                          octDirToStr((octDirection)o));
-        }
-    }
+    check_common_table(OCT_LDB, 2, octCommonEdge, "COMMON_EDGE");
 }
 END_TEST
 

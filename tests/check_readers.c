@@ -152,36 +152,34 @@ static size_t build_count(const char *path)
     return n;
 }
 
-/* Expect a scene file to fail reading with status at line. */
-static void expect_scene(const char *name, const char *text, size_t len, noctStatus want,
-                         long line, const char *what)
+/* Expect a scene file (scene) or a mesh file to fail reading with status
+ * at line, its message holding what, and no scene or mesh made. */
+static void expect_failure(bool scene, const char *name, const char *text, size_t len,
+                           noctStatus want, long line, const char *what)
 {
     const char *path = write_bytes(name, text, len);
     noctScene *sc = (noctScene *)1;
+    noctMesh *m = (noctMesh *)1;
     noctError err = {0};
-    noctStatus st = noctSceneRead(path, &sc, &err);
+    noctStatus st = scene ? noctSceneRead(path, &sc, &err) : noctMeshRead(path, &m, &err);
     ck_assert_msg(st == want, "%s: got %s (%s), want %s", name, noctStatusString(st),
                   err.message, noctStatusString(want));
-    ck_assert_ptr_null(sc);
+    ck_assert_ptr_null(scene ? (void *)sc : (void *)m);
     expect_at(&err, path, line);
     ck_assert_msg(strstr(err.message, what) != NULL, "'%s' lacks '%s'", err.message,
                   what);
 }
 
-/* Expect a mesh file to fail reading with status at line. */
+static void expect_scene(const char *name, const char *text, size_t len, noctStatus want,
+                         long line, const char *what)
+{
+    expect_failure(true, name, text, len, want, line, what);
+}
+
 static void expect_mesh(const char *name, const char *text, size_t len, noctStatus want,
                         long line, const char *what)
 {
-    const char *path = write_bytes(name, text, len);
-    noctMesh *m = (noctMesh *)1;
-    noctError err = {0};
-    noctStatus st = noctMeshRead(path, &m, &err);
-    ck_assert_msg(st == want, "%s: got %s (%s), want %s", name, noctStatusString(st),
-                  err.message, noctStatusString(want));
-    ck_assert_ptr_null(m);
-    expect_at(&err, path, line);
-    ck_assert_msg(strstr(err.message, what) != NULL, "'%s' lacks '%s'", err.message,
-                  what);
+    expect_failure(false, name, text, len, want, line, what);
 }
 
 /* ---- NUL bytes ------------------------------------------------------------------ */
