@@ -298,17 +298,14 @@ static double slab_enter(const double o[3], const double d[3], const double lo[3
 {
     double t0 = 0, t1 = 1;
     for (int k = 0; k < 3; ++k) {
-        if (d[k] == 0) {
-            if (o[k] < lo[k] || o[k] > hi[k])
-                return -1;
+        /* The near face first: division by d > 0 keeps the order of
+         * the faces' differences, by d < 0 reverses it. */
+        const double near = d[k] > 0 ? lo[k] : hi[k], far = d[k] > 0 ? hi[k] : lo[k];
+        if (d[k] == 0 && (o[k] < lo[k] || o[k] > hi[k]))
+            return -1;
+        if (d[k] == 0)
             continue;
-        }
-        double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
-        if (a > b) {
-            const double x = a;
-            a = b;
-            b = x;
-        }
+        const double a = (near - o[k]) / d[k], b = (far - o[k]) / d[k];
         t0 = a > t0 ? a : t0;
         t1 = b < t1 ? b : t1;
         if (t0 > t1)

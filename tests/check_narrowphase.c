@@ -1746,8 +1746,7 @@ END_TEST
 static Suite *narrowphase_suite(void)
 {
     Suite *s = suite_create("narrowphase");
-    TCase *tc = tcase_create("hard cases");
-    tcase_set_timeout(tc, 300);
+    TCase *tc = test_case(s, "hard cases", 300, NULL);
     tcase_add_test(tc, faces_exactly_touching);
     tcase_add_test(tc, edges_crossing_at_a_point);
     tcase_add_test(tc, vertex_exactly_on_face);
@@ -1756,17 +1755,14 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, tilted_boxes_near_contact);
     tcase_add_test(tc, tiny_and_far);
     tcase_add_test(tc, containment_and_identity);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("random against brute force");
-    tcase_set_timeout(tc, 300);
+    tc = test_case(s, "random against brute force", 300, NULL);
     tcase_add_loop_test(tc, random_tetrahedra_against_sat, 0, 4);
     tcase_add_loop_test(tc, random_coplanar_bases_against_sat, 0, 4);
     tcase_add_loop_test(tc, random_star_meshes_against_cones, 0, 4);
     tcase_add_test(tc, convex_level_one_sided);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("meshes and files");
+    tc = test_case(s, "meshes and files", 0, NULL);
     tcase_add_test(tc, bad_meshes_are_rejected);
     tcase_add_test(tc, box_constructors);
     tcase_add_test(tc, read_off_files);
@@ -1778,22 +1774,17 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, sat_filter_nearly_a_box);
     tcase_add_test(tc, witness_nearly_a_box);
     tcase_add_test(tc, level_timings);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("scale and position");
-    tcase_set_timeout(tc, 60);
+    tc = test_case(s, "scale and position", 60, NULL);
     tcase_add_test(tc, meshes_at_every_scale);
     tcase_add_test(tc, box_constructors_at_every_scale);
     tcase_add_test(tc, collide_at_every_scale);
     tcase_add_test(tc, filter_axes_at_every_scale);
     tcase_add_test(tc, meshes_at_every_position);
-    suite_add_tcase(s, tc);
 
 #ifndef NOCT_EFFICIENT
-    TCase *d = tcase_create("requires clauses");
-    tcase_set_tags(d, "death");
+    TCase *d = test_case(s, "requires clauses", 0, "death");
     tcase_add_loop_test_raise_signal(d, die_null_arguments, SIGABRT, 0, 6);
-    suite_add_tcase(s, d);
 #endif
     return s;
 }

@@ -522,8 +522,7 @@ END_TEST
 int main(void)
 {
     Suite *s = suite_create("predicates");
-    TCase *tc = tcase_create("exact signs");
-    tcase_set_timeout(tc, 120);
+    TCase *tc = test_case(s, "exact signs", 120, NULL);
     tcase_add_test(tc, orient2d_near_collinear);
     tcase_add_test(tc, orient3d_near_coplanar);
     tcase_add_test(tc, extreme_magnitudes);
@@ -532,6 +531,5 @@ int main(void)
     tcase_add_test(tc, exact_extremes_match_rationals);
     tcase_add_test(tc, filter_underflow_mixed_scales);
     tcase_add_test(tc, exact_path_allocates_nothing);
-    suite_add_tcase(s, tc);
     return run_suite(s);
 }

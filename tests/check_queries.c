@@ -797,8 +797,7 @@ END_TEST
 static Suite *queries_suite(void)
 {
     Suite *s = suite_create("queries");
-    TCase *tc = tcase_create("queries");
-    tcase_set_timeout(tc, 300);
+    TCase *tc = test_case(s, "queries", 300, NULL);
     tcase_add_loop_test(tc, points_against_geometry, 0, 1);
     tcase_add_loop_test(tc, boxes_and_shapes_against_brute_force, 0, 1);
     tcase_add_loop_test(tc, rays_against_geometry, 0, 1);
@@ -808,15 +807,11 @@ static Suite *queries_suite(void)
     tcase_add_test(tc, ray_normals_at_every_scale);
     tcase_add_test(tc, buffers_stopping_and_bad_input);
     tcase_add_test(tc, queries_from_two_threads);
-    suite_add_tcase(s, tc);
-    TCase *full = tcase_create("queries, full");
-    tcase_set_tags(full, "slow"); /* left out under valgrind */
-    tcase_set_timeout(full, 300);
+    TCase *full = test_case(s, "queries, full", 300, "slow");
     tcase_add_loop_test(full, points_against_geometry, 1, 2);
     tcase_add_loop_test(full, boxes_and_shapes_against_brute_force, 1, 2);
     tcase_add_loop_test(full, rays_against_geometry, 1, 2);
     tcase_add_loop_test(full, answers_do_not_depend_on_the_tree, 1, 2);
-    suite_add_tcase(s, full);
     return s;
 }
 

@@ -541,8 +541,7 @@ END_TEST
 static Suite *tracks_suite(void)
 {
     Suite *s = suite_create("tracks");
-    TCase *tc = tcase_create("tracks");
-    tcase_set_timeout(tc, 300);
+    TCase *tc = test_case(s, "tracks", 300, NULL);
     tcase_add_loop_test(tc, interpolation_against_the_formula, 0, 1);
     tcase_add_loop_test(tc, worlds_follow_their_tracks, 0, 1);
     tcase_add_test(tc, without_the_effect_nothing_moves);
@@ -550,13 +549,9 @@ static Suite *tracks_suite(void)
     tcase_add_test(tc, removal_and_replacement);
     tcase_add_test(tc, bad_tracks);
     tcase_add_test(tc, scene_keys);
-    suite_add_tcase(s, tc);
-    TCase *full = tcase_create("tracks, full");
-    tcase_set_tags(full, "slow"); /* left out under valgrind */
-    tcase_set_timeout(full, 300);
+    TCase *full = test_case(s, "tracks, full", 300, "slow");
     tcase_add_loop_test(full, interpolation_against_the_formula, 1, 2);
     tcase_add_loop_test(full, worlds_follow_their_tracks, 1, 2);
-    suite_add_tcase(s, full);
     return s;
 }
 

@@ -5,6 +5,17 @@
 
 #include "testutil.h"
 
+TCase *test_case(Suite *s, const char *name, int seconds, const char *tags)
+{
+    TCase *tc = tcase_create(name);
+    if (tags != NULL)
+        tcase_set_tags(tc, tags);
+    if (seconds > 0)
+        tcase_set_timeout(tc, seconds);
+    suite_add_tcase(s, tc);
+    return tc;
+}
+
 int run_suite(Suite *suite)
 {
     SRunner *sr = srunner_create(suite);

@@ -6,6 +6,7 @@
 #ifndef NOCT_TESTS_TESTUTIL_H
 #define NOCT_TESTS_TESTUTIL_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -24,6 +25,12 @@
         if (!(cond))                                                        \
             ck_abort_msg("%s:%d: expected %s", __FILE__, __LINE__, #cond);  \
     } while (0)
+
+/* A new test case of s, named name, with a timeout of seconds (0:
+ * Check's default) and Check's tags (NULL for none): "slow" ones are left
+ * out of the runs under valgrind, "death" ones (requires clauses that
+ * must abort) where fork() is off (CK_EXCLUDE_TAGS). */
+TCase *test_case(Suite *s, const char *name, int seconds, const char *tags);
 
 /* Run a suite with Check's runner (verbosity from CK_VERBOSITY) and return
  * the process exit status: EXIT_SUCCESS iff every test passed. */
