@@ -1318,10 +1318,8 @@ int main(void)
     suite_add_tcase(s, tc);
     tc = tcase_create("tree");
     tcase_add_loop_test(tc, automatic_settings, 0, 2);
-    tcase_add_test(tc, removals_drop_their_pairs);
-    tcase_add_test(tc, leaves_and_counters);
-    tcase_add_test(tc, fast_path_and_pair_callbacks);
-    tcase_add_test(tc, world_broadphase_is_the_objects);
+    add_tests(tc, removals_drop_their_pairs, leaves_and_counters, fast_path_and_pair_callbacks,
+              world_broadphase_is_the_objects);
     tcase_add_loop_test(tc, far_from_the_origin, 0,
                         3 * (int)(sizeof FAR_OFFSETS / sizeof *FAR_OFFSETS));
     suite_add_tcase(s, tc);

@@ -1190,9 +1190,7 @@ static Suite *families_suite(void)
     Suite *s = suite_create("families");
     TCase *tc = tcase_create("oracle");
     tcase_set_timeout(tc, 60);
-    tcase_add_test(tc, sat_closed_form);
-    tcase_add_test(tc, arms_closed_form);
-    tcase_add_test(tc, keyframes_closed_form);
+    add_tests(tc, sat_closed_form, arms_closed_form, keyframes_closed_form);
     tcase_add_loop_test(tc, arms_oracle_alone, 1, 3);
     tcase_add_loop_test(tc, keyframes_oracle_alone, 0, 1);
     suite_add_tcase(s, tc);

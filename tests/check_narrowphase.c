@@ -1747,14 +1747,9 @@ static Suite *narrowphase_suite(void)
 {
     Suite *s = suite_create("narrowphase");
     TCase *tc = test_case(s, "hard cases", 300, NULL);
-    tcase_add_test(tc, faces_exactly_touching);
-    tcase_add_test(tc, edges_crossing_at_a_point);
-    tcase_add_test(tc, vertex_exactly_on_face);
-    tcase_add_test(tc, coplanar_overlapping_faces);
-    tcase_add_test(tc, parallel_and_nearly_parallel);
-    tcase_add_test(tc, tilted_boxes_near_contact);
-    tcase_add_test(tc, tiny_and_far);
-    tcase_add_test(tc, containment_and_identity);
+    add_tests(tc, faces_exactly_touching, edges_crossing_at_a_point, vertex_exactly_on_face,
+              coplanar_overlapping_faces, parallel_and_nearly_parallel, tilted_boxes_near_contact,
+              tiny_and_far, containment_and_identity);
 
     tc = test_case(s, "random against brute force", 300, NULL);
     tcase_add_loop_test(tc, random_tetrahedra_against_sat, 0, 4);
@@ -1763,24 +1758,14 @@ static Suite *narrowphase_suite(void)
     tcase_add_test(tc, convex_level_one_sided);
 
     tc = test_case(s, "meshes and files", 0, NULL);
-    tcase_add_test(tc, bad_meshes_are_rejected);
-    tcase_add_test(tc, box_constructors);
-    tcase_add_test(tc, read_off_files);
-    tcase_add_test(tc, read_obj_files);
-    tcase_add_test(tc, status_strings);
-    tcase_add_test(tc, collide_rejects_bad_input);
-    tcase_add_test(tc, sat_filter_rejects_soundly);
+    add_tests(tc, bad_meshes_are_rejected, box_constructors, read_off_files, read_obj_files,
+              status_strings, collide_rejects_bad_input, sat_filter_rejects_soundly);
     tcase_add_loop_test(tc, sat_filter_rotated_boxes, 0, 2);
-    tcase_add_test(tc, sat_filter_nearly_a_box);
-    tcase_add_test(tc, witness_nearly_a_box);
-    tcase_add_test(tc, level_timings);
+    add_tests(tc, sat_filter_nearly_a_box, witness_nearly_a_box, level_timings);
 
     tc = test_case(s, "scale and position", 60, NULL);
-    tcase_add_test(tc, meshes_at_every_scale);
-    tcase_add_test(tc, box_constructors_at_every_scale);
-    tcase_add_test(tc, collide_at_every_scale);
-    tcase_add_test(tc, filter_axes_at_every_scale);
-    tcase_add_test(tc, meshes_at_every_position);
+    add_tests(tc, meshes_at_every_scale, box_constructors_at_every_scale, collide_at_every_scale,
+              filter_axes_at_every_scale, meshes_at_every_position);
 
 #ifndef NOCT_EFFICIENT
     TCase *d = test_case(s, "requires clauses", 0, "death");

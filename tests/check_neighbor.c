@@ -550,19 +550,15 @@ static Suite *neighbor_suite(void)
 {
     Suite *s = suite_create("neighbor");
     TCase *tc = tcase_create("tables");
-    tcase_add_test(tc, table_adj_from_geometry);
-    tcase_add_test(tc, table_reflect_from_geometry);
-    tcase_add_test(tc, table_common_face_from_geometry);
-    tcase_add_test(tc, table_common_edge_from_geometry);
+    add_tests(tc, table_adj_from_geometry, table_reflect_from_geometry,
+              table_common_face_from_geometry, table_common_edge_from_geometry);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("greater-or-equal neighbors");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, root_and_leaves_of_larger_size);
     tcase_add_loop_test(tc, neighbors_random_trees, 0, 12);
-    tcase_add_test(tc, neighbors_full_tree);
-    tcase_add_test(tc, neighbors_deep_paths);
-    tcase_add_test(tc, neighbors_deep_direction_change);
+    add_tests(tc, neighbors_full_tree, neighbors_deep_paths, neighbors_deep_direction_change);
     tcase_add_loop_test(tc, neighbors_after_random_edits, 0, 6);
     suite_add_tcase(s, tc);
 

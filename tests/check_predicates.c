@@ -523,13 +523,9 @@ int main(void)
 {
     Suite *s = suite_create("predicates");
     TCase *tc = test_case(s, "exact signs", 120, NULL);
-    tcase_add_test(tc, orient2d_near_collinear);
-    tcase_add_test(tc, orient3d_near_coplanar);
-    tcase_add_test(tc, extreme_magnitudes);
-    tcase_add_test(tc, orient3d_exact_matches_rationals);
-    tcase_add_test(tc, orient2d_exact_matches_rationals);
-    tcase_add_test(tc, exact_extremes_match_rationals);
-    tcase_add_test(tc, filter_underflow_mixed_scales);
-    tcase_add_test(tc, exact_path_allocates_nothing);
+    add_tests(tc, orient2d_near_collinear, orient3d_near_coplanar, extreme_magnitudes,
+              orient3d_exact_matches_rationals, orient2d_exact_matches_rationals,
+              exact_extremes_match_rationals, filter_underflow_mixed_scales,
+              exact_path_allocates_nothing);
     return run_suite(s);
 }

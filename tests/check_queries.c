@@ -802,11 +802,8 @@ static Suite *queries_suite(void)
     tcase_add_loop_test(tc, boxes_and_shapes_against_brute_force, 0, 1);
     tcase_add_loop_test(tc, rays_against_geometry, 0, 1);
     tcase_add_loop_test(tc, answers_do_not_depend_on_the_tree, 0, 1);
-    tcase_add_test(tc, exact_points_on_faces_edges_and_corners);
-    tcase_add_test(tc, exact_rays_along_faces_and_through_edges);
-    tcase_add_test(tc, ray_normals_at_every_scale);
-    tcase_add_test(tc, buffers_stopping_and_bad_input);
-    tcase_add_test(tc, queries_from_two_threads);
+    add_tests(tc, exact_points_on_faces_edges_and_corners, exact_rays_along_faces_and_through_edges,
+              ray_normals_at_every_scale, buffers_stopping_and_bad_input, queries_from_two_threads);
     TCase *full = test_case(s, "queries, full", 300, "slow");
     tcase_add_loop_test(full, points_against_geometry, 1, 2);
     tcase_add_loop_test(full, boxes_and_shapes_against_brute_force, 1, 2);

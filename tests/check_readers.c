@@ -813,27 +813,18 @@ static Suite *readers_suite(void)
 {
     Suite *s = suite_create("readers");
     TCase *tc = tcase_create("NUL bytes and read errors");
-    tcase_add_test(tc, nul_byte_in_scene);
-    tcase_add_test(tc, nul_byte_in_off);
-    tcase_add_test(tc, nul_byte_in_obj);
-    tcase_add_test(tc, nul_byte_in_scene_mesh);
-    tcase_add_test(tc, read_error_is_io);
+    add_tests(tc, nul_byte_in_scene, nul_byte_in_off, nul_byte_in_obj, nul_byte_in_scene_mesh,
+              read_error_is_io);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("read what builds");
-    tcase_add_test(tc, walls_need_a_container);
-    tcase_add_test(tc, scene_limits);
-    tcase_add_test(tc, tiny_and_huge_directions);
-    tcase_add_test(tc, object_attributes);
-    tcase_add_test(tc, filter_words_are_decimal);
-    tcase_add_test(tc, scenes_written_read_back);
+    add_tests(tc, walls_need_a_container, scene_limits, tiny_and_huge_directions, object_attributes,
+              filter_words_are_decimal, scenes_written_read_back);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("out of memory");
     tcase_set_timeout(tc, 120);
-    tcase_add_test(tc, getline_nomem_is_nomem);
-    tcase_add_test(tc, every_allocation_failing);
-    tcase_add_test(tc, every_allocation_failing_mesh);
+    add_tests(tc, getline_nomem_is_nomem, every_allocation_failing, every_allocation_failing_mesh);
     suite_add_tcase(s, tc);
     return s;
 }

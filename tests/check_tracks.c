@@ -544,11 +544,8 @@ static Suite *tracks_suite(void)
     TCase *tc = test_case(s, "tracks", 300, NULL);
     tcase_add_loop_test(tc, interpolation_against_the_formula, 0, 1);
     tcase_add_loop_test(tc, worlds_follow_their_tracks, 0, 1);
-    tcase_add_test(tc, without_the_effect_nothing_moves);
-    tcase_add_test(tc, a_failed_step_gives_the_placements_back);
-    tcase_add_test(tc, removal_and_replacement);
-    tcase_add_test(tc, bad_tracks);
-    tcase_add_test(tc, scene_keys);
+    add_tests(tc, without_the_effect_nothing_moves, a_failed_step_gives_the_placements_back,
+              removal_and_replacement, bad_tracks, scene_keys);
     TCase *full = test_case(s, "tracks, full", 300, "slow");
     tcase_add_loop_test(full, interpolation_against_the_formula, 1, 2);
     tcase_add_loop_test(full, worlds_follow_their_tracks, 1, 2);

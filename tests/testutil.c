@@ -16,6 +16,12 @@ TCase *test_case(Suite *s, const char *name, int seconds, const char *tags)
     return tc;
 }
 
+void test_add_all(TCase *tc, const TTest *const *tests, size_t n)
+{
+    for (size_t i = 0; i < n; ++i)
+        tcase_add_test(tc, tests[i]);
+}
+
 int run_suite(Suite *suite)
 {
     SRunner *sr = srunner_create(suite);

@@ -32,6 +32,12 @@
  * must abort) where fork() is off (CK_EXCLUDE_TAGS). */
 TCase *test_case(Suite *s, const char *name, int seconds, const char *tags);
 
+/* add_tests(tc, a, b, ...): tcase_add_test() for each test named. */
+void test_add_all(TCase *tc, const TTest *const *tests, size_t n);
+#define add_tests(tc, ...)                                                     \
+    test_add_all((tc), (const TTest *const[]){__VA_ARGS__},                    \
+                 sizeof((const TTest *const[]){__VA_ARGS__}) / sizeof(const TTest *))
+
 /* Run a suite with Check's runner (verbosity from CK_VERBOSITY) and return
  * the process exit status: EXIT_SUCCESS iff every test passed. */
 int run_suite(Suite *suite);
