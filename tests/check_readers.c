@@ -135,17 +135,25 @@ static const char CUBE_OBJ[] =
     "v 0 0 0\nv 0 0 1\nv 0 1 0\nv 0 1 1\nv 1 0 0\nv 1 0 1\nv 1 1 0\nv 1 1 1\n"
     "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4\n";
 
+/* Read and build the scene at path, into *sc and its world, or fail the
+ * test. */
+static noctWorld *read_and_build(const char *path, noctScene **sc)
+{
+    noctError err = {0};
+    noctStatus st = noctSceneRead(path, sc, &err);
+    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
+    noctWorld *w;
+    st = noctSceneBuild(*sc, &w, &err);
+    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    return w;
+}
+
 /* Read and build a scene; returns the number of objects of its world, or
  * fails the test. */
 static size_t build_count(const char *path)
 {
     noctScene *sc;
-    noctError err = {0};
-    noctStatus st = noctSceneRead(path, &sc, &err);
-    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
-    noctWorld *w;
-    st = noctSceneBuild(sc, &w, &err);
-    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    noctWorld *w = read_and_build(path, &sc);
     size_t n = noctWorldObjectCount(w);
     noctWorldDestroy(w);
     noctSceneDestroy(sc);
@@ -397,12 +405,7 @@ START_TEST(object_attributes)
         "object a 0 5 0 type static\n"
         "object a 0 0 5 velocity 1e-3 0 0 type moving sensor spin 0 0 1 90\n");
     noctScene *sc;
-    noctError err = {0};
-    noctStatus st = noctSceneRead(path, &sc, &err);
-    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
-    noctWorld *w;
-    st = noctSceneBuild(sc, &w, &err);
-    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    noctWorld *w = read_and_build(path, &sc);
     ck_assert_uint_eq(noctWorldObjectCount(w), 4);
     noctObjectId id[4];
     for (uint32_t i = 0; i < 4; ++i)
@@ -443,14 +446,14 @@ START_TEST(object_attributes)
     ck_assert(noctWorldGetMesh(w, id[0]) == NULL);
     ck_assert_int_eq(noctWorldGetHalfExtents(w, id[0], v), NOCT_OK);
     ck_assert(v[0] == 0.5 && v[1] == 0.25 && v[2] == 0.125);
-    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
     ck_assert_int_eq(noctWorldGetTransform(w, id[0], &x), NOCT_OK);
     ck_assert(x.p[0] == 0.1 && x.p[1] == -0.2 && x.p[2] == 0.3);
     ck_assert_int_eq(noctWorldGetTransform(w, id[1], &x), NOCT_OK);
     ck_assert(x.p[0] == 5 && x.p[1] == 0); /* kinematic: not moved */
     ck_assert_int_eq(noctWorldObjectBox(w, id[3], lo, hi), NOCT_OK);
     ck_assert(hi[0] - lo[0] == 0.5 && hi[1] - lo[1] == 1); /* turned */
-    ck_assert_int_eq(noctWorldValidate(w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
     noctWorldDestroy(w);
     noctSceneDestroy(sc);
 }
@@ -489,12 +492,7 @@ START_TEST(tiny_and_huge_directions)
         "object a 0 0 10   1e-200 -1e-200 0 0.25\n"
         "object a 10 10 10 1.5e308 1.5e308 1.5e308 0.25\n");
     noctScene *sc;
-    noctError err = {0};
-    noctStatus st = noctSceneRead(path, &sc, &err);
-    ck_assert_msg(st == NOCT_OK, "%s: %s", noctStatusString(st), err.message);
-    noctWorld *w;
-    st = noctSceneBuild(sc, &w, &err);
-    ck_assert_msg(st == NOCT_OK, "build: %s: %s", noctStatusString(st), err.message);
+    noctWorld *w = read_and_build(path, &sc);
     ck_assert_uint_eq(noctWorldObjectCount(w), 5);
     const double h = sqrt(0.5), t = sqrt(1.0 / 3);
     const double want[5][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {h, -h, 0}, {t, t, t}};
@@ -507,7 +505,7 @@ START_TEST(tiny_and_huge_directions)
                           "(%g, %g, %g)", i, dir[0], dir[1], dir[2]);
     }
     /* they move by speed 0.25 along those directions */
-    ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
     double pos[3];
     ck_assert_int_eq(noctWorldObject(w, (noctObjectId){0, 1}, pos, NULL), NOCT_OK);
     ck_assert(pos[0] == 0.25 && pos[1] == 0 && pos[2] == 0);
