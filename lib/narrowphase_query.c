@@ -88,35 +88,6 @@ static double entry_fraction(const double p[3], const double q[3], const double 
     return best;
 }
 
-/* v scaled by the power of two that brings its largest component into
- * [1/2, 1), exactly (but for subnormal parts of a vector of huge range);
- * false if v is 0. */
-static bool scale_to_unit_range(const double v[3], double out[3])
-{
-    const double m = noct_max(noct_max(fabs(v[0]), fabs(v[1])), fabs(v[2]));
-    if (!(m > 0))
-        return false;
-    int e;
-    frexp(m, &e);
-    for (int k = 0; k < 3; ++k)
-        out[k] = ldexp(v[k], -e);
-    return true;
-}
-
-/* The unit vector along v into n, from v scaled as above, so that its
- * length neither overflows nor underflows; false (n = 0) if v is 0. */
-static bool unit_vector(const double v[3], double n[3])
-{
-    double s[3];
-    n[0] = n[1] = n[2] = 0;
-    if (!scale_to_unit_range(v, s))
-        return false;
-    const double len = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-    for (int k = 0; k < 3; ++k)
-        n[k] = s[k] / len;
-    return true;
-}
-
 /* The unit vector along u x v into n, computed on u and v scaled by
  * powers of two so that no product overflows or underflows, at any edge
  * length a mesh may have; false (n = 0) if u x v is 0 as computed: a
@@ -125,10 +96,10 @@ static bool unit_cross(const double u[3], const double v[3], double n[3])
 {
     double us[3], vs[3], c[3];
     n[0] = n[1] = n[2] = 0;
-    if (!scale_to_unit_range(u, us) || !scale_to_unit_range(v, vs))
+    if (!noct_scale_to_unit(u, us) || !noct_scale_to_unit(v, vs))
         return false;
-    cross_into(us, vs, c);
-    return unit_vector(c, n);
+    noct_cross3(us, vs, c);
+    return noct_unit3(c, n);
 }
 
 /* The first triangle segment pq enters, so far. */
@@ -176,7 +147,7 @@ static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], d
             memcpy(e->normal, nn, sizeof nn);
         } else { /* against the segment: a normal a program can use */
             const double back[3] = {-d[0], -d[1], -d[2]};
-            unit_vector(back, e->normal);
+            noct_unit3(back, e->normal);
         }
     }
     return false; /* on: the least fraction */

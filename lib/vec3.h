@@ -8,6 +8,7 @@
 #define NOCT_LIB_VEC3_H
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -89,18 +90,34 @@ static inline double noct_max_abs3(const double a[3])
 }
 
 /* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
-static inline void noct_unit3(const double d[3], double u[3])
+/* v scaled by the power of two that brings its largest component into
+ * [1/2, 1) (exactly, but for parts under 2^-1022 of the largest); false
+ * (out untouched) if v is 0. */
+static inline bool noct_scale_to_unit(const double v[3], double out[3])
 {
-    double m = noct_max_abs3(d);
-    if (!(m > 0)) {
+    const double m = noct_max_abs3(v);
+    if (!(m > 0))
+        return false;
+    const noct_scaler s = noct_scaler_for(m);
+    for (int k = 0; k < 3; ++k)
+        out[k] = noct_scaled(&s, v[k]);
+    return true;
+}
+
+/* u = d / |d| (false, and u = 0, for d = 0), for d of any magnitude: the
+ * length is taken of d scaled into [1/2, 1), so it neither overflows nor
+ * underflows. */
+static inline bool noct_unit3(const double d[3], double u[3])
+{
+    double x[3];
+    if (!noct_scale_to_unit(d, x)) {
         u[0] = u[1] = u[2] = 0;
-        return;
+        return false;
     }
-    noct_scaler s = noct_scaler_for(m);
-    double x[3] = {noct_scaled(&s, d[0]), noct_scaled(&s, d[1]), noct_scaled(&s, d[2])};
-    double len = noct_norm3(x); /* in [1/2, 2] */
+    const double len = noct_norm3(x); /* in [1/2, 2] */
     for (int k = 0; k < 3; ++k)
         u[k] = x[k] / len;
+    return true;
 }
 
 #endif /* NOCT_LIB_VEC3_H */
