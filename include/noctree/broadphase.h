@@ -198,7 +198,7 @@ NOCT_API noctBroadphaseDef noctDefaultBroadphaseDef(void);
  * @param def the parameters.
  * @param bp the broadphase.
  * @param err receives the details of a failure, or NULL.
- * @return #NOCT_OK or a failure status (see @post).
+ * @return #NOCT_OK or a failure status (see the postcondition).
  */
 NOCT_API noctStatus noctBroadphaseCreate(const noctBroadphaseDef *def, noctBroadphase **bp,
                                          noctError *err);
@@ -240,7 +240,7 @@ NOCT_API void noctBroadphaseDestroy(noctBroadphase *bp);
  *       #NOCT_ERR_INVALID (lo > hi on an axis), #NOCT_ERR_TOO_LARGE (a
  *       coordinate beyond #NOCT_MAX_COORDINATE, or 2^31 proxies),
  *       #NOCT_ERR_NOMEM.
- * @return #NOCT_OK or a failure status (see @post).
+ * @return #NOCT_OK or a failure status (see the postcondition).
  */
 NOCT_API noctStatus noctBroadphaseAdd(noctBroadphase *bp, const double lo[3],
                                       const double hi[3], void *user_data, uint64_t category,
@@ -259,7 +259,7 @@ NOCT_API noctStatus noctBroadphaseAdd(noctBroadphase *bp, const double lo[3],
  * @param lo the box's low corner.
  * @param hi the box's high corner.
  * @param err receives the details of a failure, or NULL.
- * @return #NOCT_OK or a failure status (see @post).
+ * @return #NOCT_OK or a failure status (see the postcondition).
  */
 NOCT_API noctStatus noctBroadphaseMove(noctBroadphase *bp, noctProxyId id, const double lo[3],
                                        const double hi[3], noctError *err);
@@ -286,8 +286,11 @@ NOCT_API noctStatus noctBroadphaseRemove(noctBroadphase *bp, noctProxyId id);
  *       them; #NOCT_ERR_INVALID for a stale handle.
  * @param bp the broadphase.
  * @param id the proxy's handle.
- * @param category the proxy's category bits (or where to put them).
- * @param mask the categories it pairs with (or where to put them).
+ * @param category the proxy's category bits. 0 is allowed: the proxy
+ *        then pairs with nothing and no query finds it, parked without
+ *        being removed (noctWorldSetFilter() refuses 0: an object that can
+ *        never pair is a mistake in a world).
+ * @param mask the categories it pairs with.
  * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
  */
 NOCT_API noctStatus noctBroadphaseSetFilter(noctBroadphase *bp, noctProxyId id,

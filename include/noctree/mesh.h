@@ -8,9 +8,10 @@
  * OFF and Wavefront OBJ readers.
  *
  * A #noctMesh is an immutable solid: the closed region bounded by a closed,
- * consistently oriented surface of planar convex polygons. It is placed in
- * the world by a translation (see narrowphase.h); a fixed orientation is
- * baked into its vertices. A mesh may be shared by any number of objects
+ * consistently oriented surface of planar convex polygons, in its own
+ * frame. It is placed by a transform: a rotation and a translation
+ * (noctCollideTransformed(), a world object's noctTransform; noctCollide()
+ * takes translations alone). A mesh may be shared by any number of objects
  * and threads once created.
  *
  * **Validation.** Every constructor checks its input and, on failure,

@@ -207,7 +207,8 @@ typedef enum noctMaintenance {
 typedef struct noctWorldDef {
     int N;                  /**< Most objects per leaf that a split could
                                  separate (1 or more; see "The octree"
-                                 above), #NOCT_N_EXHAUSTIVE, or #NOCT_AUTO:
+                                 in world.h's overview), #NOCT_N_EXHAUSTIVE,
+                                 or #NOCT_AUTO:
                                  chosen by the world's broadphase from
                                  what it holds (broadphase.h, Settings).
                                  Default #NOCT_AUTO. */
@@ -526,7 +527,8 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
  * without looking at their triangles.)
  * @pre world != NULL && pairs != NULL
  * @param world the world.
- * @param pairs receives the list (valid until the next step).
+ * @param pairs receives the list, valid until the next noctWorldStep()
+ *        (succeeded or failed) or noctWorldDestroy(), as noctWorldColliding()'s.
  * @return how many.
  */
 NOCT_API size_t noctWorldNear(const noctWorld *world, const noctPair **pairs);
@@ -643,7 +645,10 @@ NOCT_API uint64_t noctWorldTick(const noctWorld *world);
  *        first), sorted by (a.index, b.index).
  * @param[in]  world The world.
  * @param[out] pairs Receives a pointer to the list, valid until the next
- *                   call that changes the world.
+ *                   noctWorldStep() (succeeded or failed) or
+ *                   noctWorldDestroy(): no other call changes the lists
+ *                   (a removed object's pairs stay until the step that
+ *                   ends them).
  * @pre @p world and @p pairs are not NULL.
  * @return The number of pairs.
  */
