@@ -219,7 +219,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 if HAVE_PEERS
 TESTS += tests/peers.sh
 endif
-EXTRA_DIST += tests/peers.sh
+EXTRA_DIST += tests/peers.sh tests/manlint.sh
 
 AM_TESTS_ENVIRONMENT = \
 	CC='$(CC)'; NM='$(NM)'; srcdir='$(srcdir)/tests'; \
