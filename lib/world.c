@@ -84,11 +84,14 @@ void noctWorldDestroy(noctWorld *w)
     if (w == NULL)
         return;
     for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
-        if (w->obj[i].alive)
+        if (w->obj[i].alive) {
             noctMeshDestroy(w->pose[i].rotated);
+            noct_turn_free(w->turn[i]);
+        }
     noct_bp_fini(&w->bp);
     free(w->obj);
     free(w->pose);
+    free(w->turn);
     free(w->pos);
     free(w->mesh);
     free(w->slot);

@@ -146,6 +146,9 @@ struct noctWorld {
                               copy (noct_pose); NULL for a box primitive
                               until its exact test needs one */
     noct_pose *pose;       /* what the program set (not read by the step) */
+    noct_turn **turn;      /* per mesh object turned more than once: what
+                              turning its shape again needs, and the
+                              spare copy it turns into (NULL before) */
     noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
                               all the exact level reads of most pairs of
                               boxes (64-byte aligned, two lines each) */
