@@ -798,3 +798,34 @@ bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, n
     centre_of(m);
     return true;
 }
+
+bool noct_mesh_same(const noctMesh *a, const noctMesh *b)
+{
+    if (a->nv != b->nv || a->nt != b->nt || a->nnodes != b->nnodes || a->nhull != b->nhull ||
+        a->nsat_faces != b->nsat_faces || a->nsat_edges != b->nsat_edges ||
+        a->convex != b->convex || a->has_box != b->has_box || a->has_dual != b->has_dual ||
+        (a->plane == NULL) != (b->plane == NULL))
+        return false;
+    const size_t naxes = a->nsat_faces + a->nsat_edges;
+    if (memcmp(a->v, b->v, 3 * a->nv * sizeof *a->v) != 0 ||
+        memcmp(a->tri, b->tri, 3 * a->nt * sizeof *a->tri) != 0 ||
+        memcmp(a->nodes, b->nodes, a->nnodes * sizeof *a->nodes) != 0 ||
+        memcmp(a->hull, b->hull, a->nhull * sizeof *a->hull) != 0 ||
+        (naxes > 0 && memcmp(a->axis, b->axis, naxes * sizeof *a->axis) != 0) ||
+        (a->plane != NULL && memcmp(a->plane, b->plane, a->nt * sizeof *a->plane) != 0) ||
+        memcmp(a->lo, b->lo, sizeof a->lo) != 0 || memcmp(a->hi, b->hi, sizeof a->hi) != 0 ||
+        memcmp(a->centre, b->centre, sizeof a->centre) != 0)
+        return false;
+    /* field by field: box_dual has padding */
+    const box_form *x = &a->box, *y = &b->box;
+    if (a->has_box &&
+        (memcmp(x->c, y->c, sizeof x->c) != 0 || memcmp(x->e, y->e, sizeof x->e) != 0 ||
+         memcmp(&x->size, &y->size, sizeof x->size) != 0 ||
+         memcmp(x->own, y->own, sizeof x->own) != 0 || memcmp(&x->dev, &y->dev, sizeof x->dev) != 0))
+        return false;
+    const box_dual *g = &a->dual, *h = &b->dual;
+    return !a->has_dual ||
+           (memcmp(g->g, h->g, sizeof g->g) == 0 && memcmp(&g->gmax, &h->gmax, sizeof g->gmax) == 0 &&
+            memcmp(&g->eta, &h->eta, sizeof g->eta) == 0 &&
+            memcmp(&g->shrink, &h->shrink, sizeof g->shrink) == 0);
+}

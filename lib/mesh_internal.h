@@ -278,4 +278,8 @@ void noct_turn_free(noct_turn *t);
  * then garbage, only fit for noctMeshDestroy(). */
 bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, noctMesh *m);
 
+/* Do a and b hold the same mesh, bit for bit in every field a reader
+ * reads (their arrays compared, not their addresses)? */
+bool noct_mesh_same(const noctMesh *a, const noctMesh *b);
+
 #endif /* NOCT_LIB_MESH_INTERNAL_H */

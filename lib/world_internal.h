@@ -227,8 +227,14 @@ void noct_world_unplace(noctWorld *w);
 /* Room for n placements this step; false without memory. */
 bool noct_world_reserve_placed(noctWorld *w, uint32_t n);
 
-/* A step that succeeded keeps its placements: the meshes they replaced go. */
+/* A step that succeeded keeps its placements: the meshes they replaced
+ * go, a mesh object's as its spare (noct_turn). */
 void noct_world_placements_done(noctWorld *w);
+
+/* Is object s's turned copy of its mesh shape (if it has one) what
+ * noct_mesh_rotated() makes anew of the shape and its rotation, bit for
+ * bit (recycled copies are refilled in place)? INVARIANT if not, NOMEM. */
+noctStatus noct_world_check_turned(const noctWorld *w, uint32_t s, noctError *err);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 

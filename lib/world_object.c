@@ -762,3 +762,22 @@ void noct_world_placements_done(noctWorld *w)
     w->nplaced = 0;
 }
 
+
+noctStatus noct_world_check_turned(const noctWorld *w, uint32_t s, noctError *err)
+{
+    const noct_pose *p = &w->pose[s];
+    if (w->obj[s].box || p->rotated == NULL)
+        return NOCT_OK;
+    double R[9];
+    noctQuatToMatrix(&p->q, R, NULL);
+    noctMesh *fresh;
+    const noctStatus st = noct_mesh_rotated(p->shape.mesh, R, &fresh, NULL);
+    if (st == NOCT_ERR_NOMEM)
+        return noct_fail(err, st, (long)s, 0, "out of memory");
+    const bool same = st == NOCT_OK && noct_mesh_same(p->rotated, fresh);
+    noctMeshDestroy(fresh);
+    if (!same)
+        return noct_fail(err, NOCT_ERR_INVARIANT, (long)s, 0,
+                         "object %u's turned mesh is not its shape turned anew", s);
+    return NOCT_OK;
+}

@@ -973,7 +973,10 @@ NOCT_API void noctWorldGetCounters(const noctWorld *world,
  * its leaves and each leaf's record of its objects point at each other,
  * and that no group of leaf siblings holds N or fewer distinct objects
  * (it should have merged; rebuild mode, the exhaustive N and merges owed
- * for want of memory aside). A world whose octree a failure tore down
+ * for want of memory aside), and that each object's mesh shape as turned
+ * by its rotation is, bit for bit, the mesh noctMeshCreate() makes of the
+ * turned vertices (the world refills turned copies in place). A world
+ * whose octree a failure tore down
  * (see noctWorldStep()) is valid: its tree is owed.
  * @param[in]  world The world.
  * @param[out] err   Receives the first problem found, or NULL.
