@@ -182,10 +182,14 @@ enum noctEffect {
                                          velocity, q), and the object is
                                          placed as by noctWorldSetTransform()
                                          (a mesh shape is rotated anew each
-                                         step; a box primitive costs a few
-                                         hundred instructions). Without it,
-                                         angular velocities are kept but
-                                         cost nothing. */
+                                         step, into the copy its step before
+                                         replaced: no allocation once each
+                                         has one, but for a non-convex mesh
+                                         of over 32 vertices, whose hull
+                                         qhull makes; a box primitive costs
+                                         a few hundred instructions).
+                                         Without it, angular velocities are
+                                         kept but cost nothing. */
     NOCT_EFFECT_TRACK = 1u << 6     /**< Objects with a track
                                          (noctWorldSetTrack()) follow it: at
                                          each step, first, each is placed
