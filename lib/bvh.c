@@ -111,19 +111,9 @@ static void bvh_split(bvh_build *b, uint32_t n, uint32_t first, uint32_t count,
     bvh_split(b, left + 1, first + half, count - half, next);
 }
 
-noctStatus noct_bvh_build(noctMesh *m, noctError *err)
+void noct_bvh_build_with(noctMesh *m, uint32_t *order, double *centroid, uint32_t *tri)
 {
-    bvh_build b = {m, NULL, NULL};
-    m->nodes = malloc(2 * m->nt * sizeof *m->nodes);
-    b.order = malloc(m->nt * sizeof *b.order);
-    b.centroid = malloc(3 * m->nt * sizeof *b.centroid);
-    uint32_t *tri = malloc(3 * m->nt * sizeof *tri);
-    if (m->nodes == NULL || b.order == NULL || b.centroid == NULL || tri == NULL) {
-        free(b.order);
-        free(b.centroid);
-        free(tri);
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    }
+    bvh_build b = {m, order, centroid};
     for (uint32_t t = 0; t < m->nt; ++t) {
         b.order[t] = t;
         for (int k = 0; k < 3; ++k)
@@ -136,10 +126,25 @@ noctStatus noct_bvh_build(noctMesh *m, noctError *err)
     m->nnodes = next;
     for (uint32_t t = 0; t < m->nt; ++t)
         memcpy(&tri[3 * t], &m->tri[3 * b.order[t]], 3 * sizeof *tri);
+}
+
+noctStatus noct_bvh_build(noctMesh *m, noctError *err)
+{
+    m->nodes = malloc(2 * m->nt * sizeof *m->nodes);
+    uint32_t *order = malloc(m->nt * sizeof *order);
+    double *centroid = malloc(3 * m->nt * sizeof *centroid);
+    uint32_t *tri = malloc(3 * m->nt * sizeof *tri);
+    if (m->nodes == NULL || order == NULL || centroid == NULL || tri == NULL) {
+        free(order);
+        free(centroid);
+        free(tri);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    noct_bvh_build_with(m, order, centroid, tri);
     free(m->tri);
     m->tri = tri;
-    free(b.order);
-    free(b.centroid);
+    free(order);
+    free(centroid);
     return NOCT_OK;
 }
 

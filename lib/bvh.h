@@ -33,6 +33,13 @@
 /* Build m's BVH (m->nodes, m->nnodes) and put m->tri in its order; NOMEM. */
 noctStatus noct_bvh_build(noctMesh *m, noctError *err);
 
+/* The same without allocating: m->nodes has room for its nodes (how many
+ * depends on m->nt alone: median splits), order, centroid and tri for
+ * m->nt, 3 m->nt and 3 m->nt entries. m->tri is left as it was; tri gets
+ * its triangles in BVH order, order[t] the index in m->tri of the
+ * triangle at BVH position t. */
+void noct_bvh_build_with(noctMesh *m, uint32_t *order, double *centroid, uint32_t *tri);
+
 /* A mesh placed at translation t. */
 typedef struct noct_placed_mesh {
     const noctMesh *m;

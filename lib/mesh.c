@@ -293,52 +293,59 @@ static bool add_direction(double list[][3], size_t *n, const double u[3])
     return true;
 }
 
-static noctStatus compute_convexity(noctMesh *m, noctError *err)
+/* Each triangle's plane: its unit normal (unit_normal(): the same
+ * wherever the mesh is and whatever its size) and offset. */
+static void planes_of(const noctMesh *m, double (*plane)[4])
 {
-    /* Each triangle's plane: its unit normal (unit_normal(): the same
-     * wherever the mesh is and whatever its size) and offset. The planes
-     * are kept for the filter; the normals tell real edges and give the
-     * face directions. */
-    m->plane = malloc(m->nt * sizeof *m->plane);
-    size_t ne = 3 * m->nt;
-    dir_edge *e = malloc(ne * sizeof *e);
-    if (e == NULL || m->plane == NULL) {
-        free(e);
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-    }
     for (size_t t = 0; t < m->nt; ++t) {
         const double *p0 = &m->v[3 * m->tri[3 * t]];
-        unit_normal(p0, &m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t + 2]],
-                    m->plane[t]);
-        m->plane[t][3] = noct_dot3(m->plane[t], p0);
+        unit_normal(p0, &m->v[3 * m->tri[3 * t + 1]], &m->v[3 * m->tri[3 * t + 2]], plane[t]);
+        plane[t][3] = noct_dot3(plane[t], p0);
     }
-    for (size_t t = 0; t < m->nt; ++t)
+}
+
+/* m's directed edges, sorted (cmp_dir_edge): the edge list e of 3 nt. */
+static void directed_edges(const uint32_t *tri, size_t nt, dir_edge *e)
+{
+    for (size_t t = 0; t < nt; ++t)
         for (int c = 0; c < 3; ++c)
-            e[3 * t + c] = (dir_edge){m->tri[3 * t + c],
-                                      m->tri[3 * t + (c + 1) % 3],
-                                      m->tri[3 * t + (c + 2) % 3], (uint32_t)t};
-    qsort(e, ne, sizeof *e, cmp_dir_edge);
+            e[3 * t + c] = (dir_edge){tri[3 * t + c], tri[3 * t + (c + 1) % 3],
+                                      tri[3 * t + (c + 2) % 3], (uint32_t)t};
+    qsort(e, 3 * nt, sizeof *e, cmp_dir_edge);
+}
+
+/*
+ * The convexity and the filter's directions of m, from its triangles'
+ * planes and its sorted directed edges e, whose triangle is e[i].tri, or
+ * pos[e[i].tri] when pos is not NULL: sets m->convex, m->nsat_faces and
+ * m->nsat_edges (0 without the filter) and the directions in sat_face and
+ * sat_edge. Triangles from one polygon share interior edges: still
+ * checked, and coplanar (sign 0), which is allowed. A real (non-coplanar)
+ * edge is an edge direction for the separating-axis filter. The walk goes
+ * on past a concave edge until both answers are known: a rotated box,
+ * whose rounded corners bend its faces by an ulp, is not exactly convex,
+ * yet the filter needs all its edge directions.
+ */
+static void convexity_walk(noctMesh *m, const double (*plane)[4], const dir_edge *e,
+                           const uint32_t *pos, double sat_face[][3], double sat_edge[][3])
+{
+    const size_t ne = 3 * m->nt;
     bool convex = true, sat = true;
-    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
     m->nsat_faces = m->nsat_edges = 0;
-    /* Triangles from one polygon share interior edges: still checked, and
-     * coplanar (sign 0), which is allowed. A real (non-coplanar) edge is an
-     * edge direction for the separating-axis filter. The walk goes on past
-     * a concave edge until both answers are known: a rotated box, whose
-     * rounded corners bend its faces by an ulp, is not exactly convex, yet
-     * the filter needs all its edge directions. */
     for (size_t i = 0; i + 1 < ne && (convex || sat); i += 2) {
         const dir_edge *p = &e[i], *q = &e[i + 1];
-        const double *t0 = &m->v[3 * m->tri[3 * p->tri]];
-        const double *t1 = &m->v[3 * m->tri[3 * p->tri + 1]];
-        const double *t2 = &m->v[3 * m->tri[3 * p->tri + 2]];
+        const uint32_t pt = pos != NULL ? pos[p->tri] : p->tri;
+        const uint32_t qt = pos != NULL ? pos[q->tri] : q->tri;
+        const double *t0 = &m->v[3 * m->tri[3 * pt]];
+        const double *t1 = &m->v[3 * m->tri[3 * pt + 1]];
+        const double *t2 = &m->v[3 * m->tri[3 * pt + 2]];
         /* q's far vertex must be below or on p's (outward) plane: orient3d
          * >= 0 means below. */
         if (convex && noct_orient3d(t0, t1, t2, &m->v[3 * q->far], NULL) < 0)
             convex = false;
         /* An edge between triangles whose planes differ is an edge of the
          * solid, not a diagonal of a (nearly) flat polygon. */
-        if (sat && noct_dot3(m->plane[p->tri], m->plane[q->tri]) < 1 - 1e-9) {
+        if (sat && noct_dot3(plane[pt], plane[qt]) < 1 - 1e-9) {
             double d[3], u[3];
             noct_sub3(&m->v[3 * p->b], &m->v[3 * p->a], d);
             noct_unit3(d, u);
@@ -346,23 +353,20 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
         }
     }
     for (size_t t = 0; t < m->nt && sat; ++t)
-        sat = add_direction(sat_face, &m->nsat_faces, m->plane[t]);
+        sat = add_direction(sat_face, &m->nsat_faces, plane[t]);
     /* The filter needs no convexity to be sound (a solid lies inside the
      * hull of its vertices), only to be useful: small meshes with few
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
-    free(e);
     m->convex = convex;
-    if (m->nsat_faces == 0) { /* no filter, no planes */
-        free(m->plane);
-        m->plane = NULL;
-        return NOCT_OK;
-    }
-    size_t naxes = m->nsat_faces + m->nsat_edges;
-    m->axis = malloc(naxes * sizeof *m->axis);
-    if (m->axis == NULL)
-        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+}
+
+/* The filter's axes (m->axis, room for them) from its directions, with
+ * the intervals of m's vertices on them. */
+static void fill_axes(noctMesh *m, const double sat_face[][3], const double sat_edge[][3])
+{
+    const size_t naxes = m->nsat_faces + m->nsat_edges;
     for (size_t i = 0; i < naxes; ++i) {
         sat_axis *a = &m->axis[i];
         memcpy(a->u, i < m->nsat_faces ? sat_face[i] : sat_edge[i - m->nsat_faces],
@@ -375,11 +379,48 @@ static noctStatus compute_convexity(noctMesh *m, noctError *err)
             a->hi = d > a->hi ? d : a->hi;
         }
     }
+}
+
+static noctStatus compute_convexity(noctMesh *m, noctError *err)
+{
+    /* The planes are kept for the filter; the normals tell real edges and
+     * give the face directions. */
+    m->plane = malloc(m->nt * sizeof *m->plane);
+    dir_edge *e = malloc(3 * m->nt * sizeof *e);
+    if (e == NULL || m->plane == NULL) {
+        free(e);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    planes_of(m, m->plane);
+    directed_edges(m->tri, m->nt, e);
+    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
+    convexity_walk(m, (const double (*)[4])m->plane, e, NULL, sat_face, sat_edge);
+    free(e);
+    if (m->nsat_faces == 0) { /* no filter, no planes */
+        free(m->plane);
+        m->plane = NULL;
+        return NOCT_OK;
+    }
+    m->axis = malloc((m->nsat_faces + m->nsat_edges) * sizeof *m->axis);
+    if (m->axis == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    fill_axes(m, (const double (*)[3])sat_face, (const double (*)[3])sat_edge);
     return NOCT_OK;
 }
 
 /* Meshes with more vertices than this get their hull from qhull. */
 #define HULL_MIN_VERTICES 32
+
+/* The mean of the hull's vertices, in the hull's order. */
+static void centre_of(noctMesh *m)
+{
+    for (int k = 0; k < 3; ++k) {
+        double s = 0;
+        for (size_t i = 0; i < m->nhull; ++i)
+            s += m->v[3 * m->hull[i] + k];
+        m->centre[k] = s / (double)m->nhull;
+    }
+}
 
 static noctStatus compute_hull(noctMesh *m, noctError *err)
 {
@@ -456,12 +497,7 @@ static noctStatus compute_hull(noctMesh *m, noctError *err)
             m->hull[i] = (uint32_t)i;
         m->nhull = m->nv;
     }
-    for (int k = 0; k < 3; ++k) {
-        double s = 0;
-        for (size_t i = 0; i < m->nhull; ++i)
-            s += m->v[3 * m->hull[i] + k];
-        m->centre[k] = s / (double)m->nhull;
-    }
+    centre_of(m);
     return NOCT_OK;
 }
 
@@ -506,6 +542,61 @@ static noctMesh *pack(noctMesh *m)
 }
 
 /* ---- creation ------------------------------------------------------------- */
+
+/* m's bounding box (m->lo, m->hi) from its vertices. */
+static void bounds_of(noctMesh *m)
+{
+    for (int k = 0; k < 3; ++k) {
+        m->lo[k] = INFINITY;
+        m->hi[k] = -INFINITY;
+    }
+    for (size_t i = 0; i < m->nv; ++i)
+        for (int k = 0; k < 3; ++k) {
+            m->lo[k] = noct_min(m->lo[k], m->v[3 * i + k]);
+            m->hi[k] = noct_max(m->hi[k], m->v[3 * i + k]);
+        }
+}
+
+/*
+ * The signed volume of m's triangles (times 6 and scaled): false when it
+ * has no sign to trust. 6 V = sum over the triangles of det(p0 - lo,
+ * p1 - p0, p2 - p0), on differences scaled to the mesh's size (see
+ * noct_scaler). Its rounding is bounded by (ntri + 16) half-ulps of the
+ * sum of the terms' magnitudes (the differences, the cross product, the
+ * dot product and the sum), and underflow adds under 64 2^-1075 a
+ * triangle; a volume that does not clear both the tolerance and that
+ * bound has no sign to trust.
+ */
+static bool volume_of(const noctMesh *m, double *volume)
+{
+    double ext[3], emax = 0;
+    for (int k = 0; k < 3; ++k) {
+        ext[k] = m->hi[k] - m->lo[k];
+        emax = noct_max(emax, ext[k]);
+    }
+    const noct_scaler sc = noct_scaler_for(emax > 0 ? emax : 1);
+    double vol = 0, mag = 0;
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t *tri = &m->tri[3 * t];
+        const double *p0 = &m->v[3 * tri[0]], *p1 = &m->v[3 * tri[1]],
+                     *p2 = &m->v[3 * tri[2]];
+        double r[3], a[3], b[3], cr[3];
+        for (int k = 0; k < 3; ++k) {
+            r[k] = noct_scaled(&sc, p0[k] - m->lo[k]);
+            a[k] = noct_scaled(&sc, p1[k] - p0[k]);
+            b[k] = noct_scaled(&sc, p2[k] - p0[k]);
+        }
+        noct_cross3(a, b, cr);
+        vol += noct_dot3(r, cr);
+        mag += fabs(r[0]) * (fabs(a[1] * b[2]) + fabs(a[2] * b[1])) +
+               fabs(r[1]) * (fabs(a[2] * b[0]) + fabs(a[0] * b[2])) +
+               fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));
+    }
+    double box = noct_scaled(&sc, ext[0]) * noct_scaled(&sc, ext[1]) * noct_scaled(&sc, ext[2]);
+    double rounding = (double)(m->nt + 16) * 0x1p-53 * mag + (double)m->nt * 0x1p-1068;
+    *volume = vol;
+    return fabs(vol) > VOLUME_TOLERANCE * box && fabs(vol) > rounding;
+}
 
 noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
                           const uint32_t *sizes, size_t npolygons,
@@ -576,55 +667,16 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     memcpy(m->v, vertices, 3 * nvertices * sizeof *m->v);
-    for (int k = 0; k < 3; ++k) {
-        m->lo[k] = INFINITY;
-        m->hi[k] = -INFINITY;
-    }
-    for (size_t i = 0; i < nvertices; ++i)
-        for (int k = 0; k < 3; ++k) {
-            m->lo[k] = noct_min(m->lo[k], m->v[3 * i + k]);
-            m->hi[k] = noct_max(m->hi[k], m->v[3 * i + k]);
-        }
-    /* Fan triangulation, and the signed volume to fix the orientation:
-     * 6 V = sum over the triangles of det(p0 - lo, p1 - p0, p2 - p0), on
-     * differences scaled to the mesh's size (see noct_scaler). Its rounding is
-     * bounded by (ntri + 16) half-ulps of the sum of the terms'
-     * magnitudes (the differences, the cross product, the dot product and
-     * the sum), and underflow adds under 64 2^-1075 a triangle; a volume
-     * that does not clear both the tolerance and that bound has no sign to
-     * trust. */
-    double ext[3], emax = 0;
-    for (int k = 0; k < 3; ++k) {
-        ext[k] = m->hi[k] - m->lo[k];
-        emax = noct_max(emax, ext[k]);
-    }
-    const noct_scaler sc = noct_scaler_for(emax > 0 ? emax : 1);
-    double volume = 0, mag = 0;
-    size_t t = 0;
-    for (size_t p = 0, base = 0; p < npolygons; base += sizes[p], ++p) {
+    bounds_of(m);
+    for (size_t p = 0, base = 0, t = 0; p < npolygons; base += sizes[p], ++p)
         for (uint32_t c = 1; c + 1 < sizes[p]; ++c, ++t) {
             uint32_t *tri = &m->tri[3 * t];
             tri[0] = indices[base];
             tri[1] = indices[base + c];
             tri[2] = indices[base + c + 1];
-            const double *p0 = &m->v[3 * tri[0]], *p1 = &m->v[3 * tri[1]],
-                         *p2 = &m->v[3 * tri[2]];
-            double r[3], a[3], b[3], cr[3];
-            for (int k = 0; k < 3; ++k) {
-                r[k] = noct_scaled(&sc, p0[k] - m->lo[k]);
-                a[k] = noct_scaled(&sc, p1[k] - p0[k]);
-                b[k] = noct_scaled(&sc, p2[k] - p0[k]);
-            }
-            noct_cross3(a, b, cr);
-            volume += noct_dot3(r, cr);
-            mag += fabs(r[0]) * (fabs(a[1] * b[2]) + fabs(a[2] * b[1])) +
-                   fabs(r[1]) * (fabs(a[2] * b[0]) + fabs(a[0] * b[2])) +
-                   fabs(r[2]) * (fabs(a[0] * b[1]) + fabs(a[1] * b[0]));
         }
-    }
-    double box = noct_scaled(&sc, ext[0]) * noct_scaled(&sc, ext[1]) * noct_scaled(&sc, ext[2]);
-    double rounding = (double)(ntri + 16) * 0x1p-53 * mag + (double)ntri * 0x1p-1068;
-    if (!(fabs(volume) > VOLUME_TOLERANCE * box) || !(fabs(volume) > rounding))
+    double volume;
+    if (!volume_of(m, &volume))
         st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
                        "the mesh encloses no volume (none over %.2g of its "
                        "bounding box's, or within its rounding)",
@@ -649,4 +701,131 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
     }
     *mesh = pack(m);
     return NOCT_OK;
+}
+
+/* ---- turning into a recycled copy ---------------------------------------------- */
+
+noct_turn *noct_turn_new(const noctMesh *src)
+{
+    noct_turn *t = calloc(1, sizeof *t);
+    if (t == NULL)
+        return NULL;
+    t->nt = src->nt;
+    t->order = malloc(src->nt * sizeof *t->order);
+    t->pos = malloc(src->nt * sizeof *t->pos);
+    t->tri = malloc(3 * src->nt * sizeof *t->tri);
+    t->centroid = malloc(3 * src->nt * sizeof *t->centroid);
+    t->plane = malloc(src->nt * sizeof *t->plane);
+    t->edges = malloc(3 * src->nt * sizeof *t->edges);
+    if (t->order == NULL || t->pos == NULL || t->tri == NULL || t->centroid == NULL ||
+        t->plane == NULL || t->edges == NULL) {
+        noct_turn_free(t);
+        return NULL;
+    }
+    directed_edges(src->tri, src->nt, t->edges);
+    return t;
+}
+
+void noct_turn_free(noct_turn *t)
+{
+    if (t == NULL)
+        return;
+    noctMeshDestroy(t->spare);
+    free(t->order);
+    free(t->pos);
+    free(t->tri);
+    free(t->centroid);
+    free(t->plane);
+    free(t->edges);
+    free(t);
+}
+
+/*
+ * noctMeshCreate() of the vertices fl(R v) and src's triangles (as
+ * noct_mesh_rotated() calls it), step by step, into m's arrays: the same
+ * checks, bounds, volume, BVH (the same builder on the same input),
+ * planes, convexity walk, filter axes, box form and hull, each by the
+ * same code, so every field it sets is the one noctMeshCreate() would
+ * set. Only the directed edges are not sorted again: cmp_dir_edge's key
+ * (the edge's vertices, then its first vertex) is unique in a closed,
+ * consistently oriented mesh (m was made from these triangles, so they
+ * are), so the sorted sequence is the same whatever the triangles' order;
+ * the sort kept in t names a triangle by its index in src->tri, which pos
+ * turns into its place in m's BVH order, whose triangles are src's with
+ * their corners in the same order. The cases that would change m's
+ * layout or need more than this (the mesh inside out, or failing a check,
+ * a filter with another number of axes, a hull from qhull) return false.
+ */
+bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, noctMesh *m)
+{
+    NOCT_INVARIANT(t->nt == src->nt && m->nt == src->nt && m->nv == src->nv);
+    const size_t naxes = m->nsat_faces + m->nsat_edges;
+    const bool planes = m->plane != NULL;
+    for (size_t i = 0; i < m->nv; ++i)
+        noct_rotate(R, &src->v[3 * i], &m->v[3 * i]);
+    for (size_t i = 0; i < 3 * m->nv; ++i)
+        if (!isfinite(m->v[i]) || fabs(m->v[i]) > NOCT_MAX_COORDINATE)
+            return false;
+    for (size_t s = 0; s < m->nt; ++s)
+        if (check_polygon(m->v, &src->tri[3 * s], 3, s, NULL) != NOCT_OK)
+            return false;
+    memcpy(m->tri, src->tri, 3 * m->nt * sizeof *m->tri);
+    bounds_of(m);
+    double volume;
+    if (!volume_of(m, &volume) || volume < 0)
+        return false;
+    noct_bvh_build_with(m, t->order, t->centroid, t->tri);
+    memcpy(m->tri, t->tri, 3 * m->nt * sizeof *m->tri);
+    for (uint32_t i = 0; i < m->nt; ++i)
+        t->pos[t->order[i]] = i;
+    planes_of(m, t->plane);
+    double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
+    convexity_walk(m, (const double (*)[4])t->plane, t->edges, t->pos, sat_face, sat_edge);
+    if ((m->nsat_faces > 0) != planes || m->nsat_faces + m->nsat_edges != naxes)
+        return false;
+    if (planes)
+        memcpy(m->plane, t->plane, m->nt * sizeof *m->plane);
+    fill_axes(m, (const double (*)[3])sat_face, (const double (*)[3])sat_edge);
+    /* as a new mesh has them (calloc) where the box form sets nothing */
+    memset(&m->box, 0, sizeof m->box);
+    memset(&m->dual, 0, sizeof m->dual);
+    noct_mesh_box_form(m);
+    /* compute_hull(): every vertex, unless qhull is run */
+    if ((!m->convex && m->nv > HULL_MIN_VERTICES) || m->nhull != m->nv)
+        return false;
+    for (size_t i = 0; i < m->nv; ++i)
+        m->hull[i] = (uint32_t)i;
+    centre_of(m);
+    return true;
+}
+
+bool noct_mesh_same(const noctMesh *a, const noctMesh *b)
+{
+    if (a->nv != b->nv || a->nt != b->nt || a->nnodes != b->nnodes || a->nhull != b->nhull ||
+        a->nsat_faces != b->nsat_faces || a->nsat_edges != b->nsat_edges ||
+        a->convex != b->convex || a->has_box != b->has_box || a->has_dual != b->has_dual ||
+        (a->plane == NULL) != (b->plane == NULL))
+        return false;
+    const size_t naxes = a->nsat_faces + a->nsat_edges;
+    if (memcmp(a->v, b->v, 3 * a->nv * sizeof *a->v) != 0 ||
+        memcmp(a->tri, b->tri, 3 * a->nt * sizeof *a->tri) != 0 ||
+        memcmp(a->nodes, b->nodes, a->nnodes * sizeof *a->nodes) != 0 ||
+        memcmp(a->hull, b->hull, a->nhull * sizeof *a->hull) != 0 ||
+        (naxes > 0 && memcmp(a->axis, b->axis, naxes * sizeof *a->axis) != 0) ||
+        (a->plane != NULL && memcmp(a->plane, b->plane, a->nt * sizeof *a->plane) != 0) ||
+        memcmp(a->lo, b->lo, sizeof a->lo) != 0 || memcmp(a->hi, b->hi, sizeof a->hi) != 0 ||
+        memcmp(a->centre, b->centre, sizeof a->centre) != 0)
+        return false;
+    /* field by field: box_dual has padding */
+    const box_form *x = &a->box, *y = &b->box;
+    if (a->has_box &&
+        (memcmp(x->c, y->c, sizeof x->c) != 0 || memcmp(x->e, y->e, sizeof x->e) != 0 ||
+         memcmp(&x->size, &y->size, sizeof x->size) != 0 ||
+         memcmp(x->own, y->own, sizeof x->own) != 0 || memcmp(&x->dev, &y->dev, sizeof x->dev) != 0))
+        return false;
+    const box_dual *g = &a->dual, *h = &b->dual;
+    return !a->has_dual ||
+           (memcmp(g->g, h->g, sizeof g->g) == 0 && memcmp(&g->gmax, &h->gmax, sizeof g->gmax) == 0 &&
+            memcmp(&g->eta, &h->eta, sizeof g->eta) == 0 &&
+            memcmp(&g->shrink, &h->shrink, sizeof g->shrink) == 0);
 }

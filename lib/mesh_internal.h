@@ -252,4 +252,39 @@ void noct_rotate(const double R[9], const double v[3], double out[3]);
 noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **out,
                              noctError *err);
 
+/* ---- turning into a recycled copy (mesh.c) ---- */
+
+/*
+ * What turning one source mesh into a recycled turned copy needs without
+ * allocating (noct_mesh_turn_into()): scratch for its nt triangles, the
+ * source's directed edges sorted once, and the spare, a copy turned
+ * before that no one reads any more (owned; NULL when there is none).
+ */
+typedef struct noct_turn {
+    size_t nt;
+    uint32_t *order, *pos;    /* nt: the BVH's order and its inverse */
+    uint32_t *tri;            /* 3 nt */
+    double *centroid;         /* 3 nt */
+    double (*plane)[4];       /* nt */
+    struct dir_edge *edges;   /* 3 nt, sorted, triangles by src's index */
+    noctMesh *spare;
+} noct_turn;
+
+/* A turn for src (no spare yet), or NULL without memory. */
+noct_turn *noct_turn_new(const noctMesh *src);
+
+/* Free t and its spare; t may be NULL. */
+void noct_turn_free(noct_turn *t);
+
+/* Fill m, a mesh noct_mesh_rotated() made of src (by any rotation, and
+ * perhaps refilled by this since), with what noct_mesh_rotated(src, R)
+ * would make, field for field, without allocating; t is src's turn.
+ * false when that mesh would not fit m's layout (or not be made): m is
+ * then garbage, only fit for noctMeshDestroy(). */
+bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, noctMesh *m);
+
+/* Do a and b hold the same mesh, bit for bit in every field a reader
+ * reads (their arrays compared, not their addresses)? */
+bool noct_mesh_same(const noctMesh *a, const noctMesh *b);
+
 #endif /* NOCT_LIB_MESH_INTERNAL_H */

@@ -84,11 +84,14 @@ void noctWorldDestroy(noctWorld *w)
     if (w == NULL)
         return;
     for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
-        if (w->obj[i].alive)
+        if (w->obj[i].alive) {
             noctMeshDestroy(w->pose[i].rotated);
+            noct_turn_free(w->turn[i]);
+        }
     noct_bp_fini(&w->bp);
     free(w->obj);
     free(w->pose);
+    free(w->turn);
     free(w->pos);
     free(w->mesh);
     free(w->slot);
@@ -274,6 +277,9 @@ noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
                                        w->obj[i].vel[2] != 0)))
             return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
                              "object %u's speed does not match its type and velocity", i);
+        const noctStatus st = noct_world_check_turned(w, i, err);
+        if (st != NOCT_OK)
+            return st;
         noct_aabb b;
         noct_place_box(w->obj[i].mlo, w->obj[i].mhi, w->pos[i], &b);
         if (memcmp(&b, noct_bp_box(&w->bp, i), sizeof b) != 0)

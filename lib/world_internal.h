@@ -155,6 +155,9 @@ struct noctWorld {
                               copy (noct_pose); NULL for a box primitive
                               until its exact test needs one */
     noct_pose *pose;       /* what the program set (not read by the step) */
+    noct_turn **turn;      /* per mesh object turned more than once: what
+                              turning its shape again needs, and the
+                              spare copy it turns into (NULL before) */
     noct_box_slot *slot;   /* per object with a box-form mesh: with pos,
                               all the exact level reads of most pairs of
                               boxes (64-byte aligned, two lines each) */
@@ -233,8 +236,14 @@ void noct_world_unplace(noctWorld *w);
 /* Room for n placements this step; false without memory. */
 bool noct_world_reserve_placed(noctWorld *w, uint32_t n);
 
-/* A step that succeeded keeps its placements: the meshes they replaced go. */
+/* A step that succeeded keeps its placements: the meshes they replaced
+ * go, a mesh object's as its spare (noct_turn). */
 void noct_world_placements_done(noctWorld *w);
+
+/* Is object s's turned copy of its mesh shape (if it has one) what
+ * noct_mesh_rotated() makes anew of the shape and its rotation, bit for
+ * bit (recycled copies are refilled in place)? INVARIANT if not, NOMEM. */
+noctStatus noct_world_check_turned(const noctWorld *w, uint32_t s, noctError *err);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 

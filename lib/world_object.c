@@ -20,6 +20,7 @@ NOCT_DEFINE_RESIZE(resize_objects, noct_object)
 NOCT_DEFINE_RESIZE(resize_vectors, noct_vec3)
 NOCT_DEFINE_RESIZE(resize_meshes, const noctMesh *)
 NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
+NOCT_DEFINE_RESIZE(resize_turns, noct_turn *)
 
 NOCT_DEFINE_RESIZE(resize_placed, noct_placed)
 
@@ -31,8 +32,11 @@ bool noct_world_reserve_slots(noctWorld *w)
     if (cap <= w->capslots)
         return true;
     if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
-        !resize_meshes(&w->mesh, cap) || (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)))
+        !resize_meshes(&w->mesh, cap) || !resize_turns(&w->turn, cap) ||
+        (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)))
         return false;
+    for (uint32_t i = w->capslots; i < cap; ++i)
+        w->turn[i] = NULL;
     /* aligned, so not realloc: a pose is one cache line */
     noct_pose *poses = aligned_alloc(64, cap * sizeof *poses);
     if (poses == NULL)
@@ -141,6 +145,45 @@ static noctStatus rotate_shape(const noctMesh *shape, const double R[9], noctMes
         noct_fail(err, st, err->index, 0, "the rotated mesh: %s", why);
     }
     return st;
+}
+
+/* Object s's shape turned by R, as rotate_shape() makes it: into the
+ * spare copy its turn keeps, without allocating, when there is one and
+ * the copy fits; else a new one. */
+static noctStatus turn_shape(noctWorld *w, uint32_t s, const double R[9], noctMesh **rotated,
+                             noctError *err)
+{
+    const noctMesh *shape = noct_world_shape_of(w, s);
+    noct_turn *t = w->turn[s];
+    if (shape != NULL && t != NULL && t->spare != NULL && !noct_is_identity(R)) {
+        noctMesh *m = t->spare;
+        t->spare = NULL;
+        if (noct_mesh_turn_into(shape, R, t, m)) {
+            *rotated = m;
+            return NOCT_OK;
+        }
+        noctMeshDestroy(m);
+    }
+    return rotate_shape(shape, R, rotated, err);
+}
+
+/* A turned copy of object s's shape that nothing reads any more (NULL,
+ * or a box primitive's mesh, go): kept as the spare of the object's
+ * turn, which is made now if make is set (a step that succeeded, which
+ * may allocate), else it goes. */
+static void keep_spare(noctWorld *w, uint32_t s, noctMesh *m, bool make)
+{
+    if (m == NULL)
+        return;
+    if (!w->obj[s].box && w->turn[s] == NULL && make)
+        w->turn[s] = noct_turn_new(w->pose[s].shape.mesh);
+    noct_turn *t = w->obj[s].box ? NULL : w->turn[s];
+    if (t == NULL) {
+        noctMeshDestroy(m);
+        return;
+    }
+    noctMeshDestroy(t->spare);
+    t->spare = m;
 }
 
 /* The local box of object s's shape turned by R: of the mesh (rotated,
@@ -411,6 +454,8 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     }
     noctMeshDestroy(w->pose[id.index].rotated);
     w->pose[id.index].rotated = NULL;
+    noct_turn_free(w->turn[id.index]);
+    w->turn[id.index] = NULL;
     noct_world_drop_track(w, id.index);
     /* The lists stay: the colliding one holds its pairs, which the next
      * step's diff ends. */
@@ -450,7 +495,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     if (turned && w->obj[s].box &&
         (st = noct_check_box_corners(p->shape.half, R, err)) != NOCT_OK)
         return st;
-    if (turned && (st = rotate_shape(noct_world_shape_of(w, s), R, &rotated, err)) != NOCT_OK)
+    if (turned && (st = turn_shape(w, s, R, &rotated, err)) != NOCT_OK)
         return st;
     double lo[3], hi[3];
     if (turned) {
@@ -462,11 +507,11 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     st = noct_bp_move_to(&w->bp, s, lo, hi, x->p);
     if (st != NOCT_OK) {
         if (turned && rotated != p->rotated)
-            noctMeshDestroy(rotated);
+            keep_spare(w, s, rotated, false);
         return noct_fail(err, st, (long)s, 0, "moving object %u: out of memory", s);
     }
     if (turned) {
-        noctMeshDestroy(p->rotated);
+        keep_spare(w, s, p->rotated, true);
         p->rotated = rotated;
         p->q = x->q;
         place_mesh(w, s);
@@ -656,7 +701,7 @@ noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const d
     noctMesh *rotated = ps->rotated;
     if (!same && w->obj[s].box && (st = noct_check_box_corners(ps->shape.half, R, err)) != NOCT_OK)
         return st;
-    if (!same && (st = rotate_shape(noct_world_shape_of(w, s), R, &rotated, err)) != NOCT_OK)
+    if (!same && (st = turn_shape(w, s, R, &rotated, err)) != NOCT_OK)
         return st;
     double lo[3], hi[3];
     if (same) {
@@ -668,7 +713,7 @@ noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const d
     st = noct_bp_move_to(&w->bp, s, lo, hi, p);
     if (st != NOCT_OK) {
         if (!same)
-            noctMeshDestroy(rotated);
+            keep_spare(w, s, rotated, false);
         return noct_fail(err, st, (long)s, 0, "placing object %u: out of memory", s);
     }
     noct_placed *r = &w->placed[w->nplaced++];
@@ -692,7 +737,7 @@ void noct_world_unplace(noctWorld *w)
         const uint32_t s = r->s;
         noct_pose *p = &w->pose[s];
         if (r->new_mesh) {
-            noctMeshDestroy(p->rotated);
+            keep_spare(w, s, p->rotated, false);
             p->rotated = r->mesh;
         }
         p->q = r->q;
@@ -712,8 +757,27 @@ void noct_world_unplace(noctWorld *w)
 void noct_world_placements_done(noctWorld *w)
 {
     for (uint32_t k = 0; k < w->nplaced; ++k)
-        if (w->placed[k].new_mesh)
-            noctMeshDestroy(w->placed[k].mesh);
+        if (w->placed[k].new_mesh) /* the next turn's target */
+            keep_spare(w, w->placed[k].s, w->placed[k].mesh, true);
     w->nplaced = 0;
 }
 
+
+noctStatus noct_world_check_turned(const noctWorld *w, uint32_t s, noctError *err)
+{
+    const noct_pose *p = &w->pose[s];
+    if (w->obj[s].box || p->rotated == NULL)
+        return NOCT_OK;
+    double R[9];
+    noctQuatToMatrix(&p->q, R, NULL);
+    noctMesh *fresh;
+    const noctStatus st = noct_mesh_rotated(p->shape.mesh, R, &fresh, NULL);
+    if (st == NOCT_ERR_NOMEM)
+        return noct_fail(err, st, (long)s, 0, "out of memory");
+    const bool same = st == NOCT_OK && noct_mesh_same(p->rotated, fresh);
+    noctMeshDestroy(fresh);
+    if (!same)
+        return noct_fail(err, NOCT_ERR_INVARIANT, (long)s, 0,
+                         "object %u's turned mesh is not its shape turned anew", s);
+    return NOCT_OK;
+}

@@ -1046,6 +1046,15 @@ static void part_objects(outcome *o)
         unchanged(o, w, all, "a failed noctWorldSetTrack");
         goto out;
     }
+    /* and a cube mesh on the same track: turned into its recycled copy
+     * from the second step on, which a failed step gives back */
+    phase("objects: noctWorldSetTrack (a mesh)");
+    err = fresh_err();
+    st = noctWorldSetTrack(w, ids[6], keys, 3, &err);
+    if (!judge(o, "noctWorldSetTrack", st, NOCT_OK, &err, true)) {
+        unchanged(o, w, all, "a failed noctWorldSetTrack");
+        goto out;
+    }
     if (!steps(o, &w, "objects", 6))
         goto out;
     const noctPair *p;

@@ -19,6 +19,7 @@
 
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/query.h>
 #include <noctree/transform.h>
 #include <noctree/world.h>
 
@@ -1169,6 +1170,206 @@ START_TEST(velocity_bit_for_bit)
 }
 END_TEST
 
+/* ---- spinning meshes: recycled turned copies are new meshes -------------------- */
+
+/* A tetrahedron and a star prism (42 vertices, not convex: its hull is
+ * qhull's), for spinning_meshes_are_fresh_meshes. */
+static noctMesh *make_tetra(void)
+{
+    static const double v[12] = {0, 0, 0, 0.9, 0.1, 0, 0.2, 0.8, 0.1, 0.3, 0.2, 0.7};
+    static const uint32_t sizes[4] = {3, 3, 3, 3};
+    static const uint32_t idx[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
+    return m;
+}
+
+static noctMesh *make_star(void)
+{
+    enum { K = 20 }; /* ring vertices, alternately far and near */
+    double v[3 * (2 * K + 2)];
+    uint32_t sizes[3 * K], idx[3 * K + 3 * K + 4 * K];
+    for (int i = 0; i < K; ++i) {
+        const double a = 6.283185307179586 * i / K, r = i % 2 ? 0.3 : 0.6;
+        for (int ring = 0; ring < 2; ++ring) {
+            v[3 * (ring * K + i)] = r * cos(a);
+            v[3 * (ring * K + i) + 1] = r * sin(a);
+            v[3 * (ring * K + i) + 2] = ring ? 0.25 : -0.25;
+        }
+    }
+    const uint32_t cb = 2 * K, ct = 2 * K + 1;
+    v[3 * cb] = v[3 * cb + 1] = v[3 * ct] = v[3 * ct + 1] = 0;
+    v[3 * cb + 2] = -0.25;
+    v[3 * ct + 2] = 0.25;
+    size_t n = 0;
+    for (uint32_t i = 0; i < K; ++i) {
+        const uint32_t j = (i + 1) % K;
+        sizes[3 * i] = 3; /* bottom */
+        idx[n++] = cb, idx[n++] = j, idx[n++] = i;
+        sizes[3 * i + 1] = 3; /* top */
+        idx[n++] = ct, idx[n++] = K + i, idx[n++] = K + j;
+        sizes[3 * i + 2] = 4; /* side */
+        idx[n++] = i, idx[n++] = j, idx[n++] = K + j, idx[n++] = K + i;
+    }
+    noctMesh *m;
+    noctError err;
+    ck_assert_msg(noctMeshCreate(v, 2 * K + 2, sizes, 3 * K, idx, &m, &err) == NOCT_OK, "%s",
+                  err.message);
+    ck_assert(!noctMeshIsConvex(m));
+    return m;
+}
+
+/* The hits of a ray, in the world's order. */
+typedef struct hits {
+    noctRayHit hit[64];
+    size_t n;
+} hits;
+
+static bool keep_hit(void *context, const noctRayHit *hit)
+{
+    hits *h = context;
+    ck_assert(h->n < 64);
+    h->hit[h->n++] = *hit;
+    return true;
+}
+
+/* A world at accuracy with these effects. */
+static noctWorld *spin_world(unsigned effects, noctAccuracy accuracy)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = effects;
+    wd.accuracy = accuracy;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    return w;
+}
+
+/*
+ * Issue 31: spinning mesh objects (an L, a tetrahedron, a box mesh, a
+ * star prism whose hull is qhull's) and tracked ones turn into recycled
+ * copies. Every step must answer as a world made anew with the objects
+ * where the spinning one has them, whose turned meshes are all new: the
+ * same colliding pairs (at the exact level, also those of
+ * noctCollideTransformed(); _i = 1 at the convex level, which reads the
+ * hulls and their centres), and the same ray hits bit for bit (fraction,
+ * point, normal and triangle: the vertices and the BVH).
+ */
+START_TEST(spinning_meshes_are_fresh_meshes)
+{
+    enum { NOBJ = 16, STEPS = 100 };
+    const noctAccuracy accuracy = _i ? NOCT_ACCURACY_CONVEX : NOCT_ACCURACY_EXACT;
+    noctMesh *shapes[4] = {make_ell(), make_tetra(), make_box(0.4, 0.3, 0.2), make_star()};
+    noctWorld *w = spin_world(NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN | NOCT_EFFECT_TRACK,
+                              accuracy);
+    noctObjectId id[NOBJ];
+    const noctMesh *shape_of[NOBJ];
+    rng = 0x5b1e;
+    for (int i = 0; i < NOBJ; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = shape_of[i] = shapes[i % 4];
+        /* a 4 by 4 grid of spacing 0.7: neighbours meet as they turn */
+        d.transform.p[0] = 0.7 * (i % 4);
+        d.transform.p[1] = 0.7 * (i / 4);
+        test_random_quat(&rng, &d.transform.q);
+        const double axis[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+        ck_assert_int_eq(noctQuatFromAxisAngle(axis, 3 + 10 * uniform(), &d.angular_velocity),
+                         NOCT_OK);
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+        ck_assert_uint_eq(id[i].index, (unsigned)i);
+    }
+    /* two of them follow tracks instead (kinematic: they do not spin) */
+    for (int i = 0; i < 2; ++i) {
+        noctKeyframe keys[4];
+        for (int k = 0; k < 4; ++k) {
+            keys[k].tick = (uint64_t)(30 * k);
+            keys[k].x.p[0] = 0.7 * (1 + i) + 0.1 * k;
+            keys[k].x.p[1] = 0.7 * (1 + 2 * i);
+            keys[k].x.p[2] = 0;
+            test_random_quat(&rng, &keys[k].x.q);
+        }
+        const noctObjectId t = id[5 + 5 * i];
+        ck_assert_int_eq(noctWorldSetType(w, t, NOCT_OBJECT_KINEMATIC, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldSetTrack(w, t, keys, 4, NULL), NOCT_OK);
+    }
+    long pairs = 0, changes = 0, nhits = 0;
+    for (int step = 0; step < STEPS; ++step) {
+        noctError err;
+        ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
+        ck_assert_msg(noctWorldValidate(w, &err) == NOCT_OK, "step %d: %s", step, err.message);
+        /* the reference: a world made now, every turned mesh new */
+        noctWorld *f = spin_world(NOCT_EFFECT_EVENTS, accuracy);
+        noctTransform x[NOBJ];
+        for (int i = 0; i < NOBJ; ++i) {
+            ck_assert_int_eq(noctWorldGetTransform(w, id[i], &x[i]), NOCT_OK);
+            noctObjectDef d = noctDefaultObjectDef();
+            d.mesh = shape_of[i];
+            d.transform = x[i];
+            noctObjectId fid;
+            ck_assert_int_eq(noctWorldCreateObject(f, &d, &fid, NULL), NOCT_OK);
+            ck_assert_uint_eq(fid.index, (unsigned)i);
+        }
+        ck_assert_int_eq(noctWorldStep(f, NULL), NOCT_OK);
+        const noctPair *p, *q;
+        const size_t np = noctWorldColliding(w, &p), nq = noctWorldColliding(f, &q);
+        ck_assert_msg(np == nq, "step %d: %zu pairs, anew %zu", step, np, nq);
+        for (size_t k = 0; k < np; ++k)
+            ck_assert_msg(p[k].a.index == q[k].a.index && p[k].b.index == q[k].b.index,
+                          "step %d: pair %zu differs", step, k);
+        if (accuracy == NOCT_ACCURACY_EXACT) { /* and noctCollide's own turned meshes */
+            size_t k = 0;
+            for (int i = 0; i < NOBJ; ++i)
+                for (int j = i + 1; j < NOBJ; ++j) {
+                    bool hit;
+                    ck_assert_int_eq(noctCollideTransformed(shape_of[i], &x[i], shape_of[j],
+                                                            &x[j], accuracy, &hit, NULL, NULL),
+                                     NOCT_OK);
+                    if (!hit)
+                        continue;
+                    ck_assert_msg(k < np && p[k].a.index == (unsigned)i &&
+                                      p[k].b.index == (unsigned)j,
+                                  "step %d: pair %d %d missing", step, i, j);
+                    ++k;
+                }
+            ck_assert_msg(k == np, "step %d: %zu pairs, not %zu", step, np, k);
+        }
+        /* rays along the grid's rows and columns, a little off centre */
+        for (int r = 0; r < 8; ++r) {
+            const double o[3] = {r < 4 ? -1 : 0.7 * (r - 4) + 0.05,
+                                 r < 4 ? 0.7 * r + 0.03 : -1, 0.02 * (r % 3)};
+            const double d[3] = {r < 4 ? 4.5 : 0, r < 4 ? 0 : 4.5, 0};
+            static hits a, b;
+            a.n = b.n = 0;
+            ck_assert_int_eq(noctWorldRayCast(w, o, d, noctDefaultQueryFilter(), keep_hit, &a,
+                                              NULL), NOCT_OK);
+            ck_assert_int_eq(noctWorldRayCast(f, o, d, noctDefaultQueryFilter(), keep_hit, &b,
+                                              NULL), NOCT_OK);
+            ck_assert_msg(a.n == b.n, "step %d, ray %d: %zu hits, anew %zu", step, r, a.n, b.n);
+            for (size_t k = 0; k < a.n; ++k) {
+                const noctRayHit *u = &a.hit[k], *v = &b.hit[k];
+                ck_assert_msg(u->id.index == v->id.index && u->fraction == v->fraction &&
+                                  memcmp(u->point, v->point, sizeof u->point) == 0 &&
+                                  memcmp(u->normal, v->normal, sizeof u->normal) == 0 &&
+                                  memcmp(u->triangle, v->triangle, sizeof u->triangle) == 0,
+                              "step %d, ray %d: hit %zu differs", step, r, k);
+            }
+            nhits += (long)a.n;
+        }
+        noctWorldDestroy(f);
+        pairs += (long)np;
+        changes += (long)noctWorldBegan(w, &p) + (long)noctWorldEnded(w, &p);
+    }
+    printf("spinning meshes (%s): %d steps, %ld colliding pairs, %ld began or ended, %ld ray "
+           "hits\n",
+           _i ? "convex" : "exact", STEPS, pairs, changes, nhits);
+    ck_assert_int_gt(pairs, 200);
+    ck_assert_int_gt(changes, 20);
+    ck_assert_int_gt(nhits, 500);
+    noctWorldDestroy(w);
+    for (int i = 0; i < 4; ++i)
+        noctMeshDestroy(shapes[i]);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("objects");
@@ -1193,6 +1394,7 @@ int main(void)
     tcase_add_test(tc, velocity_bit_for_bit);
     tcase_add_test(tc, bad_input_changes_nothing);
     tcase_add_test(tc, box_corners_beyond_the_limit);
+    tcase_add_loop_test(tc, spinning_meshes_are_fresh_meshes, 0, 2);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

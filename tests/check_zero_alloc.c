@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include <noctree/broadphase.h>
+#include <noctree/mesh.h>
 #include <noctree/scene.h>
 #include <noctree/world.h>
 
@@ -292,6 +293,93 @@ START_TEST(broadphase_frames)
 END_TEST
 
 
+/* ---- spinning meshes (issue 31) ---------------------------------------------- */
+
+static noctMesh *tetrahedron(void)
+{
+    static const double v[12] = {0, 0, 0, 0.9, 0.1, 0, 0.2, 0.8, 0.1, 0.3, 0.2, 0.7};
+    static const uint32_t sizes[4] = {3, 3, 3, 3};
+    static const uint32_t idx[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
+    return m;
+}
+
+/* Mesh objects that spin (an L, a tetrahedron, a box mesh from
+ * noctMeshCreateBox()) in a grid where neighbours meet as they turn, and
+ * two that follow rotating tracks: each turns into the copy its last
+ * step replaced, so once every object has one, stepping allocates
+ * nothing. */
+START_TEST(spinning_meshes)
+{
+    enum { SIDE = 6, NOBJ = SIDE * SIDE };
+    noctMesh *shapes[3] = {make_ell(), tetrahedron(), NULL};
+    ck_assert_int_eq(noctMeshCreateBox(0.4, 0.3, 0.2, &shapes[2], NULL), NOCT_OK);
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN | NOCT_EFFECT_TRACK;
+    noctWorld *w;
+    noctError err;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_OK);
+    noctObjectId id[NOBJ];
+    for (int i = 0; i < NOBJ; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = shapes[i % 3];
+        d.transform.p[0] = 0.7 * (i % SIDE);
+        d.transform.p[1] = 0.7 * (i / SIDE);
+        const double axis[3] = {uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
+        ck_assert_int_eq(noctQuatFromAxisAngle(axis, 360 * uniform(), &d.transform.q), NOCT_OK);
+        ck_assert_int_eq(noctQuatFromAxisAngle(axis, 2 + 5 * uniform(), &d.angular_velocity),
+                         NOCT_OK);
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], &err), NOCT_OK);
+    }
+    /* two tracked (kinematic: they do not spin), turning all along */
+    enum { NKEYS = (WARM_UP + COUNTED) / 25 + 2 };
+    static noctKeyframe keys[NKEYS];
+    for (int t = 0; t < 2; ++t) {
+        const double axis[3] = {1, 2 - t, 3};
+        for (int k = 0; k < NKEYS; ++k) {
+            keys[k].tick = (uint64_t)(25 * k);
+            keys[k].x.p[0] = 0.7 * (2 + t) + 0.05 * (k % 3);
+            keys[k].x.p[1] = 0.7 * (1 + 2 * t);
+            keys[k].x.p[2] = 0;
+            ck_assert_int_eq(noctQuatFromAxisAngle(axis, 37.0 * k, &keys[k].x.q), NOCT_OK);
+        }
+        const noctObjectId o = id[SIDE + 2 + 2 * SIDE * t];
+        ck_assert_int_eq(noctWorldSetType(w, o, NOCT_OBJECT_KINEMATIC, &err), NOCT_OK);
+        ck_assert_int_eq(noctWorldSetTrack(w, o, keys, NKEYS, &err), NOCT_OK);
+    }
+    for (int s = 0; s < WARM_UP; ++s)
+        ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+    noctWorldCounters before, after;
+    noctWorldGetCounters(w, &before);
+    size_t changes = 0;
+    counting_on();
+    noctStatus st = NOCT_OK;
+    for (int s = 0; s < COUNTED && st == NOCT_OK; ++s) {
+        st = noctWorldStep(w, &err);
+        const noctPair *p;
+        changes += noctWorldBegan(w, &p) + noctWorldEnded(w, &p);
+    }
+    const unsigned long n = counting_off("spinning meshes");
+    ck_assert_msg(st == NOCT_OK, "%s", err.message);
+    noctWorldGetCounters(w, &after);
+    printf("spinning meshes: %d steps, %lu allocations; %llu colliding pairs, %zu began or "
+           "ended\n",
+           COUNTED, n, (unsigned long long)(after.colliding_pairs - before.colliding_pairs),
+           changes);
+    /* the objects turn into and out of contact all along */
+    ck_assert_uint_gt(after.colliding_pairs - before.colliding_pairs, 1000);
+    ck_assert_uint_gt(changes, 50);
+    ck_assert_uint_eq(n, 0);
+    /* and the recycled copies are the meshes turned anew, bit for bit */
+    ck_assert_msg(noctWorldValidate(w, &err) == NOCT_OK, "%s", err.message);
+    noctWorldDestroy(w);
+    for (int i = 0; i < 3; ++i)
+        noctMeshDestroy(shapes[i]);
+}
+END_TEST
+
+
 int main(void)
 {
     const char *why = alloc_unavailable();
@@ -306,6 +394,7 @@ int main(void)
     tcase_add_test(tc, splitting_steps);
     tcase_add_test(tc, broadphase_frames);
     tcase_add_test(tc, driven_frames);
+    tcase_add_test(tc, spinning_meshes);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }

@@ -182,10 +182,14 @@ enum noctEffect {
                                          velocity, q), and the object is
                                          placed as by noctWorldSetTransform()
                                          (a mesh shape is rotated anew each
-                                         step; a box primitive costs a few
-                                         hundred instructions). Without it,
-                                         angular velocities are kept but
-                                         cost nothing. */
+                                         step, into the copy its step before
+                                         replaced: no allocation once each
+                                         has one, but for a non-convex mesh
+                                         of over 32 vertices, whose hull
+                                         qhull makes; a box primitive costs
+                                         a few hundred instructions).
+                                         Without it, angular velocities are
+                                         kept but cost nothing. */
     NOCT_EFFECT_TRACK = 1u << 6     /**< Objects with a track
                                          (noctWorldSetTrack()) follow it: at
                                          each step, first, each is placed
@@ -978,7 +982,10 @@ NOCT_API void noctWorldGetCounters(const noctWorld *world,
  * its leaves and each leaf's record of its objects point at each other,
  * and that no group of leaf siblings holds N or fewer distinct objects
  * (it should have merged; rebuild mode, the exhaustive N and merges owed
- * for want of memory aside). A world whose octree a failure tore down
+ * for want of memory aside), and that each object's mesh shape as turned
+ * by its rotation is, bit for bit, the mesh noctMeshCreate() makes of the
+ * turned vertices (the world refills turned copies in place). A world
+ * whose octree a failure tore down
  * (see noctWorldStep()) is valid: its tree is owed.
  * @param[in]  world The world.
  * @param[out] err   Receives the first problem found, or NULL.
