@@ -1889,10 +1889,7 @@ END_TEST
 /* A test case of its own for each part, with time for its runs. */
 static TCase *part_case(Suite *s, const char *name)
 {
-    TCase *tc = tcase_create(name);
-    tcase_set_timeout(tc, 300);
-    suite_add_tcase(s, tc);
-    return tc;
+    return test_case(s, name, 300, NULL);
 }
 
 int main(void)

@@ -1308,23 +1308,19 @@ END_TEST
 int main(void)
 {
     Suite *s = suite_create("broadphase");
-    TCase *tc = tcase_create("brute force");
-    tcase_set_timeout(tc, 300);
+    TCase *tc = test_case(s, "brute force", 300, NULL);
     tcase_add_loop_test(tc, pairs_against_brute_force, 0, 20);
     tcase_add_loop_test(tc, queries_against_brute_force, 0, 2);
     tcase_add_loop_test(tc, rays_against_brute_force, 0,
                         (int)(sizeof RAY_CONFIG / sizeof *RAY_CONFIG));
     tcase_add_test(tc, rays_stop_early);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("tree");
+    tc = test_case(s, "tree", 0, NULL);
     tcase_add_loop_test(tc, automatic_settings, 0, 2);
     add_tests(tc, removals_drop_their_pairs, leaves_and_counters, fast_path_and_pair_callbacks,
               world_broadphase_is_the_objects);
     tcase_add_loop_test(tc, far_from_the_origin, 0,
                         3 * (int)(sizeof FAR_OFFSETS / sizeof *FAR_OFFSETS));
-    suite_add_tcase(s, tc);
-    tc = tcase_create("bad input");
+    tc = test_case(s, "bad input", 0, NULL);
     tcase_add_test(tc, bad_input_changes_nothing);
-    suite_add_tcase(s, tc);
     return run_suite(s);
 }

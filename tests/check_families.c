@@ -1188,28 +1188,21 @@ END_TEST
 static Suite *families_suite(void)
 {
     Suite *s = suite_create("families");
-    TCase *tc = tcase_create("oracle");
-    tcase_set_timeout(tc, 60);
+    TCase *tc = test_case(s, "oracle", 60, NULL);
     add_tests(tc, sat_closed_form, arms_closed_form, keyframes_closed_form);
     tcase_add_loop_test(tc, arms_oracle_alone, 1, 3);
     tcase_add_loop_test(tc, keyframes_oracle_alone, 0, 1);
-    suite_add_tcase(s, tc);
     /* the larger cases: left out under valgrind */
-    TCase *big = tcase_create("oracle, large");
-    tcase_set_tags(big, "slow");
-    tcase_set_timeout(big, 120);
+    TCase *big = test_case(s, "oracle, large", 120, "slow");
     tcase_add_test(big, sat_against_clipping);
     tcase_add_loop_test(big, arms_oracle_alone, 3, 9);
     tcase_add_loop_test(big, keyframes_oracle_alone, 1, 2);
     tcase_add_loop_test(big, arms_world, 2, 4);
     tcase_add_loop_test(big, keyframes_world, 1, 2);
-    suite_add_tcase(s, big);
-    tc = tcase_create("families");
-    tcase_set_timeout(tc, 120);
+    tc = test_case(s, "families", 120, NULL);
     tcase_add_loop_test(tc, arms_world, 0, 2);
     tcase_add_loop_test(tc, keyframes_world, 0, 1);
     tcase_add_test(tc, bad_family_specs);
-    suite_add_tcase(s, tc);
     return s;
 }
 

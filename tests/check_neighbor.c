@@ -549,34 +549,28 @@ END_TEST
 static Suite *neighbor_suite(void)
 {
     Suite *s = suite_create("neighbor");
-    TCase *tc = tcase_create("tables");
+    TCase *tc = test_case(s, "tables", 0, NULL);
     add_tests(tc, table_adj_from_geometry, table_reflect_from_geometry,
               table_common_face_from_geometry, table_common_edge_from_geometry);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("greater-or-equal neighbors");
-    tcase_set_timeout(tc, 120);
+    tc = test_case(s, "greater-or-equal neighbors", 120, NULL);
     tcase_add_test(tc, root_and_leaves_of_larger_size);
     tcase_add_loop_test(tc, neighbors_random_trees, 0, 12);
     add_tests(tc, neighbors_full_tree, neighbors_deep_paths, neighbors_deep_direction_change);
     tcase_add_loop_test(tc, neighbors_after_random_edits, 0, 6);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("octVectorToDirections");
+    tc = test_case(s, "octVectorToDirections", 0, NULL);
     tcase_add_test(tc, vector_examples);
     tcase_add_test(tc, vector_property);
-    suite_add_tcase(s, tc);
 
 #ifndef NOCT_EFFICIENT
-    TCase *d = tcase_create("requires clauses");
-    tcase_set_tags(d, "death");
+    TCase *d = test_case(s, "requires clauses", 0, "death");
     tcase_add_loop_test_raise_signal(d, die_adj, SIGABRT, 0, 2);
     tcase_add_loop_test_raise_signal(d, die_reflect, SIGABRT, 0, 2);
     tcase_add_loop_test_raise_signal(d, die_common_face, SIGABRT, 0, 2);
     tcase_add_loop_test_raise_signal(d, die_common_edge, SIGABRT, 0, 2);
     tcase_add_loop_test_raise_signal(d, die_neighbor_wrong_kind, SIGABRT, 0, 7);
     tcase_add_test_raise_signal(d, die_vector_nan, SIGABRT);
-    suite_add_tcase(s, d);
 #endif
     return s;
 }

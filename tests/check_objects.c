@@ -1373,28 +1373,17 @@ END_TEST
 int main(void)
 {
     Suite *s = suite_create("objects");
-    TCase *tc = tcase_create("transforms");
-    tcase_set_timeout(tc, 120);
+    TCase *tc = test_case(s, "transforms", 120, NULL);
     tcase_add_test(tc, quaternions_and_matrices);
     tcase_add_test(tc, quarter_turns_are_exact);
-    suite_add_tcase(s, tc);
     /* slow under valgrind, where it is left out (tests/local.mk) */
-    tc = tcase_create("gas");
-    tcase_set_tags(tc, "slow");
-    tcase_set_timeout(tc, 120);
+    tc = test_case(s, "gas", 120, "slow");
     tcase_add_test(tc, gas_boxes_are_the_scenes);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("driven worlds");
-    tcase_set_timeout(tc, 300);
+    tc = test_case(s, "driven worlds", 300, NULL);
     tcase_add_loop_test(tc, rotated_scenes_against_brute_force, 0, 4);
-    tcase_add_test(tc, events_follow_changes);
-    tcase_add_test(tc, quaternions_compose);
-    tcase_add_test(tc, spin_quarter_turns);
-    tcase_add_test(tc, teleports_within_a_leaf);
-    tcase_add_test(tc, velocity_bit_for_bit);
-    tcase_add_test(tc, bad_input_changes_nothing);
-    tcase_add_test(tc, box_corners_beyond_the_limit);
+    add_tests(tc, events_follow_changes, quaternions_compose, spin_quarter_turns,
+              teleports_within_a_leaf, velocity_bit_for_bit, bad_input_changes_nothing,
+              box_corners_beyond_the_limit);
     tcase_add_loop_test(tc, spinning_meshes_are_fresh_meshes, 0, 2);
-    suite_add_tcase(s, tc);
     return run_suite(s);
 }

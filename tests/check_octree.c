@@ -725,10 +725,8 @@ END_TEST
 
 static TCase *tcase(Suite *s, const char *name, const TTest *t)
 {
-    TCase *tc = tcase_create(name);
-    tcase_set_timeout(tc, 60);
+    TCase *tc = test_case(s, name, 60, NULL);
     tcase_add_test(tc, t);
-    suite_add_tcase(s, tc);
     return tc;
 }
 
@@ -759,8 +757,7 @@ static Suite *octree_suite(void)
     tcase_add_loop_test(tc, random_split_join_sequences, 0, 8);
 
 #ifndef NOCT_EFFICIENT
-    TCase *d = tcase_create("requires clauses");
-    tcase_set_tags(d, "death");
+    TCase *d = test_case(s, "requires clauses", 0, "death");
     tcase_add_test_raise_signal(d, die_dispose_non_root, SIGABRT);
     tcase_add_test_raise_signal(d, die_dispose_with_data, SIGABRT);
     tcase_add_test_raise_signal(d, die_clear_without_disposer, SIGABRT);
@@ -778,7 +775,6 @@ static Suite *octree_suite(void)
     tcase_add_test_raise_signal(d, die_str_to_dir_null, SIGABRT);
     tcase_add_test_raise_signal(d, die_dir_to_str_out_of_range, SIGABRT);
     tcase_add_loop_test_raise_signal(d, die_null_node, SIGABRT, 0, 10);
-    suite_add_tcase(s, d);
 #endif
     return s;
 }

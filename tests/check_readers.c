@@ -810,20 +810,16 @@ END_TEST
 static Suite *readers_suite(void)
 {
     Suite *s = suite_create("readers");
-    TCase *tc = tcase_create("NUL bytes and read errors");
+    TCase *tc = test_case(s, "NUL bytes and read errors", 0, NULL);
     add_tests(tc, nul_byte_in_scene, nul_byte_in_off, nul_byte_in_obj, nul_byte_in_scene_mesh,
               read_error_is_io);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("read what builds");
+    tc = test_case(s, "read what builds", 0, NULL);
     add_tests(tc, walls_need_a_container, scene_limits, tiny_and_huge_directions, object_attributes,
               filter_words_are_decimal, scenes_written_read_back);
-    suite_add_tcase(s, tc);
 
-    tc = tcase_create("out of memory");
-    tcase_set_timeout(tc, 120);
+    tc = test_case(s, "out of memory", 120, NULL);
     add_tests(tc, getline_nomem_is_nomem, every_allocation_failing, every_allocation_failing_mesh);
-    suite_add_tcase(s, tc);
     return s;
 }
 

@@ -1473,57 +1473,32 @@ END_TEST
 int main(void)
 {
     Suite *s = suite_create("world");
-    TCase *tc = tcase_create("planes");
-    tcase_set_tags(tc, "slow"); /* left out under valgrind */
-    tcase_set_timeout(tc, 600);
+    TCase *tc = test_case(s, "planes", 600, "slow");
     tcase_add_loop_test(tc, planes_counts_across_N_and_modes, 0, 6);
     tcase_add_loop_test(tc, planes_t20_t30, 0, 2);
     tcase_add_test(tc, gas_1000_known_answer);
     tcase_add_test(tc, gas_10000_known_answer);
     tcase_add_loop_test(tc, gas_kinds_known_answers, 0, 4);
     tcase_add_test(tc, planes_timing_and_reversal);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("random scenes");
-    tcase_set_timeout(tc, 300);
+    tc = test_case(s, "random scenes", 300, NULL);
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 0, 2);
-    tcase_add_test(tc, root_grows);
-    tcase_add_test(tc, automatic_settings_are_deterministic);
-    tcase_add_test(tc, root_face_creeper_grows);
-    tcase_add_test(tc, many_partners_sorted);
-    tcase_add_test(tc, skipped_leaves_against_brute_force);
+    add_tests(tc, root_grows, automatic_settings_are_deterministic, root_face_creeper_grows,
+              many_partners_sorted, skipped_leaves_against_brute_force);
     tcase_add_loop_test(tc, walled_small_worlds_split_and_merge, 0, 12);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("more random scenes");
-    tcase_set_tags(tc, "slow");
-    tcase_set_timeout(tc, 300);
+    tc = test_case(s, "more random scenes", 300, "slow");
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 2, 8);
-    suite_add_tcase(s, tc);
-    tc = tcase_create("bounded work");
-    tcase_set_timeout(tc, 120);
+    tc = test_case(s, "bounded work", 120, NULL);
     tcase_add_loop_test(tc, stacks_stop_splitting, 0, 4);
-    tcase_add_test(tc, coincident_objects_add_and_remove);
-    tcase_add_test(tc, touching_pile);
-    tcase_add_test(tc, root_shrinks_back);
-    tcase_add_test(tc, substep_cap_is_a_status);
-    tcase_add_test(tc, directions_whole_range);
-    tcase_add_test(tc, validate_reports_invariant);
-    suite_add_tcase(s, tc);
+    add_tests(tc, coincident_objects_add_and_remove, touching_pile, root_shrinks_back,
+              substep_cap_is_a_status, directions_whole_range, validate_reports_invariant);
 
-    tc = tcase_create("effects and handles");
-    tcase_add_test(tc, effects_off_cost_nothing);
-    tcase_add_test(tc, straddlers_take_the_fast_path);
-    tcase_add_test(tc, fast_test_at_the_rounding_edge);
-    tcase_add_test(tc, runaway_object_is_an_error);
-    tcase_add_test(tc, substeps_stop_tunnelling);
-    tcase_add_test(tc, handles_and_bad_input);
-    tcase_add_test(tc, inspect_tree);
-    tcase_add_test(tc, handles_through_churn);
-    suite_add_tcase(s, tc);
+    tc = test_case(s, "effects and handles", 0, NULL);
+    add_tests(tc, effects_off_cost_nothing, straddlers_take_the_fast_path,
+              fast_test_at_the_rounding_edge, runaway_object_is_an_error, substeps_stop_tunnelling,
+              handles_and_bad_input, inspect_tree, handles_through_churn);
 #ifndef NOCT_EFFICIENT
-    TCase *d = tcase_create("requires clauses");
-    tcase_set_tags(d, "death");
+    TCase *d = test_case(s, "requires clauses", 0, "death");
     tcase_add_loop_test_raise_signal(d, die_null_world, SIGABRT, 0, 3);
-    suite_add_tcase(s, d);
 #endif
     return run_suite(s);
 }

@@ -388,13 +388,7 @@ int main(void)
         return 77;
     }
     Suite *s = suite_create("zero-alloc");
-    TCase *tc = tcase_create("steps");
-    tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, gas_steps);
-    tcase_add_test(tc, splitting_steps);
-    tcase_add_test(tc, broadphase_frames);
-    tcase_add_test(tc, driven_frames);
-    tcase_add_test(tc, spinning_meshes);
-    suite_add_tcase(s, tc);
+    TCase *tc = test_case(s, "steps", 300, NULL);
+    add_tests(tc, gas_steps, splitting_steps, broadphase_frames, driven_frames, spinning_meshes);
     return run_suite(s);
 }
