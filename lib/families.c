@@ -32,8 +32,8 @@
 #define PI 3.14159265358979323846
 
 /* The rows of FAMILIES, in the order of the specs' list. */
-enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_ARMS,
-       FAM_KEYFRAMES, FAM_ROWS };
+enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_NOTCH,
+       FAM_ARMS, FAM_KEYFRAMES, FAM_ROWS };
 
 /* The kinds of gas: SCENES.md's, mixed sizes, dense clusters, mostly
  * static, escaping outward. */
@@ -88,8 +88,9 @@ static uint64_t fam_planes_objects(long k)
 }
 
 static noctStatus fam_planes_add(noctWorld *w, const noct_family *f, long size,
-                                 const noctMesh *unit_cube, noctError *err)
+                                 const noctMesh *const *meshes, noctError *err)
 {
+    const noctMesh *unit_cube = meshes[FAM_MESH_UNIT_CUBE];
     NOCT_REQUIRE(w != NULL && unit_cube != NULL);
     noctStatus st = fam_check(f, size, err);
     if (st != NOCT_OK)
@@ -117,6 +118,82 @@ static noctStatus fam_planes_add(noctWorld *w, const noct_family *f, long size,
     return NOCT_OK;
 }
 
+/* notch:N, N pairs of a static U-shaped prism and a cube moving in its
+ * notch (noctree-sim(1) defines it). */
+#define NOTCH_T 0.25
+
+static uint64_t fam_notch_objects(long n)
+{
+    return 2 * (uint64_t)n;
+}
+
+/* The U-shaped prism: the outline below, counter-clockwise seen from +z,
+ * from z = 0 to 1, its caps cut into triangles. */
+static noctStatus fam_notch_mesh(noctMesh **u, noctError *err)
+{
+    const double t = NOTCH_T;
+    const double outline[8][2] = {{0, 0}, {3, 0}, {3, 3}, {3 - t, 3},
+                                  {3 - t, t}, {t, t}, {t, 3}, {0, 3}};
+    static const uint32_t cap[6][3] = {{0, 1, 4}, {0, 4, 5}, {1, 2, 3},
+                                       {1, 3, 4}, {0, 5, 6}, {0, 6, 7}};
+    double v[16 * 3];
+    for (int i = 0; i < 16; ++i) {
+        v[3 * i] = outline[i % 8][0];
+        v[3 * i + 1] = outline[i % 8][1];
+        v[3 * i + 2] = i < 8 ? 0 : 1;
+    }
+    uint32_t idx[28 * 3], sizes[28];
+    size_t n = 0;
+    for (int i = 0; i < 6; ++i) {
+        const uint32_t top[3] = {cap[i][0] + 8, cap[i][1] + 8, cap[i][2] + 8};
+        const uint32_t bottom[3] = {cap[i][0], cap[i][2], cap[i][1]};
+        memcpy(&idx[n], top, sizeof top);
+        memcpy(&idx[n + 3], bottom, sizeof bottom);
+        n += 6;
+    }
+    for (uint32_t i = 0; i < 8; ++i) {
+        const uint32_t j = (i + 1) % 8;
+        const uint32_t side[6] = {i, j, j + 8, i, j + 8, i + 8};
+        memcpy(&idx[n], side, sizeof side);
+        n += 6;
+    }
+    for (int i = 0; i < 28; ++i)
+        sizes[i] = 3;
+    return noctMeshCreate(v, 16, sizes, 28, idx, u, err);
+}
+
+static noctStatus fam_notch_add(noctWorld *w, const noct_family *f, long size,
+                                const noctMesh *const *meshes, noctError *err)
+{
+    const noctMesh *u = meshes[FAM_MESH_NOTCH_U], *cube = meshes[FAM_MESH_NOTCH_CUBE];
+    NOCT_REQUIRE(w != NULL && u != NULL && cube != NULL);
+    noctStatus st = fam_check(f, size, err);
+    if (st != NOCT_OK)
+        return st;
+    const long n = size, g = (long)ceil(sqrt((double)n));
+    noctObjectId *ids = malloc((size_t)fam_notch_objects(n) * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    uint64_t seed = 42;
+    size_t k = 0;
+    for (long i = 0; i < n; ++i) {
+        const double base[3] = {5.0 * (double)(i % g), 5.0 * (double)(i / g), 0};
+        seed = seed * 6364136223846793005u + 1442695040888963407u; /* an LCG */
+        const double r = (double)(seed >> 11) * 0x1p-53;
+        const double at[3] = {base[0] + NOTCH_T + 0.15 + r * (3 - 2 * NOTCH_T - 0.3),
+                              base[1] + 1.5, 0.5};
+        const double dir[3] = {i % 4 < 2 ? 1 : -1, 0, 0};
+        if ((st = noctWorldAdd(w, u, base, dir, 0, &ids[k], err)) != NOCT_OK)
+            return fam_unbuild(w, ids, k, st);
+        ++k;
+        if ((st = noctWorldAdd(w, cube, at, dir, i % 2 ? 0.7 : 0.04, &ids[k], err)) != NOCT_OK)
+            return fam_unbuild(w, ids, k, st);
+        ++k;
+    }
+    free(ids);
+    return NOCT_OK;
+}
+
 /* The side of a gas kind's container [0, L]^3 for n boxes. */
 static double fam_container(const noct_family *f, size_t n)
 {
@@ -135,10 +212,10 @@ static uint64_t fam_gas_objects(long n)
 }
 
 static noctStatus fam_gas_add(noctWorld *w, const noct_family *f, long size,
-                              const noctMesh *unit_cube, noctError *err)
+                              const noctMesh *const *meshes, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
-    (void)unit_cube;
+    (void)meshes;
     noctStatus st = fam_check(f, size, err);
     if (st != NOCT_OK)
         return st;
@@ -406,7 +483,8 @@ static noctStatus fam_keyframes_make(noctScene *s, const noct_family *f, long n,
 
 static const noct_family FAMILIES[FAM_ROWS] = {
     [FAM_PLANES] = {.name = "planes", .letter = 'K', .lo = 0, .hi = 1000, .unit = "rings",
-                    .kind = -1, .unit_cube = true, .line_size = "planes rings",
+                    .kind = -1, .meshes = 1u << FAM_MESH_UNIT_CUBE,
+                    .line_size = "planes rings",
                     .objects = fam_planes_objects, .add = fam_planes_add,
                     .make = fam_kept_make},
     FAM_KEPT(FAM_GAS, "gas", GAS_UNIFORM, true, 10.0),
@@ -414,6 +492,11 @@ static const noct_family FAMILIES[FAM_ROWS] = {
     FAM_KEPT(FAM_CLUSTERS, "clusters", GAS_CLUSTERS, true, 10.0),
     FAM_KEPT(FAM_STATIC, "static", GAS_STATIC, true, 10.0),
     FAM_KEPT(FAM_ESCAPE, "escape", GAS_ESCAPE, false, 10.0),
+    [FAM_NOTCH] = {.name = "notch", .letter = 'N', .lo = 1, .hi = 1000000, .unit = "pairs",
+                   .kind = -1,
+                   .meshes = 1u << FAM_MESH_NOTCH_U | 1u << FAM_MESH_NOTCH_CUBE,
+                   .line_size = "notch pairs", .objects = fam_notch_objects,
+                   .add = fam_notch_add, .make = fam_kept_make},
     [FAM_ARMS] = {.name = "arms", .letter = 'K', .lo = 1, .hi = 8, .unit = "links",
                   .kind = -1, .make = fam_arms_make},
     [FAM_KEYFRAMES] = {.name = "keyframes", .letter = 'N', .lo = 1, .hi = 100000,
@@ -500,8 +583,14 @@ void noct_family_line_names(char *buf, size_t cap)
 noctStatus noct_scene_add_family(noctScene *s, const noct_family *f, long size)
 {
     NOCT_REQUIRE(f->add != NULL && s->nfamilies < sizeof s->families / sizeof *s->families);
-    if (f->unit_cube && s->unit_cube == NULL) {
-        noctStatus st = noctMeshCreateBox(0.5, 0.5, 0.5, &s->unit_cube, NULL);
+    for (int i = 0; i < FAM_MESHES; ++i) {
+        if (!(f->meshes & 1u << i) || s->shared[i] != NULL)
+            continue;
+        noctStatus st = i == FAM_MESH_NOTCH_U ? fam_notch_mesh(&s->shared[i], NULL)
+                        : noctMeshCreateBox(i == FAM_MESH_UNIT_CUBE ? 0.5 : 0.15,
+                                            i == FAM_MESH_UNIT_CUBE ? 0.5 : 0.15,
+                                            i == FAM_MESH_UNIT_CUBE ? 0.5 : 0.15, &s->shared[i],
+                                            NULL);
         if (st != NOCT_OK)
             return st;
     }
@@ -515,7 +604,8 @@ noctStatus noctWorldAddPlanes(noctWorld *w, int k, const noctMesh *unit_cube,
                               noctError *err)
 {
     NOCT_REQUIRE(w != NULL && unit_cube != NULL);
-    return fam_planes_add(w, &FAMILIES[FAM_PLANES], k, unit_cube, err);
+    const noctMesh *meshes[FAM_MESHES] = {[FAM_MESH_UNIT_CUBE] = unit_cube};
+    return fam_planes_add(w, &FAMILIES[FAM_PLANES], k, meshes, err);
 }
 
 double noctGasContainerSize(size_t n)

@@ -7,9 +7,10 @@
  * defines each family exactly.
  *
  * Two sorts of rows: the families a scene keeps as a name and a size and
- * whose objects the world gets only when the scene is built (planes and
- * the gas kinds: a gas of 10^6 boxes costs the scene nothing; a scene
- * file names them on a 'family' line), and the families made of the
+ * whose objects the world gets only when the scene is built (planes, the
+ * gas kinds and notch: a gas of 10^6 boxes costs the scene nothing; a
+ * scene file names them on a 'family' line; the meshes they share are
+ * the scene's), and the families made of the
  * scene's own meshes, objects and keyframes (arms, keyframes).
  */
 #ifndef NOCT_LIB_FAMILIES_INTERNAL_H
@@ -24,6 +25,11 @@
 
 typedef struct noct_family noct_family;
 
+/* The meshes a scene makes once for the kept families that share them:
+ * planes' unit cube (half-extent 0.5), notch's U-shaped prism and its
+ * cube (half-extent 0.15). */
+enum { FAM_MESH_UNIT_CUBE, FAM_MESH_NOTCH_U, FAM_MESH_NOTCH_CUBE, FAM_MESHES };
+
 struct noct_family {
     const char *name; /* the NAME of the spec NAME:SIZE */
     char letter;      /* the size's letter in the specs' list: 'K' or 'N' */
@@ -32,16 +38,16 @@ struct noct_family {
     int kind;         /* a gas kind (families.c), or -1 */
     bool walls;       /* gas kinds: the container's walls turn the boxes back */
     double volume;    /* gas kinds: the container's volume per box */
-    bool unit_cube;   /* its objects share a unit cube the scene makes */
+    unsigned meshes;  /* bit i: its objects share the scene's FAM_MESH_i */
     /* Families kept by name and size, else NULL: the size's name in a
      * scene file's messages, the objects the family adds, and the builder
      * that adds them to a world (INVALID for a size out of range, NUMERIC,
-     * NOMEM, TOO_LARGE; on failure nothing is added); cube is the scene's
-     * unit cube when the row asks for one. */
+     * NOMEM, TOO_LARGE; on failure nothing is added); meshes are the
+     * scene's shared meshes, those the row asks for made. */
     const char *line_size;
     uint64_t (*objects)(long size);
-    noctStatus (*add)(noctWorld *w, const noct_family *f, long size, const noctMesh *cube,
-                      noctError *err);
+    noctStatus (*add)(noctWorld *w, const noct_family *f, long size,
+                      const noctMesh *const *meshes, noctError *err);
     /* Make the family of the given size (in range) in a new scene:
      * noctSceneFamily(). NOMEM. */
     noctStatus (*make)(noctScene *s, const noct_family *f, long size, noctError *err);
@@ -60,7 +66,7 @@ noctStatus noct_family_spec(const char *spec, const noct_family **f, long *size,
 void noct_family_line_names(char *buf, size_t cap);
 
 /* Keep family f (one with a builder add) of the given size in s, with
- * the unit cube it needs. NOMEM. */
+ * the shared meshes it needs. NOMEM. */
 noctStatus noct_scene_add_family(noctScene *s, const noct_family *f, long size);
 
 #endif /* NOCT_LIB_FAMILIES_INTERNAL_H */

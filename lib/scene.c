@@ -641,7 +641,7 @@ noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
     /* the families' objects, made now: the scene keeps only their sizes */
     for (size_t i = 0; i < s->nfamilies && st == NOCT_OK; ++i) {
         const scene_family *f = &s->families[i];
-        st = f->family->add(w, f->family, f->size, s->unit_cube, err);
+        st = f->family->add(w, f->family, f->size, (const noctMesh *const *)s->shared, err);
     }
     if (st == NOCT_OK && s->nobjects > 0)
         st = noctWorldReserve(w, s->nobjects, err);

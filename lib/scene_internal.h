@@ -73,7 +73,9 @@ struct noctScene {
     size_t nkeys, capkeys;
     scene_family families[16];
     size_t nfamilies;
-    noctMesh *unit_cube; /* for the families that ask for one (planes) */
+    /* the meshes the kept families share (families_internal.h,
+     * FAM_MESH_*), made when a family that needs one is added */
+    noctMesh *shared[3];
 };
 
 /* ---- scene_records.c ---- */

@@ -29,7 +29,8 @@ void noctSceneDestroy(noctScene *s)
     free(s->meshes);
     free(s->objects);
     free(s->keys);
-    noctMeshDestroy(s->unit_cube);
+    for (size_t i = 0; i < sizeof s->shared / sizeof *s->shared; ++i)
+        noctMeshDestroy(s->shared[i]);
     free(s);
 }
 

@@ -1157,6 +1157,87 @@ START_TEST(keyframes_world)
 }
 END_TEST
 
+/* notch:N against noctree-sim(1)'s definition, read here: each pair's
+ * prism and cube where the LCG puts them, with their velocities; the
+ * prism's solid (a point in its notch is outside, one in a bar inside);
+ * and the events at every N and maintenance mode those of the exhaustive
+ * algorithm. */
+START_TEST(notch_by_definition)
+{
+    const long n = 10, g = 4; /* ceil(sqrt(10)) */
+    noctScene *sc;
+    noctError err;
+    ck_assert_int_eq(noctSceneFamily("notch:10", &sc, &err), NOCT_OK);
+    noctWorld *w;
+    ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 2 * (size_t)n);
+    uint64_t s = 42;
+    for (long i = 0; i < n; ++i) {
+        s = s * 6364136223846793005u + 1442695040888963407u;
+        const double r = (double)(s >> 11) * 0x1p-53;
+        const double base[3] = {5.0 * (double)(i % g), 5.0 * (double)(i / g), 0};
+        const double cube[3] = {base[0] + 0.25 + 0.15 + r * (3 - 0.5 - 0.3), base[1] + 1.5, 0.5};
+        const double dir = i % 4 < 2 ? 1 : -1, speed = i % 2 ? 0.7 : 0.04;
+        const noctObjectId u = {(uint32_t)(2 * i), 1}, c = {(uint32_t)(2 * i + 1), 1};
+        double p[3], v[3], lo[3], hi[3];
+        noctObjectType type;
+        ck_assert_int_eq(noctWorldObject(w, u, p, NULL), NOCT_OK);
+        ck_assert(p[0] == base[0] && p[1] == base[1] && p[2] == 0);
+        ck_assert_int_eq(noctWorldGetVelocity(w, u, v), NOCT_OK);
+        ck_assert(v[0] == 0 && v[1] == 0 && v[2] == 0);
+        ck_assert_int_eq(noctWorldObjectBox(w, u, lo, hi), NOCT_OK);
+        ck_assert(lo[0] == base[0] && hi[0] == base[0] + 3 && hi[1] == base[1] + 3 && hi[2] == 1);
+        ck_assert_int_eq(noctWorldObject(w, c, p, NULL), NOCT_OK);
+        ck_assert_msg(p[0] == cube[0] && p[1] == cube[1] && p[2] == cube[2],
+                      "cube %ld at (%g, %g, %g)", i, p[0], p[1], p[2]);
+        ck_assert_int_eq(noctWorldGetVelocity(w, c, v), NOCT_OK);
+        ck_assert(fabs(v[0] - dir * speed) <= 1e-15 && v[1] == 0 && v[2] == 0);
+        ck_assert_int_eq(noctWorldGetType(w, c, &type), NOCT_OK);
+        ck_assert_int_eq(type, NOCT_OBJECT_MOVING);
+        ck_assert_int_eq(noctWorldObjectBox(w, c, lo, hi), NOCT_OK);
+        ck_assert(fabs(hi[0] - lo[0] - 0.3) <= 1e-12 && fabs(hi[2] - lo[2] - 0.3) <= 1e-12);
+    }
+    /* the prism's solid: its notch is empty, its bars are not */
+    const noctMesh *m = noctWorldGetMesh(w, (noctObjectId){0, 1});
+    ck_assert_ptr_nonnull(m);
+    bool hit;
+    noctMesh *probe;
+    ck_assert_int_eq(noctMeshCreateBox(0.01, 0.01, 0.01, &probe, &err), NOCT_OK);
+    ck_assert_int_eq(noctCollide(m, (const double[3]){0, 0, 0}, probe,
+                                 (const double[3]){1.5, 1.5, 0.5}, NOCT_ACCURACY_EXACT, &hit,
+                                 NULL), NOCT_OK);
+    ck_assert(!hit);
+    ck_assert_int_eq(noctCollide(m, (const double[3]){0, 0, 0}, probe,
+                                 (const double[3]){0.125, 1.5, 0.5}, NOCT_ACCURACY_EXACT, &hit,
+                                 NULL), NOCT_OK);
+    ck_assert(hit);
+    noctMeshDestroy(probe);
+    noctWorldDestroy(w);
+    /* the same events at N = 1, 2 and the defaults as exhaustively */
+    uint64_t hashes[4];
+    const int Ns[4] = {NOCT_N_EXHAUSTIVE, 1, 2, NOCT_AUTO};
+    for (int k = 0; k < 4; ++k) {
+        noctSceneDef(sc)->N = Ns[k];
+        ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+        uint64_t h = 1469598103934665603u, began = 0;
+        for (int step = 0; step < 200; ++step) {
+            ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+            const noctPair *pairs;
+            const size_t nb = noctWorldBegan(w, &pairs);
+            began += nb;
+            for (size_t j = 0; j < nb; ++j)
+                h = (h ^ (pairs[j].a.index * 131u + pairs[j].b.index + (uint64_t)step * 7919u)) *
+                    1099511628211u;
+        }
+        hashes[k] = h;
+        ck_assert_msg(began > 0, "notch: no contact in 200 steps");
+        ck_assert_msg(hashes[k] == hashes[0], "N = %d: other events than the exhaustive", Ns[k]);
+        noctWorldDestroy(w);
+    }
+    noctSceneDestroy(sc);
+}
+END_TEST
+
 START_TEST(bad_family_specs)
 {
     static const char *const BAD[] = {"arms:0", "arms:9", "keyframes:0", "arms:x",
@@ -1202,7 +1283,7 @@ static Suite *families_suite(void)
     tc = test_case(s, "families", 120, NULL);
     tcase_add_loop_test(tc, arms_world, 0, 2);
     tcase_add_loop_test(tc, keyframes_world, 0, 1);
-    tcase_add_test(tc, bad_family_specs);
+    add_tests(tc, notch_by_definition, bad_family_specs);
     return s;
 }
 

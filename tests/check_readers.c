@@ -747,7 +747,7 @@ START_TEST(scenes_written_read_back)
     const char *path = write_text("all.scene", text);
     const char *const specs[] = {"arms:1",     "arms:3",       "keyframes:25", "gas:40",
                                  "mixed:40",   "clusters:40",  "static:40",    "escape:40",
-                                 "planes:1",   path};
+                                 "planes:1",   "notch:5",      path};
     for (size_t i = 0; i < sizeof specs / sizeof *specs; ++i) {
         noctScene *a, *b;
         noctError err;

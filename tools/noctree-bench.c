@@ -176,97 +176,25 @@ static double permutation_p(const double *a, const double *b, size_t n)
 
 /* ---- scenes and runs ------------------------------------------------------ */
 
-/*
- * notch:n, the near-contact scene of non-convex meshes. n pairs, each a
- * static U-shaped prism (3 x 3 x 1, bars 0.25 thick) and a cube of edge
- * 0.3 moving along x inside the U's notch, so the cube's box lies inside
- * the U's box and inside its convex hull all the time while the solids
- * touch only when the cube reaches a bar. Half the cubes move 0.04 per
- * step; the other half 0.7, fast enough to jump over a bar between two
- * steps unless the world sub-steps.
- */
-#define NOTCH_T 0.25
-
-static noctStatus notch_mesh(noctMesh **u, noctError *err)
-{
-    const double t = NOTCH_T;
-    const double outline[8][2] = {{0, 0}, {3, 0}, {3, 3}, {3 - t, 3},
-                                  {3 - t, t}, {t, t}, {t, 3}, {0, 3}};
-    /* The outline (counter-clockwise seen from +z) cut into triangles. */
-    static const uint32_t cap[6][3] = {{0, 1, 4}, {0, 4, 5}, {1, 2, 3},
-                                       {1, 3, 4}, {0, 5, 6}, {0, 6, 7}};
-    double v[16 * 3];
-    for (int i = 0; i < 16; ++i) {
-        v[3 * i] = outline[i % 8][0];
-        v[3 * i + 1] = outline[i % 8][1];
-        v[3 * i + 2] = i < 8 ? 0 : 1;
-    }
-    uint32_t idx[28 * 3], sizes[28];
-    size_t n = 0;
-    for (int i = 0; i < 6; ++i) {
-        uint32_t top[3] = {cap[i][0] + 8, cap[i][1] + 8, cap[i][2] + 8};
-        uint32_t bottom[3] = {cap[i][0], cap[i][2], cap[i][1]};
-        memcpy(&idx[n], top, sizeof top), n += 3;
-        memcpy(&idx[n], bottom, sizeof bottom), n += 3;
-    }
-    for (uint32_t i = 0; i < 8; ++i) {
-        uint32_t j = (i + 1) % 8;
-        uint32_t side[6] = {i, j, j + 8, i, j + 8, i + 8};
-        memcpy(&idx[n], side, sizeof side), n += 6;
-    }
-    for (int i = 0; i < 28; ++i)
-        sizes[i] = 3;
-    return noctMeshCreate(v, 16, sizes, 28, idx, u, err);
-}
-
 typedef struct scene_world {
     noctWorld *w;
-    noctScene *scene; /* planes and gas */
-    noctMesh *meshes[2]; /* notch */
+    noctScene *scene;
 } scene_world;
 
 static void scene_world_free(scene_world *sw)
 {
     noctWorldDestroy(sw->w);
     noctSceneDestroy(sw->scene);
-    noctMeshDestroy(sw->meshes[0]);
-    noctMeshDestroy(sw->meshes[1]);
     memset(sw, 0, sizeof *sw);
 }
 
-/* Build a scene with the given N, accuracy and extra effects. */
+/* Build a family (noctSceneFamily(): planes, gas, notch) with the given N,
+ * accuracy and extra effects. */
 static noctStatus build(const char *spec, int N, noctAccuracy acc, unsigned effects_on,
                         unsigned effects_off, scene_world *sw, noctError *err)
 {
     memset(sw, 0, sizeof *sw);
     noctStatus st;
-    if (strncmp(spec, "notch:", 6) == 0) {
-        long n = atol(spec + 6);
-        noctWorldDef def = noctDefaultWorldDef();
-        def.N = N;
-        def.accuracy = acc;
-        def.effects = (def.effects | effects_on) & ~effects_off;
-        if ((st = noctWorldCreate(&def, &sw->w, err)) != NOCT_OK ||
-            (st = notch_mesh(&sw->meshes[0], err)) != NOCT_OK ||
-            (st = noctMeshCreateBox(0.15, 0.15, 0.15, &sw->meshes[1], err)) != NOCT_OK)
-            return st;
-        long g = (long)ceil(sqrt((double)n));
-        uint64_t seed = 42;
-        for (long i = 0; i < n; ++i) {
-            double base[3] = {5.0 * (double)(i % g), 5.0 * (double)(i / g), 0};
-            seed = seed * 6364136223846793005u + 1442695040888963407u;
-            double u = (double)(seed >> 11) * 0x1p-53;
-            double cube[3] = {base[0] + NOTCH_T + 0.15 + u * (3 - 2 * NOTCH_T - 0.3),
-                              base[1] + 1.5, 0.5};
-            double dir[3] = {i % 4 < 2 ? 1 : -1, 0, 0};
-            noctObjectId id;
-            if ((st = noctWorldAdd(sw->w, sw->meshes[0], base, dir, 0, &id, err)) != NOCT_OK ||
-                (st = noctWorldAdd(sw->w, sw->meshes[1], cube, dir, i % 2 ? 0.7 : 0.04,
-                                   &id, err)) != NOCT_OK)
-                return st;
-        }
-        return NOCT_OK;
-    }
     if ((st = noctSceneFamily(spec, &sw->scene, err)) != NOCT_OK)
         return st;
     noctWorldDef *def = noctSceneDef(sw->scene);
