@@ -1172,18 +1172,8 @@ END_TEST
 
 /* ---- spinning meshes: recycled turned copies are new meshes -------------------- */
 
-/* A tetrahedron and a star prism (42 vertices, not convex: its hull is
- * qhull's), for spinning_meshes_are_fresh_meshes. */
-static noctMesh *make_tetra(void)
-{
-    static const double v[12] = {0, 0, 0, 0.9, 0.1, 0, 0.2, 0.8, 0.1, 0.3, 0.2, 0.7};
-    static const uint32_t sizes[4] = {3, 3, 3, 3};
-    static const uint32_t idx[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-    noctMesh *m;
-    ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
-    return m;
-}
-
+/* A star prism (42 vertices, not convex: its hull is qhull's), for
+ * spinning_meshes_are_fresh_meshes with the kit's tetrahedron. */
 static noctMesh *make_star(void)
 {
     enum { K = 20 }; /* ring vertices, alternately far and near */
@@ -1258,7 +1248,7 @@ START_TEST(spinning_meshes_are_fresh_meshes)
 {
     enum { NOBJ = 16, STEPS = 100 };
     const noctAccuracy accuracy = _i ? NOCT_ACCURACY_CONVEX : NOCT_ACCURACY_EXACT;
-    noctMesh *shapes[4] = {make_ell(), make_tetra(), make_box(0.4, 0.3, 0.2), make_star()};
+    noctMesh *shapes[4] = {make_ell(), make_tetrahedron(), make_box(0.4, 0.3, 0.2), make_star()};
     noctWorld *w = spin_world(NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN | NOCT_EFFECT_TRACK,
                               accuracy);
     noctObjectId id[NOBJ];

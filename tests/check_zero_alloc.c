@@ -295,16 +295,6 @@ END_TEST
 
 /* ---- spinning meshes (issue 31) ---------------------------------------------- */
 
-static noctMesh *tetrahedron(void)
-{
-    static const double v[12] = {0, 0, 0, 0.9, 0.1, 0, 0.2, 0.8, 0.1, 0.3, 0.2, 0.7};
-    static const uint32_t sizes[4] = {3, 3, 3, 3};
-    static const uint32_t idx[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-    noctMesh *m;
-    ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
-    return m;
-}
-
 /* Mesh objects that spin (an L, a tetrahedron, a box mesh from
  * noctMeshCreateBox()) in a grid where neighbours meet as they turn, and
  * two that follow rotating tracks: each turns into the copy its last
@@ -313,7 +303,7 @@ static noctMesh *tetrahedron(void)
 START_TEST(spinning_meshes)
 {
     enum { SIDE = 6, NOBJ = SIDE * SIDE };
-    noctMesh *shapes[3] = {make_ell(), tetrahedron(), NULL};
+    noctMesh *shapes[3] = {make_ell(), make_tetrahedron(), NULL};
     ck_assert_int_eq(noctMeshCreateBox(0.4, 0.3, 0.2, &shapes[2], NULL), NOCT_OK);
     noctWorldDef wd = noctDefaultWorldDef();
     wd.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_SPIN | NOCT_EFFECT_TRACK;

@@ -269,3 +269,13 @@ size_t kill_log_sorted(const int **tags)
     *tags = kill_log;
     return kill_len;
 }
+
+noctMesh *make_tetrahedron(void)
+{
+    static const double v[12] = {0, 0, 0, 0.9, 0.1, 0, 0.2, 0.8, 0.1, 0.3, 0.2, 0.7};
+    static const uint32_t sizes[4] = {3, 3, 3, 3};
+    static const uint32_t idx[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    noctMesh *m;
+    ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
+    return m;
+}

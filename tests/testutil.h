@@ -58,6 +58,10 @@ void test_random_quat(uint64_t *state, noctQuat *q);
  * the running test unless the library makes it and finds it non-convex. */
 noctMesh *make_ell(void);
 
+/* A small tetrahedron of no symmetry (vertices (0, 0, 0), (0.9, 0.1, 0),
+ * (0.2, 0.8, 0.1), (0.3, 0.2, 0.7)); fails the test if it cannot be made. */
+noctMesh *make_tetrahedron(void);
+
 /* Walk the subtree rooted at top and fail the running test unless:
  * parent and child links agree, each child's type is its slot, generation
  * equals the top's generation plus depth, a node is split iff it has all
