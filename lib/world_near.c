@@ -4,9 +4,11 @@
  * objects within the margin of each other ("near": the arm is about to
  * collide), and the pairs that became near or stopped being near. Each
  * object looks for its partners of higher index in the broadphase, its
- * box grown by the margin; a pair that collides is near, else the
- * distance of their triangles decides (noct_solids_within()). A world
- * without a margin never comes here.
+ * box grown by the margin; a pair that collides is near, a pair of box
+ * forms that a separating axis proves farther apart is not, a pair with
+ * two points of its solids proved within the margin (near_witness()) is,
+ * and else the distance of their triangles decides
+ * (noct_solids_within()). A world without a margin never comes here.
  */
 #include "config.h"
 
@@ -14,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "narrowphase_internal.h"
 #include "world_internal.h"
 
 typedef struct partners {
@@ -60,6 +63,72 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
     return lo < l->n && l->p[lo].a.index == a && l->p[lo].b.index == b;
 }
 
+/*
+ * Two points of the solids of two placed box forms with duals proved
+ * within d of each other: then the solids are within d, which
+ * noct_solids_within() would answer (it never misses such a pair) at
+ * some hundred thousand operations, a few hundred here. The lemma of
+ * noct_box_decide()'s proof (narrowphase.c) puts every point
+ * c + t + sum l_i e[i] with |l_i| <= 1 - shrink inside the solid. The
+ * points are found by projecting onto each shrunk box in turn from the
+ * other's last point (alternating projections, which approach the
+ * closest pair of two convex sets), each coefficient clamped: any
+ * coefficients in range give a point of the solid, so the projection's
+ * rounding (or edges not quite orthogonal) can only make the points
+ * worse, never wrong. The points in doubles are within 16 half-ulps of M
+ * (box_offset()) of the exact ones per coordinate (the sum c + t, three
+ * products and three additions), their difference and its length add a
+ * few more; 256 half-ulps of M and a relative 2^-48 cover them. false
+ * when the pair needs the triangles: no dual, or no points close enough
+ * after a few rounds (farther apart, or the skewed edges that
+ * alternating projections approach slowly).
+ */
+#define WITNESS_ROUNDS 6
+
+/* The coefficients of the point of shrunk box s (centre at C, factor f)
+ * nearest x, if its edges are orthogonal, clamped to it; and the point. */
+static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double C[3], double f,
+                                           const double x[3], double p[3])
+{
+    const double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]};
+    p[0] = C[0];
+    p[1] = C[1];
+    p[2] = C[2];
+    for (int i = 0; i < 3; ++i) {
+        const double *e = s->e[i];
+        const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        double l = ee > 0 ? (e[0] * r[0] + e[1] * r[1] + e[2] * r[2]) / ee : 0;
+        l = l > f ? f : l < -f ? -f : l; /* (a NaN stays: the check fails) */
+        for (int k = 0; k < 3; ++k)
+            p[k] += l * e[k];
+    }
+}
+
+static bool near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                         const double tb[3], double d)
+{
+    if (!(a->shrink < 1 && b->shrink < 1))
+        return false;
+    const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
+    double T[3];
+    const double M = box_offset(a, ta, b, tb, T);
+    const double slack = 256 * 0x1p-53 * M;
+    if (!(d > slack))
+        return false;
+    const double CA[3] = {a->c[0] + ta[0], a->c[1] + ta[1], a->c[2] + ta[2]};
+    const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
+    const double reach = (d - slack) * (1 - 0x1p-48);
+    double p[3], q[3] = {CB[0], CB[1], CB[2]};
+    for (int round = 0; round < WITNESS_ROUNDS; ++round) {
+        project_box(a, CA, fa, q, p);
+        project_box(b, CB, fb, p, q);
+        const double v[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+        if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
+            return true;
+    }
+    return false;
+}
+
 /* Are objects i and j near, at the world's level? */
 static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
 {
@@ -82,6 +151,9 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
     if (w->slot[i].has_box && w->slot[j].has_box &&
         noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
         return false;
+    if (w->slot[i].has_box && w->slot[j].has_box &&
+        near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
+        return true;
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
