@@ -5,10 +5,12 @@
  * collide), and the pairs that became near or stopped being near. Each
  * object looks for its partners of higher index in the broadphase, its
  * box grown by the margin; a pair that collides is near, a pair of box
- * forms that a separating axis proves farther apart is not, a pair with
- * two points of its solids proved within the margin (near_witness()) is,
- * and else the distance of their triangles decides
- * (noct_solids_within()). A world without a margin never comes here.
+ * forms that a separating axis proves farther apart is not, a pair of box
+ * forms with two points of its solids proved within the margin is, and
+ * one proved beyond it on the axis through those points is not
+ * (near_witness(): the answers noct_solids_within() would give), and
+ * else the distance of their triangles decides (noct_solids_within()).
+ * A world without a margin never comes here.
  */
 #include "config.h"
 
@@ -78,10 +80,12 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
  * worse, never wrong. The points in doubles are within 16 half-ulps of M
  * (box_offset()) of the exact ones per coordinate (the sum c + t, three
  * products and three additions), their difference and its length add a
- * few more; 256 half-ulps of M and a relative 2^-48 cover them. false
- * when the pair needs the triangles: no dual, or no points close enough
- * after a few rounds (farther apart, or the skewed edges that
- * alternating projections approach slowly).
+ * few more; 256 half-ulps of M and a relative 2^-48 cover them. 1: the
+ * pair is near. 0: the last points' direction proves the solids farther
+ * apart than noct_solids_within() answers true for (below). -1: the pair
+ * needs the triangles (no dual, or neither proof after a few rounds:
+ * within a hair of the margin, or skewed edges that alternating
+ * projections approach slowly).
  */
 #define WITNESS_ROUNDS 6
 
@@ -104,29 +108,46 @@ static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double 
     }
 }
 
-static bool near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                         const double tb[3], double d)
+static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                        const double tb[3], double d)
 {
     if (!(a->shrink < 1 && b->shrink < 1))
-        return false;
+        return -1;
     const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
     double T[3];
     const double M = box_offset(a, ta, b, tb, T);
-    const double slack = 256 * 0x1p-53 * M;
-    if (!(d > slack))
-        return false;
+    const double unit = 256 * 0x1p-53 * M;
+    if (!(d > unit))
+        return -1;
     const double CA[3] = {a->c[0] + ta[0], a->c[1] + ta[1], a->c[2] + ta[2]};
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
-    const double reach = (d - slack) * (1 - 0x1p-48);
-    double p[3], q[3] = {CB[0], CB[1], CB[2]};
+    const double reach = (d - unit) * (1 - 0x1p-48);
+    double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
     for (int round = 0; round < WITNESS_ROUNDS; ++round) {
         project_box(a, CA, fa, q, p);
         project_box(b, CB, fb, p, q);
-        const double v[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+        for (int k = 0; k < 3; ++k)
+            v[k] = q[k] - p[k];
         if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
-            return true;
+            return 1;
     }
-    return false;
+    /* Not near, it seems: the points' direction is close to the one
+     * along which the box forms are farthest apart. Their gap along it,
+     * with noct_box_apart_by()'s allowances (each solid lies within dev
+     * of its ideal box on every coordinate), bounds the distance from
+     * below; beyond d and twice the slack of noct_solids_within() (2^-40
+     * of the coordinates, which M bounds), that test answers false. */
+    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0 && isfinite(n)))
+        return -1;
+    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    const double dev = (double)a->dev + (double)b->dev;
+    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
+                       box_radius(b->e, u) - l1 * dev - unit * l1;
+    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
+    return gap > beyond * un * (1 + 0x1p-40) ? 0 : -1;
 }
 
 /* Are objects i and j near, at the world's level? */
@@ -151,9 +172,11 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
     if (w->slot[i].has_box && w->slot[j].has_box &&
         noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
         return false;
-    if (w->slot[i].has_box && w->slot[j].has_box &&
-        near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
-        return true;
+    if (w->slot[i].has_box && w->slot[j].has_box) {
+        const int r = near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d);
+        if (r >= 0)
+            return r == 1;
+    }
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
