@@ -230,6 +230,14 @@ static inline const noctBroadphaseCounters *noct_bp_counters(const noctBroadphas
 {
     return &bp->c;
 }
+/* The leaf that live proxy s alone is in, for a client that reads its
+ * cube (lo, size) and list (objs, count) as they are between searches;
+ * NULL when s is in several leaves or there is no exact tree. */
+static inline const struct noct_cell *noct_bp_sole_leaf(const noctBroadphase *bp, uint32_t s)
+{
+    const noct_proxy *o = &bp->proxy[s];
+    return o->nspans == 1 && !bp->tree_owed ? NOCT_NODE_DATA(o->spans[0].leaf) : NULL;
+}
 /* The per-slot stamps, for a use that starts with noct_bp_new_epoch(). */
 static inline uint32_t *noct_bp_marks(const noctBroadphase *bp) { return bp->mark; }
 /* The client rebuilds the tree every step: no merge invariant is kept. */
