@@ -4,8 +4,8 @@
  * objects within the margin of each other ("near": the arm is about to
  * collide), and the pairs that became near or stopped being near. Each
  * object looks for its partners of higher index in the broadphase, its
- * box grown by the margin (in its leaf's list when the grown box stays in
- * its one leaf, else by a query); a pair that collides is near, a pair of box
+ * box grown by the margin (in its leaves' lists when the grown box stays
+ * in them, else by a query); a pair that collides is near, a pair of box
  * forms that a separating axis proves farther apart is not, a pair of box
  * forms with two points of its solids proved within the margin is, and
  * one proved beyond it on the axis through those points is not
@@ -183,39 +183,82 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
 }
 
+/* Leaves an object's scan reads at most, and their sizes' largest ratio
+ * (for the exact volumes below). */
+#define SCAN_LEAVES 8
+#define SCAN_RATIO 0x1p16
+
 /*
  * The partners of object i of higher index whose boxes meet its grown box
- * [lo, hi], when that box lies in the one leaf i is in: every box that
- * meets it meets the leaf (cells are closed), so is in the leaf's list,
- * and a scan of the list finds what a query would, with the query's own
- * tests (the filters, the closed boxes), for a fraction of its cost (a
- * query walks from the root and scans the boxes of every leaf it meets).
- * false when the box leaves the leaf: then i queries.
+ * [lo, hi], when that box lies in the leaves i is in: every box that meets
+ * it meets one of them (cells are closed), so is in its list, and a scan
+ * of the lists finds what a query would, with the query's own tests (the
+ * filters, the closed boxes), for a fraction of its cost (a query walks
+ * from the root and scans the boxes of every leaf it meets). A box in
+ * several of the leaves is taken in the first. The leaves (cubes of
+ * disjoint interiors) cover the grown box when it lies in their bounding
+ * box and their volumes add up to its: counted in cubes of the smallest
+ * size, all exact (the corners are, their differences are multiples of
+ * that size, and the counts stay below 2^51). false when they may not:
+ * then i queries.
  */
 static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], const double hi[3],
                           partners *p)
 {
-    const noct_proxy *o = noct_bp_proxy(&w->bp, i);
-    const noct_cell *c = noct_bp_sole_leaf(&w->bp, i);
-    if (c == NULL)
+    const uint32_t nl = noct_bp_leaf_count(&w->bp, i);
+    if (nl == 0 || nl > SCAN_LEAVES)
         return false;
-    for (int k = 0; k < 3; ++k)
-        if (!(lo[k] >= c->lo[k] && hi[k] <= c->lo[k] + c->size))
-            return false;
-    for (uint32_t n = 0; n < c->count; ++n) {
-        const uint32_t j = c->objs[n];
-        if (j <= i)
-            continue;
-        const noct_aabb *b = noct_bp_box(&w->bp, j);
-        if ((b->hi[0] < lo[0]) | (b->lo[0] > hi[0]) | (b->hi[1] < lo[1]) | (b->lo[1] > hi[1]) |
-            (b->hi[2] < lo[2]) | (b->lo[2] > hi[2]))
-            continue;
-        const noct_proxy *q = noct_bp_proxy(&w->bp, j);
-        if (!((q->category & o->mask) != 0 && (o->category & q->mask) != 0))
-            continue;
-        if (!take(p, (noctProxyId){j, 0}, NULL))
-            return true; /* (p->failed) */
+    const noct_cell *c[SCAN_LEAVES];
+    double blo[3], bhi[3], smin = INFINITY, smax = 0;
+    for (uint32_t s = 0; s < nl; ++s) {
+        c[s] = noct_bp_leaf(&w->bp, i, s);
+        smin = noct_min(smin, c[s]->size);
+        smax = noct_max(smax, c[s]->size);
+        for (int k = 0; k < 3; ++k) {
+            const double clo = c[s]->lo[k], chi = c[s]->lo[k] + c[s]->size;
+            blo[k] = s == 0 ? clo : noct_min(blo[k], clo);
+            bhi[k] = s == 0 ? chi : noct_max(bhi[k], chi);
+        }
     }
+    for (int k = 0; k < 3; ++k)
+        if (!(lo[k] >= blo[k] && hi[k] <= bhi[k]))
+            return false;
+    if (nl > 1) {
+        if (!(smax <= SCAN_RATIO * smin))
+            return false;
+        double volume = 0, box = 1;
+        for (uint32_t s = 0; s < nl; ++s) {
+            const double r = c[s]->size / smin;
+            volume += r * r * r;
+        }
+        for (int k = 0; k < 3; ++k) {
+            const double r = (bhi[k] - blo[k]) / smin;
+            if (!(r <= SCAN_RATIO))
+                return false;
+            box *= r;
+        }
+        if (volume != box)
+            return false;
+    }
+    const noct_proxy *o = noct_bp_proxy(&w->bp, i);
+    for (uint32_t s = 0; s < nl; ++s)
+        for (uint32_t n = 0; n < c[s]->count; ++n) {
+            const uint32_t j = c[s]->objs[n];
+            if (j <= i)
+                continue;
+            const noct_aabb *b = noct_bp_box(&w->bp, j);
+            if ((b->hi[0] < lo[0]) | (b->lo[0] > hi[0]) | (b->hi[1] < lo[1]) |
+                (b->lo[1] > hi[1]) | (b->hi[2] < lo[2]) | (b->lo[2] > hi[2]))
+                continue;
+            const noct_proxy *q = noct_bp_proxy(&w->bp, j);
+            if (!((q->category & o->mask) != 0 && (o->category & q->mask) != 0))
+                continue;
+            bool earlier = false; /* taken in an earlier leaf */
+            for (uint32_t t = 0; t < s && !earlier; ++t)
+                earlier = noct_overlaps(b, c[t]);
+            if (!earlier && !take(p, (noctProxyId){j, 0}, NULL))
+                return true; /* (p->failed) */
+        }
     return true;
 }
 
