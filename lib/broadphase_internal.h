@@ -230,6 +230,18 @@ static inline const noctBroadphaseCounters *noct_bp_counters(const noctBroadphas
 {
     return &bp->c;
 }
+/* The leaves live proxy s is in (the k-th of noct_bp_leaf_count()), for
+ * a client that reads their cubes (lo, size) and lists (objs, count) as
+ * they are between searches; 0 leaves when there is no exact tree. */
+static inline uint32_t noct_bp_leaf_count(const noctBroadphase *bp, uint32_t s)
+{
+    return bp->tree_owed ? 0 : bp->proxy[s].nspans;
+}
+static inline const struct noct_cell *noct_bp_leaf(const noctBroadphase *bp, uint32_t s,
+                                                   uint32_t k)
+{
+    return NOCT_NODE_DATA(bp->proxy[s].spans[k].leaf);
+}
 /* The per-slot stamps, for a use that starts with noct_bp_new_epoch(). */
 static inline uint32_t *noct_bp_marks(const noctBroadphase *bp) { return bp->mark; }
 /* The client rebuilds the tree every step: no merge invariant is kept. */

@@ -4,9 +4,14 @@
  * objects within the margin of each other ("near": the arm is about to
  * collide), and the pairs that became near or stopped being near. Each
  * object looks for its partners of higher index in the broadphase, its
- * box grown by the margin; a pair that collides is near, else the
- * distance of their triangles decides (noct_solids_within()). A world
- * without a margin never comes here.
+ * box grown by the margin (in its leaves' lists when the grown box stays
+ * in them, else by a query); a pair that collides is near, a pair of box
+ * forms that a separating axis proves farther apart is not, a pair of box
+ * forms with two points of its solids proved within the margin is, and
+ * one proved beyond it on the axis through those points is not
+ * (near_witness(): the answers noct_solids_within() would give), and
+ * else the distance of their triangles decides (noct_solids_within()).
+ * A world without a margin never comes here.
  */
 #include "config.h"
 
@@ -14,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "narrowphase_internal.h"
 #include "world_internal.h"
 
 typedef struct partners {
@@ -60,6 +66,91 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
     return lo < l->n && l->p[lo].a.index == a && l->p[lo].b.index == b;
 }
 
+/*
+ * Two points of the solids of two placed box forms with duals proved
+ * within d of each other: then the solids are within d, which
+ * noct_solids_within() would answer (it never misses such a pair) at
+ * some hundred thousand operations, a few hundred here. The lemma of
+ * noct_box_decide()'s proof (narrowphase.c) puts every point
+ * c + t + sum l_i e[i] with |l_i| <= 1 - shrink inside the solid. The
+ * points are found by projecting onto each shrunk box in turn from the
+ * other's last point (alternating projections, which approach the
+ * closest pair of two convex sets), each coefficient clamped: any
+ * coefficients in range give a point of the solid, so the projection's
+ * rounding (or edges not quite orthogonal) can only make the points
+ * worse, never wrong. The points in doubles are within 16 half-ulps of M
+ * (box_offset()) of the exact ones per coordinate (the sum c + t, three
+ * products and three additions), their difference and its length add a
+ * few more; 256 half-ulps of M and a relative 2^-48 cover them. 1: the
+ * pair is near. 0: the last points' direction proves the solids farther
+ * apart than noct_solids_within() answers true for (below). -1: the pair
+ * needs the triangles (no dual, or neither proof after a few rounds:
+ * within a hair of the margin, or skewed edges that alternating
+ * projections approach slowly).
+ */
+#define WITNESS_ROUNDS 6
+
+/* The coefficients of the point of shrunk box s (centre at C, factor f)
+ * nearest x, if its edges are orthogonal, clamped to it; and the point. */
+static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double C[3], double f,
+                                           const double x[3], double p[3])
+{
+    const double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]};
+    p[0] = C[0];
+    p[1] = C[1];
+    p[2] = C[2];
+    for (int i = 0; i < 3; ++i) {
+        const double *e = s->e[i];
+        const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+        double l = ee > 0 ? (e[0] * r[0] + e[1] * r[1] + e[2] * r[2]) / ee : 0;
+        l = l > f ? f : l < -f ? -f : l; /* (a NaN stays: the check fails) */
+        for (int k = 0; k < 3; ++k)
+            p[k] += l * e[k];
+    }
+}
+
+static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                        const double tb[3], double d)
+{
+    if (!(a->shrink < 1 && b->shrink < 1))
+        return -1;
+    const double fa = 1 - (double)a->shrink, fb = 1 - (double)b->shrink;
+    double T[3];
+    const double M = box_offset(a, ta, b, tb, T);
+    const double unit = 256 * 0x1p-53 * M;
+    if (!(d > unit))
+        return -1;
+    const double CA[3] = {a->c[0] + ta[0], a->c[1] + ta[1], a->c[2] + ta[2]};
+    const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
+    const double reach = (d - unit) * (1 - 0x1p-48);
+    double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
+    for (int round = 0; round < WITNESS_ROUNDS; ++round) {
+        project_box(a, CA, fa, q, p);
+        project_box(b, CB, fb, p, q);
+        for (int k = 0; k < 3; ++k)
+            v[k] = q[k] - p[k];
+        if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
+            return 1;
+    }
+    /* Not near, it seems: the points' direction is close to the one
+     * along which the box forms are farthest apart. Their gap along it,
+     * with noct_box_apart_by()'s allowances (each solid lies within dev
+     * of its ideal box on every coordinate), bounds the distance from
+     * below; beyond d and twice the slack of noct_solids_within() (2^-40
+     * of the coordinates, which M bounds), that test answers false. */
+    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0 && isfinite(n)))
+        return -1;
+    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    const double dev = (double)a->dev + (double)b->dev;
+    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
+                       box_radius(b->e, u) - l1 * dev - unit * l1;
+    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
+    return gap > beyond * un * (1 + 0x1p-40) ? 0 : -1;
+}
+
 /* Are objects i and j near, at the world's level? */
 static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
 {
@@ -82,9 +173,93 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
     if (w->slot[i].has_box && w->slot[j].has_box &&
         noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
         return false;
+    if (w->slot[i].has_box && w->slot[j].has_box) {
+        const int r = near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d);
+        if (r >= 0)
+            return r == 1;
+    }
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
+}
+
+/* Leaves an object's scan reads at most, and their sizes' largest ratio
+ * (for the exact volumes below). */
+#define SCAN_LEAVES 8
+#define SCAN_RATIO 0x1p16
+
+/*
+ * The partners of object i of higher index whose boxes meet its grown box
+ * [lo, hi], when that box lies in the leaves i is in: every box that meets
+ * it meets one of them (cells are closed), so is in its list, and a scan
+ * of the lists finds what a query would, with the query's own tests (the
+ * filters, the closed boxes), for a fraction of its cost (a query walks
+ * from the root and scans the boxes of every leaf it meets). A box in
+ * several of the leaves is taken in the first. The leaves (cubes of
+ * disjoint interiors) cover the grown box when it lies in their bounding
+ * box and their volumes add up to its: counted in cubes of the smallest
+ * size, all exact (the corners are, their differences are multiples of
+ * that size, and the counts stay below 2^51). false when they may not:
+ * then i queries.
+ */
+static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], const double hi[3],
+                          partners *p)
+{
+    const uint32_t nl = noct_bp_leaf_count(&w->bp, i);
+    if (nl == 0 || nl > SCAN_LEAVES)
+        return false;
+    const noct_cell *c[SCAN_LEAVES];
+    double blo[3], bhi[3], smin = INFINITY, smax = 0;
+    for (uint32_t s = 0; s < nl; ++s) {
+        c[s] = noct_bp_leaf(&w->bp, i, s);
+        smin = noct_min(smin, c[s]->size);
+        smax = noct_max(smax, c[s]->size);
+        for (int k = 0; k < 3; ++k) {
+            const double clo = c[s]->lo[k], chi = c[s]->lo[k] + c[s]->size;
+            blo[k] = s == 0 ? clo : noct_min(blo[k], clo);
+            bhi[k] = s == 0 ? chi : noct_max(bhi[k], chi);
+        }
+    }
+    for (int k = 0; k < 3; ++k)
+        if (!(lo[k] >= blo[k] && hi[k] <= bhi[k]))
+            return false;
+    if (nl > 1) {
+        if (!(smax <= SCAN_RATIO * smin))
+            return false;
+        double volume = 0, box = 1;
+        for (uint32_t s = 0; s < nl; ++s) {
+            const double r = c[s]->size / smin;
+            volume += r * r * r;
+        }
+        for (int k = 0; k < 3; ++k) {
+            const double r = (bhi[k] - blo[k]) / smin;
+            if (!(r <= SCAN_RATIO))
+                return false;
+            box *= r;
+        }
+        if (volume != box)
+            return false;
+    }
+    const noct_proxy *o = noct_bp_proxy(&w->bp, i);
+    for (uint32_t s = 0; s < nl; ++s)
+        for (uint32_t n = 0; n < c[s]->count; ++n) {
+            const uint32_t j = c[s]->objs[n];
+            if (j <= i)
+                continue;
+            const noct_aabb *b = noct_bp_box(&w->bp, j);
+            if ((b->hi[0] < lo[0]) | (b->lo[0] > hi[0]) | (b->hi[1] < lo[1]) |
+                (b->lo[1] > hi[1]) | (b->hi[2] < lo[2]) | (b->lo[2] > hi[2]))
+                continue;
+            const noct_proxy *q = noct_bp_proxy(&w->bp, j);
+            if (!((q->category & o->mask) != 0 && (o->category & q->mask) != 0))
+                continue;
+            bool earlier = false; /* taken in an earlier leaf */
+            for (uint32_t t = 0; t < s && !earlier; ++t)
+                earlier = noct_overlaps(b, c[t]);
+            if (!earlier && !take(p, (noctProxyId){j, 0}, NULL))
+                return true; /* (p->failed) */
+        }
+    return true;
 }
 
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
@@ -110,8 +285,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         }
         p.self = i;
         p.n = 0;
-        st = noctBroadphaseQueryBox(&w->bp, lo, hi,
-                                    (noctQueryFilter){o->category, o->mask}, take, &p);
+        if (!leaf_partners(w, i, lo, hi, &p))
+            st = noctBroadphaseQueryBox(&w->bp, lo, hi,
+                                        (noctQueryFilter){o->category, o->mask}, take, &p);
         if (st == NOCT_OK && p.failed)
             st = NOCT_ERR_NOMEM;
         if (st != NOCT_OK)

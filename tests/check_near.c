@@ -160,6 +160,81 @@ START_TEST(near_pairs_against_geometry)
 END_TEST
 
 /* At the box level, the boxes decide. */
+/*
+ * The world's near pairs against noctWorldQueryNear() with each object's
+ * own shape, pose, filter and the world's margin: the query takes every
+ * candidate to the separating-axis test and the triangles' distances,
+ * never to the world's shortcut of two points of the box forms proved
+ * within the margin (world_near.c), so both must give the same pairs, on
+ * random worlds of boxes (whose pairs the shortcut decides) and L meshes,
+ * at random margins, over steps of random teleports. Pairs that are near
+ * but not colliding between boxes are counted: the shortcut's ground.
+ */
+START_TEST(near_pairs_against_the_query)
+{
+    noctMesh *ell = make_ell();
+    int pairs = 0, near_boxes = 0;
+    const int rounds = _i ? 16 : 4;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = 0.05 + 0.6 * uniform();
+        const double d = world_margin;
+        scene s;
+        random_scene(&s, 15 + (int)(20 * uniform()), 1 + round % 4, NOCT_ACCURACY_EXACT, ell);
+        world_margin = 0;
+        for (int step = 0; step < 6; ++step) {
+            for (int i = 0; i < s.n; ++i)
+                if (uniform() < 0.4)
+                    teleport(&s, i);
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            const noctPair *near, *col;
+            const size_t nn = noctWorldNear(s.w, &near);
+            const size_t nc = noctWorldColliding(s.w, &col);
+            size_t seen = 0;
+            for (int i = 0; i < s.n; ++i) {
+                if (s.sensor[i])
+                    continue;
+                double h[3];
+                for (int k = 0; k < 3; ++k)
+                    h[k] = (double)s.g[i].pc[0].h[k];
+                found got = {0};
+                ck_assert_int_eq(noctWorldQueryNear(s.w, s.kind[i] == 0 ? NULL : s.kind[i] == 1 ? s.mesh[i] : ell,
+                                                    h, &s.x[i], d,
+                                                    (noctQueryFilter){s.cat[i], s.mask[i]},
+                                                    collect, &got, NULL),
+                                 NOCT_OK);
+                for (int j = 0; j < s.n; ++j) {
+                    if (j == i || s.sensor[j])
+                        continue;
+                    bool in = false;
+                    for (int k = 0; k < got.n; ++k)
+                        in = in || got.id[k].index == s.id[j].index;
+                    noctObjectId a = s.id[i], c = s.id[j];
+                    if (a.index > c.index) {
+                        const noctObjectId t = a;
+                        a = c;
+                        c = t;
+                    }
+                    const bool listed = in_list(near, nn, a, c);
+                    ck_assert_msg(listed == in, "objects %d and %d: near %d, query %d (margin %g)",
+                                  i, j, listed, in, d);
+                    if (i < j && listed) {
+                        ++seen;
+                        if (s.kind[i] < 2 && s.kind[j] < 2 && !in_list(col, nc, a, c))
+                            ++near_boxes;
+                    }
+                    pairs += i < j;
+                }
+            }
+            ck_assert_uint_eq(seen, nn); /* and no pair beyond them */
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(pairs, _i ? 12000 : 3000);
+    ck_assert_int_gt(near_boxes, _i ? 120 : 25);
+    noctMeshDestroy(ell);
+}
+END_TEST
+
 START_TEST(box_level_uses_the_boxes)
 {
     noctMesh *ell = make_ell();
@@ -359,6 +434,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, query_near_against_geometry, 0, 1);
     tcase_add_test(tc, no_margin_no_near_and_bad_margins);
     tcase_add_test(tc, a_failed_step_keeps_the_near_pairs);
+    tcase_add_loop_test(tc, near_pairs_against_the_query, 0, 1);
     suite_add_tcase(s, tc);
     TCase *full = tcase_create("near, full");
     tcase_set_tags(full, "slow"); /* left out under valgrind */
@@ -366,6 +442,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
     tcase_add_loop_test(full, box_level_uses_the_boxes, 1, 2);
     tcase_add_loop_test(full, query_near_against_geometry, 1, 2);
+    tcase_add_loop_test(full, near_pairs_against_the_query, 1, 2);
     suite_add_tcase(s, full);
     return s;
 }
