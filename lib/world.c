@@ -132,41 +132,25 @@ noctStatus noctWorldReserve(noctWorld *w, size_t more, noctError *err)
 
 /* ---- what the world tells ---------------------------------------------------------- */
 
-size_t noctWorldColliding(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.contact.now, pairs);
-}
+/* The pair lists: each a list of an event record (world_events.c), valid
+ * until the next step. */
+#define PAIR_LIST(name, list)                                                              \
+    size_t name(const noctWorld *w, const noctPair **pairs)                                \
+    {                                                                                      \
+        NOCT_REQUIRE(w != NULL && pairs != NULL);                                          \
+        return noct_list_out(&w->events.list, pairs);                                      \
+    }
 
-size_t noctWorldSensing(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.sensor.now, pairs);
-}
-
-size_t noctWorldSensorBegan(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.sensor.began, pairs);
-}
-
-size_t noctWorldSensorEnded(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.sensor.ended, pairs);
-}
-
-size_t noctWorldBegan(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.contact.began, pairs);
-}
-
-size_t noctWorldEnded(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.contact.ended, pairs);
-}
+PAIR_LIST(noctWorldColliding, contact.now)
+PAIR_LIST(noctWorldBegan, contact.began)
+PAIR_LIST(noctWorldEnded, contact.ended)
+PAIR_LIST(noctWorldSensing, sensor.now)
+PAIR_LIST(noctWorldSensorBegan, sensor.began)
+PAIR_LIST(noctWorldSensorEnded, sensor.ended)
+PAIR_LIST(noctWorldNear, near.now)
+PAIR_LIST(noctWorldNearBegan, near.began)
+PAIR_LIST(noctWorldNearEnded, near.ended)
+#undef PAIR_LIST
 
 noctStatus noctWorldObject(const noctWorld *w, noctObjectId id, double position[3],
                            double direction[3])

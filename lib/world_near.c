@@ -315,21 +315,3 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     return NOCT_OK;
 }
-
-size_t noctWorldNear(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.near.now, pairs);
-}
-
-size_t noctWorldNearBegan(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.near.began, pairs);
-}
-
-size_t noctWorldNearEnded(const noctWorld *w, const noctPair **pairs)
-{
-    NOCT_REQUIRE(w != NULL && pairs != NULL);
-    return noct_list_out(&w->events.near.ended, pairs);
-}
