@@ -62,9 +62,23 @@ static void teleport(scene *s, int i)
 #define BEYOND 1e-9L
 
 /* _i: 0 a quick run (under valgrind too), 1 the full one (tag slow). */
+/* The L-shaped mesh the random scenes use, made for each test by the
+ * test cases' fixture. */
+static noctMesh *ell;
+
+static void make_ell_fixture(void)
+{
+    ell = make_ell();
+}
+
+static void free_ell_fixture(void)
+{
+    noctMeshDestroy(ell);
+    ell = NULL;
+}
+
 START_TEST(near_pairs_against_geometry)
 {
-    noctMesh *ell = make_ell();
     int within = 0, beyond = 0, skipped = 0, events = 0, removed_ended = 0;
     const int rounds = _i ? 4 : 1;
     for (int round = 0; round < rounds; ++round) {
@@ -155,7 +169,6 @@ START_TEST(near_pairs_against_geometry)
     ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
     ck_assert_int_gt(events, _i ? 100 : 5);
     ck_assert_int_ge(removed_ended, _i ? 1 : 0);
-    noctMeshDestroy(ell);
 }
 END_TEST
 
@@ -172,7 +185,6 @@ END_TEST
  */
 START_TEST(near_pairs_against_the_query)
 {
-    noctMesh *ell = make_ell();
     int pairs = 0, near_boxes = 0;
     const int rounds = _i ? 16 : 4;
     for (int round = 0; round < rounds; ++round) {
@@ -231,13 +243,11 @@ START_TEST(near_pairs_against_the_query)
     }
     ck_assert_int_gt(pairs, _i ? 12000 : 3000);
     ck_assert_int_gt(near_boxes, _i ? 120 : 25);
-    noctMeshDestroy(ell);
 }
 END_TEST
 
 START_TEST(box_level_uses_the_boxes)
 {
-    noctMesh *ell = make_ell();
     int checked = 0, nears = 0;
     for (int round = 0; round < (_i ? 4 : 1); ++round) {
         world_margin = 0.1 + 0.5 * uniform();
@@ -274,13 +284,11 @@ START_TEST(box_level_uses_the_boxes)
     }
     ck_assert_int_gt(checked, _i ? 1000 : 200);
     ck_assert_int_gt(nears, _i ? 50 : 5);
-    noctMeshDestroy(ell);
 }
 END_TEST
 
 START_TEST(query_near_against_geometry)
 {
-    noctMesh *ell = make_ell();
     int within = 0, beyond = 0;
     for (int round = 0; round < (_i ? 3 : 1); ++round) {
         scene s;
@@ -295,18 +303,7 @@ START_TEST(query_near_against_geometry)
             double h[3];
             for (int k = 0; k < 3; ++k)
                 h[k] = 0.1 + 0.6 * uniform();
-            ideal sh = {0};
-            quat_matrix(&x.q, sh.R);
-            for (int k = 0; k < 3; ++k)
-                sh.t[k] = x.p[k];
-            if (is_ell) {
-                sh.npieces = 2;
-                sh.pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
-                sh.pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
-            } else {
-                sh.npieces = 1;
-                sh.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
-            }
+            const ideal sh = ideal_shape(&x, is_ell, h);
             const noctQueryFilter f = random_filter();
             found got = {0};
             ck_assert_int_eq(noctWorldQueryNear(s.w, is_ell ? ell : NULL, h, &x, d, f, collect,
@@ -334,13 +331,11 @@ START_TEST(query_near_against_geometry)
     }
     ck_assert_int_gt(within, _i ? 150 : 10);
     ck_assert_int_gt(beyond, _i ? 1500 : 100);
-    noctMeshDestroy(ell);
 }
 END_TEST
 
 START_TEST(no_margin_no_near_and_bad_margins)
 {
-    noctMesh *ell = make_ell();
     scene s;
     random_scene(&s, 20, 2, NOCT_ACCURACY_EXACT, ell);
     for (int step = 0; step < 3; ++step) {
@@ -371,7 +366,6 @@ START_TEST(no_margin_no_near_and_bad_margins)
                      NOCT_ERR_INVALID);
     ck_assert_int_eq(got.n, 0);
     free_scene(&s);
-    noctMeshDestroy(ell);
 }
 END_TEST
 
@@ -427,23 +421,20 @@ END_TEST
 static Suite *near_suite(void)
 {
     Suite *s = suite_create("near");
-    TCase *tc = tcase_create("near");
-    tcase_set_timeout(tc, 300);
+    TCase *tc = test_case(s, "near", 300, NULL);
+    tcase_add_checked_fixture(tc, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(tc, near_pairs_against_geometry, 0, 1);
     tcase_add_loop_test(tc, box_level_uses_the_boxes, 0, 1);
     tcase_add_loop_test(tc, query_near_against_geometry, 0, 1);
     tcase_add_test(tc, no_margin_no_near_and_bad_margins);
     tcase_add_test(tc, a_failed_step_keeps_the_near_pairs);
     tcase_add_loop_test(tc, near_pairs_against_the_query, 0, 1);
-    suite_add_tcase(s, tc);
-    TCase *full = tcase_create("near, full");
-    tcase_set_tags(full, "slow"); /* left out under valgrind */
-    tcase_set_timeout(full, 300);
+    TCase *full = test_case(s, "near, full", 300, "slow");
+    tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
     tcase_add_loop_test(full, box_level_uses_the_boxes, 1, 2);
     tcase_add_loop_test(full, query_near_against_geometry, 1, 2);
     tcase_add_loop_test(full, near_pairs_against_the_query, 1, 2);
-    suite_add_tcase(s, full);
     return s;
 }
 

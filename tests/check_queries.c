@@ -156,18 +156,7 @@ START_TEST(boxes_and_shapes_against_brute_force)
                                                  &got, NULL),
                              NOCT_OK);
             expect_index_order(&got);
-            ideal sh = {0};
-            quat_matrix(&x.q, sh.R);
-            for (int k = 0; k < 3; ++k)
-                sh.t[k] = x.p[k];
-            if (is_ell) {
-                sh.npieces = 2;
-                sh.pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
-                sh.pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
-            } else {
-                sh.npieces = 1;
-                sh.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
-            }
+            const ideal sh = ideal_shape(&x, is_ell, h);
             for (int i = 0; i < s.n; ++i) {
                 const bool in = in_found(&got, &s, i);
                 if (!passes(&s, i, f)) {

@@ -410,3 +410,20 @@ void expect_index_order(const found *f)
     for (int k = 1; k < f->n; ++k)
         ck_assert_uint_lt(f->id[k - 1].index, f->id[k].index);
 }
+
+ideal ideal_shape(const noctTransform *x, bool ell, const double h[3])
+{
+    ideal sh = {0};
+    quat_matrix(&x->q, sh.R);
+    for (int k = 0; k < 3; ++k)
+        sh.t[k] = x->p[k];
+    if (ell) {
+        sh.npieces = 2;
+        sh.pc[0] = (piece){{0, -0.5L, 0}, {1, 0.5L, 0.5L}};
+        sh.pc[1] = (piece){{-0.5L, 0, 0}, {0.5L, 1, 0.5L}};
+    } else {
+        sh.npieces = 1;
+        sh.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+    }
+    return sh;
+}

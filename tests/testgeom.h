@@ -59,6 +59,10 @@ extern double world_margin;
 
 double uniform(void);
 void quat_matrix(const noctQuat *q, long double R[9]);
+
+/* The ideal solid of a query's shape at pose x: make_ell()'s L (ell), or
+ * a box of half-extents h. */
+ideal ideal_shape(const noctTransform *x, bool ell, const double h[3]);
 void random_quat(noctQuat *q);
 void to_local(const ideal *g, const long double p[3], long double out[3]);
 void dir_to_local(const ideal *g, const long double d[3], long double out[3]);
