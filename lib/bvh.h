@@ -67,9 +67,11 @@ static inline bool noct_boxes_overlap(const double alo[3], const double ahi[3],
 }
 
 /* The pair walk's tests: prune says a pair of nodes holds nothing of
- * interest; pair decides a pair of placed triangles, true to stop. */
+ * interest; pair decides a pair of placed triangles (A's triangle i, B's
+ * triangle j, in BVH order), true to stop. */
 typedef bool noct_bvh_prune_fn(void *context, const bvh_node *na, const bvh_node *nb);
-typedef bool noct_bvh_pair_fn(void *context, double a[3][3], double b[3][3]);
+typedef bool noct_bvh_pair_fn(void *context, uint32_t i, double a[3][3], uint32_t j,
+                              double b[3][3]);
 
 /* Node pairs a pair walk keeps pending, at most: the trees of meshes
  * within the size limits are far shallower. */
@@ -107,7 +109,7 @@ static NOCT_ALWAYS_INLINE bool noct_bvh_pair_walk(const noct_placed_mesh *A,
                     double tb[3][3];
                     for (int c = 0; c < 3; ++c)
                         noct_place_vertex(B, B->m->tri[3 * j + c], tb[c]);
-                    if (pair(context, ta, tb))
+                    if (pair(context, i, ta, j, tb))
                         return true;
                 }
             }

@@ -27,6 +27,7 @@ noctree_sources = \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
 	lib/narrowphase_query.c \
+	lib/narrowphase_swept.c \
 	lib/neighbor.c \
 	lib/octree.c \
 	lib/predicates.c \

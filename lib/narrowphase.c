@@ -44,8 +44,11 @@ static inline bool boundary_prune(void *context, const bvh_node *na, const bvh_n
     return !noct_boxes_overlap(na->lo, na->hi, b->A->t, nb->lo, nb->hi, b->B->t);
 }
 
-static inline bool boundary_pair(void *context, double ta[3][3], double tb[3][3])
+static inline bool boundary_pair(void *context, uint32_t i, double ta[3][3], uint32_t j,
+                                 double tb[3][3])
 {
+    (void)i;
+    (void)j;
     const boundary_walk *b = context;
     if (b->st)
         ++b->st->triangle_pairs;

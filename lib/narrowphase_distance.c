@@ -188,8 +188,11 @@ static inline bool within_prune(void *context, const bvh_node *na, const bvh_nod
     return box_dist2(na->lo, na->hi, w->ta, nb->lo, nb->hi, w->tb) > w->reach2;
 }
 
-static inline bool within_pair(void *context, double x[3][3], double y[3][3])
+static inline bool within_pair(void *context, uint32_t i, double x[3][3], uint32_t j,
+                               double y[3][3])
 {
+    (void)i;
+    (void)j;
     const within_walk *w = context;
     return tri_tri_lower_bound(x, y) <= w->reach;
 }

@@ -285,41 +285,44 @@ static int not_finite(void)
     return 0;
 }
 
-int noct_orient2d_exact(const double a[2], const double b[2], const double c[2])
+/* Buffer sizes for xpoints (predicates.h): a weighted input (a weight
+ * below 2^54 adds a limb), a sum of up to NOCT_XPOINT_TERMS of them (a
+ * limb of carries, and the one exact_add's check asks for), a difference
+ * of two, and the determinants' products and sums as above. The
+ * determinants of doubles use the same buffers: only the limbs the
+ * values need are touched. */
+#define XIN_LIMBS (IN_LIMBS + 1)
+#define XCOORD_LIMBS (XIN_LIMBS + 2)
+#define XDIFF_LIMBS (XCOORD_LIMBS + 1)
+#define XPROD_LIMBS (2 * XDIFF_LIMBS)
+#define XMINOR_LIMBS (XPROD_LIMBS + 1)
+#define XTERM_LIMBS (XMINOR_LIMBS + XDIFF_LIMBS)
+#define XSUM_LIMBS (XTERM_LIMBS + 2)
+
+/* The sign of det[d0 d1; d2 d3] = d0 d3 - d1 d2. */
+static int det2_sign(const exact_int d[4])
 {
-    const double *p[3] = {a, b, c};
-    mp_limb_t diff_d[4][DIFF_LIMBS], l_d[PROD_LIMBS], r_d[PROD_LIMBS], det_d[MINOR_LIMBS];
-    exact_int diff[4], l = {l_d, 0, PROD_LIMBS, false}, r = {r_d, 0, PROD_LIMBS, false};
-    exact_int det = {det_d, 0, MINOR_LIMBS, false};
-    for (int i = 0; i < 4; ++i)
-        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
-    if (!exact_diffs(p, 3, 2, diff))
-        return not_finite();
-    /* diff = {acx, acy, bcx, bcy}; det = acx bcy - acy bcx */
-    exact_mul(&l, &diff[0], &diff[3]);
-    exact_mul(&r, &diff[1], &diff[2]);
+    mp_limb_t l_d[XPROD_LIMBS], r_d[XPROD_LIMBS], det_d[XMINOR_LIMBS];
+    exact_int l = {l_d, 0, XPROD_LIMBS, false}, r = {r_d, 0, XPROD_LIMBS, false};
+    exact_int det = {det_d, 0, XMINOR_LIMBS, false};
+    exact_mul(&l, &d[0], &d[3]);
+    exact_mul(&r, &d[1], &d[2]);
     exact_add(&det, &l, &r, true);
     return exact_sign(&det);
 }
 
-int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
-                        const double d[3])
+/* The sign of the determinant of the rows diff[3 i .. 3 i + 2]: with x, y,
+ * z for the columns, the sum over the cyclic (i, j, k) of
+ * z_i (x_j y_k - x_k y_j). The running sum alternates between two
+ * buffers, as exact_add does not work in place. */
+static int det3_sign(const exact_int diff[9])
 {
-    const double *p[4] = {a, b, c, d};
-    mp_limb_t diff_d[9][DIFF_LIMBS], l_d[PROD_LIMBS], r_d[PROD_LIMBS];
-    mp_limb_t minor_d[MINOR_LIMBS], term_d[TERM_LIMBS], sum_d[2][SUM_LIMBS];
-    exact_int diff[9], l = {l_d, 0, PROD_LIMBS, false}, r = {r_d, 0, PROD_LIMBS, false};
-    exact_int minor = {minor_d, 0, MINOR_LIMBS, false};
-    exact_int term = {term_d, 0, TERM_LIMBS, false};
-    exact_int sum[2] = {{sum_d[0], 0, SUM_LIMBS, false}, {sum_d[1], 0, SUM_LIMBS, false}};
-    for (int i = 0; i < 9; ++i)
-        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
-    if (!exact_diffs(p, 4, 3, diff))
-        return not_finite();
-    /* diff[3 i + k] is coordinate k of p[i] - d. With x, y, z for the
-     * coordinates: det = sum over the cyclic (i, j, k) of
-     * z_i (x_j y_k - x_k y_j). The running sum alternates between two
-     * buffers, as exact_add does not work in place. */
+    mp_limb_t l_d[XPROD_LIMBS], r_d[XPROD_LIMBS];
+    mp_limb_t minor_d[XMINOR_LIMBS], term_d[XTERM_LIMBS], sum_d[2][XSUM_LIMBS];
+    exact_int l = {l_d, 0, XPROD_LIMBS, false}, r = {r_d, 0, XPROD_LIMBS, false};
+    exact_int minor = {minor_d, 0, XMINOR_LIMBS, false};
+    exact_int term = {term_d, 0, XTERM_LIMBS, false};
+    exact_int sum[2] = {{sum_d[0], 0, XSUM_LIMBS, false}, {sum_d[1], 0, XSUM_LIMBS, false}};
     for (int i = 0; i < 3; ++i) {
         int j = (i + 1) % 3, k = (i + 2) % 3;
         exact_mul(&l, &diff[3 * j], &diff[3 * k + 1]);
@@ -331,6 +334,89 @@ int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
     return exact_sign(&sum[1]);
 }
 
+int noct_orient2d_exact(const double a[2], const double b[2], const double c[2])
+{
+    const double *p[3] = {a, b, c};
+    mp_limb_t diff_d[4][DIFF_LIMBS];
+    exact_int diff[4];
+    for (int i = 0; i < 4; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
+    if (!exact_diffs(p, 3, 2, diff))
+        return not_finite();
+    /* diff = {acx, acy, bcx, bcy}; det = acx bcy - acy bcx */
+    return det2_sign(diff);
+}
+
+int noct_orient3d_exact(const double a[3], const double b[3], const double c[3],
+                        const double d[3])
+{
+    const double *p[4] = {a, b, c, d};
+    mp_limb_t diff_d[9][DIFF_LIMBS];
+    exact_int diff[9];
+    for (int i = 0; i < 9; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, DIFF_LIMBS, false};
+    if (!exact_diffs(p, 4, 3, diff))
+        return not_finite();
+    /* diff[3 i + k] is coordinate k of p[i] - d. */
+    return det3_sign(diff);
+}
+
+/* ---- xpoints: exact ------------------------------------------------------- */
+
+/*
+ * Coordinates axes[0..dim) of the xpoints p[0..n), differences with the
+ * last as exact_diffs() makes them: each axis scaled by 2^-emin, emin the
+ * least exponent of any term's double on it, so every weighted term is an
+ * integer. False if a coordinate is not finite.
+ */
+static bool exact_xdiffs(const noct_xpoint *const p[], int n, int dim, const int axes[],
+                         exact_int diff[])
+{
+    int emin[3] = {INT_MAX, INT_MAX, INT_MAX};
+    assert(n <= 4 && dim <= 3);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < p[i]->n; ++j)
+            for (int c = 0; c < dim; ++c) {
+                double x = p[i]->v[j][axes[c]];
+                if (!isfinite(x))
+                    return false;
+                exact_split s = exact_split_double(x);
+                if (s.m != 0 && s.q < emin[c])
+                    emin[c] = s.q;
+            }
+    mp_limb_t in_d[IN_LIMBS], w_d[XIN_LIMBS], coord_d[2][4][3][XCOORD_LIMBS];
+    exact_int coord[4][3];
+    for (int i = 0; i < n; ++i)
+        for (int c = 0; c < dim; ++c) {
+            /* The coordinate, a term at a time, alternating between two
+             * buffers; coord[i][c] is the last one written. */
+            exact_int acc[2] = {{coord_d[0][i][c], 0, XCOORD_LIMBS, false},
+                                {coord_d[1][i][c], 0, XCOORD_LIMBS, false}};
+            int cur = 0;
+            for (int j = 0; j < p[i]->n; ++j) {
+                int64_t w = p[i]->w[j];
+                exact_split s = exact_split_double(p[i]->v[j][axes[c]]);
+                if (w == 0 || s.m == 0)
+                    continue;
+                assert(w >= -(INT64_C(1) << 53) && w <= (INT64_C(1) << 53));
+                exact_int in = {in_d, 0, IN_LIMBS, false};
+                exact_place(&in, &s, emin[c]);
+                exact_int wt = {w_d, 0, XIN_LIMBS, s.neg != (w < 0)};
+                uint64_t mag = w < 0 ? (uint64_t)-w : (uint64_t)w;
+                mp_limb_t carry = mpn_mul_1(wt.d, in.d, in.n, (mp_limb_t)mag);
+                wt.n = in.n;
+                if (carry != 0)
+                    wt.d[wt.n++] = carry;
+                exact_add(&acc[1 - cur], &acc[cur], &wt, false);
+                cur = 1 - cur;
+            }
+            coord[i][c] = acc[cur];
+        }
+    for (int i = 0; i + 1 < n; ++i)
+        for (int c = 0; c < dim; ++c)
+            exact_add(&diff[i * dim + c], &coord[i][c], &coord[n - 1][c], true);
+    return true;
+}
 /* ---- the filtered predicates ---------------------------------------------- */
 
 int noct_orient2d(const double a[2], const double b[2], const double c[2],
@@ -368,4 +454,116 @@ int noct_orient3d(const double a[3], const double b[3], const double c[3],
     if (fallbacks != NULL)
         ++*fallbacks;
     return noct_orient3d_exact(a, b, c, d);
+}
+
+/* ---- xpoints: filtered ---------------------------------------------------- */
+
+/*
+ * The filter for xpoints. Each coordinate is summed in floating point
+ * from its weighted terms (w v, exact products for |w| <= 2^53 but for
+ * rounding: error eps |w v|), with its magnitude, the sum of the terms'
+ * absolute values; a difference of two coordinates is then within
+ * 14 eps of the sum of their magnitudes (at most 12 terms: 11 additions
+ * and the products' roundings, each under eps of the magnitude, with
+ * (1 + eps)^12 to spare). A determinant of such differences is within
+ * 3 * 14 eps (1 + 14 eps)^2 of the sum over its terms of the products of
+ * their magnitudes, plus its own rounding, under 7 eps of the same (stage
+ * A, on values below the magnitudes): under 50 eps. The filter asks for
+ * 64 eps of the magnitudes' permanent, rounded up by the factor below,
+ * and sends permanents that may have underflowed or overflowed to the
+ * exact path, as the filters above do.
+ */
+#define X_BOUND (64.0 * EPS)
+#define X_ROUND_UP (1.0 + 64.0 * EPS)
+
+typedef struct xcoord {
+    double v, m; /* value, magnitude */
+} xcoord;
+
+static xcoord xcoord_of(const noct_xpoint *p, int k)
+{
+    xcoord c = {0, 0};
+    for (int j = 0; j < p->n; ++j) {
+        double t = (double)p->w[j] * p->v[j][k];
+        c.v += t;
+        c.m += fabs(t);
+    }
+    return c;
+}
+
+static xcoord xdiff(const noct_xpoint *a, const noct_xpoint *b, int k)
+{
+    xcoord x = xcoord_of(a, k), y = xcoord_of(b, k);
+    return (xcoord){x.v - y.v, x.m + y.m};
+}
+
+int noct_orient3d_x(const noct_xpoint *a, const noct_xpoint *b, const noct_xpoint *c,
+                    const noct_xpoint *d, uint64_t *fallbacks)
+{
+    const noct_xpoint *p[4] = {a, b, c, d};
+    xcoord r[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            r[i][k] = xdiff(p[i], d, k);
+    double det = 0, permanent = 0;
+    for (int i = 0; i < 3; ++i) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        det += r[i][2].v * (r[j][0].v * r[k][1].v - r[k][0].v * r[j][1].v);
+        permanent += r[i][2].m * (r[j][0].m * r[k][1].m + r[k][0].m * r[j][1].m);
+    }
+    double least = TINY * (1 + r[0][2].m + r[1][2].m + r[2][2].m);
+    int s = filtered(det, permanent * X_ROUND_UP, X_BOUND, least);
+    if (s != 2)
+        return s;
+    if (fallbacks != NULL)
+        ++*fallbacks;
+    mp_limb_t diff_d[9][XDIFF_LIMBS];
+    exact_int diff[9];
+    for (int i = 0; i < 9; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, XDIFF_LIMBS, false};
+    static const int axes[3] = {0, 1, 2};
+    if (!exact_xdiffs(p, 4, 3, axes, diff))
+        return not_finite();
+    return det3_sign(diff);
+}
+
+int noct_orient2d_x(int k, const noct_xpoint *a, const noct_xpoint *b,
+                    const noct_xpoint *c, uint64_t *fallbacks)
+{
+    const int axes[2] = {(k + 1) % 3, (k + 2) % 3};
+    xcoord ax = xdiff(a, c, axes[0]), ay = xdiff(a, c, axes[1]);
+    xcoord bx = xdiff(b, c, axes[0]), by = xdiff(b, c, axes[1]);
+    double det = ax.v * by.v - ay.v * bx.v;
+    double permanent = ax.m * by.m + ay.m * bx.m;
+    int s = filtered(det, permanent * X_ROUND_UP, X_BOUND, TINY);
+    if (s != 2)
+        return s;
+    if (fallbacks != NULL)
+        ++*fallbacks;
+    const noct_xpoint *p[3] = {a, b, c};
+    mp_limb_t diff_d[4][XDIFF_LIMBS];
+    exact_int diff[4];
+    for (int i = 0; i < 4; ++i)
+        diff[i] = (exact_int){diff_d[i], 0, XDIFF_LIMBS, false};
+    if (!exact_xdiffs(p, 3, 2, axes, diff))
+        return not_finite();
+    return det2_sign(diff);
+}
+
+int noct_compare_x(int k, const noct_xpoint *a, const noct_xpoint *b, uint64_t *fallbacks)
+{
+    xcoord d = xdiff(a, b, k);
+    /* A difference is within 14 eps of its magnitude (above); underflow
+     * costs sums nothing, but the products w v may be off by 2^-1075. */
+    if (isfinite(d.m) && d.m > TINY && fabs(d.v) > X_BOUND * d.m * X_ROUND_UP)
+        return sign_of(d.v);
+    if (fallbacks != NULL)
+        ++*fallbacks;
+    const noct_xpoint *p[2] = {a, b};
+    const int axes[1] = {k};
+    mp_limb_t diff_d[1][XDIFF_LIMBS];
+    exact_int diff[1] = {{diff_d[0], 0, XDIFF_LIMBS, false}};
+    if (!exact_xdiffs(p, 2, 1, axes, diff))
+        return not_finite();
+    return exact_sign(&diff[0]);
 }

@@ -25,6 +25,18 @@ static inline void noct_sub3(const double a[3], const double b[3], double out[3]
         out[i] = a[i] - b[i];
 }
 
+static inline void noct_add3(const double a[3], const double b[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = a[i] + b[i];
+}
+
+static inline void noct_copy3(const double a[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = a[i];
+}
+
 static inline void noct_cross3(const double a[3], const double b[3], double out[3])
 {
     out[0] = a[1] * b[2] - a[2] * b[1];
