@@ -47,6 +47,7 @@ noctree_sources = \
 	lib/world_object.c \
 	lib/world_query.c \
 	lib/world_step.c \
+	lib/world_sweep.c \
 	lib/world_track.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)

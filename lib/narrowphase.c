@@ -663,6 +663,7 @@ const char *noctAccuracyName(noctAccuracy accuracy)
     case NOCT_ACCURACY_BOX: return "box";
     case NOCT_ACCURACY_CONVEX: return "convex";
     case NOCT_ACCURACY_EXACT: return "exact";
+    case NOCT_ACCURACY_CONTINUOUS: return "continuous";
     }
     return "unknown";
 }
@@ -696,6 +697,7 @@ noctStatus noct_collide_overlapping(const noctMesh *a, const double ta[3], const
     case NOCT_ACCURACY_CONVEX:
         return convex_collide(&A, &B, colliding, stats);
     case NOCT_ACCURACY_EXACT:
+    case NOCT_ACCURACY_CONTINUOUS: /* without motion */
         break;
     }
     return exact_collide(&A, &B, false, colliding, stats);
@@ -716,7 +718,7 @@ noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
     NOCT_REQUIRE(a != NULL && ta != NULL && b != NULL && tb != NULL);
     NOCT_REQUIRE(colliding != NULL);
     if (accuracy != NOCT_ACCURACY_BOX && accuracy != NOCT_ACCURACY_CONVEX &&
-        accuracy != NOCT_ACCURACY_EXACT)
+        accuracy != NOCT_ACCURACY_EXACT && accuracy != NOCT_ACCURACY_CONTINUOUS)
         return NOCT_ERR_INVALID;
     for (int k = 0; k < 3; ++k) {
         if (!isfinite(ta[k]) || !isfinite(tb[k]))

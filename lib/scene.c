@@ -442,16 +442,19 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
     if (strcmp(kw, "accuracy") == 0) {
         char *tok = next(p);
         if (tok == NULL)
-            return perr(p, NOCT_ERR_PARSE, "missing the accuracy (box, convex or exact)");
+            return perr(p, NOCT_ERR_PARSE,
+                        "missing the accuracy (box, convex, exact or continuous)");
         if (strcmp(tok, "box") == 0)
             s->def.accuracy = NOCT_ACCURACY_BOX;
         else if (strcmp(tok, "convex") == 0)
             s->def.accuracy = NOCT_ACCURACY_CONVEX;
         else if (strcmp(tok, "exact") == 0)
             s->def.accuracy = NOCT_ACCURACY_EXACT;
+        else if (strcmp(tok, "continuous") == 0)
+            s->def.accuracy = NOCT_ACCURACY_CONTINUOUS;
         else
-            return perr(p, NOCT_ERR_INVALID, "unknown accuracy '%s' (box, convex or exact)",
-                        tok);
+            return perr(p, NOCT_ERR_INVALID,
+                        "unknown accuracy '%s' (box, convex, exact or continuous)", tok);
         return end_of_line(p);
     }
     if (strcmp(kw, "maintenance") == 0) {

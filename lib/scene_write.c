@@ -62,10 +62,7 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
         fprintf(f, "max-depth auto\n");
     else
         fprintf(f, "max-depth %d\n", d->max_depth);
-    fprintf(f, "accuracy %s\nmaintenance %s\nsteps %d\n",
-            d->accuracy == NOCT_ACCURACY_BOX      ? "box"
-            : d->accuracy == NOCT_ACCURACY_CONVEX ? "convex"
-                                                  : "exact",
+    fprintf(f, "accuracy %s\nmaintenance %s\nsteps %d\n", noctAccuracyName(d->accuracy),
             d->maintenance == NOCT_MAINTAIN_REBUILD ? "rebuild" : "incremental", s->steps);
     if (d->margin > 0) {
         char b[32];

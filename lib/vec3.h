@@ -17,6 +17,7 @@
 /* A 3-vector as an array element type: resizable arrays of vectors
  * (array.h) and the motion's saved positions. */
 typedef double noct_vec3[3];
+typedef double noct_box6[6]; /* lo, hi */
 typedef int64_t noct_ticks[3];
 
 static inline void noct_sub3(const double a[3], const double b[3], double out[3])

@@ -37,7 +37,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
     NOCT_REQUIRE(def != NULL && world != NULL);
     *world = NULL;
     if (def->accuracy != NOCT_ACCURACY_BOX && def->accuracy != NOCT_ACCURACY_CONVEX &&
-        def->accuracy != NOCT_ACCURACY_EXACT)
+        def->accuracy != NOCT_ACCURACY_EXACT && def->accuracy != NOCT_ACCURACY_CONTINUOUS)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown accuracy %d",
                          (int)def->accuracy);
     if (def->effects & ~(unsigned)(NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS |
@@ -74,6 +74,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
     }
     noct_bp_set_rebuild_mode(&w->bp, def->maintenance == NOCT_MAINTAIN_REBUILD);
     w->def = *def;
+    w->sweeps.on = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
     *world = w;
     return NOCT_OK;
 }
@@ -107,6 +108,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->spin.w);
     free(w->spin.spinners);
     free(w->placed);
+    noct_world_free_sweeps(w);
     noct_world_free_tracks(w);
     free(w);
 }

@@ -116,6 +116,28 @@ typedef struct noct_spin {
     bool stale;
 } noct_spin;
 
+/*
+ * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, world_sweep.c):
+ * per slot, where each object's next step starts (its position at the end
+ * of the last step, or where it was made); its mesh's local box (base) and
+ * how far each side of it the broadphase's local box is grown (grow), so
+ * that its box at the step's end holds its box at the step's start; the
+ * objects a program or a stage placed since their growth was last made
+ * (todo, with a flag a slot); and the hits of the step's began contacts.
+ * All NULL (and unused) in a discrete world.
+ */
+typedef struct noct_sweeps {
+    bool on;
+    double (*start)[3];
+    double (*base)[6];     /* lo, hi */
+    double (*grow)[3];
+    uint32_t *todo;
+    uint8_t *in_todo;
+    uint32_t ntodo;
+    noctSweepHit *hits;    /* parallel to the contact record's began */
+    size_t caphits;
+} noct_sweeps;
+
 /* An object's track (#NOCT_EFFECT_TRACK): its keyframes, owned. */
 typedef struct noct_track {
     uint32_t slot;
@@ -166,6 +188,7 @@ struct noctWorld {
     noct_events events;
     noct_spin spin;
     noct_tracks tracks;
+    noct_sweeps sweeps;
     noct_placed *placed;   /* this step's placements (spin, tracks) */
     uint32_t nplaced, capplaced;
     uint64_t tick;         /* steps done */
@@ -244,6 +267,37 @@ void noct_world_placements_done(noctWorld *w);
  * noct_mesh_rotated() makes anew of the shape and its rotation, bit for
  * bit (recycled copies are refilled in place)? INVARIANT if not, NOMEM. */
 noctStatus noct_world_check_turned(const noctWorld *w, uint32_t s, noctError *err);
+
+/* ---- world_sweep.c ---------------------------------------------------------------- */
+
+/* The sweeps' per-slot arrays to cap slots; false without memory. */
+bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap);
+void noct_world_free_sweeps(noctWorld *w);
+
+/* Object s was made, placed or moved by the program: its growth is made
+ * again at the next step (and, made, it starts there). */
+void noct_world_sweep_touch(noctWorld *w, uint32_t s, bool made);
+
+/* Object s's local box is its mesh's again (a new rotation): base is
+ * taken from obj[s], the growth is owed. */
+void noct_world_sweep_reshaped(noctWorld *w, uint32_t s);
+
+/* Before the motion: every object that may move this step gets the
+ * growth its motion asks for. NOMEM (nothing is lost: a growth not made
+ * is owed). */
+noctStatus noct_world_stage_grow(noctWorld *w);
+
+/* After a step that succeeded: each object's next step starts where it
+ * is. */
+void noct_world_sweeps_done(noctWorld *w);
+
+/* The continuous level on a pair: its verdict (with hit, its time and
+ * features). */
+noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding,
+                                 noctSweepHit *hit);
+
+/* The hits of the contact record's began pairs; NOMEM. */
+noctStatus noct_world_sweep_began(noctWorld *w);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 

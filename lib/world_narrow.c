@@ -7,6 +7,8 @@
  */
 #include "config.h"
 
+#include <string.h>
+
 #include "world_internal.h"
 
 /* The narrowphase on the pairs the search found (whose boxes it tested
@@ -32,7 +34,8 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
     const noct_box_slot *slot = w->slot;
     const noct_object *obj = w->obj;
     const noctMesh *const *mesh = w->mesh;
-    const bool exact = level == NOCT_ACCURACY_EXACT;
+    const bool exact = level == NOCT_ACCURACY_EXACT || level == NOCT_ACCURACY_CONTINUOUS;
+    double(*start)[3] = w->sweeps.start; /* continuous: NULL otherwise */
     const bool sensors = w->nsensors > 1; /* two sensors never pair */
     for (size_t i = 0; i < n; ++i) {
         if (i + 16 < n)
@@ -58,6 +61,18 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         bool hit;
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];
+        if (start != NULL && (memcmp(start[ia], ta, sizeof start[ia]) != 0 ||
+                              memcmp(start[ib], tb, sizeof start[ib]) != 0)) {
+            /* either moved: the continuous level */
+            st = noct_world_sweep_pair(w, ia, ib, &hit, NULL);
+            if (st != NOCT_OK)
+                break;
+            if (hit && !noct_pairs_push(colliding, (noctPair){{ia, 0}, {ib, 0}})) {
+                st = NOCT_ERR_NOMEM;
+                break;
+            }
+            continue;
+        }
         const bool boxes = exact && slot[ia].has_box && slot[ib].has_box;
         if (boxes) {
             d = noct_box_decide(&slot[ia], ta, &slot[ib], tb);

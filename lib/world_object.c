@@ -33,7 +33,8 @@ bool noct_world_reserve_slots(noctWorld *w)
         return true;
     if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
         !resize_meshes(&w->mesh, cap) || !resize_turns(&w->turn, cap) ||
-        (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)))
+        (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)) ||
+        !noct_world_reserve_sweeps(w, cap))
         return false;
     for (uint32_t i = w->capslots; i < cap; ++i)
         w->turn[i] = NULL;
@@ -212,6 +213,7 @@ static void place_mesh(noctWorld *w, uint32_t s)
         double R[9];
         noctQuatToMatrix(&p->q, R, NULL);
         noct_box_slot_of_box(p->shape.half, R, &w->slot[s], o->mlo, o->mhi);
+        noct_world_sweep_reshaped(w, s);
         return;
     }
     const noctMesh *m = p->rotated != NULL ? p->rotated : p->shape.mesh;
@@ -222,6 +224,7 @@ static void place_mesh(noctWorld *w, uint32_t s)
         noct_box_slot_fill(m, &w->slot[s]);
     else
         w->slot[s].has_box = 0;
+    noct_world_sweep_reshaped(w, s);
 }
 
 const noctMesh *noct_world_mesh(noctWorld *w, uint32_t s, noctStatus *st)
@@ -259,6 +262,7 @@ static void set_motion(noctWorld *w, uint32_t s, noctObjectType type, const doub
     /* the movers list and its greatest speed are made again */
     w->motion.stale = w->motion.stale || was || is;
     w->spin.stale = true;
+    noct_world_sweep_touch(w, s, false); /* its growth follows */
 }
 
 /* An object's velocity: the moving one's, or the one its pose keeps. */
@@ -382,6 +386,7 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     o->alive = true;
     o->sensor = def->sensor;
     w->nsensors += def->sensor;
+    noct_world_sweep_touch(w, slot, true);
     set_motion(w, slot, def->type, def->velocity);
     id->index = slot;
     id->generation = noct_bp_generation(&w->bp, slot);
@@ -482,6 +487,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     if (same && !noct_bp_tree_owed(&w->bp) &&
         noct_bp_move_fast(&w->bp, s, x->p)) {
         memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+        noct_world_sweep_touch(w, s, false);
         return NOCT_OK;
     }
     double R[9], was[9];
@@ -518,6 +524,7 @@ noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransf
     }
     p->q = x->q;
     memcpy(w->pos[s], x->p, sizeof w->pos[s]);
+    noct_world_sweep_touch(w, s, false);
     return NOCT_OK;
 }
 
@@ -727,6 +734,7 @@ noctStatus noct_world_place(noctWorld *w, uint32_t s, const noctQuat *q, const d
     memcpy(w->pos[s], p, sizeof w->pos[s]);
     if (!same)
         place_mesh(w, s);
+    noct_world_sweep_touch(w, s, false);
     return NOCT_OK;
 }
 

@@ -72,6 +72,15 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         if (st != NOCT_OK)
             return st;
     }
+    if (w->sweeps.on) {
+        w->touched = true;
+        noctStatus st = noct_world_stage_grow(w);
+        if (st != NOCT_OK) {
+            fail_step(w, k);
+            return noct_fail(err, st, -1, 0, "growing the swept boxes: %s; no object moved",
+                             noctStatusString(st));
+        }
+    }
     for (uint64_t i = 0; i < k; ++i) {
         noctStatus st = substep(w, k == 1 ? 1 : 1.0 / (double)k, i == 0, i + 1 == k, err);
         if (st != NOCT_OK) {
@@ -80,6 +89,8 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
         }
     }
     noct_world_placements_done(w);
+    if (w->sweeps.on)
+        noct_world_sweeps_done(w);
     ++w->tick;
     return NOCT_OK;
 }
@@ -90,7 +101,8 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
  * 0 with err set when it would be too many. */
 static uint64_t substeps_for(noctWorld *w, noctError *err)
 {
-    if (!(w->def.effects & NOCT_EFFECT_SUBSTEP) || !(w->def.effects & NOCT_EFFECT_MOTION))
+    if (!(w->def.effects & NOCT_EFFECT_SUBSTEP) || !(w->def.effects & NOCT_EFFECT_MOTION) ||
+        w->sweeps.on) /* continuous detection makes them moot */
         return 1;
     uint32_t which;
     const double ratio = noct_world_step_ratio(w, &which);
@@ -293,6 +305,8 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
             st = noct_record_diff(&e->sensor, &events);
         if (st == NOCT_OK)
             w->c.events += events;
+        if (st == NOCT_OK && w->sweeps.on)
+            st = noct_world_sweep_began(w);
     }
     if (st != NOCT_OK) {
         noct_record_unrotate(&e->contact);

@@ -27,7 +27,7 @@ static const char usage[] =
     "  --N N|big|auto        most objects per octree leaf (big: exhaustive; auto,\n"
     "                        the default: chosen from the scene)\n"
     "  --max-depth D|auto    deepest octree level, 1 to 40 (default auto)\n"
-    "  --accuracy LEVEL      box, convex or exact\n"
+    "  --accuracy LEVEL      box, convex, exact or continuous\n"
     "  --maintenance MODE    incremental or rebuild\n"
     "  --steps S             number of steps\n"
     "  --substep             split steps so fast objects cannot pass through others\n"
@@ -233,6 +233,24 @@ static bool print_first(const noctWorld *w, int s, noctPair pair)
     return true;
 }
 
+/* --first with continuous detection: the pair that touched first within
+ * step s, when and where (noctWorldBeganHits()). */
+static void print_first_time(int s, const noctPair *began, const noctSweepHit *hits,
+                             size_t n)
+{
+    size_t best = 0;
+    for (size_t i = 1; i < n; ++i)
+        if (hits[i].time < hits[best].time)
+            best = i;
+    const noctSweepHit *h = &hits[best];
+    char b[4][32];
+    printf("first collision at step %d, time %s of the step: objects %u and %u, "
+           "touching at (%s, %s, %s)\n",
+           s, tool_format_double(h->time, b[0]), began[best].a.index, began[best].b.index,
+           tool_format_double(h->point[0], b[1]), tool_format_double(h->point[1], b[2]),
+           tool_format_double(h->point[2], b[3]));
+}
+
 int main(int argc, char **argv)
 {
     tool_scene_args sa = {0};
@@ -320,7 +338,7 @@ int main(int argc, char **argv)
         return bad;
     noctWorldDef *def = noctSceneDef(scene);
     if (opt_acc != NULL && !tool_parse_accuracy(opt_acc, &def->accuracy))
-        return noctSceneDestroy(scene), tool_usage_error("--accuracy must be box, convex or exact, not '%s'", opt_acc);
+        return noctSceneDestroy(scene), tool_usage_error("--accuracy must be box, convex, exact or continuous, not '%s'", opt_acc);
     if (opt_maint != NULL) {
         if (strcmp(opt_maint, "incremental") == 0)
             def->maintenance = NOCT_MAINTAIN_INCREMENTAL;
@@ -363,10 +381,12 @@ int main(int argc, char **argv)
         return 2;
     }
     double ratio = noctWorldMaxStepRatio(w);
-    if (ratio > 0.5 && !(def->effects & NOCT_EFFECT_SUBSTEP))
+    const bool continuous = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
+    if (ratio > 0.5 && !(def->effects & NOCT_EFFECT_SUBSTEP) && !continuous)
         tool_error("warning: an object moves %.2f times its smallest "
                 "size per step; objects can pass through each other unseen (the "
-                "report's fidelity constraint): use --substep", ratio);
+                "report's fidelity constraint): use --accuracy continuous or --substep",
+                ratio);
     /* The report goes to --output or standard output; in the second case
      * the events and the summary go to standard error, so that standard
      * output holds only the report. */
@@ -410,8 +430,17 @@ int main(int argc, char **argv)
         const noctPair *p, *began;
         size_t nbegan = noctWorldBegan(w, &began);
         begins += nbegan;
-        for (size_t i = 0; events && i < nbegan; ++i)
-            fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
+        const noctSweepHit *hits;
+        const size_t nhits = noctWorldBeganHits(w, &hits);
+        for (size_t i = 0; events && i < nbegan; ++i) {
+            if (i < nhits) {
+                char t[32];
+                fprintf(info, "%d begin %u %u at %s\n", s, began[i].a.index, began[i].b.index,
+                        tool_format_double(hits[i].time, t));
+            } else {
+                fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
+            }
+        }
         size_t ne = noctWorldEnded(w, &p);
         ends += ne;
         for (size_t i = 0; events && i < ne; ++i)
@@ -448,7 +477,9 @@ int main(int argc, char **argv)
             report_step(&rep, s, p, nc, q, nn);
             if (first && nc > 0) {
                 tool_progress_end();
-                if (!print_first(w, s, p[0]))
+                if (nhits > 0)
+                    print_first_time(s, began, hits, nhits);
+                else if (!print_first(w, s, p[0]))
                     status = 1;
                 stopped = s;
                 break;

@@ -81,7 +81,7 @@ bool tool_parse_N(const char *s, int *N)
 bool tool_parse_accuracy(const char *s, noctAccuracy *accuracy)
 {
     static const noctAccuracy all[] = {NOCT_ACCURACY_BOX, NOCT_ACCURACY_CONVEX,
-                                       NOCT_ACCURACY_EXACT};
+                                       NOCT_ACCURACY_EXACT, NOCT_ACCURACY_CONTINUOUS};
     for (size_t i = 0; i < sizeof all / sizeof *all; ++i)
         if (strcmp(s, noctAccuracyName(all[i])) == 0) {
             *accuracy = all[i];

@@ -49,6 +49,10 @@
  *   exactly the definition above, whatever the scale, offset or
  *   degeneracy. The hull test is not used as a filter here: its tolerance
  *   could reject a touching pair.
+ * - #NOCT_ACCURACY_CONTINUOUS: the exact level over a motion: two
+ *   translating meshes collide if their solids share a point at any time
+ *   of the motion (noctCollideSwept()), decided as exactly, with the time
+ *   of first contact. Without motion it is the exact level.
  * @{
  */
 #ifndef NOCTREE_NARROWPHASE_H
@@ -70,7 +74,13 @@ extern "C" {
 typedef enum noctAccuracy {
     NOCT_ACCURACY_BOX,    /**< Bounding boxes overlap. */
     NOCT_ACCURACY_CONVEX, /**< Convex hulls intersect (libccd GJK). */
-    NOCT_ACCURACY_EXACT   /**< The solids share a point, decided exactly. */
+    NOCT_ACCURACY_EXACT,  /**< The solids share a point, decided exactly. */
+    NOCT_ACCURACY_CONTINUOUS /**< Exact continuous detection: in a world,
+                                  the solids share a point at some time of
+                                  the step's motion (world.h,
+                                  "Continuous detection"); for two meshes
+                                  that do not move, as #NOCT_ACCURACY_EXACT
+                                  (noctCollideSwept() takes the motion). */
 } noctAccuracy;
 
 /**
@@ -266,8 +276,8 @@ NOCT_API noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3],
 /**
  * @brief Return the name of an accuracy level.
  * @param[in] accuracy A level.
- * @return The level's name: "box", "convex" or "exact"; "unknown" for
- *         another value.
+ * @return The level's name: "box", "convex", "exact" or "continuous";
+ *         "unknown" for another value.
  */
 NOCT_API const char *noctAccuracyName(noctAccuracy accuracy);
 

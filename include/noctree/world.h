@@ -718,6 +718,26 @@ NOCT_API size_t noctWorldBegan(const noctWorld *world, const noctPair **pairs);
 NOCT_API size_t noctWorldEnded(const noctWorld *world, const noctPair **pairs);
 
 /**
+ * @brief When and where the contacts that began at the last step first
+ *        touched, with continuous detection.
+ *
+ * In a world whose accuracy is #NOCT_ACCURACY_CONTINUOUS, the hits of the
+ * pairs noctWorldBegan() lists, in the same order: the time within the
+ * step (0 at its start, 1 at its end) at which the two first touched, the
+ * features that touched and a point, as noctCollideSwept() tells them for
+ * the two objects' motions over the step (a pair that began without
+ * either object moving, for instance because it was just made, began at
+ * time 0, #NOCT_SWEEP_START).
+ * @param[in]  world The world.
+ * @param[out] hits  Receives the array (valid until the next step or
+ *                   noctWorldDestroy()), NULL in a discrete world.
+ * @pre @p world and @p hits are not NULL.
+ * @return The number of hits: noctWorldBegan()'s count with continuous
+ *         detection, 0 without.
+ */
+NOCT_API size_t noctWorldBeganHits(const noctWorld *world, const noctSweepHit **hits);
+
+/**
  * @brief Read an object's position and direction.
  * @param[in]  world     The world.
  * @param[in]  id        The object.

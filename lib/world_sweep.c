@@ -1,0 +1,213 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Continuous detection in the world (accuracy #NOCT_ACCURACY_CONTINUOUS).
+ *
+ * Each object's step goes from where the last step left it (start) to
+ * where it is after the step's placements and motion. The broadphase must
+ * hand over every pair whose swept solids may touch, so each object that
+ * may move enters the tree with its local box grown on every side by g:
+ * its box at the step's end then holds its box at the start. With d the
+ * exact displacement on an axis, the end box's low side is
+ * fl(fl(lo - g) + pe) and the start box's fl(lo + ps); when
+ * g >= |d| + ulp(lo), fl(lo - g) <= lo - |d| and so
+ * fl(lo - g) + pe <= lo + ps, which rounding keeps (it is monotone): no
+ * padding for the positions' magnitudes. A velocity v moves an object by
+ * d = fl(ps + v) - ps, and |d| <= 2 |v| (round to nearest: the error is
+ * at most the distance to ps, |v|), so a mover's growth is 2 |v| plus
+ * what a program or a stage moved it since its start, and it stays while
+ * the velocity's magnitude does (the walls and the response turn only its
+ * signs).
+ *
+ * The growth is made before the motion, for the movers and the objects
+ * placed since (todo), through the broadphase's move; an object that was
+ * placed keeps its place in todo until a step ends with it where it
+ * started, so that its growth shrinks back.
+ */
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <noctree/world.h>
+
+#include "world_internal.h"
+
+NOCT_DEFINE_RESIZE(resize_vec3s, noct_vec3)
+NOCT_DEFINE_RESIZE(resize_boxes, noct_box6)
+NOCT_DEFINE_RESIZE(resize_u32s, uint32_t)
+NOCT_DEFINE_RESIZE(resize_u8s, uint8_t)
+NOCT_DEFINE_GROW(grow_hits, noctSweepHit)
+
+bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
+{
+    noct_sweeps *sw = &w->sweeps;
+    if (!sw->on)
+        return true;
+    if (!resize_vec3s(&sw->start, cap) || !resize_boxes(&sw->base, cap) ||
+        !resize_vec3s(&sw->grow, cap) || !resize_u32s(&sw->todo, cap) ||
+        !resize_u8s(&sw->in_todo, cap))
+        return false;
+    for (uint32_t s = w->capslots; s < cap; ++s)
+        sw->in_todo[s] = 0;
+    return true;
+}
+
+void noct_world_free_sweeps(noctWorld *w)
+{
+    noct_sweeps *sw = &w->sweeps;
+    free(sw->start);
+    free(sw->base);
+    free(sw->grow);
+    free(sw->todo);
+    free(sw->in_todo);
+    free(sw->hits);
+}
+
+void noct_world_sweep_touch(noctWorld *w, uint32_t s, bool made)
+{
+    noct_sweeps *sw = &w->sweeps;
+    if (!sw->on)
+        return;
+    if (made)
+        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+    if (!sw->in_todo[s]) {
+        sw->in_todo[s] = 1;
+        sw->todo[sw->ntodo++] = s;
+    }
+}
+
+void noct_world_sweep_reshaped(noctWorld *w, uint32_t s)
+{
+    noct_sweeps *sw = &w->sweeps;
+    if (!sw->on)
+        return;
+    const noct_object *o = &w->obj[s];
+    memcpy(sw->base[s], o->mlo, sizeof o->mlo);
+    memcpy(sw->base[s] + 3, o->mhi, sizeof o->mhi);
+    memset(sw->grow[s], 0, sizeof sw->grow[s]);
+    noct_world_sweep_touch(w, s, false);
+}
+
+/* The growth object s's motion this step asks for (the top of the file):
+ * 0 for an object that is where it started and will not move. */
+static void wanted(const noctWorld *w, uint32_t s, double g[3])
+{
+    const noct_object *o = &w->obj[s];
+    const double *start = w->sweeps.start[s], *base = w->sweeps.base[s];
+    const bool moves = (w->def.effects & NOCT_EFFECT_MOTION) &&
+                       o->type == NOCT_OBJECT_MOVING && o->speed > 0;
+    bool still = !moves && memcmp(start, w->pos[s], 3 * sizeof *start) == 0;
+    for (int k = 0; k < 3; ++k) {
+        if (still) {
+            g[k] = 0;
+            continue;
+        }
+        /* fl(|a - b|) (1 + 2^-49) >= |a - b|; each later sum rounded up
+         * by the factor at the end, the ulp of the box's side by 2^-50 of
+         * its magnitude, and a few of the least doubles for subnormals. */
+        double d = fabs(w->pos[s][k] - start[k]) * (1 + 0x1p-49);
+        if (moves)
+            d += 2 * fabs(o->vel[k]);
+        d += 0x1p-50 * (fabs(base[k]) + fabs(base[k + 3]));
+        g[k] = d * (1 + 0x1p-49) + 0x1p-1072;
+    }
+}
+
+/* Give object s the growth its motion asks for; NOMEM (its box is then as
+ * it was, and the tree owed). */
+static noctStatus regrow(noctWorld *w, uint32_t s)
+{
+    noct_sweeps *sw = &w->sweeps;
+    double g[3];
+    wanted(w, s, g);
+    if (memcmp(g, sw->grow[s], sizeof g) == 0)
+        return NOCT_OK;
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = sw->base[s][k] - g[k];
+        hi[k] = sw->base[s][k + 3] + g[k];
+    }
+    noctStatus st = noct_bp_move_to(&w->bp, s, lo, hi, w->pos[s]);
+    if (st != NOCT_OK)
+        return st;
+    noct_object *o = &w->obj[s];
+    memcpy(o->mlo, lo, sizeof lo);
+    memcpy(o->mhi, hi, sizeof hi);
+    memcpy(sw->grow[s], g, sizeof g);
+    return NOCT_OK;
+}
+
+noctStatus noct_world_stage_grow(noctWorld *w)
+{
+    noct_sweeps *sw = &w->sweeps;
+    noctStatus st = NOCT_OK;
+    if ((w->def.effects & NOCT_EFFECT_MOTION) && w->motion.moving > 0)
+        for (uint32_t m = 0; m < w->motion.nmovers && st == NOCT_OK; ++m)
+            st = regrow(w, w->motion.movers[m]);
+    /* The placed: grown for this step; those back where they started
+     * leave todo, their growth shrunk. */
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < sw->ntodo; ++i) {
+        const uint32_t s = sw->todo[i];
+        if (st == NOCT_OK && w->obj[s].alive)
+            st = regrow(w, s);
+        if (w->obj[s].alive &&
+            (st != NOCT_OK || memcmp(sw->start[s], w->pos[s], sizeof sw->start[s]) != 0 ||
+             memcmp(sw->grow[s], (double[3]){0, 0, 0}, sizeof sw->grow[s]) != 0))
+            sw->todo[kept++] = s;
+        else
+            sw->in_todo[s] = 0;
+    }
+    sw->ntodo = kept;
+    return st;
+}
+
+void noct_world_sweeps_done(noctWorld *w)
+{
+    noct_sweeps *sw = &w->sweeps;
+    for (uint32_t m = 0; m < w->motion.nmovers; ++m) {
+        const uint32_t s = w->motion.movers[m];
+        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+    }
+    for (uint32_t i = 0; i < sw->ntodo; ++i) {
+        const uint32_t s = sw->todo[i];
+        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+    }
+}
+
+noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding,
+                                 noctSweepHit *hit)
+{
+    noctStatus st = NOCT_OK;
+    const noctMesh *ma = noct_world_mesh(w, a, &st);
+    const noctMesh *mb = ma != NULL ? noct_world_mesh(w, b, &st) : NULL;
+    if (ma == NULL || mb == NULL)
+        return st;
+    return noctCollideSwept(ma, w->sweeps.start[a], w->pos[a], mb, w->sweeps.start[b],
+                            w->pos[b], colliding, hit, &w->c.narrow);
+}
+
+noctStatus noct_world_sweep_began(noctWorld *w)
+{
+    noct_sweeps *sw = &w->sweeps;
+    const noct_pair_list *began = &w->events.contact.began;
+    if (!grow_hits(&sw->hits, &sw->caphits, began->n))
+        return NOCT_ERR_NOMEM;
+    for (size_t i = 0; i < began->n; ++i) {
+        bool colliding;
+        noctStatus st = noct_world_sweep_pair(w, began->p[i].a.index, began->p[i].b.index,
+                                              &colliding, &sw->hits[i]);
+        if (st != NOCT_OK)
+            return st;
+        NOCT_INVARIANT(colliding);
+    }
+    return NOCT_OK;
+}
+
+size_t noctWorldBeganHits(const noctWorld *w, const noctSweepHit **hits)
+{
+    NOCT_REQUIRE(w != NULL && hits != NULL);
+    *hits = w->sweeps.on ? w->sweeps.hits : NULL;
+    return w->sweeps.on ? w->events.contact.began.n : 0;
+}
