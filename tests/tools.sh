@@ -102,6 +102,22 @@ check "bench: box level errs on notch" \
     [ "$(awk -F, '$1 ~ /^notch/ && $3 == "box" && $4 == 0 { print $7 }' "$out/accuracy.csv")" -gt 0 ]
 check "bench: exact level without sub-steps misses on notch" \
     [ "$(awk -F, '$1 ~ /^notch/ && $3 == "exact" && $4 == 0 { print $7 + $8 }' "$out/accuracy.csv")" -gt 0 ]
+# The Pareto front, recomputed here from accuracy.csv: the rungs that no rung
+# of the same scene matches or beats in time and error (false + missed) while
+# beating them in one; listed cheapest first, the error falling along it, and
+# ending error free (the reference has no error against itself).
+check "bench: accuracy-front.csv is the Pareto front" \
+    [ "$(awk -F, 'NR > 1 { n++; s[n] = $1; t[n] = $5; e[n] = $7 + $8; r[n] = $12 }
+        END { for (i = 1; i <= n; i++) { d = 0
+                for (j = 1; j <= n; j++)
+                    if (s[j] == s[i] && t[j] <= t[i] && e[j] <= e[i] && (t[j] < t[i] || e[j] < e[i])) d = 1
+                if (!d) print s[i] "," r[i] } }' "$out/accuracy.csv" | sort)" = \
+      "$(awk -F, 'NR > 1 { print $1 "," $2 }' "$out/accuracy-front.csv" | sort)" ]
+check "bench: the front trades time for error and ends error free" \
+    [ "$(awk -F, 'NR > 1 && $1 == s && ($3 < t || $4 > e) { bad++ }
+                  NR > 1 && $1 != s && s != "" && e != 0 { bad++ }
+                  NR > 1 { s = $1; t = $3; e = $4 }
+                  END { print bad + (e != 0) }' "$out/accuracy-front.csv")" -eq 0 ]
 if command -v gnuplot > /dev/null 2>&1; then
     for p in fig9 fig10 scaling accuracy; do
         check "bench: $p.svg drawn" grep -q '</svg>' "$out/$p.svg"

@@ -604,32 +604,69 @@ static void timing_report(const char *stats_csv, const char *medians_csv, timing
     fflush(stdout);
 }
 
-/* Plot the per-N medians CSV (columns scene, objects, then one per N):
- * y = median seconds times `scale` / (objects if per_object); one line
- * per N and scene family (planes solid, gas dashed). */
-static void timing_plot(const char *name, const char *medians, const char *title,
-                        const char *ylabel, double scale, bool per_object, bool logscale,
-                        double xmin, bool has_gas)
+/* The line of each N in the timing plots: the report's N in four colours,
+ * the defaults (what a program gets) thick and black, the exhaustive
+ * algorithm in red. */
+static const char *const n_colour[NN] = {"#1b9e77", "#d95f02", "#7570b3", "#e6ab02",
+                                         "#000000", "#d62728"};
+
+/* Tics 1, 2, 5, 10, 20, ... for a log axis from `lo` up: gnuplot's own
+ * log tics are one per decade, too few to read a span of one decade. */
+static int log_tics(char *buf, size_t size, const char *axis, double lo)
+{
+    int n = snprintf(buf, size, "set %s (", axis);
+    for (double d = lo; d < lo * 1.1e10; d *= 10)
+        for (int k = 0; k < 3; ++k)
+            n += snprintf(buf + n, size - (size_t)n, "%s%.6g", d == lo && k == 0 ? "" : ", ",
+                          d * (k == 0 ? 1 : k == 1 ? 2 : 5));
+    return n + snprintf(buf + n, size - (size_t)n, ")\n");
+}
+
+/* A plot of a per-N medians CSV (columns scene, objects, then one per N,
+ * the exhaustive algorithm last). */
+typedef struct timing_chart {
+    const char *name, *medians, *title, *ylabel;
+    double scale;      /* y = median seconds times this ... */
+    bool per_object;   /* ... divided by the objects */
+    bool speedup;      /* y = the exhaustive median over each N's instead */
+    bool logscale;     /* both axes */
+    double xmin;       /* sets with fewer objects are left out (and do not
+                        * stretch the axes) */
+    bool has_gas;      /* a second line per N for the gas scenes (dashed) */
+} timing_chart;
+
+static void timing_plot(const timing_chart *c)
 {
     static const char *const family[2] = {"planes", "gas"};
     char script[8192];
-    int n = snprintf(script, sizeof script,
-                     "set title '%s'\nset xlabel 'objects'\nset ylabel '%s'\n%s"
-                     "set xrange [%g:*]\nplot ",
-                     title, ylabel, logscale ? "set logscale xy\n" : "", xmin);
-    for (int ni = 0; ni < NN; ++ni)
-        for (int fam = 0; fam < (has_gas ? 2 : 1); ++fam) {
-            char nb[16];
+    int n = snprintf(script, sizeof script, "set title \"%s\"\nset xlabel 'objects'\n"
+                     "set ylabel \"%s\"\n", c->title, c->ylabel);
+    if (c->logscale) {
+        n += snprintf(script + n, sizeof script - (size_t)n, "set logscale xy\n"
+                      "set format xy '%%g'\n");
+        n += log_tics(script + n, sizeof script - (size_t)n, "xtics", 1);
+        n += log_tics(script + n, sizeof script - (size_t)n, "ytics", 1e-9);
+    }
+    n += snprintf(script + n, sizeof script - (size_t)n, "plot ");
+    for (int ni = 0; ni < (c->speedup ? NN - 1 : NN); ++ni)
+        for (int fam = 0; fam < (c->has_gas ? 2 : 1); ++fam) {
+            char nb[16], y[64];
+            if (c->speedup)
+                snprintf(y, sizeof y, "$%d/$%d", NN + 2, ni + 3);
+            else
+                snprintf(y, sizeof y, "$%d*%.17g%s", ni + 3, c->scale,
+                         c->per_object ? "/$2" : "");
             n += snprintf(script + n, sizeof script - (size_t)n,
-                          "%s'%s/%s' skip 1 using 2:(strstrt(strcol(1), '%s') == 1 ? "
-                          "$%d*%.17g%s : NaN) with linespoints lc %d dt %d "
-                          "title 'N = %s%s'",
-                          ni + fam ? ", " : "", opt.out, medians, family[fam], ni + 3, scale,
-                          per_object ? "/$2" : "", ni + 1, fam + 1, n_name(NS[ni], nb),
-                          has_gas ? (fam ? " gas" : " planes") : "");
+                          "%s'%s/%s' skip 1 using ($2 >= %g ? $2 : NaN):"
+                          "(strstrt(strcol(1), '%s') == 1 && $2 >= %g ? %s : NaN) "
+                          "with linespoints lc rgb '%s' lw %g dt %d pt %d title 'N = %s%s'",
+                          ni + fam ? ", \\\n     " : "", opt.out, c->medians, c->xmin,
+                          family[fam], c->xmin, y, n_colour[ni],
+                          NS[ni] == NOCT_AUTO ? 3.0 : 1.5, fam + 1, ni + 4,
+                          n_name(NS[ni], nb), c->has_gas ? (fam ? " gas" : " planes") : "");
         }
     snprintf(script + n, sizeof script - (size_t)n, "\n");
-    plot(name, script);
+    plot(c->name, script);
 }
 
 /* ---- where the time goes ------------------------------------------------------ */
@@ -706,12 +743,51 @@ static bool stages_section(const char *const *specs, size_t nspecs, int N, int r
 
 /* ---- what accuracy costs -------------------------------------------------------- */
 
-static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int repeats,
-                             int steps)
+/* The ladder, from the cheapest rung up; the last rung is the reference.
+ * Each rung is one row per scene in accuracy.csv and one marker in the
+ * chart, whatever their number. */
+typedef struct rung {
+    const char *name; /* the CSV's rung column and the chart's legend (no commas) */
+    noctAccuracy accuracy;
+    unsigned effects;
+} rung;
+
+static const rung rungs[] = {
+    {"box", NOCT_ACCURACY_BOX, 0},
+    {"convex", NOCT_ACCURACY_CONVEX, 0},
+    {"exact", NOCT_ACCURACY_EXACT, 0},
+    {"box + sub-steps", NOCT_ACCURACY_BOX, NOCT_EFFECT_SUBSTEP},
+    {"convex + sub-steps", NOCT_ACCURACY_CONVEX, NOCT_EFFECT_SUBSTEP},
+    {"exact + sub-steps", NOCT_ACCURACY_EXACT, NOCT_EFFECT_SUBSTEP},
+};
+enum { NRUNGS = sizeof rungs / sizeof *rungs };
+
+/*
+ * The Pareto front of one scene's rungs, cheapest first: the rungs that no
+ * other rung matches or beats in both time and error while beating them in
+ * one. Along it the time rises and the error falls. Returns its length.
+ */
+static int pareto_front(const double *ms, const size_t *error, int *front)
 {
-    enum { NCFG = 6 };
-    static const noctAccuracy acc[3] = {NOCT_ACCURACY_BOX, NOCT_ACCURACY_CONVEX,
-                                        NOCT_ACCURACY_EXACT};
+    int n = 0;
+    for (int c = 0; c < NRUNGS; ++c) {
+        bool dominated = false;
+        for (int d = 0; d < NRUNGS && !dominated; ++d)
+            dominated = ms[d] <= ms[c] && error[d] <= error[c] &&
+                        (ms[d] < ms[c] || error[d] < error[c]);
+        if (dominated)
+            continue;
+        int k = n++;
+        for (; k > 0 && ms[front[k - 1]] > ms[c]; --k)
+            front[k] = front[k - 1];
+        front[k] = c;
+    }
+    return n;
+}
+
+static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int repeats,
+                             int steps, size_t *objects)
+{
     printf("\n== What accuracy costs (N = %s, %d steps, time: median of %d runs) ==\n",
            n_name(N, (char[16]){0}),
            steps, repeats);
@@ -720,56 +796,167 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int
            "reverses two objects) not shared with the reference; diverges: first step that\n"
            "differs ('-': never)\n");
     FILE *f = open_out("accuracy.csv");
-    if (f == NULL)
+    FILE *ff = open_out("accuracy-front.csv");
+    if (f == NULL || ff == NULL) {
+        if (f)
+            fclose(f);
+        if (ff)
+            fclose(ff);
         return false;
+    }
     fprintf(f, "scene,objects,accuracy,substep,ms_per_step,colliding_per_step,false,"
-               "missed,begins,begins_differing,first_divergence\n");
+               "missed,begins,begins_differing,first_divergence,rung\n");
+    fprintf(ff, "scene,rung,ms_per_step,error\n");
     printf("%-12s %-7s %-8s %10s %10s %9s %9s %8s %9s %9s\n", "scene", "level", "substep",
            "ms/step", "colliding", "false", "missed", "begins", "differing", "diverges");
-    size_t total = nspecs * NCFG * (size_t)repeats, done = 0;
+    size_t total = nspecs * NRUNGS * (size_t)repeats, done = 0;
     bool ok = true;
     for (size_t i = 0; i < nspecs && ok; ++i) {
-        pair_log col[NCFG] = {{0}}, beg[NCFG] = {{0}};
-        double t[NCFG][MAX_REPEATS];
-        run_result first[NCFG];
+        pair_log col[NRUNGS] = {{0}}, beg[NRUNGS] = {{0}};
+        double t[NRUNGS][MAX_REPEATS], ms[NRUNGS];
+        size_t error[NRUNGS];
+        run_result first[NRUNGS];
         for (int rep = 0; rep < repeats && ok; ++rep)
-            for (int c = 0; c < NCFG && ok; ++c) {
+            for (int c = 0; c < NRUNGS && ok; ++c) {
                 char label[64];
                 snprintf(label, sizeof label, "%s run %d/%d", specs[i], rep + 1, repeats);
                 tool_progress(opt.bar, (long)done++, (long)total, label);
                 run_result r;
-                ok = run(specs[i], N, acc[c % 3], c >= 3 ? NOCT_EFFECT_SUBSTEP : 0, 0, steps,
-                         0, &r, rep == 0 ? &col[c] : NULL, rep == 0 ? &beg[c] : NULL);
+                ok = run(specs[i], N, rungs[c].accuracy, rungs[c].effects, 0, steps, 0, &r,
+                         rep == 0 ? &col[c] : NULL, rep == 0 ? &beg[c] : NULL);
                 t[c][rep] = 1e3 * r.seconds / steps;
                 if (rep == 0)
                     first[c] = r;
             }
         tool_progress(opt.bar, (long)done, (long)total, "");
-        for (int c = 0; c < NCFG && ok; ++c) {
+        for (int c = 0; c < NRUNGS && ok; ++c) {
             size_t fx, mx, bx, by;
             uint32_t d1, d2;
-            log_diff(&col[c], &col[NCFG - 1], &fx, &mx, &d1);
-            log_diff(&beg[c], &beg[NCFG - 1], &bx, &by, &d2);
+            log_diff(&col[c], &col[NRUNGS - 1], &fx, &mx, &d1);
+            log_diff(&beg[c], &beg[NRUNGS - 1], &bx, &by, &d2);
             uint32_t div = d1 && d2 ? (d1 < d2 ? d1 : d2) : d1 ? d1 : d2;
             char lb[32], ds[16];
             snprintf(ds, sizeof ds, "%u", div);
-            double ms = median(t[c], (size_t)repeats);
+            bool sub = (rungs[c].effects & NOCT_EFFECT_SUBSTEP) != 0;
+            ms[c] = median(t[c], (size_t)repeats);
+            error[c] = fx + mx;
             printf("%-12s %-7s %-8s %10.4f %10.1f %9zu %9zu %8zu %9zu %9s\n",
-                   scene_label(specs[i], lb), noctAccuracyName(acc[c % 3]),
-                   c >= 3 ? "yes" : "no", ms, (double)col[c].n / steps, fx, mx,
+                   scene_label(specs[i], lb), noctAccuracyName(rungs[c].accuracy),
+                   sub ? "yes" : "no", ms[c], (double)col[c].n / steps, fx, mx,
                    first[c].begins, bx + by, div ? ds : "-");
-            fprintf(f, "%s,%zu,%s,%d,%.6g,%.3f,%zu,%zu,%zu,%zu,%u\n", specs[i],
-                    first[c].objects, noctAccuracyName(acc[c % 3]), c >= 3, ms,
-                    (double)col[c].n / steps, fx, mx, first[c].begins, bx + by, div);
+            fprintf(f, "%s,%zu,%s,%d,%.6g,%.3f,%zu,%zu,%zu,%zu,%u,%s\n", specs[i],
+                    first[c].objects, noctAccuracyName(rungs[c].accuracy), sub, ms[c],
+                    (double)col[c].n / steps, fx, mx, first[c].begins, bx + by, div,
+                    rungs[c].name);
         }
-        for (int c = 0; c < NCFG; ++c) {
+        if (ok) {
+            int front[NRUNGS], nf = pareto_front(ms, error, front);
+            for (int k = 0; k < nf; ++k)
+                fprintf(ff, "%s,%s,%.6g,%zu\n", specs[i], rungs[front[k]].name,
+                        ms[front[k]], error[front[k]]);
+            objects[i] = first[0].objects;
+        }
+        for (int c = 0; c < NRUNGS; ++c) {
             free(col[c].p);
             free(beg[c].p);
         }
         fflush(stdout);
     }
     fclose(f);
+    fclose(ff);
     return ok;
+}
+
+/*
+ * The accuracy chart: one panel per scene, time per step against error
+ * (false + missed colliding (pair, step) entries), both on log scales.
+ * The error axis is placed at 1 + error and labelled in errors, so an
+ * error-free rung sits on the dashed line marked 0 instead of at minus
+ * infinity. One marker per rung, named in a legend under the panels; the
+ * Pareto front circled and joined.
+ */
+static void accuracy_plot(const char *const *specs, const size_t *objects, size_t nspecs)
+{
+    char *script = NULL;
+    size_t size = 0;
+    FILE *s = open_memstream(&script, &size);
+    if (s == NULL) {
+        tool_error("out of memory");
+        return;
+    }
+    /* The legend: the line marked 0, the front and the rungs, four to a row. */
+    int rows = (NRUNGS + 2 + 3) / 4;
+    double bottom = 0.14 + 0.04 * rows;
+    fprintf(s, "set terminal svg size %zu,560 dynamic font 'sans,12'\n"
+               "set output '%s/accuracy.svg'\n"
+               "f = '%s/accuracy.csv'\nfront = '%s/accuracy-front.csv'\n"
+               "err(s) = strcol('scene') eq s ? column('false') + column('missed') + 1 : NaN\n"
+               "set logscale y\n",
+            nspecs > 2 ? 400 * nspecs : 800, opt.out, opt.out, opt.out);
+    char tics[1024];
+    log_tics(tics, sizeof tics, "xtics", 1e-4);
+    fputs("set ytics (\"0\" 1, \"1\" 2, \"10\" 11, \"100\" 101", s);
+    for (int e = 3; e <= 12; ++e)
+        fprintf(s, ", \"10^{%d}\" %.0f", e, pow(10, e) + 1);
+    fprintf(s, ")\nset multiplot layout 1,%zu title 'What accuracy costs: time against error "
+               "(reference: exact with sub-steps; the Pareto front circled and joined)' "
+               "margins 0.08,0.98,%g,0.86 spacing 0.05,0\n",
+            nspecs, bottom);
+    for (size_t i = 0; i < nspecs; ++i) {
+        char lb[32];
+        /* The panel's own ranges, from its rows, with room around the
+         * markers. Times less than 3 times apart get a linear axis: a log
+         * axis would show no tic, and over such a span looks the same. */
+        fprintf(s, "set autoscale xy\nstats f using 'ms_per_step':(err('%s')) nooutput\n"
+                   "if (STATS_max_x < 3 * STATS_min_x) {\n"
+                   "  unset logscale x\n  set xlabel 'ms per step'\n"
+                   "  d = 0.15 * (STATS_max_x - STATS_min_x) + 0.02 * STATS_min_x\n"
+                   "  r = (STATS_max_x - STATS_min_x + 2 * d) / 4\n"
+                   "  p = 10 ** floor(log10(r))\n"
+                   "  step = (r <= p ? 1 : r <= 2 * p ? 2 : r <= 5 * p ? 5 : 10) * p\n"
+                   "  set xtics step\n"
+                   "  set xrange [STATS_min_x - d : STATS_max_x + d]\n"
+                   "} else {\n"
+                   "  set logscale x\n  %s"
+                   "  set xlabel 'ms per step (log scale)'\n"
+                   "  set xrange [STATS_min_x / 1.4 : STATS_max_x * 1.4]\n"
+                   "}\n"
+                   "set yrange [0.6 : STATS_max_y < 11 ? 20 : STATS_max_y * 4]\n"
+                   "set title '%s (%zu objects)'\n",
+                specs[i], tics, scene_label(specs[i], lb), objects[i]);
+        if (i == 0)
+            fprintf(s, "set ylabel 'false + missed colliding (pair, step) entries (log of 1 + error)'\n"
+                       "set key at screen 0.5, 0.02 center bottom vertical maxrows %d "
+                       "reverse Left width 2 samplen 2\n", rows);
+        else
+            fprintf(s, "unset ylabel\nunset key\n");
+        fprintf(s, "plot 1 with lines lc 'grey40' dt 2 title 'error free (0)', \\\n"
+                   "  front using 'ms_per_step':(strcol('scene') eq '%s' ? "
+                   "column('error') + 1 : NaN) with linespoints lc 'grey60' lw 2 pt 6 ps 3.2 "
+                   "title 'Pareto front'",
+                specs[i]);
+        /* Colours that stay apart; open markers large and filled ones small,
+         * so that a filled marker on an open one leaves both visible. */
+        static const int pt[] = {4, 8, 6, 5, 9, 7, 12, 13, 10, 11, 14, 15};
+        static const char *const lc[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                                         "#9467bd", "#8c564b", "#e377c2", "#17becf",
+                                         "#7f7f7f", "#bcbd22", "#000000", "#aec7e8"};
+        enum { NSTYLE = sizeof pt / sizeof *pt };
+        for (int c = 0; c < NRUNGS; ++c)
+            fprintf(s, ", \\\n  f using 'ms_per_step':(strcol('rung') eq '%s' ? err('%s') : "
+                       "NaN) with points lc rgb '%s' pt %d ps %g title '%s'",
+                    rungs[c].name, specs[i], lc[c % NSTYLE], pt[c % NSTYLE],
+                    pt[c % NSTYLE] % 2 ? 1.2 : 2.0, rungs[c].name);
+        fputc('\n', s);
+    }
+    fputs("unset multiplot\n", s);
+    if (fclose(s) != 0) {
+        free(script);
+        tool_error("out of memory");
+        return;
+    }
+    plot("accuracy", script);
+    free(script);
 }
 
 /* ---- main ------------------------------------------------------------------------ */
@@ -863,11 +1050,17 @@ int main(int argc, char **argv)
         if (timing_section("Table 1, reproduced: the report's test sets t0 ... t10",
                            "table1.csv", full, n, repeats, steps, tm)) {
             timing_report("table1-stats.csv", "table1-medians.csv", tm, n, repeats, steps);
-            timing_plot("fig9", "table1-medians.csv", "Figure 9: test set size against time",
-                        "seconds", 1, false, false, 0, false);
-            timing_plot("fig10", "table1-medians.csv",
-                        "Figure 10: the right-hand side of Figure 9", "seconds", 1, false,
-                        false, opt.quick ? 0 : 338, false);
+            char ylabel[64];
+            snprintf(ylabel, sizeof ylabel, "seconds for %d steps", steps);
+            timing_plot(&(timing_chart){
+                .name = "fig9", .medians = "table1-medians.csv",
+                .title = "Figure 9: test set size against time (log scales)",
+                .ylabel = ylabel, .scale = 1, .logscale = true});
+            timing_plot(&(timing_chart){
+                .name = "fig10", .medians = "table1-medians.csv",
+                .title = "Figure 10: the right-hand side of Figure 9, as speed-ups",
+                .ylabel = "times faster than the exhaustive algorithm (its time / the time at N)",
+                .speedup = true, .xmin = opt.quick ? 0 : 338});
         } else {
             status = 1;
         }
@@ -883,10 +1076,12 @@ int main(int argc, char **argv)
         if (timing_section("At scale", "scale.csv", opt.quick ? quick : full, n, repeats,
                            steps, tm)) {
             timing_report("scale-stats.csv", "scale-medians.csv", tm, n, repeats, steps);
-            timing_plot("scaling", "scale-medians.csv",
-                        "Scaling: ns per object per step (planes and gas)",
-                        "ns per object per step", 1e9 / steps, true, true,
-                        opt.quick ? 1 : 1000, true);
+            timing_plot(&(timing_chart){
+                .name = "scaling", .medians = "scale-medians.csv",
+                .title = "Scaling: ns per object per step (planes and gas)",
+                .ylabel = "ns per object per step", .scale = 1e9 / steps,
+                .per_object = true, .logscale = true, .xmin = opt.quick ? 1 : 1000,
+                .has_gas = true});
         } else {
             status = 1;
         }
@@ -902,30 +1097,13 @@ int main(int argc, char **argv)
     if (status == 0 && (opt.sections & SEC_ACCURACY)) {
         static const char *full[] = {"planes:10", "gas:1000", "notch:64"};
         static const char *quick[] = {"planes:2", "gas:100", "notch:8"};
+        size_t objects[3];
         if (accuracy_section(opt.quick ? quick : full, 3, NOCT_AUTO,
                              opt.repeats ? opt.repeats : 3,
-                             opt.steps ? opt.steps : opt.quick ? 60 : 200)) {
-            char script[2048];
-            snprintf(script, sizeof script,
-                     "set terminal svg size 1200,480 dynamic font 'sans,12'\n"
-                     "set output '%s/accuracy.svg'\nunset key\n"
-                     "set multiplot layout 1,3 title 'What accuracy costs: time against "
-                     "error (reference: exact, sub-stepped)'\n"
-                     "set xlabel 'ms per step'\nset ylabel 'false + missed colliding "
-                     "(pair, step)'\nset yrange [-0.5:*]\n"
-                     "set offsets graph 0.15, graph 0.3, graph 0.1, "
-                     "graph 0.1\n"
-                     "do for [s in 'planes gas notch'] {\n"
-                     "  set title s\n"
-                     "  plot '%s/accuracy.csv' skip 1 using 5:(strstrt(strcol(1), s) == 1 ? "
-                     "$7 + $8 : NaN):(strcol(3).($4 != 0 ? '+sub' : '')) with labels "
-                     "point pt 7 offset 0.6,0.6 left rotate by 20\n}\n"
-                     "unset multiplot\n",
-                     opt.out, opt.out);
-            plot("accuracy", script);
-        } else {
+                             opt.steps ? opt.steps : opt.quick ? 60 : 200, objects))
+            accuracy_plot(opt.quick ? quick : full, objects, 3);
+        else
             status = 1;
-        }
     }
     printf("\nCSV files%s in %s/\n", opt.plots && have_gnuplot() ? " and plots" : "",
            opt.out);
