@@ -142,6 +142,13 @@ void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 /* The oriented-box test on two slots placed at ta and tb: -1 when it
  * proves the solids apart, 1 when it proves that they share a point (both
  * have duals), 0 when it cannot tell. */
+/* Continuous detection (narrowphase_swept.c): two box slots, A moving
+ * from ta0 to ta1 and B from tb0 to tb1, proved apart over the whole
+ * motion and at the end placements by a separating axis (false when it
+ * cannot prove it). */
+bool noct_swept_slots_apart(const noct_box_slot *a, const double ta0[3], const double ta1[3],
+                            const noct_box_slot *b, const double tb0[3], const double tb1[3]);
+
 int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                     const double tb[3]);
 

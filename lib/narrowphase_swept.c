@@ -302,26 +302,28 @@ static inline bool swept_pair(void *context, uint32_t i, double ta[3][3], uint32
 /* ---- the swept boxes' separating axes ------------------------------------- */
 
 /*
- * Two box-shaped meshes (mesh_internal.h's box form: every vertex within
+ * Two box-shaped meshes (mesh_internal.h's box slots: every vertex within
  * dev of a corner of the box c + sum of +-e[i], so each solid lies in its
- * box grown by dev) whose relative motion D, over [0, 1], keeps them apart
- * along an axis u: the centres' distance along u over the motion is the
- * interval around (cB - cA) u - D u / 2 of half-width |D u| / 2, and the
- * radii are sum |e[i] u| + dev |u|_1. Every quantity is computed in
- * floating point within a few dozen ulps of the magnitudes summed in m, so
- * a gap beyond 2^-40 of m |u|_1 is real; m includes the end translations,
- * so the solids placed at the end (within rounding of the start's moved by
- * D) are apart too. The axes: the boxes' edges, their cross products, and
+ * box grown by dev), A moving from ta0 to ta1 and B from tb0 to tb1, kept
+ * apart along an axis u over the whole motion: with D the relative
+ * motion, the centres' distance along u over the motion is the interval
+ * around (cB - cA) u - D u / 2 of half-width |D u| / 2, and the radii are
+ * sum |e[i] u| + dev |u|_1. Every quantity is computed in floating point
+ * within a few dozen ulps of the magnitudes summed in m, so a gap beyond
+ * 2^-40 of m |u|_1 is real; m includes the end translations, so the
+ * solids placed at the end (within rounding of the start's moved by D)
+ * are apart too. The axes: the boxes' edges, their cross products, and
  * the edges' cross products with D.
  */
-static bool swept_boxes_apart(const sweep *w, const double ta1[3], const double tb1[3])
+bool noct_swept_slots_apart(const noct_box_slot *fa, const double ta0[3], const double ta1[3],
+                            const noct_box_slot *fb, const double tb0[3], const double tb1[3])
 {
-    const box_form *fa = &w->A.m->box, *fb = &w->B.m->box;
-    double c[3], m = (double)fa->dev + (double)fb->dev + 0x1p-1000;
+    double c[3], D[3], m = (double)fa->dev + (double)fb->dev + 0x1p-1000;
     for (int k = 0; k < 3; ++k) {
-        c[k] = (fb->c[k] + w->B.t[k]) - (fa->c[k] + w->A.t[k]);
-        m += fabs(fa->c[k]) + fabs(fb->c[k]) + fabs(w->A.t[k]) + fabs(w->B.t[k]) +
-             fabs(ta1[k]) + fabs(tb1[k]) + fabs(w->D[k]);
+        c[k] = (fb->c[k] + tb0[k]) - (fa->c[k] + ta0[k]);
+        D[k] = (ta1[k] - ta0[k]) - (tb1[k] - tb0[k]);
+        m += fabs(fa->c[k]) + fabs(fb->c[k]) + fabs(ta0[k]) + fabs(tb0[k]) + fabs(ta1[k]) +
+             fabs(tb1[k]) + fabs(D[k]);
         for (int i = 0; i < 3; ++i)
             m += fabs(fa->e[i][k]) + fabs(fb->e[i][k]);
     }
@@ -330,8 +332,8 @@ static bool swept_boxes_apart(const sweep *w, const double ta1[3], const double 
     for (int i = 0; i < 3; ++i) {
         noct_copy3(fa->e[i], axes[n++]);
         noct_copy3(fb->e[i], axes[n++]);
-        noct_cross3(w->D, fa->e[i], axes[n++]);
-        noct_cross3(w->D, fb->e[i], axes[n++]);
+        noct_cross3(D, fa->e[i], axes[n++]);
+        noct_cross3(D, fb->e[i], axes[n++]);
         for (int j = 0; j < 3; ++j)
             noct_cross3(fa->e[i], fb->e[j], axes[n++]);
     }
@@ -343,7 +345,7 @@ static bool swept_boxes_apart(const sweep *w, const double ta1[3], const double 
         double r = ((double)fa->dev + (double)fb->dev) * u1;
         for (int i = 0; i < 3; ++i)
             r += fabs(noct_dot3(fa->e[i], u)) + fabs(noct_dot3(fb->e[i], u));
-        double du = noct_dot3(w->D, u);
+        double du = noct_dot3(D, u);
         double gap = fabs(noct_dot3(c, u) - du / 2) - fabs(du) / 2 - r;
         if (gap > 0x1p-40 * m * u1)
             return true;
@@ -467,11 +469,16 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
     set_horizon(&w, HORIZON_ONE);
     if (stats)
         ++stats->box_tests;
-    if (a->has_box && b->has_box && swept_boxes_apart(&w, ta1, tb1)) {
-        if (stats)
-            ++stats->sat_rejects;
-        *colliding = false;
-        return NOCT_OK;
+    if (a->has_box && b->has_box) {
+        noct_box_slot sa, sb;
+        noct_box_slot_fill(a, &sa);
+        noct_box_slot_fill(b, &sb);
+        if (noct_swept_slots_apart(&sa, ta0, ta1, &sb, tb0, tb1)) {
+            if (stats)
+                ++stats->sat_rejects;
+            *colliding = false;
+            return NOCT_OK;
+        }
     }
     bool touch;
     st = placed_collide(a, ta0, b, tb0, &touch, stats);
@@ -486,6 +493,14 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
         }
         return NOCT_OK;
     }
+    if (hit == NULL) {
+        /* The verdict alone: the end, cheaper than the walk, first. */
+        st = placed_collide(a, ta1, b, tb1, &touch, stats);
+        if (st != NOCT_OK || touch) {
+            *colliding = touch;
+            return st;
+        }
+    }
     if (stats)
         ++stats->exact_tests;
     bool swept = noct_bvh_pair_walk(&w.A, &w.B, swept_prune, swept_pair, &w);
@@ -495,6 +510,10 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
             hit->time = (double)w.best / (double)HORIZON_ONE;
             describe(&w, ta0, ta1, tb0, tb1, hit);
         }
+        return NOCT_OK;
+    }
+    if (hit == NULL) {
+        *colliding = false;
         return NOCT_OK;
     }
     st = placed_collide(a, ta1, b, tb1, &touch, stats);

@@ -129,13 +129,17 @@ typedef struct noct_spin {
 typedef struct noct_sweeps {
     bool on;
     double (*start)[3];
+    double (*from)[3];     /* where the last step started, for objects it
+                              moved: those whose from_tick is its tick */
+    uint64_t *from_tick;
     double (*base)[6];     /* lo, hi */
     double (*grow)[3];
     uint32_t *todo;
     uint8_t *in_todo;
     uint32_t ntodo;
-    noctSweepHit *hits;    /* parallel to the contact record's began */
+    noctSweepHit *hits;    /* parallel to the contact record's began, */
     size_t caphits;
+    bool hits_made;        /* made since the last step */
 } noct_sweeps;
 
 /* An object's track (#NOCT_EFFECT_TRACK): its keyframes, owned. */
@@ -291,13 +295,8 @@ noctStatus noct_world_stage_grow(noctWorld *w);
  * is. */
 void noct_world_sweeps_done(noctWorld *w);
 
-/* The continuous level on a pair: its verdict (with hit, its time and
- * features). */
-noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding,
-                                 noctSweepHit *hit);
-
-/* The hits of the contact record's began pairs; NOMEM. */
-noctStatus noct_world_sweep_began(noctWorld *w);
+/* The continuous level on a pair over the step under way: its verdict. */
+noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 

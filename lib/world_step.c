@@ -305,8 +305,6 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
             st = noct_record_diff(&e->sensor, &events);
         if (st == NOCT_OK)
             w->c.events += events;
-        if (st == NOCT_OK && w->sweeps.on)
-            st = noct_world_sweep_began(w);
     }
     if (st != NOCT_OK) {
         noct_record_unrotate(&e->contact);

@@ -37,6 +37,7 @@ NOCT_DEFINE_RESIZE(resize_vec3s, noct_vec3)
 NOCT_DEFINE_RESIZE(resize_boxes, noct_box6)
 NOCT_DEFINE_RESIZE(resize_u32s, uint32_t)
 NOCT_DEFINE_RESIZE(resize_u8s, uint8_t)
+NOCT_DEFINE_RESIZE(resize_u64s, uint64_t)
 NOCT_DEFINE_GROW(grow_hits, noctSweepHit)
 
 bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
@@ -44,12 +45,15 @@ bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
     noct_sweeps *sw = &w->sweeps;
     if (!sw->on)
         return true;
-    if (!resize_vec3s(&sw->start, cap) || !resize_boxes(&sw->base, cap) ||
+    if (!resize_vec3s(&sw->start, cap) || !resize_vec3s(&sw->from, cap) ||
+        !resize_u64s(&sw->from_tick, cap) || !resize_boxes(&sw->base, cap) ||
         !resize_vec3s(&sw->grow, cap) || !resize_u32s(&sw->todo, cap) ||
         !resize_u8s(&sw->in_todo, cap))
         return false;
-    for (uint32_t s = w->capslots; s < cap; ++s)
+    for (uint32_t s = w->capslots; s < cap; ++s) {
         sw->in_todo[s] = 0;
+        sw->from_tick[s] = UINT64_MAX;
+    }
     return true;
 }
 
@@ -57,6 +61,8 @@ void noct_world_free_sweeps(noctWorld *w)
 {
     noct_sweeps *sw = &w->sweeps;
     free(sw->start);
+    free(sw->from);
+    free(sw->from_tick);
     free(sw->base);
     free(sw->grow);
     free(sw->todo);
@@ -69,8 +75,10 @@ void noct_world_sweep_touch(noctWorld *w, uint32_t s, bool made)
     noct_sweeps *sw = &w->sweeps;
     if (!sw->on)
         return;
-    if (made)
+    if (made) {
         memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+        sw->from_tick[s] = UINT64_MAX;
+    }
     if (!sw->in_todo[s]) {
         sw->in_todo[s] = 1;
         sw->todo[sw->ntodo++] = s;
@@ -163,51 +171,72 @@ noctStatus noct_world_stage_grow(noctWorld *w)
     return st;
 }
 
+/* Object s's step ends where it is: where it started is kept for the
+ * hits (noctWorldBeganHits()). */
+static void step_done(noctWorld *w, uint32_t s)
+{
+    noct_sweeps *sw = &w->sweeps;
+    memcpy(sw->from[s], sw->start[s], sizeof sw->from[s]);
+    sw->from_tick[s] = w->tick;
+    memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+}
+
 void noct_world_sweeps_done(noctWorld *w)
 {
     noct_sweeps *sw = &w->sweeps;
-    for (uint32_t m = 0; m < w->motion.nmovers; ++m) {
-        const uint32_t s = w->motion.movers[m];
-        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
-    }
-    for (uint32_t i = 0; i < sw->ntodo; ++i) {
-        const uint32_t s = sw->todo[i];
-        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
-    }
+    for (uint32_t m = 0; m < w->motion.nmovers; ++m)
+        step_done(w, w->motion.movers[m]);
+    for (uint32_t i = 0; i < sw->ntodo; ++i)
+        step_done(w, sw->todo[i]);
+    sw->hits_made = false;
 }
 
-noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding,
-                                 noctSweepHit *hit)
+/* The continuous level on objects a and b moving from a0 and b0. */
+static noctStatus sweep(noctWorld *w, uint32_t a, const double a0[3], uint32_t b,
+                        const double b0[3], bool *colliding, noctSweepHit *hit)
 {
     noctStatus st = NOCT_OK;
     const noctMesh *ma = noct_world_mesh(w, a, &st);
     const noctMesh *mb = ma != NULL ? noct_world_mesh(w, b, &st) : NULL;
     if (ma == NULL || mb == NULL)
         return st;
-    return noctCollideSwept(ma, w->sweeps.start[a], w->pos[a], mb, w->sweeps.start[b],
-                            w->pos[b], colliding, hit, &w->c.narrow);
+    return noctCollideSwept(ma, a0, w->pos[a], mb, b0, w->pos[b], colliding, hit,
+                            &w->c.narrow);
 }
 
-noctStatus noct_world_sweep_began(noctWorld *w)
+noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding)
 {
+    return sweep(w, a, w->sweeps.start[a], b, w->sweeps.start[b], colliding, NULL);
+}
+
+noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n,
+                              noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && hits != NULL && n != NULL);
     noct_sweeps *sw = &w->sweeps;
+    *hits = NULL;
+    *n = 0;
+    if (!sw->on)
+        return NOCT_OK;
     const noct_pair_list *began = &w->events.contact.began;
-    if (!grow_hits(&sw->hits, &sw->caphits, began->n))
-        return NOCT_ERR_NOMEM;
-    for (size_t i = 0; i < began->n; ++i) {
-        bool colliding;
-        noctStatus st = noct_world_sweep_pair(w, began->p[i].a.index, began->p[i].b.index,
-                                              &colliding, &sw->hits[i]);
-        if (st != NOCT_OK)
-            return st;
-        NOCT_INVARIANT(colliding);
+    if (!sw->hits_made) {
+        if (!grow_hits(&sw->hits, &sw->caphits, began->n))
+            return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+        /* The last step is tick - 1; an object it did not move started
+         * where it is. */
+        for (size_t i = 0; i < began->n; ++i) {
+            const uint32_t a = began->p[i].a.index, b = began->p[i].b.index;
+            const double *a0 = sw->from_tick[a] + 1 == w->tick ? sw->from[a] : w->pos[a];
+            const double *b0 = sw->from_tick[b] + 1 == w->tick ? sw->from[b] : w->pos[b];
+            bool colliding;
+            noctStatus st = sweep(w, a, a0, b, b0, &colliding, &sw->hits[i]);
+            if (st != NOCT_OK)
+                return noct_fail(err, st, -1, 0, "the began contacts' hits: %s",
+                                 noctStatusString(st));
+        }
+        sw->hits_made = true;
     }
+    *hits = sw->hits;
+    *n = began->n;
     return NOCT_OK;
-}
-
-size_t noctWorldBeganHits(const noctWorld *w, const noctSweepHit **hits)
-{
-    NOCT_REQUIRE(w != NULL && hits != NULL);
-    *hits = w->sweeps.on ? w->sweeps.hits : NULL;
-    return w->sweeps.on ? w->events.contact.began.n : 0;
 }

@@ -430,8 +430,15 @@ int main(int argc, char **argv)
         const noctPair *p, *began;
         size_t nbegan = noctWorldBegan(w, &began);
         begins += nbegan;
-        const noctSweepHit *hits;
-        const size_t nhits = noctWorldBeganHits(w, &hits);
+        const noctSweepHit *hits = NULL;
+        size_t nhits = 0;
+        if (def->accuracy == NOCT_ACCURACY_CONTINUOUS && nbegan > 0 && (events || first) &&
+            noctWorldBeganHits(w, &hits, &nhits, &err) != NOCT_OK) {
+            tool_progress_end();
+            tool_error("step %d: %s", s, err.message);
+            status = 1;
+            break;
+        }
         for (size_t i = 0; events && i < nbegan; ++i) {
             if (i < nhits) {
                 char t[32];

@@ -725,17 +725,25 @@ NOCT_API size_t noctWorldEnded(const noctWorld *world, const noctPair **pairs);
  * pairs noctWorldBegan() lists, in the same order: the time within the
  * step (0 at its start, 1 at its end) at which the two first touched, the
  * features that touched and a point, as noctCollideSwept() tells them for
- * the two objects' motions over the step (a pair that began without
- * either object moving, for instance because it was just made, began at
- * time 0, #NOCT_SWEEP_START).
+ * the two objects' motions over the step. A pair that began without
+ * either object moving (just made, or a filter changed) began at time 0,
+ * #NOCT_SWEEP_START. The step does not compute them: the first call
+ * after a step does (a bisection of about fifty exact tests per pair, on
+ * the features that may touch first), so a world whose program never
+ * asks pays nothing for them. Call it before changing the world: the
+ * hits are those of the objects as they are now.
  * @param[in]  world The world.
- * @param[out] hits  Receives the array (valid until the next step or
- *                   noctWorldDestroy()), NULL in a discrete world.
- * @pre @p world and @p hits are not NULL.
- * @return The number of hits: noctWorldBegan()'s count with continuous
- *         detection, 0 without.
+ * @param[out] hits  Receives the array (valid until the next step,
+ *                   change of the world or noctWorldDestroy()), NULL in a
+ *                   discrete world.
+ * @param[out] n     Receives the number of hits: noctWorldBegan()'s count
+ *                   with continuous detection, 0 without.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world, @p hits and @p n are not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM (then *n is 0).
  */
-NOCT_API size_t noctWorldBeganHits(const noctWorld *world, const noctSweepHit **hits);
+NOCT_API noctStatus noctWorldBeganHits(noctWorld *world, const noctSweepHit **hits, size_t *n,
+                                       noctError *err);
 
 /**
  * @brief Read an object's position and direction.
