@@ -57,6 +57,37 @@ expect_run 0 '^81 sensor-end 0 1$' --events --quiet --steps 100 "$tmp/sensor.sce
 expect_run 0 '^contact begins 0$' --quiet --steps 100 "$tmp/sensor.scene"
 expect_run 0 '^sensor events 2$' --quiet --steps 100 "$tmp/sensor.scene"
 
+# Continuous detection: a keyframed cube passes through a thin wall between
+# steps 1 and 2 (keys 1 and 2 are -3 and 3). The exact level sees nothing;
+# the continuous level sees the cube's face reach the wall's at time
+# (3 - 0.5 - 0.0625) / 6 = 0.40625 of step 2 (dyadic: exact), and the pair
+# end at step 3.
+cat > "$tmp/tunnel.scene" <<'SCENE'
+steps 4
+mesh cube box 0.5 0.5 0.5
+mesh wall box 0.0625 2 2
+object wall 0 0 0 type static
+object cube -3 0 0
+key 0 -3 0 0
+key 1 -3 0 0
+key 2 3 0 0
+SCENE
+expect_run 0 '^no collision in 4 steps$' --first --quiet "$tmp/tunnel.scene"
+expect_run 0 '^contact begins 0$' --quiet "$tmp/tunnel.scene"
+expect_run 0 '^first collision at step 2, time 0.40625 of the step: objects 0 and 1, touching at (-0.0625, ' \
+    --first --quiet --accuracy continuous "$tmp/tunnel.scene"
+"$sim" --events --quiet --accuracy continuous "$tmp/tunnel.scene" > "$tmp/out" 2>&1
+check "continuous --events: the begin at step 2 with its time, the end at step 3" \
+    [ "$(grep -E '^[0-9]+ (begin|end) ' "$tmp/out")" = "2 begin 0 1 at 0.40625
+3 end 0 1" ]
+sed 's/^steps 4$/steps 4\naccuracy continuous/' "$tmp/tunnel.scene" > "$tmp/tunnel-c.scene"
+expect_run 0 '^contact begins 1$' --quiet "$tmp/tunnel-c.scene"
+expect_run 0 '^accuracy continuous$' --quiet "$tmp/tunnel-c.scene"
+expect_run 0 '^accuracy continuous$' --write-scene - "$tmp/tunnel-c.scene"
+expect_run 2 "--accuracy must be box, convex, exact or continuous, not 'sweep'" --accuracy sweep "$tmp/tunnel.scene"
+sed 's/^steps 4$/accuracy sweep/' "$tmp/tunnel.scene" > "$tmp/bad-acc.scene"
+expect_run 2 "bad-acc.scene:1: unknown accuracy 'sweep' (box, convex, exact or continuous)" "$tmp/bad-acc.scene"
+
 # Bad scene files: exit 2 and file:line: problem.
 bad_scene() { # NAME LINE-PATTERN CONTENT
     printf '%s\n' "$3" > "$tmp/$1"

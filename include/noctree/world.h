@@ -110,6 +110,43 @@
  * ended lists then hold every sub-step's events, in sub-step order, each
  * sub-step's sorted, and the colliding list is the last sub-step's.
  *
+ * **Continuous detection.** With the accuracy #NOCT_ACCURACY_CONTINUOUS,
+ * a step asks whether objects *came into contact during their motion*:
+ * each object's step goes from where the last step left it (or where it
+ * was made) to where the step leaves it, whatever moved it (its velocity,
+ * its track, or noctWorldSetTransform() between steps), along the
+ * straight line between the two translations, and a pair is colliding at
+ * the step if their solids share a point at some time of it, start and
+ * end included: exactly as noctCollideSwept() decides it, so a thin or
+ * fast object never passes through another unseen, whatever the speeds.
+ * Consequences:
+ * - a pair that parts during a step is still colliding at that step (it
+ *   touched at its start), so it ends one step later than at the exact
+ *   level; a pair that meets and parts within one step is colliding at
+ *   that step, and begins and ends;
+ * - noctWorldBeganHits() tells when within the step, and where, each
+ *   began contact first touched;
+ * - sub-steps (#NOCT_EFFECT_SUBSTEP) are not taken: they are moot;
+ * - the broadphase holds each object that may move with its local box
+ *   grown on every side by twice its velocity plus what a program or a
+ *   track moved it since the last step (world_sweep.c says why that is
+ *   enough, rounding included), so every pair whose motions may meet is
+ *   tested; a mover's growth lasts while its speed does;
+ * - two objects that both stay where they are are decided by the exact
+ *   level; two boxes (box primitives, box meshes) are decided on their
+ *   box forms first (a swept separating axis, or a collision at the end or
+ *   the start), and only the rest walk their triangles; the cost, on the
+ *   gas family where nothing passes through anything, is under twice the
+ *   exact level's (docs/results.md).
+ *
+ * **Not exact yet: turning.** An object that turns during a step (spin,
+ * a track whose keys turn, a set transform with a new rotation) is swept
+ * with its end rotation, from its start translation to its end one: that
+ * is not its motion, and a contact the turn makes or avoids may be
+ * missed or reported. The conservative level for turning motions is to
+ * come; until then a program that needs them sound uses sub-steps at the
+ * exact level.
+ *
  * **Determinism.** Pair lists are sorted by object index; the same
  * operations give the same results on every run, in both builds and in
  * every maintenance mode.
