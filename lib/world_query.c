@@ -247,12 +247,24 @@ noctStatus noctWorldQueryBox(const noctWorld *w, const double lo[3], const doubl
                           w->def.accuracy, 0, filter, fcn, context, err);
 }
 
-/* The objects that meet the shape at x, or come within margin of it. */
-static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
-                              const double half_extents[3], const noctTransform *x,
-                              double margin, noctQueryFilter filter, noctObjectFcn *fcn,
-                              void *context, noctError *err)
+/* A query's shape, placed by a transform's rotation: a mesh (rotated
+ * when it must be) or a box primitive's corners as a view; with its box
+ * slot when it has a box form. */
+typedef struct query_shape {
+    const noctMesh *m;
+    noctMesh *rotated;
+    noctMesh view;
+    bvh_node leaf;
+    double v[24];
+    noct_box_slot slot;
+    bool has_slot;
+} query_shape;
+
+static noctStatus query_shape_make(query_shape *q, const noctMesh *mesh,
+                                   const double half_extents[3], const noctTransform *x,
+                                   noctError *err)
 {
+    q->rotated = NULL;
     noctStatus st = noctTransformCheck(x, err);
     if (st != NOCT_OK)
         return st;
@@ -262,27 +274,35 @@ static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
         if ((st = noct_check_box_half(half_extents, err)) != NOCT_OK ||
             (st = noct_check_box_corners(half_extents, R, err)) != NOCT_OK)
             return st;
-        double v[24];
-        noct_box_corners(half_extents, R, v);
-        noctMesh view;
-        bvh_node leaf;
-        noct_box_view(v, &view, &leaf);
-        noct_box_slot slot;
+        noct_box_corners(half_extents, R, q->v);
+        noct_box_view(q->v, &q->view, &q->leaf);
         double blo[3], bhi[3];
-        noct_box_slot_of_corners(v, R, &slot, blo, bhi);
-        return report_meeting(w, &view, x->p, slot.has_box ? &slot : NULL,
-                              NOCT_ACCURACY_EXACT, margin, filter, fcn, context, err);
+        noct_box_slot_of_corners(q->v, R, &q->slot, blo, bhi);
+        q->has_slot = q->slot.has_box;
+        q->m = &q->view;
+        return NOCT_OK;
     }
-    noctMesh *rotated = NULL;
-    if (!noct_is_identity(R) && (st = noct_mesh_rotated(mesh, R, &rotated, err)) != NOCT_OK)
+    if (!noct_is_identity(R) && (st = noct_mesh_rotated(mesh, R, &q->rotated, err)) != NOCT_OK)
         return st;
-    const noctMesh *m = rotated != NULL ? rotated : mesh;
-    noct_box_slot slot;
-    if (m->has_box)
-        noct_box_slot_fill(m, &slot);
-    st = report_meeting(w, m, x->p, m->has_box ? &slot : NULL, NOCT_ACCURACY_EXACT, margin,
-                        filter, fcn, context, err);
-    noctMeshDestroy(rotated);
+    q->m = q->rotated != NULL ? q->rotated : mesh;
+    q->has_slot = q->m->has_box;
+    if (q->has_slot)
+        noct_box_slot_fill(q->m, &q->slot);
+    return NOCT_OK;
+}
+
+/* The objects that meet the shape at x, or come within margin of it. */
+static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
+                              const double half_extents[3], const noctTransform *x,
+                              double margin, noctQueryFilter filter, noctObjectFcn *fcn,
+                              void *context, noctError *err)
+{
+    query_shape q;
+    noctStatus st = query_shape_make(&q, mesh, half_extents, x, err);
+    if (st == NOCT_OK)
+        st = report_meeting(w, q.m, x->p, q.has_slot ? &q.slot : NULL, NOCT_ACCURACY_EXACT,
+                            margin, filter, fcn, context, err);
+    noctMeshDestroy(q.rotated);
     return st;
 }
 
@@ -504,4 +524,62 @@ bool noctCollectRayHits(void *buffer, const noctRayHit *hit)
         b->hits[b->count] = *hit;
     ++b->count;
     return true;
+}
+
+/* ---- a moving shape ----------------------------------------------------------------- */
+
+noctStatus noctWorldCastShape(const noctWorld *w, const noctMesh *mesh,
+                              const double half_extents[3], const noctTransform *x,
+                              const double translation[3], noctQueryFilter filter,
+                              noctShapeHit *hit, bool *found, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL && x != NULL && translation != NULL && hit != NULL &&
+                 found != NULL);
+    NOCT_REQUIRE(mesh != NULL || half_extents != NULL);
+    *found = false;
+    noctStatus st = check_point(translation, "translation", err);
+    if (st != NOCT_OK)
+        return st;
+    double p1[3];
+    for (int k = 0; k < 3; ++k)
+        p1[k] = x->p[k] + translation[k];
+    if ((st = check_point(p1, "end", err)) != NOCT_OK)
+        return st;
+    query_shape q;
+    if ((st = query_shape_make(&q, mesh, half_extents, x, err)) != NOCT_OK)
+        return st;
+    /* The swept box: the placed boxes at both ends, padded by far more than
+     * the end's placement differs from the start's moved exactly. */
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        const double pad = 0x1p-40 * (fabs(q.m->lo[k]) + fabs(q.m->hi[k]) + fabs(x->p[k]) +
+                                      fabs(p1[k]));
+        lo[k] = noct_min(q.m->lo[k] + x->p[k], q.m->lo[k] + p1[k]) - pad;
+        hi[k] = noct_max(q.m->hi[k] + x->p[k], q.m->hi[k] + p1[k]) + pad;
+    }
+    candidates c;
+    candidates_init(&c);
+    st = gather(w, lo, hi, filter, &c, err);
+    for (size_t i = 0; i < c.n && st == NOCT_OK; ++i) {
+        const uint32_t s = c.s[i];
+        shape sh;
+        const noctMesh *m = shape_of_object(w, s, &sh);
+        bool meets;
+        noctSweepHit h;
+        st = noctCollideSwept(q.m, x->p, p1, m, w->pos[s], w->pos[s], &meets, &h, NULL);
+        if (st != NOCT_OK) {
+            st = noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
+        } else if (meets && (!*found || h.time < hit->sweep.time)) {
+            /* in order of index: a tie keeps the least */
+            *found = true;
+            hit->id = handle(w, s);
+            hit->user_data = noct_bp_proxy(&w->bp, s)->user;
+            hit->sweep = h;
+        }
+    }
+    candidates_fini(&c);
+    noctMeshDestroy(q.rotated);
+    if (st != NOCT_OK)
+        *found = false;
+    return st;
 }

@@ -783,6 +783,128 @@ START_TEST(queries_from_two_threads)
 }
 END_TEST
 
+/* ---- a moving shape ------------------------------------------------------------------ */
+
+/* noctWorldCastShape() against the narrowphase on every object: random
+ * unturned boxes (primitives of dyadic half-extents, whose meshes the
+ * test makes), filters, casts long and short; the first hit is the least
+ * time over the objects the filter lets through, ties to the least
+ * index. And a hand-worked case: a cube cast through a thin wall. */
+START_TEST(cast_shape_against_the_narrowphase)
+{
+    enum { NOBJ = 40 };
+    int hits = 0, starts = 0;
+    for (int round = 0; round < 6; ++round) {
+        noctWorldDef def = noctDefaultWorldDef();
+        def.N = 1 + round % 4;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        noctMesh *mesh[NOBJ];
+        double pos[NOBJ][3];
+        uint64_t cat[NOBJ];
+        noctObjectId id[NOBJ];
+        for (int i = 0; i < NOBJ; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            for (int k = 0; k < 3; ++k) {
+                d.half_extents[k] = (1 + (int)(8 * uniform())) / 16.0;
+                pos[i][k] = d.transform.p[k] = (int)(64 * uniform()) / 8.0;
+            }
+            d.category = cat[i] = (uint64_t)1 << (int)(3 * uniform());
+            d.type = NOCT_OBJECT_STATIC;
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+            ck_assert_int_eq(noctMeshCreateBox(d.half_extents[0], d.half_extents[1],
+                                               d.half_extents[2], &mesh[i], NULL),
+                             NOCT_OK);
+        }
+        for (int q = 0; q < 40; ++q) {
+            double h[3], t[3];
+            noctTransform x = {{0, 0, 0, 1}, {0, 0, 0}};
+            for (int k = 0; k < 3; ++k) {
+                h[k] = (1 + (int)(4 * uniform())) / 16.0;
+                x.p[k] = -1 + 10 * uniform();
+                t[k] = (q % 4 == 0 ? 100 : 4) * (uniform() - 0.5);
+            }
+            noctMesh *hm;
+            ck_assert_int_eq(noctMeshCreateBox(h[0], h[1], h[2], &hm, NULL), NOCT_OK);
+            noctQueryFilter f = noctDefaultQueryFilter();
+            f.mask = (uint64_t)(1 + (int)(7 * uniform()));
+            noctShapeHit got;
+            bool found;
+            ck_assert_int_eq(noctWorldCastShape(w, q % 2 ? hm : NULL, h, &x, t, f, &got, &found,
+                                                NULL),
+                             NOCT_OK);
+            double end[3] = {x.p[0] + t[0], x.p[1] + t[1], x.p[2] + t[2]};
+            int best = -1;
+            noctSweepHit bh = {0};
+            for (int i = 0; i < NOBJ; ++i) {
+                if ((cat[i] & f.mask) == 0)
+                    continue;
+                bool c;
+                noctSweepHit sh;
+                ck_assert_int_eq(noctCollideSwept(hm, x.p, end, mesh[i], pos[i], pos[i], &c, &sh,
+                                                  NULL),
+                                 NOCT_OK);
+                if (c && (best < 0 || sh.time < bh.time)) {
+                    best = i;
+                    bh = sh;
+                }
+            }
+            ck_assert_int_eq(found, best >= 0);
+            if (found) {
+                ck_assert_uint_eq(got.id.index, id[best].index);
+                ck_assert(got.sweep.time == bh.time);
+                ck_assert_int_eq(got.sweep.feature, bh.feature);
+                ++hits;
+                starts += bh.time == 0;
+            }
+            noctMeshDestroy(hm);
+        }
+        for (int i = 0; i < NOBJ; ++i)
+            noctMeshDestroy(mesh[i]);
+        noctWorldDestroy(w);
+    }
+    ck_assert_int_gt(hits, 30);
+    ck_assert_int_gt(starts, 0);
+
+    /* By hand: a cube of half-size 1/2 from x = -3 to 3 meets a wall of
+     * half-thickness 1/16 at the origin when its face reaches -1/16:
+     * (3 - 1/2 - 1/16) / 6 = 0.40625; the filter can hide the wall. */
+    noctWorldDef def = noctDefaultWorldDef();
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = 0.0625;
+    d.half_extents[1] = d.half_extents[2] = 2;
+    d.category = 2;
+    noctObjectId wall;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &wall, NULL), NOCT_OK);
+    noctTransform x = {{0, 0, 0, 1}, {-3, 0, 0}};
+    noctShapeHit got;
+    bool found;
+    ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
+                                        (double[3]){6, 0, 0}, noctDefaultQueryFilter(), &got,
+                                        &found, NULL),
+                     NOCT_OK);
+    ck_assert(found);
+    ck_assert(got.sweep.time == 0.40625);
+    ck_assert(got.sweep.point[0] == -0.0625);
+    noctQueryFilter f = noctDefaultQueryFilter();
+    f.mask = 1;
+    ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
+                                        (double[3]){6, 0, 0}, f, &got, &found, NULL),
+                     NOCT_OK);
+    ck_assert(!found);
+    ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
+                                        (double[3]){NAN, 0, 0}, f, &got, &found, NULL),
+                     NOCT_ERR_NONFINITE);
+    ck_assert(!found);
+    ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
+                                        (double[3]){1e100, 0, 0}, f, &got, &found, NULL),
+                     NOCT_ERR_TOO_LARGE);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 static Suite *queries_suite(void)
 {
     Suite *s = suite_create("queries");
@@ -792,7 +914,8 @@ static Suite *queries_suite(void)
     tcase_add_loop_test(tc, rays_against_geometry, 0, 1);
     tcase_add_loop_test(tc, answers_do_not_depend_on_the_tree, 0, 1);
     add_tests(tc, exact_points_on_faces_edges_and_corners, exact_rays_along_faces_and_through_edges,
-              ray_normals_at_every_scale, buffers_stopping_and_bad_input, queries_from_two_threads);
+              ray_normals_at_every_scale, buffers_stopping_and_bad_input, queries_from_two_threads,
+              cast_shape_against_the_narrowphase);
     TCase *full = test_case(s, "queries, full", 300, "slow");
     tcase_add_loop_test(full, points_against_geometry, 1, 2);
     tcase_add_loop_test(full, boxes_and_shapes_against_brute_force, 1, 2);

@@ -21,6 +21,8 @@
  *   or a box primitive) at a transform, exactly, without adding it to the
  *   world (a planner's "would the arm collide here?"); noctWorldQueryNear():
  *   those within a distance of it ("would it come within d?");
+ *   noctWorldCastShape(): the first object a shape meets as it moves
+ *   along a translation, and when (continuous detection, exact);
  * - noctWorldRayCast() and noctWorldRayCastClosest(): the objects a
  *   closed segment meets (noctWorldRayCastAlong(): the first along a ray
  *   given by a direction and a distance). Whether it meets a solid is decided exactly;
@@ -303,6 +305,54 @@ NOCT_API noctStatus noctWorldRayCastAlong(const noctWorld *world, const double o
                                           const double direction[3], double distance,
                                           noctQueryFilter filter, noctRayHit *hit,
                                           bool *found, noctError *err);
+
+/** @brief Where a moving shape first meets an object
+ *  (noctWorldCastShape()). */
+typedef struct noctShapeHit {
+    noctObjectId id;     /**< The object. */
+    void *user_data;     /**< Its user data. */
+    noctSweepHit sweep;  /**< When (a fraction of the translation, in
+                              [0, 1]: 0 if the shape starts touching it),
+                              which features (the shape's first, the
+                              object's second) and where, as
+                              noctCollideSwept() tells it. */
+} noctShapeHit;
+
+/**
+ * @brief The first object a shape meets as it moves along a translation:
+ * a swept shape query (an arm's planned move, a falling crate, a
+ * character's step) with the exact verdict of continuous detection.
+ *
+ * The shape (a mesh, or the box primitive of half_extents when mesh is
+ * NULL) is placed by x as noctWorldQueryShape() places it, and moves
+ * without turning along the straight line from x's translation to
+ * fl(x translation + translation), as noctCollideSwept() moves a mesh;
+ * the objects stay where they are.
+ * @pre world != NULL && x != NULL && translation != NULL && hit != NULL &&
+ *      found != NULL; mesh != NULL or half_extents != NULL.
+ * @post *found tells whether the moving shape touches an object the filter
+ *       lets through; if so, *hit is the one it touches first (the least
+ *       time, ties to the least index), decided exactly, its time within
+ *       2^-52 (noctSweepHit). Every object whose box meets the shape's
+ *       swept box is tested, so a long cast through a crowd costs the
+ *       crowd.
+ * @param world the world.
+ * @param mesh the shape, or NULL for a box primitive.
+ * @param half_extents the box primitive's half-extents when mesh is NULL.
+ * @param x where the shape starts: its rotation, then its translation.
+ * @param translation how it moves.
+ * @param filter which objects to consider.
+ * @param hit receives the first hit.
+ * @param found receives whether there is one.
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldQueryShape(); #NOCT_ERR_NONFINITE or
+ *         #NOCT_ERR_TOO_LARGE for a translation, or an end, that is not
+ *         finite or beyond #NOCT_MAX_COORDINATE (then *found is false).
+ */
+NOCT_API noctStatus noctWorldCastShape(const noctWorld *world, const noctMesh *mesh,
+                                       const double half_extents[3], const noctTransform *x,
+                                       const double translation[3], noctQueryFilter filter,
+                                       noctShapeHit *hit, bool *found, noctError *err);
 
 /** @brief An array for a query's objects: pass noctCollectObjects() as the
  *  function and a pointer to this as its context. */
