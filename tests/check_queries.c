@@ -792,8 +792,8 @@ END_TEST
  * index. And a hand-worked case: a cube cast through a thin wall. */
 START_TEST(cast_shape_against_the_narrowphase)
 {
-    enum { NOBJ = 40 };
-    int hits = 0, starts = 0;
+    enum { NOBJ = 100 };
+    int nhit = 0, starts = 0;
     for (int round = 0; round < 6; ++round) {
         noctWorldDef def = noctDefaultWorldDef();
         def.N = 1 + round % 4;
@@ -818,19 +818,19 @@ START_TEST(cast_shape_against_the_narrowphase)
         }
         for (int q = 0; q < 40; ++q) {
             double h[3], t[3];
-            noctTransform x = {{0, 0, 0, 1}, {0, 0, 0}};
+            noctTransform x = {.q = {0, 0, 0, 1}};
             for (int k = 0; k < 3; ++k) {
                 h[k] = (1 + (int)(4 * uniform())) / 16.0;
                 x.p[k] = -1 + 10 * uniform();
-                t[k] = (q % 4 == 0 ? 100 : 4) * (uniform() - 0.5);
+                t[k] = (q % 4 == 0 ? 100 : 8) * (uniform() - 0.5);
             }
             noctMesh *hm;
             ck_assert_int_eq(noctMeshCreateBox(h[0], h[1], h[2], &hm, NULL), NOCT_OK);
             noctQueryFilter f = noctDefaultQueryFilter();
             f.mask = (uint64_t)(1 + (int)(7 * uniform()));
             noctShapeHit got;
-            bool found;
-            ck_assert_int_eq(noctWorldCastShape(w, q % 2 ? hm : NULL, h, &x, t, f, &got, &found,
+            bool any;
+            ck_assert_int_eq(noctWorldCastShape(w, q % 2 ? hm : NULL, h, &x, t, f, &got, &any,
                                                 NULL),
                              NOCT_OK);
             double end[3] = {x.p[0] + t[0], x.p[1] + t[1], x.p[2] + t[2]};
@@ -849,12 +849,16 @@ START_TEST(cast_shape_against_the_narrowphase)
                     bh = sh;
                 }
             }
-            ck_assert_int_eq(found, best >= 0);
-            if (found) {
+            ck_assert_int_eq(any, best >= 0);
+            if (any) {
                 ck_assert_uint_eq(got.id.index, id[best].index);
+                /* the same time; the features may differ where several
+                 * touch first at once, and a primitive's view is not
+                 * triangulated as noctMeshCreateBox() is */
                 ck_assert(got.sweep.time == bh.time);
-                ck_assert_int_eq(got.sweep.feature, bh.feature);
-                ++hits;
+                ck_assert_int_eq(got.sweep.feature == NOCT_SWEEP_START,
+                                 bh.feature == NOCT_SWEEP_START);
+                ++nhit;
                 starts += bh.time == 0;
             }
             noctMeshDestroy(hm);
@@ -863,7 +867,7 @@ START_TEST(cast_shape_against_the_narrowphase)
             noctMeshDestroy(mesh[i]);
         noctWorldDestroy(w);
     }
-    ck_assert_int_gt(hits, 30);
+    ck_assert_int_gt(nhit, 30);
     ck_assert_int_gt(starts, 0);
 
     /* By hand: a cube of half-size 1/2 from x = -3 to 3 meets a wall of
@@ -878,28 +882,28 @@ START_TEST(cast_shape_against_the_narrowphase)
     d.category = 2;
     noctObjectId wall;
     ck_assert_int_eq(noctWorldCreateObject(w, &d, &wall, NULL), NOCT_OK);
-    noctTransform x = {{0, 0, 0, 1}, {-3, 0, 0}};
+    noctTransform x = {.q = {0, 0, 0, 1}, .p = {-3, 0, 0}};
     noctShapeHit got;
-    bool found;
+    bool any;
     ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
                                         (double[3]){6, 0, 0}, noctDefaultQueryFilter(), &got,
-                                        &found, NULL),
+                                        &any, NULL),
                      NOCT_OK);
-    ck_assert(found);
+    ck_assert(any);
     ck_assert(got.sweep.time == 0.40625);
     ck_assert(got.sweep.point[0] == -0.0625);
     noctQueryFilter f = noctDefaultQueryFilter();
     f.mask = 1;
     ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
-                                        (double[3]){6, 0, 0}, f, &got, &found, NULL),
+                                        (double[3]){6, 0, 0}, f, &got, &any, NULL),
                      NOCT_OK);
-    ck_assert(!found);
+    ck_assert(!any);
     ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
-                                        (double[3]){NAN, 0, 0}, f, &got, &found, NULL),
+                                        (double[3]){NAN, 0, 0}, f, &got, &any, NULL),
                      NOCT_ERR_NONFINITE);
-    ck_assert(!found);
+    ck_assert(!any);
     ck_assert_int_eq(noctWorldCastShape(w, NULL, (double[3]){0.5, 0.5, 0.5}, &x,
-                                        (double[3]){1e100, 0, 0}, f, &got, &found, NULL),
+                                        (double[3]){2e100, 0, 0}, f, &got, &any, NULL),
                      NOCT_ERR_TOO_LARGE);
     noctWorldDestroy(w);
 }
