@@ -28,6 +28,7 @@ noctree_sources = \
 	lib/narrowphase_internal.h \
 	lib/narrowphase_query.c \
 	lib/narrowphase_swept.c \
+	lib/narrowphase_turning.c \
 	lib/neighbor.c \
 	lib/octree.c \
 	lib/predicates.c \

@@ -149,6 +149,21 @@ void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 bool noct_swept_slots_apart(const noct_box_slot *a, const double ta0[3], const double ta1[3],
                             const noct_box_slot *b, const double tb0[3], const double tb1[3]);
 
+/* A shape's motion for the conservative level (narrowphase_turning.c):
+ * a mesh (unrotated), or a box primitive of half-extents half when shape
+ * is NULL, from rotation q0 and translation p0 to q1 and p1. */
+typedef struct noct_turning {
+    const noctMesh *shape;
+    const double *half;
+    noctQuat q0, q1;
+    const double *p0, *p1;
+} noct_turning;
+
+/* The conservative level on two such motions (narrowphase.h,
+ * noctCollideSweptTransformed()); NOMEM, or a rotated mesh's status. */
+noctStatus noct_collide_turning(const noct_turning *a, const noct_turning *b, bool *colliding,
+                                noctSweepHit *hit, noctNarrowStats *stats);
+
 int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                     const double tb[3]);
 
@@ -254,6 +269,11 @@ bool noct_is_identity(const double R[9]);
 
 /* out = fl(R v) in transform.h's order. */
 void noct_rotate(const double R[9], const double v[3], double out[3]);
+
+/* Spherical interpolation from q0 (s = 0) to q1 (s = 1) along the shorter
+ * arc, each product and sum rounded once in a fixed order (the tracks'
+ * interpolation, noctTrackAt()); normalized. */
+noctQuat noct_quat_slerp(const noctQuat *q0, const noctQuat *q1, double s);
 
 /* A new mesh of m's triangles with the vertices fl(R v). */
 noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **out,

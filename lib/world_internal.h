@@ -129,9 +129,13 @@ typedef struct noct_spin {
 typedef struct noct_sweeps {
     bool on;
     double (*start)[3];
+    noctQuat *start_q;     /* and its rotation then */
     double (*from)[3];     /* where the last step started, for objects it
                               moved: those whose from_tick is its tick */
+    noctQuat *from_q;
     uint64_t *from_tick;
+    double *radius;        /* the shape's farthest point from its origin,
+                              rounded up: how far a turn moves it */
     double (*base)[6];     /* lo, hi */
     double (*grow)[3];
     uint32_t *todo;
@@ -294,6 +298,12 @@ noctStatus noct_world_stage_grow(noctWorld *w);
 /* After a step that succeeded: each object's next step starts where it
  * is. */
 void noct_world_sweeps_done(noctWorld *w);
+
+/* Did object s turn since its step started? */
+static inline bool noct_world_turned(const noctWorld *w, uint32_t s)
+{
+    return memcmp(&w->sweeps.start_q[s], &w->pose[s].q, sizeof(noctQuat)) != 0;
+}
 
 /* The continuous level on a pair over the step under way: its verdict. */
 noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding);

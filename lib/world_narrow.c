@@ -62,13 +62,15 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];
         if (start != NULL && (memcmp(start[ia], ta, sizeof start[ia]) != 0 ||
-                              memcmp(start[ib], tb, sizeof start[ib]) != 0)) {
+                              memcmp(start[ib], tb, sizeof start[ib]) != 0 ||
+                              noct_world_turned(w, ia) || noct_world_turned(w, ib))) {
             /* Either moved: the continuous level. Two boxes first on their
              * slots: apart over the motion, or colliding at the end or at
              * the start, as most pairs are decided. */
             hit = false;
             int decided = 0;
-            if (slot[ia].has_box && slot[ib].has_box) {
+            if (slot[ia].has_box && slot[ib].has_box && !noct_world_turned(w, ia) &&
+                !noct_world_turned(w, ib)) {
                 ++w->c.narrow.exact_tests;
                 if (noct_swept_slots_apart(&slot[ia], start[ia], ta, &slot[ib], start[ib], tb))
                     decided = -1;

@@ -38,6 +38,8 @@ NOCT_DEFINE_RESIZE(resize_boxes, noct_box6)
 NOCT_DEFINE_RESIZE(resize_u32s, uint32_t)
 NOCT_DEFINE_RESIZE(resize_u8s, uint8_t)
 NOCT_DEFINE_RESIZE(resize_u64s, uint64_t)
+NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
+NOCT_DEFINE_RESIZE(resize_doubles, double)
 NOCT_DEFINE_GROW(grow_hits, noctSweepHit)
 
 bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
@@ -46,6 +48,8 @@ bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
     if (!sw->on)
         return true;
     if (!resize_vec3s(&sw->start, cap) || !resize_vec3s(&sw->from, cap) ||
+        !resize_quats(&sw->start_q, cap) || !resize_quats(&sw->from_q, cap) ||
+        !resize_doubles(&sw->radius, cap) ||
         !resize_u64s(&sw->from_tick, cap) || !resize_boxes(&sw->base, cap) ||
         !resize_vec3s(&sw->grow, cap) || !resize_u32s(&sw->todo, cap) ||
         !resize_u8s(&sw->in_todo, cap))
@@ -63,6 +67,9 @@ void noct_world_free_sweeps(noctWorld *w)
     free(sw->start);
     free(sw->from);
     free(sw->from_tick);
+    free(sw->start_q);
+    free(sw->from_q);
+    free(sw->radius);
     free(sw->base);
     free(sw->grow);
     free(sw->todo);
@@ -77,7 +84,17 @@ void noct_world_sweep_touch(noctWorld *w, uint32_t s, bool made)
         return;
     if (made) {
         memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+        sw->start_q[s] = w->pose[s].q;
         sw->from_tick[s] = UINT64_MAX;
+        /* the radius, for the growth a turn asks */
+        double r2 = 0;
+        const noctMesh *m = noct_world_shape_of(w, s);
+        if (m == NULL)
+            r2 = noct_dot3(w->pose[s].shape.half, w->pose[s].shape.half);
+        else
+            for (size_t i = 0; i < m->nv; ++i)
+                r2 = noct_max(r2, noct_dot3(&m->v[3 * i], &m->v[3 * i]));
+        sw->radius[s] = sqrt(r2) * (1 + 0x1p-40);
     }
     if (!sw->in_todo[s]) {
         sw->in_todo[s] = 1;
@@ -105,7 +122,16 @@ static void wanted(const noctWorld *w, uint32_t s, double g[3])
     const double *start = w->sweeps.start[s], *base = w->sweeps.base[s];
     const bool moves = (w->def.effects & NOCT_EFFECT_MOTION) &&
                        o->type == NOCT_OBJECT_MOVING && o->speed > 0;
-    bool still = !moves && memcmp(start, w->pos[s], 3 * sizeof *start) == 0;
+    const bool turned = memcmp(&w->sweeps.start_q[s], &w->pose[s].q, sizeof(noctQuat)) != 0;
+    bool still = !moves && !turned && memcmp(start, w->pos[s], 3 * sizeof *start) == 0;
+    /* A turn by theta moves no point farther than r theta (the end box
+     * grown by it holds the turning solid). */
+    double arc = 0;
+    if (turned) {
+        const noctQuat *a = &w->sweeps.start_q[s], *b = &w->pose[s].q;
+        double d = fabs(a->x * b->x + a->y * b->y + a->z * b->z + a->w * b->w);
+        arc = w->sweeps.radius[s] * (2 * acos(noct_min(d, 1)) * (1 + 0x1p-40) + 0x1p-24);
+    }
     for (int k = 0; k < 3; ++k) {
         if (still) {
             g[k] = 0;
@@ -117,6 +143,7 @@ static void wanted(const noctWorld *w, uint32_t s, double g[3])
         double d = fabs(w->pos[s][k] - start[k]) * (1 + 0x1p-49);
         if (moves)
             d += 2 * fabs(o->vel[k]);
+        d += arc;
         d += 0x1p-50 * (fabs(base[k]) + fabs(base[k + 3]));
         g[k] = d * (1 + 0x1p-49) + 0x1p-1072;
     }
@@ -177,8 +204,10 @@ static void step_done(noctWorld *w, uint32_t s)
 {
     noct_sweeps *sw = &w->sweeps;
     memcpy(sw->from[s], sw->start[s], sizeof sw->from[s]);
+    sw->from_q[s] = sw->start_q[s];
     sw->from_tick[s] = w->tick;
     memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+    sw->start_q[s] = w->pose[s].q;
 }
 
 void noct_world_sweeps_done(noctWorld *w)
@@ -191,10 +220,19 @@ void noct_world_sweeps_done(noctWorld *w)
     sw->hits_made = false;
 }
 
-/* The continuous level on objects a and b moving from a0 and b0. */
-static noctStatus sweep(noctWorld *w, uint32_t a, const double a0[3], uint32_t b,
-                        const double b0[3], bool *colliding, noctSweepHit *hit)
+/* The continuous level on objects a and b moving from a0, qa and b0, qb:
+ * exact if neither turned, conservative if one did. */
+static noctStatus sweep(noctWorld *w, uint32_t a, const double a0[3], const noctQuat *qa,
+                        uint32_t b, const double b0[3], const noctQuat *qb, bool *colliding,
+                        noctSweepHit *hit)
 {
+    if (memcmp(qa, &w->pose[a].q, sizeof *qa) != 0 || memcmp(qb, &w->pose[b].q, sizeof *qb) != 0) {
+        const noct_turning A = {noct_world_shape_of(w, a), w->pose[a].shape.half, *qa,
+                                w->pose[a].q, a0, w->pos[a]};
+        const noct_turning B = {noct_world_shape_of(w, b), w->pose[b].shape.half, *qb,
+                                w->pose[b].q, b0, w->pos[b]};
+        return noct_collide_turning(&A, &B, colliding, hit, &w->c.narrow);
+    }
     noctStatus st = NOCT_OK;
     const noctMesh *ma = noct_world_mesh(w, a, &st);
     const noctMesh *mb = ma != NULL ? noct_world_mesh(w, b, &st) : NULL;
@@ -206,7 +244,8 @@ static noctStatus sweep(noctWorld *w, uint32_t a, const double a0[3], uint32_t b
 
 noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding)
 {
-    return sweep(w, a, w->sweeps.start[a], b, w->sweeps.start[b], colliding, NULL);
+    return sweep(w, a, w->sweeps.start[a], &w->sweeps.start_q[a], b, w->sweeps.start[b],
+                 &w->sweeps.start_q[b], colliding, NULL);
 }
 
 noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n,
@@ -226,10 +265,12 @@ noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n
          * where it is. */
         for (size_t i = 0; i < began->n; ++i) {
             const uint32_t a = began->p[i].a.index, b = began->p[i].b.index;
-            const double *a0 = sw->from_tick[a] + 1 == w->tick ? sw->from[a] : w->pos[a];
-            const double *b0 = sw->from_tick[b] + 1 == w->tick ? sw->from[b] : w->pos[b];
+            const bool ma = sw->from_tick[a] + 1 == w->tick, mb = sw->from_tick[b] + 1 == w->tick;
             bool colliding;
-            noctStatus st = sweep(w, a, a0, b, b0, &colliding, &sw->hits[i]);
+            noctStatus st = sweep(w, a, ma ? sw->from[a] : w->pos[a],
+                                  ma ? &sw->from_q[a] : &w->pose[a].q, b,
+                                  mb ? sw->from[b] : w->pos[b],
+                                  mb ? &sw->from_q[b] : &w->pose[b].q, &colliding, &sw->hits[i]);
             if (st != NOCT_OK)
                 return noct_fail(err, st, -1, 0, "the began contacts' hits: %s",
                                  noctStatusString(st));

@@ -25,43 +25,6 @@ static double lerp(double a, double b, double s)
     return x + y;
 }
 
-static double dot4(const noctQuat *a, const noctQuat *b)
-{
-    volatile double xx = a->x * b->x, yy = a->y * b->y, zz = a->z * b->z, ww = a->w * b->w;
-    volatile double s = xx + yy;
-    s = s + zz;
-    return s + ww;
-}
-
-static noctQuat slerp(const noctQuat *q0, const noctQuat *q1_, double s)
-{
-    noctQuat q1 = *q1_;
-    double d = dot4(q0, &q1);
-    if (d < 0) {
-        q1 = (noctQuat){-q1.x, -q1.y, -q1.z, -q1.w};
-        d = -d;
-    }
-    double a, b;
-    if (d > 0.9995) {
-        a = 1 - s;
-        b = s;
-    } else {
-        const double t = acos(d), st = sin(t);
-        a = sin((1 - s) * t) / st;
-        b = sin(s * t) / st;
-    }
-    volatile double c[4];
-    const double u[4] = {q0->x, q0->y, q0->z, q0->w}, v[4] = {q1.x, q1.y, q1.z, q1.w};
-    for (int k = 0; k < 4; ++k) {
-        volatile double x = a * u[k];
-        volatile double y = b * v[k];
-        c[k] = x + y;
-    }
-    const noctQuat q = {c[0], c[1], c[2], c[3]};
-    const double n = sqrt(dot4(&q, &q));
-    return (noctQuat){q.x / n, q.y / n, q.z / n, q.w / n};
-}
-
 void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransform *x)
 {
     NOCT_REQUIRE(keys != NULL && n > 0 && x != NULL);
@@ -90,7 +53,7 @@ void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransfor
     const double s = (double)(tick - k0->tick) / (double)(k1->tick - k0->tick);
     for (int c = 0; c < 3; ++c)
         x->p[c] = lerp(k0->x.p[c], k1->x.p[c], s);
-    x->q = slerp(&k0->x.q, &k1->x.q, s);
+    x->q = noct_quat_slerp(&k0->x.q, &k1->x.q, s);
 }
 
 /* ---- the world's tracks ----------------------------------------------------------- */

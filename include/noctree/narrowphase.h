@@ -179,10 +179,15 @@ typedef enum noctSweepFeature {
                                  of the second. */
     NOCT_SWEEP_EDGE_EDGE,   /**< An edge of the first reaches an edge of
                                  the second. */
-    NOCT_SWEEP_END          /**< The swept solids never touch, but the
+    NOCT_SWEEP_END,         /**< The swept solids never touch, but the
                                  solids placed at the end translations do
                                  (time 1): the placements' rounding (see
                                  noctCollideSwept()). */
+    NOCT_SWEEP_NEAR         /**< Conservative level (a turning motion,
+                                 noctCollideSweptTransformed()): at @c
+                                 time the solids came within its distance
+                                 bound of each other; they may touch then
+                                 or not. No features. */
 } noctSweepFeature;
 
 /**
@@ -213,7 +218,14 @@ typedef struct noctSweepHit {
                                    the first edge's line nearest the
                                    second's; for #NOCT_SWEEP_START and
                                    #NOCT_SWEEP_END, the centre of the
-                                   overlap of the placed boxes. */
+                                   overlap of the placed boxes (for
+                                   #NOCT_SWEEP_NEAR, of the boxes at
+                                   @c time grown by the distance). */
+    bool conservative;        /**< Decided by the conservative level (a
+                                   turning motion): a contact reported may
+                                   be a near miss within its distance
+                                   bound, and the time is when they came
+                                   that near; false: exact. */
 } noctSweepHit;
 
 /**
@@ -272,6 +284,60 @@ NOCT_API noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3],
                                      const double tb0[3], const double tb1[3],
                                      bool *colliding, noctSweepHit *hit,
                                      noctNarrowStats *stats);
+
+/**
+ * @brief Decide whether two meshes touch at any time of a rigid motion
+ *        between two transforms: exactly when neither turns,
+ *        conservatively when one does.
+ *
+ * Each mesh moves from its start transform to its end one: its
+ * translation along the straight line, its rotation along the shorter
+ * arc between the two quaternions (spherical interpolation, the angle
+ * growing evenly), about the mesh's own origin. At each end it is placed
+ * as noctCollideTransformed() places it.
+ * - If neither rotation changes (the same quaternion bit for bit), this is
+ *   noctCollideSwept() on the meshes so rotated: exact, and
+ *   @c hit->conservative is false.
+ * - Otherwise the **conservative level**: the exact level at the start
+ *   (and the end); between them conservative advancement: from a time t,
+ *   the motion may go on by an interval in which no point of either solid
+ *   can move farther than their distance at t (every point moves at most
+ *   |t1 - t0| + r theta per unit of time, r the mesh's farthest vertex
+ *   from its origin and theta the turn's angle; the distance is bounded
+ *   below by the margin's proof, narrowphase_distance.c); where they are
+ *   nearer than the interval can be shrunk for, they are reported. It
+ *   never misses a contact, and it reports a contact that does not
+ *   happen only for solids that come within
+ *   eps = max(2^-20 (rA + rB), (sA + sB) / 1024) of each other during the
+ *   motion, where rA, rB are the meshes' radii and sA, sB the farthest
+ *   any of their points moves (|t1 - t0| + r theta), plus 2^-36 of the
+ *   coordinates' magnitude for the rounding of the placements; then
+ *   @c hit->feature is #NOCT_SWEEP_NEAR and @c hit->time when they came
+ *   that near. It tests at most about 25 000 placements, each rotating a
+ *   copy of the mesh (O(V log V) time and memory), so it is slow for
+ *   large meshes that pass near each other; most pairs end at the first
+ *   test.
+ * @param[in]  a        The first mesh.
+ * @param[in]  xa0,xa1  Its start and end transforms.
+ * @param[in]  b        The second mesh (may be @p a).
+ * @param[in]  xb0,xb1  Its start and end transforms.
+ * @param[out] colliding Receives the verdict on #NOCT_OK.
+ * @param[out] hit      Receives when and how, or NULL.
+ * @param[in,out] stats Counters to add this test's work to, or NULL.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p a, @p xa0, @p xa1, @p b, @p xb0, @p xb1 and @p colliding are
+ *      not NULL.
+ * @return #NOCT_OK; the failures of noctTransformCheck() for a bad
+ *         transform; #NOCT_ERR_DEGENERATE (or another mesh status) if
+ *         rounding the rotated vertices made a mesh degenerate;
+ *         #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctCollideSweptTransformed(const noctMesh *a, const noctTransform *xa0,
+                                                const noctTransform *xa1, const noctMesh *b,
+                                                const noctTransform *xb0,
+                                                const noctTransform *xb1, bool *colliding,
+                                                noctSweepHit *hit, noctNarrowStats *stats,
+                                                noctError *err);
 
 /**
  * @brief Return the name of an accuracy level.

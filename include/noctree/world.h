@@ -139,13 +139,18 @@
  *   gas family where nothing passes through anything, is under twice the
  *   exact level's (docs/results.md).
  *
- * **Not exact yet: turning.** An object that turns during a step (spin,
- * a track whose keys turn, a set transform with a new rotation) is swept
- * with its end rotation, from its start translation to its end one: that
- * is not its motion, and a contact the turn makes or avoids may be
- * missed or reported. The conservative level for turning motions is to
- * come; until then a program that needs them sound uses sub-steps at the
- * exact level.
+ * **Turning: conservative.** An object whose rotation changes during a
+ * step (spin, a track whose keys turn, noctWorldSetTransform() with a new
+ * rotation) turns along the shorter arc from its start rotation to its
+ * end one while it translates; a pair with such an object is decided by
+ * the conservative level of noctCollideSweptTransformed(): no contact is
+ * ever missed, and a contact that does not happen is reported only for
+ * objects that come within its distance bound of each other (2^-20 of
+ * their sizes, or 1/1024 of how far their points move in the step,
+ * whichever is larger); noctWorldBeganHits() flags such hits
+ * (noctSweepHit::conservative). Its local box is grown by r theta more, r
+ * the shape's farthest point from its origin and theta the turn's angle.
+ * Pairs of objects that only translate stay exact.
  *
  * **Determinism.** Pair lists are sorted by object index; the same
  * operations give the same results on every run, in both builds and in
