@@ -2,8 +2,8 @@
 /*
  * The built-in families of SCENES.md and noctree-sim(1), one row each in
  * FAMILIES below: the report's planes t_k, the gas of oriented boxes and
- * its kinds (mixed, clusters, static, escape), the robot arms and the
- * keyframed boxes. Each row has the family's name, its size's range and
+ * its kinds (mixed, clusters, static, escape), the bullets that tunnel,
+ * the robot arms and the keyframed boxes. Each row has the family's name, its size's range and
  * its builders (families_internal.h); noctSceneFamily(), the scene files'
  * 'family' lines (noctree-scene(5)), noctSceneWrite() and noctSceneBuild()
  * go through the table, and so do the world.h builders kept for
@@ -32,8 +32,8 @@
 #define PI 3.14159265358979323846
 
 /* The rows of FAMILIES, in the order of the specs' list. */
-enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_NOTCH,
-       FAM_ARMS, FAM_KEYFRAMES, FAM_ROWS };
+enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_BULLETS,
+       FAM_NOTCH, FAM_ARMS, FAM_KEYFRAMES, FAM_ROWS };
 
 /* The kinds of gas: SCENES.md's, mixed sizes, dense clusters, mostly
  * static, escaping outward. */
@@ -296,6 +296,85 @@ static noctStatus fam_gas_add(noctWorld *w, const noct_family *f, long size,
     return NOCT_OK;
 }
 
+/*
+ * bullets:N (noctree-sim(1) defines it): a gas of boxes in the gas's
+ * container with thin static plates, and one object in ten a bullet, a
+ * thin square plate flying along its thin axis at 12.5 times its
+ * thickness a step, so that it passes through plates and other bullets
+ * between two steps. Object i is, by i mod 10: 0 a bullet, 1 and 2 a
+ * plate, else a box; the draws, from splitmix64 seeded 4242, in the order
+ * the code below makes them.
+ */
+#define BULLET_HALF 0.3
+#define BULLET_THIN 0.02
+#define BULLET_SPEED 0.5
+#define PLATE_HALF 1.0
+#define PLATE_THIN 0.02
+
+static noctStatus fam_bullets_add(noctWorld *w, const noct_family *f, long size,
+                                  const noctMesh *const *meshes, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    (void)meshes;
+    noctStatus st = fam_check(f, size, err);
+    if (st != NOCT_OK)
+        return st;
+    const size_t n = (size_t)size;
+    if ((st = noctWorldReserve(w, n, err)) != NOCT_OK)
+        return st;
+    noctObjectId *ids = malloc(n * sizeof *ids);
+    if (ids == NULL)
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const double lb = fam_container(f, n);
+    uint64_t state = 4242;
+    size_t i = 0;
+    for (; i < n; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        for (int k = 0; k < 3; ++k)
+            d.transform.p[k] = lb * fam_draw(&state);
+        if (i % 10 <= 2) {
+            /* a bullet or a plate: thin along axis a, square across it;
+             * a bullet flies along +a or -a */
+            const int a = (int)(3 * fam_draw(&state)) % 3;
+            const bool bullet = i % 10 == 0;
+            for (int k = 0; k < 3; ++k)
+                d.half_extents[k] = k == a ? (bullet ? BULLET_THIN : PLATE_THIN)
+                                           : (bullet ? BULLET_HALF : PLATE_HALF);
+            if (bullet)
+                d.velocity[a] = fam_draw(&state) < 0.5 ? BULLET_SPEED : -BULLET_SPEED;
+            else
+                d.type = NOCT_OBJECT_STATIC;
+        } else {
+            /* a box of the gas: sizes, a turn and a direction as the
+             * gas's, at its speed */
+            for (int k = 0; k < 3; ++k)
+                d.half_extents[k] = 0.25 + 0.5 * fam_draw(&state);
+            const double u1 = fam_draw(&state), u2 = fam_draw(&state), u3 = fam_draw(&state);
+            d.transform.q = (noctQuat){sqrt(1 - u1) * sin(2 * PI * u2),
+                                       sqrt(1 - u1) * cos(2 * PI * u2),
+                                       sqrt(u1) * sin(2 * PI * u3), sqrt(u1) * cos(2 * PI * u3)};
+            const double dz = 2 * fam_draw(&state) - 1, phi = 2 * PI * fam_draw(&state);
+            const double dir[3] = {sqrt(1 - dz * dz) * cos(phi), sqrt(1 - dz * dz) * sin(phi),
+                                   dz};
+            double unit[3];
+            if (!noct_unit_direction(dir, unit)) {
+                st = noct_fail(err, NOCT_ERR_NUMERIC, (long)i, 0, "%s: box %zu has no direction",
+                               f->name, i);
+                break;
+            }
+            for (int k = 0; k < 3; ++k)
+                d.velocity[k] = 0.05 * unit[k];
+        }
+        const double speed = i % 10 == 0 ? BULLET_SPEED : i % 10 <= 2 ? 0 : 0.05;
+        if ((st = noct_world_add_object(w, &d, speed, &ids[i], err)) != NOCT_OK)
+            break;
+    }
+    if (st != NOCT_OK)
+        return fam_unbuild(w, ids, i, st);
+    free(ids);
+    return NOCT_OK;
+}
+
 /* noctSceneFamily() for planes and the gas kinds: the family kept by
  * name and size, and a gas kind's container walls. */
 static noctStatus fam_kept_make(noctScene *s, const noct_family *f, long size, noctError *err)
@@ -492,6 +571,10 @@ static const noct_family FAMILIES[FAM_ROWS] = {
     FAM_KEPT(FAM_CLUSTERS, "clusters", GAS_CLUSTERS, true, 10.0),
     FAM_KEPT(FAM_STATIC, "static", GAS_STATIC, true, 10.0),
     FAM_KEPT(FAM_ESCAPE, "escape", GAS_ESCAPE, false, 10.0),
+    [FAM_BULLETS] = {.name = "bullets", .letter = 'N', .lo = 1, .hi = 10000000,
+                     .unit = "objects", .kind = -1, .walls = true, .volume = 10.0,
+                     .line_size = "objects", .objects = fam_gas_objects,
+                     .add = fam_bullets_add, .make = fam_kept_make},
     [FAM_NOTCH] = {.name = "notch", .letter = 'N', .lo = 1, .hi = 1000000, .unit = "pairs",
                    .kind = -1,
                    .meshes = 1u << FAM_MESH_NOTCH_U | 1u << FAM_MESH_NOTCH_CUBE,

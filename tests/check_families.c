@@ -1238,11 +1238,158 @@ START_TEST(notch_by_definition)
 }
 END_TEST
 
+/* bullets:N against noctree-sim(1)'s definition, read here: every
+ * object where the draws put it, its size, type and velocity; two builds
+ * the same; and the family's point: without sub-steps the exact level,
+ * looking at each step's start and end, misses contacts that continuous
+ * detection finds, and finds none that it does not. */
+static uint64_t bullets_hash(noctScene *sc, noctAccuracy acc, uint64_t *entries)
+{
+    noctError err;
+    noctWorld *w;
+    noctSceneDef(sc)->accuracy = acc;
+    noctSceneDef(sc)->effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS;
+    ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+    uint64_t h = 1469598103934665603u;
+    *entries = 0;
+    for (int step = 0; step < 40; ++step) {
+        ck_assert_int_eq(noctWorldStep(w, &err), NOCT_OK);
+        const noctPair *p;
+        const size_t n = noctWorldColliding(w, &p);
+        *entries += n;
+        for (size_t j = 0; j < n; ++j)
+            h = (h ^ (p[j].a.index * 131u + p[j].b.index + (uint64_t)step * 7919u)) *
+                1099511628211u;
+    }
+    noctWorldDestroy(w);
+    return h;
+}
+
+START_TEST(bullets_by_definition)
+{
+    const size_t n = 200;
+    noctScene *sc;
+    noctError err;
+    ck_assert_int_eq(noctSceneFamily("bullets:200", &sc, &err), NOCT_OK);
+    noctWorld *w;
+    ck_assert_int_eq(noctSceneBuild(sc, &w, &err), NOCT_OK);
+    ck_assert_uint_eq(noctWorldObjectCount(w), n);
+    const noctWorldDef *def = noctSceneDef(sc);
+    const double L = cbrt(10.0 * (double)n);
+    ck_assert(def->effects & NOCT_EFFECT_WALLS);
+    for (int k = 0; k < 3; ++k)
+        ck_assert(def->walls_lo[k] == 0 && def->walls_hi[k] == L);
+    uint64_t s = 4242;
+    size_t bullets = 0, plates = 0, boxes = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const noctObjectId id = {(uint32_t)i, 1};
+        double at[3], p[3], v[3], lo[3], hi[3];
+        noctObjectType type;
+        for (int k = 0; k < 3; ++k)
+            at[k] = L * (double)draw(&s);
+        ck_assert_int_eq(noctWorldObject(w, id, p, NULL), NOCT_OK);
+        ck_assert_msg(p[0] == at[0] && p[1] == at[1] && p[2] == at[2], "object %zu misplaced",
+                      i);
+        ck_assert_int_eq(noctWorldGetVelocity(w, id, v), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetType(w, id, &type), NOCT_OK);
+        if (i % 10 <= 2) {
+            const int a = (int)(3 * draw(&s)) % 3;
+            const bool bullet = i % 10 == 0;
+            ck_assert_int_eq(noctWorldObjectBox(w, id, lo, hi), NOCT_OK);
+            for (int k = 0; k < 3; ++k) {
+                const double h = k == a ? 0.02 : bullet ? 0.3 : 1.0;
+                ck_assert_msg(fabs(hi[k] - lo[k] - 2 * h) <= 1e-12, "object %zu's size", i);
+            }
+            if (bullet) {
+                const double dir = draw(&s) < 0.5 ? 1 : -1;
+                for (int k = 0; k < 3; ++k)
+                    ck_assert(v[k] == (k == a ? 0.5 * dir : 0));
+                ck_assert_int_eq(type, NOCT_OBJECT_MOVING);
+                ++bullets;
+            } else {
+                ck_assert(v[0] == 0 && v[1] == 0 && v[2] == 0);
+                ck_assert_int_eq(type, NOCT_OBJECT_STATIC);
+                ++plates;
+            }
+        } else {
+            for (int k = 0; k < 8; ++k) /* sizes, turn, direction */
+                (void)draw(&s);
+            ck_assert(fabs(sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 0.05) <= 1e-12);
+            ck_assert_int_eq(type, NOCT_OBJECT_MOVING);
+            ++boxes;
+        }
+    }
+    ck_assert_uint_eq(bullets, 20);
+    ck_assert_uint_eq(plates, 40);
+    ck_assert_uint_eq(boxes, 140);
+    noctWorldDestroy(w);
+    /* determinism: the same answers from two scenes */
+    noctScene *again;
+    ck_assert_int_eq(noctSceneFamily("bullets:200", &again, &err), NOCT_OK);
+    uint64_t e1, e2;
+    ck_assert(bullets_hash(sc, NOCT_ACCURACY_EXACT, &e1) ==
+              bullets_hash(again, NOCT_ACCURACY_EXACT, &e2));
+    noctSceneDestroy(again);
+    /* the exact level's step answers (its start and end: the colliding
+     * lists before and after) within the continuous level's, and fewer */
+    noctWorld *x, *c;
+    noctSceneDef(sc)->effects = NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS;
+    noctSceneDef(sc)->accuracy = NOCT_ACCURACY_EXACT;
+    ck_assert_int_eq(noctSceneBuild(sc, &x, &err), NOCT_OK);
+    noctSceneDef(sc)->accuracy = NOCT_ACCURACY_CONTINUOUS;
+    ck_assert_int_eq(noctSceneBuild(sc, &c, &err), NOCT_OK);
+    size_t seen = 0, missed = 0;
+    noctPair *before = NULL;
+    size_t nbefore = 0;
+    for (int step = 0; step < 40; ++step) {
+        ck_assert_int_eq(noctWorldStep(x, &err), NOCT_OK);
+        ck_assert_int_eq(noctWorldStep(c, &err), NOCT_OK);
+        const noctPair *px, *pc;
+        const size_t nx = noctWorldColliding(x, &px), nc = noctWorldColliding(c, &pc);
+        for (int side = 0; side < 2; ++side) {
+            const noctPair *q = side ? before : px;
+            const size_t nq = side ? nbefore : nx;
+            for (size_t j = 0; j < nq; ++j) {
+                bool found = false;
+                for (size_t k = 0; k < nc && !found; ++k)
+                    found = pc[k].a.index == q[j].a.index && pc[k].b.index == q[j].b.index;
+                ck_assert_msg(found, "step %d: exact sees (%u, %u), continuous does not",
+                              step + 1, q[j].a.index, q[j].b.index);
+            }
+        }
+        for (size_t k = 0; k < nc; ++k) {
+            bool found = false;
+            for (int side = 0; side < 2 && !found; ++side) {
+                const noctPair *q = side ? before : px;
+                const size_t nq = side ? nbefore : nx;
+                for (size_t j = 0; j < nq && !found; ++j)
+                    found = pc[k].a.index == q[j].a.index && pc[k].b.index == q[j].b.index;
+            }
+            if (found)
+                ++seen;
+            else
+                ++missed;
+        }
+        free(before);
+        before = malloc((nx ? nx : 1) * sizeof *before);
+        ck_assert_ptr_nonnull(before);
+        memcpy(before, px, nx * sizeof *px);
+        nbefore = nx;
+    }
+    ck_assert_msg(seen > 0 && missed > 0, "bullets: exact saw %zu, missed %zu", seen, missed);
+    free(before);
+    noctWorldDestroy(x);
+    noctWorldDestroy(c);
+    noctSceneDestroy(sc);
+}
+END_TEST
+
 START_TEST(bad_family_specs)
 {
     static const char *const BAD[] = {"arms:0", "arms:9", "keyframes:0", "arms:x",
                                       "arms:", "arms:3x", "arms:-1", "keyframes:100001",
-                                      "keyframes:", "keyframe:5", "arm:3"};
+                                      "keyframes:", "keyframe:5", "arm:3",
+                                      "bullets:0", "bullets:10000001", "bullet:5"};
     for (size_t i = 0; i < sizeof BAD / sizeof *BAD; ++i) {
         static char not_null;
         noctScene *s = (noctScene *)(void *)&not_null;
@@ -1255,7 +1402,8 @@ START_TEST(bad_family_specs)
         ck_assert_msg(err.message[0] != '\0', "'%s': no message", BAD[i]);
     }
     /* the ends of the ranges are families */
-    static const char *const GOOD[] = {"arms:1", "arms:8", "keyframes:1", "keyframes:100000"};
+    static const char *const GOOD[] = {"arms:1", "arms:8", "keyframes:1", "keyframes:100000",
+                                       "bullets:1"};
     for (size_t i = 0; i < sizeof GOOD / sizeof *GOOD; ++i) {
         noctScene *s;
         noctError err;
@@ -1283,7 +1431,7 @@ static Suite *families_suite(void)
     tc = test_case(s, "families", 120, NULL);
     tcase_add_loop_test(tc, arms_world, 0, 2);
     tcase_add_loop_test(tc, keyframes_world, 0, 1);
-    add_tests(tc, notch_by_definition, bad_family_specs);
+    add_tests(tc, notch_by_definition, bullets_by_definition, bad_family_specs);
     return s;
 }
 

@@ -86,7 +86,7 @@ check "bench: the verdict line" \
 check "bench: table1.csv rows" [ "$(wc -l < "$out/table1.csv")" -eq 73 ]
 check "bench: scale.csv rows" [ "$(wc -l < "$out/scale.csv")" -eq 37 ]
 check "bench: table1-stats.csv rows" [ "$(wc -l < "$out/table1-stats.csv")" -eq 5 ]
-check "bench: accuracy.csv rows (3 scenes x 6)" [ "$(wc -l < "$out/accuracy.csv")" -eq 19 ]
+check "bench: accuracy.csv rows (4 scenes x 8 rungs)" [ "$(wc -l < "$out/accuracy.csv")" -eq 33 ]
 check "bench: stages.csv rows" [ "$(wc -l < "$out/stages.csv")" -eq 3 ]
 # Every run of a set found the same contact-begin count, whatever N.
 check "bench: begins agree across N" \
@@ -94,20 +94,30 @@ check "bench: begins agree across N" \
 # Closed forms: t_k in 20 steps has no begins yet (the first at step 51).
 check "bench: no begins within 20 steps" \
     [ "$(awk -F, 'NR > 1 && $9 != 0' "$out/table1.csv" | wc -l)" -eq 0 ]
-# The reference row (exact with sub-steps) has no error against itself;
-# the box level in the notch scene has false collisions.
+# The reference row (exact continuous) has no error against itself; the box
+# level in the notch scene has false collisions; on the tunnelling scene the
+# exact level without sub-steps misses contacts.
 check "bench: reference row is error free" \
-    [ "$(awk -F, '$3 == "exact" && $4 == 1 && ($7 + $8 + $10) != 0' "$out/accuracy.csv" | wc -l)" -eq 0 ]
+    [ "$(awk -F, '$3 == "continuous" && ($8 + $9 + $11 + $12 + $13) != 0' "$out/accuracy.csv" | wc -l)" -eq 0 ]
 check "bench: box level errs on notch" \
-    [ "$(awk -F, '$1 ~ /^notch/ && $3 == "box" && $4 == 0 { print $7 }' "$out/accuracy.csv")" -gt 0 ]
-check "bench: exact level without sub-steps misses on notch" \
-    [ "$(awk -F, '$1 ~ /^notch/ && $3 == "exact" && $4 == 0 { print $7 + $8 }' "$out/accuracy.csv")" -gt 0 ]
+    [ "$(awk -F, '$1 ~ /^notch/ && $3 == "box" { print $8 }' "$out/accuracy.csv")" -gt 0 ]
+check "bench: exact level without sub-steps misses on bullets" \
+    [ "$(awk -F, '$1 ~ /^bullets/ && $3 == "exact" { print $9 }' "$out/accuracy.csv")" -gt 0 ]
+check "bench: error is false + missed + begins missed" \
+    [ "$(awk -F, 'NR > 1 && $13 != $8 + $9 + $11' "$out/accuracy.csv" | wc -l)" -eq 0 ]
+# The broadphase's settings are costs only: the same answers at every N and depth.
+check "bench: accuracy-settings.csv rows (2 rungs x 4 settings)" \
+    [ "$(wc -l < "$out/accuracy-settings.csv")" -eq 9 ]
+check "bench: the broadphase's settings change no answer" \
+    [ "$(awk -F, 'NR > 1 && $6 != 0' "$out/accuracy-settings.csv" | wc -l)" -eq 0 ]
+check "bench: continuous against exact printed" \
+    grep -q '^exact .* ms/step, continuous .* ms/step: .* times' "$tmp/bench.txt"
 # The Pareto front, recomputed here from accuracy.csv: the rungs that no rung
-# of the same scene matches or beats in time and error (false + missed) while
+# of the same scene matches or beats in time and error (the error column) while
 # beating them in one; listed cheapest first, the error falling along it, and
 # ending error free (the reference has no error against itself).
 check "bench: accuracy-front.csv is the Pareto front" \
-    [ "$(awk -F, 'NR > 1 { n++; s[n] = $1; t[n] = $5; e[n] = $7 + $8; r[n] = $12 }
+    [ "$(awk -F, 'NR > 1 { n++; s[n] = $1; t[n] = $6; e[n] = $13; r[n] = $3 }
         END { for (i = 1; i <= n; i++) { d = 0
                 for (j = 1; j <= n; j++)
                     if (s[j] == s[i] && t[j] <= t[i] && e[j] <= e[i] && (t[j] < t[i] || e[j] < e[i])) d = 1
@@ -126,6 +136,8 @@ else
     check "bench: says plots were skipped" grep -q 'plots skipped' "$tmp/bench.txt"
 fi
 expect_prog "$bench" 0 '^usage' --help
+check "bench: --help lists the rungs and the tunnelling scene" \
+    sh -c '"$1" --help | grep -q "exact k=8" && "$1" --help | grep -q "bullets:1000"' sh "$bench"
 expect_prog "$bench" 2 '^noctree-bench: --repeats must be 2 to 64' --repeats 1
 expect_prog "$bench" 2 '^noctree-bench: --sections takes' --sections table1,nope
 expect_prog "$bench" 2 '^noctree-bench: --budget must be' --budget nan

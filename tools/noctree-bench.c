@@ -52,6 +52,12 @@ static const char usage[] =
     "  --help            this text\n"
     "  --version         the version\n"
     "\n"
+    "The accuracy section runs the ladder box, convex, exact, exact k=2, exact\n"
+    "k=4, exact k=8 (fixed sub-steps), exact auto k (--substep's) and continuous\n"
+    "(the reference) on planes:10, gas:1000, notch:64 and bullets:1000 (a tenth\n"
+    "of its objects thin and fast: they tunnel), then the broadphase's settings\n"
+    "on bullets:1000 and continuous against exact on gas:10000.\n"
+    "\n"
     "Exit status: 0 on success, 1 if a run failed, 2 for bad usage.\n";
 
 enum { SEC_TABLE1 = 1, SEC_STAGES = 2, SEC_ACCURACY = 4, SEC_SCALE = 8 };
@@ -743,24 +749,273 @@ static bool stages_section(const char *const *specs, size_t nspecs, int N, int r
 
 /* ---- what accuracy costs -------------------------------------------------------- */
 
-/* The ladder, from the cheapest rung up; the last rung is the reference.
- * Each rung is one row per scene in accuracy.csv and one marker in the
- * chart, whatever their number. */
+/*
+ * The ladder, from the cheapest rung up; the last rung, exact continuous
+ * detection, is the reference. Each rung is one row per scene in
+ * accuracy.csv and one marker in the chart, whatever their number.
+ *
+ * What a rung answers at a step: the pairs it saw touching at some instant
+ * it looked at, from the step's start (the previous step's end) to its
+ * end. The reference looks at every instant of the step's straight-line
+ * motion, start and end included (world.h's continuous level: its
+ * colliding list). The discrete levels look at the start and the end (the
+ * previous and this step's colliding lists); with k fixed sub-steps, at
+ * the start and at the k sub-steps' ends (the bench steps a world whose
+ * velocities are divided by k, k times a step, and joins the colliding
+ * lists); with the automatic k (#NOCT_EFFECT_SUBSTEP), at the start and at
+ * every sub-step the world took: this step's colliding list, the pairs
+ * that began and those that ended at one of its sub-steps. So no rung is
+ * charged for the instant its samples share with the reference's
+ * definition, and every rung's answer comes from the same definition.
+ * A contact begins at a step where a pair is in the answer and was not in
+ * the previous step's: the events of every rung, the reference's included,
+ * follow from its answers the same way.
+ *
+ * The same paths for every rung: detection must not change where objects
+ * go, so the runs have no response (a missed contact would otherwise turn
+ * nothing, and the rungs would be compared on different trajectories), and
+ * the container's walls are applied by the bench after each whole step,
+ * as the world would (an object outside the container on an axis and
+ * moving outward has that velocity component negated), not at every
+ * sub-step. The sub-stepped rungs move by v / k k times, which may differ
+ * from p + v in the last bits.
+ */
 typedef struct rung {
     const char *name; /* the CSV's rung column and the chart's legend (no commas) */
     noctAccuracy accuracy;
     unsigned effects;
+    int k;            /* fixed sub-steps, done by the bench; 1 for none */
 } rung;
 
 static const rung rungs[] = {
-    {"box", NOCT_ACCURACY_BOX, 0},
-    {"convex", NOCT_ACCURACY_CONVEX, 0},
-    {"exact", NOCT_ACCURACY_EXACT, 0},
-    {"box + sub-steps", NOCT_ACCURACY_BOX, NOCT_EFFECT_SUBSTEP},
-    {"convex + sub-steps", NOCT_ACCURACY_CONVEX, NOCT_EFFECT_SUBSTEP},
-    {"exact + sub-steps", NOCT_ACCURACY_EXACT, NOCT_EFFECT_SUBSTEP},
+    {"box", NOCT_ACCURACY_BOX, 0, 1},
+    {"convex", NOCT_ACCURACY_CONVEX, 0, 1},
+    {"exact", NOCT_ACCURACY_EXACT, 0, 1},
+    {"exact k=2", NOCT_ACCURACY_EXACT, 0, 2},
+    {"exact k=4", NOCT_ACCURACY_EXACT, 0, 4},
+    {"exact k=8", NOCT_ACCURACY_EXACT, 0, 8},
+    {"exact auto k", NOCT_ACCURACY_EXACT, NOCT_EFFECT_SUBSTEP, 1},
+    {"continuous", NOCT_ACCURACY_CONTINUOUS, 0, 1},
 };
-enum { NRUNGS = sizeof rungs / sizeof *rungs };
+enum { NRUNGS = sizeof rungs / sizeof *rungs, REFERENCE = NRUNGS - 1 };
+
+static const char *rung_substeps(const rung *r, char buf[16])
+{
+    if (r->effects & NOCT_EFFECT_SUBSTEP)
+        return "auto";
+    snprintf(buf, 16, "%d", r->k);
+    return buf;
+}
+
+/* A step's answer being gathered: pairs, sorted and made unique once. */
+typedef struct pair_set {
+    noctPair *p;
+    size_t n, cap;
+} pair_set;
+
+static bool set_add(pair_set *s, const noctPair *p, size_t n)
+{
+    if (s->n + n > s->cap) {
+        size_t cap = s->cap ? s->cap : 1024;
+        while (cap < s->n + n)
+            cap *= 2;
+        noctPair *q = realloc(s->p, cap * sizeof *q);
+        if (q == NULL)
+            return false;
+        s->p = q;
+        s->cap = cap;
+    }
+    memcpy(s->p + s->n, p, n * sizeof *p);
+    s->n += n;
+    return true;
+}
+
+static int cmp_pair(const void *x, const void *y)
+{
+    const noctPair *a = x, *b = y;
+    if (a->a.index != b->a.index)
+        return a->a.index < b->a.index ? -1 : 1;
+    return (a->b.index > b->b.index) - (a->b.index < b->b.index);
+}
+
+static void set_close(pair_set *s)
+{
+    if (s->n == 0)
+        return;
+    qsort(s->p, s->n, sizeof *s->p, cmp_pair);
+    size_t m = 1;
+    for (size_t i = 1; i < s->n; ++i)
+        if (cmp_pair(&s->p[i], &s->p[m - 1]) != 0)
+            s->p[m++] = s->p[i];
+    s->n = m;
+}
+
+/* The begins that follow from answers: the entries of a whose pair is not
+ * in a at the step before. */
+static bool log_begins(const pair_log *a, pair_log *b)
+{
+    size_t prev = 0, prev_end = 0; /* the step before's entries */
+    for (size_t i = 0; i < a->n;) {
+        size_t j = i;
+        while (j < a->n && a->p[j].step == a->p[i].step)
+            ++j;
+        bool adjacent = i > 0 && a->p[i - 1].step + 1 == a->p[i].step;
+        size_t q = prev;
+        for (size_t e = i; e < j; ++e) {
+            while (adjacent && q < prev_end && cmp_pair_at(&(pair_at){a->p[e].step - 1,
+                                                                  a->p[e].a, a->p[e].b},
+                                                        &a->p[q]) > 0)
+                ++q;
+            bool seen = adjacent && q < prev_end && a->p[q].a == a->p[e].a &&
+                        a->p[q].b == a->p[e].b;
+            if (!seen) {
+                if (b->n == b->cap) {
+                    size_t cap = b->cap ? 2 * b->cap : 1024;
+                    pair_at *r = realloc(b->p, cap * sizeof *r);
+                    if (r == NULL)
+                        return false;
+                    b->p = r;
+                    b->cap = cap;
+                }
+                b->p[b->n++] = a->p[e];
+            }
+        }
+        prev = i;
+        prev_end = j;
+        i = j;
+    }
+    return true;
+}
+
+/* Where a ladder run is done: the broadphase's settings. */
+typedef struct settings {
+    int N, max_depth;
+} settings;
+
+/* Negate the outward velocity components of the objects outside the
+ * container [lo, hi] (the world's walls rule), through the API. */
+static bool apply_walls(noctWorld *w, size_t n, const double lo[3], const double hi[3])
+{
+    for (size_t i = 0; i < n; ++i) {
+        const noctObjectId id = {(uint32_t)i, 1};
+        double p[3], v[3];
+        if (noctWorldGetVelocity(w, id, v) != NOCT_OK ||
+            noctWorldObject(w, id, p, NULL) != NOCT_OK)
+            return false;
+        bool flip = false;
+        for (int k = 0; k < 3; ++k)
+            if ((p[k] < lo[k] && v[k] < 0) || (p[k] > hi[k] && v[k] > 0)) {
+                v[k] = -v[k];
+                flip = true;
+            }
+        if (flip && noctWorldSetVelocity(w, id, v, NULL) != NOCT_OK)
+            return false;
+    }
+    return true;
+}
+
+/*
+ * One run of a rung on a scene at the given settings: its milliseconds per
+ * step (the step calls only) and, when asked, its answers (see above).
+ */
+static bool ladder_run(const char *spec, settings at, const rung *rg, int steps, double *ms,
+                       pair_log *answers)
+{
+    noctScene *scene = NULL;
+    noctWorld *w = NULL;
+    noctError err;
+    pair_set now = {0}, last = {0};
+    bool ok = false;
+    if (noctSceneFamily(spec, &scene, &err) != NOCT_OK) {
+        tool_error("%s: %s", spec, err.message);
+        return false;
+    }
+    noctWorldDef *def = noctSceneDef(scene);
+    const bool walls = (def->effects & NOCT_EFFECT_WALLS) != 0;
+    def->N = at.N;
+    def->max_depth = at.max_depth;
+    def->accuracy = rg->accuracy;
+    def->effects = (def->effects | NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | rg->effects) &
+                   ~(NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS);
+    if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
+        tool_error("%s: %s", spec, err.message);
+        goto done;
+    }
+    const size_t n = noctWorldObjectCount(w);
+    for (size_t i = 0; i < n && rg->k > 1; ++i) {
+        const noctObjectId id = {(uint32_t)i, 1};
+        double v[3];
+        if (noctWorldGetVelocity(w, id, v) != NOCT_OK) {
+            tool_error("%s: object %zu is not at slot %zu", spec, i, i);
+            goto done;
+        }
+        if (v[0] == 0 && v[1] == 0 && v[2] == 0)
+            continue;
+        for (int c = 0; c < 3; ++c)
+            v[c] /= rg->k;
+        if (noctWorldSetVelocity(w, id, v, &err) != NOCT_OK) {
+            tool_error("%s: %s", spec, err.message);
+            goto done;
+        }
+    }
+    const bool continuous = rg->accuracy == NOCT_ACCURACY_CONTINUOUS;
+    const bool auto_k = (rg->effects & NOCT_EFFECT_SUBSTEP) != 0;
+    double elapsed = 0;
+    for (int s = 1; s <= steps; ++s) {
+        now.n = 0;
+        if (!continuous && !auto_k && !set_add(&now, last.p, last.n))
+            goto nomem;
+        for (int j = 0; j < rg->k; ++j) {
+            double t0 = tool_now();
+            noctStatus st = noctWorldStep(w, &err);
+            elapsed += tool_now() - t0;
+            if (st != NOCT_OK) {
+                tool_error("%s, %s, step %d: %s", spec, rg->name, s, err.message);
+                goto done;
+            }
+            if (answers == NULL)
+                continue;
+            const noctPair *p;
+            size_t np = noctWorldColliding(w, &p);
+            if (!set_add(&now, p, np))
+                goto nomem;
+            if (auto_k) {
+                np = noctWorldBegan(w, &p);
+                if (!set_add(&now, p, np))
+                    goto nomem;
+                np = noctWorldEnded(w, &p);
+                if (!set_add(&now, p, np))
+                    goto nomem;
+            }
+            if (j + 1 == rg->k) {
+                np = noctWorldColliding(w, &p);
+                last.n = 0;
+                if (!set_add(&last, p, np))
+                    goto nomem;
+            }
+        }
+        if (walls && !apply_walls(w, n, def->walls_lo, def->walls_hi)) {
+            tool_error("%s: the walls failed", spec);
+            goto done;
+        }
+        if (answers != NULL) {
+            set_close(&now);
+            if (!log_pairs(answers, (uint32_t)s, now.p, now.n))
+                goto nomem;
+        }
+    }
+    *ms = 1e3 * elapsed / steps;
+    ok = true;
+    goto done;
+nomem:
+    tool_error("out of memory");
+done:
+    free(now.p);
+    free(last.p);
+    noctWorldDestroy(w);
+    noctSceneDestroy(scene);
+    return ok;
+}
 
 /*
  * The Pareto front of one scene's rungs, cheapest first: the rungs that no
@@ -785,16 +1040,114 @@ static int pareto_front(const double *ms, const size_t *error, int *front)
     return n;
 }
 
-static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int repeats,
-                             int steps, size_t *objects)
+/* A rung's errors against the reference's answers and begins. */
+typedef struct rung_errors {
+    size_t fx, mx, bmissed, bfalse;
+    uint32_t first;
+} rung_errors;
+
+static rung_errors compare(const pair_log *ans, const pair_log *beg, const pair_log *ref_ans,
+                           const pair_log *ref_beg)
 {
-    printf("\n== What accuracy costs (N = %s, %d steps, time: median of %d runs) ==\n",
-           n_name(N, (char[16]){0}),
+    rung_errors e;
+    uint32_t d;
+    log_diff(ans, ref_ans, &e.fx, &e.mx, &e.first);
+    log_diff(beg, ref_beg, &e.bfalse, &e.bmissed, &d);
+    if (d && (e.first == 0 || d < e.first))
+        e.first = d;
+    return e;
+}
+
+/*
+ * The broadphase's settings on the tunnelling scene: the exact and the
+ * continuous rungs at a few N and maximum depths, their answers against
+ * the same rung's at the defaults (which the ladder ran). Costs only:
+ * each row must differ in nothing.
+ */
+static bool settings_table(const char *spec, int repeats, int steps, const pair_log *exact,
+                           const pair_log *cont)
+{
+    static const settings at[] = {{8, NOCT_AUTO}, {64, NOCT_AUTO}, {NOCT_AUTO, 4},
+                                  {NOCT_N_EXHAUSTIVE, NOCT_AUTO}};
+    static const int which[] = {2, REFERENCE};
+    FILE *f = open_out("accuracy-settings.csv");
+    if (f == NULL)
+        return false;
+    fprintf(f, "scene,rung,N,max_depth,ms_per_step,differs\n");
+    printf("\nThe broadphase's settings on %s: costs that never change the answers\n"
+           "(differs: (pair, step) entries unlike the same rung's at the defaults)\n",
+           spec);
+    printf("%-12s %-6s %-9s %10s %8s\n", "rung", "N", "max depth", "ms/step", "differs");
+    bool ok = true;
+    for (size_t r = 0; r < sizeof which / sizeof *which && ok; ++r)
+        for (size_t a = 0; a < sizeof at / sizeof *at && ok; ++a) {
+            const rung *rg = &rungs[which[r]];
+            double t[MAX_REPEATS];
+            pair_log ans = {0};
+            for (int rep = 0; rep < repeats && ok; ++rep)
+                ok = ladder_run(spec, at[a], rg, steps, &t[rep], rep == 0 ? &ans : NULL);
+            if (!ok) {
+                free(ans.p);
+                break;
+            }
+            size_t x, y;
+            uint32_t d;
+            log_diff(&ans, which[r] == REFERENCE ? cont : exact, &x, &y, &d);
+            char nb[16], db[16];
+            snprintf(db, sizeof db, "%d", at[a].max_depth);
+            const char *depth = at[a].max_depth == NOCT_AUTO ? "auto" : db;
+            double ms = median(t, (size_t)repeats);
+            printf("%-12s %-6s %-9s %10.4f %8zu\n", rg->name, n_name(at[a].N, nb), depth, ms,
+                   x + y);
+            fprintf(f, "%s,%s,%s,%s,%.6g,%zu\n", spec, rg->name, n_name(at[a].N, nb), depth, ms,
+                    x + y);
+            free(ans.p);
+        }
+    fclose(f);
+    return ok;
+}
+
+/* The continuous level's cost on a scene where nothing tunnels, against
+ * the exact level's in the same run (interleaved repeats), with the
+ * family's own effects (walls, response): issue 27's target is at most 2. */
+static bool continuous_cost(const char *spec, int repeats, int steps)
+{
+    double t[2][MAX_REPEATS];
+    const rung *two[2] = {&rungs[2], &rungs[REFERENCE]};
+    for (int rep = 0; rep < repeats; ++rep)
+        for (int c = 0; c < 2; ++c) {
+            run_result r;
+            const int cc = rep % 2 ? 1 - c : c;
+            if (!run(spec, NOCT_AUTO, two[cc]->accuracy, 0, 0, steps, 0, &r, NULL, NULL))
+                return false;
+            t[cc][rep] = 1e3 * r.seconds / steps;
+        }
+    const double e = median(t[0], (size_t)repeats), c = median(t[1], (size_t)repeats);
+    printf("\nContinuous against exact on %s (the family's effects, %d steps, median of %d "
+           "interleaved runs):\nexact %.3f ms/step, continuous %.3f ms/step: %.2f times "
+           "(target: at most 2)\n", spec, steps, repeats, e, c, c / e);
+    FILE *f = open_out("accuracy-continuous.csv");
+    if (f == NULL)
+        return false;
+    fprintf(f, "scene,steps,repeats,exact_ms_per_step,continuous_ms_per_step,ratio\n"
+               "%s,%d,%d,%.6g,%.6g,%.4f\n", spec, steps, repeats, e, c, c / e);
+    fclose(f);
+    return true;
+}
+
+static bool accuracy_section(const char *const *specs, size_t nspecs, int repeats, int steps,
+                             size_t *objects, const char *tunnel, const char *big)
+{
+    printf("\n== What accuracy costs (N and depth auto, %d steps, time: median of %d runs) ==\n",
            steps, repeats);
-    printf("reference: exact with sub-steps. false/missed: colliding (pair, step) entries\n"
-           "the reference lacks/has; begins differing: contact-begin events (each one\n"
-           "reverses two objects) not shared with the reference; diverges: first step that\n"
-           "differs ('-': never)\n");
+    printf("reference: exact continuous. A rung's answer at a step: the pairs it saw\n"
+           "touching from the step's start to its end (the reference: at any instant; the\n"
+           "others: at the start, the end and each sub-step's end). false/missed: (pair,\n"
+           "step) entries the reference lacks/has; begins missed/false: contact-begin\n"
+           "events (a pair in the answer that was not at the step before); error = false\n"
+           "+ missed + begins missed; diverges: first step that differs ('-': never).\n"
+           "No response, and the walls applied after whole steps: every rung follows the\n"
+           "same paths. x exact: time over the exact rung's.\n");
     FILE *f = open_out("accuracy.csv");
     FILE *ff = open_out("accuracy-front.csv");
     if (f == NULL || ff == NULL) {
@@ -804,72 +1157,92 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int N, int
             fclose(ff);
         return false;
     }
-    fprintf(f, "scene,objects,accuracy,substep,ms_per_step,colliding_per_step,false,"
-               "missed,begins,begins_differing,first_divergence,rung\n");
+    fprintf(f, "scene,objects,rung,accuracy,substeps,ms_per_step,colliding_per_step,false,"
+               "missed,begins,begins_missed,begins_false,error,first_divergence\n");
     fprintf(ff, "scene,rung,ms_per_step,error\n");
-    printf("%-12s %-7s %-8s %10s %10s %9s %9s %8s %9s %9s\n", "scene", "level", "substep",
-           "ms/step", "colliding", "false", "missed", "begins", "differing", "diverges");
     size_t total = nspecs * NRUNGS * (size_t)repeats, done = 0;
     bool ok = true;
+    const settings defaults = {NOCT_AUTO, NOCT_AUTO};
+    pair_log keep_exact = {0}, keep_cont = {0};
     for (size_t i = 0; i < nspecs && ok; ++i) {
-        pair_log col[NRUNGS] = {{0}}, beg[NRUNGS] = {{0}};
+        printf("\n%-12s %10s %7s %10s %9s %9s %8s %8s %8s %9s %9s\n", "rung", "ms/step",
+               "x exact", "colliding", "false", "missed", "begins", "b.missed", "b.false",
+               "error", "diverges");
+        pair_log ans[NRUNGS] = {{0}}, beg[NRUNGS] = {{0}};
         double t[NRUNGS][MAX_REPEATS], ms[NRUNGS];
         size_t error[NRUNGS];
-        run_result first[NRUNGS];
         for (int rep = 0; rep < repeats && ok; ++rep)
             for (int c = 0; c < NRUNGS && ok; ++c) {
                 char label[64];
                 snprintf(label, sizeof label, "%s run %d/%d", specs[i], rep + 1, repeats);
                 tool_progress(opt.bar, (long)done++, (long)total, label);
-                run_result r;
-                ok = run(specs[i], N, rungs[c].accuracy, rungs[c].effects, 0, steps, 0, &r,
-                         rep == 0 ? &col[c] : NULL, rep == 0 ? &beg[c] : NULL);
-                t[c][rep] = 1e3 * r.seconds / steps;
-                if (rep == 0)
-                    first[c] = r;
+                ok = ladder_run(specs[i], defaults, &rungs[c], steps, &t[c][rep],
+                                rep == 0 ? &ans[c] : NULL);
             }
         tool_progress(opt.bar, (long)done, (long)total, "");
+        for (int c = 0; c < NRUNGS && ok; ++c)
+            if (!log_begins(&ans[c], &beg[c])) {
+                tool_error("out of memory");
+                ok = false;
+            }
+        if (ok) {
+            noctScene *sc;
+            if (noctSceneFamily(specs[i], &sc, NULL) == NOCT_OK) {
+                noctWorld *w;
+                if (noctSceneBuild(sc, &w, NULL) == NOCT_OK) {
+                    objects[i] = noctWorldObjectCount(w);
+                    noctWorldDestroy(w);
+                }
+                noctSceneDestroy(sc);
+            }
+            printf("%s (%zu objects)\n", scene_label(specs[i], (char[32]){0}), objects[i]);
+        }
         for (int c = 0; c < NRUNGS && ok; ++c) {
-            size_t fx, mx, bx, by;
-            uint32_t d1, d2;
-            log_diff(&col[c], &col[NRUNGS - 1], &fx, &mx, &d1);
-            log_diff(&beg[c], &beg[NRUNGS - 1], &bx, &by, &d2);
-            uint32_t div = d1 && d2 ? (d1 < d2 ? d1 : d2) : d1 ? d1 : d2;
-            char lb[32], ds[16];
-            snprintf(ds, sizeof ds, "%u", div);
-            bool sub = (rungs[c].effects & NOCT_EFFECT_SUBSTEP) != 0;
+            rung_errors e = compare(&ans[c], &beg[c], &ans[REFERENCE], &beg[REFERENCE]);
+            char ds[16], sb[16];
+            snprintf(ds, sizeof ds, "%u", e.first);
             ms[c] = median(t[c], (size_t)repeats);
-            error[c] = fx + mx;
-            printf("%-12s %-7s %-8s %10.4f %10.1f %9zu %9zu %8zu %9zu %9s\n",
-                   scene_label(specs[i], lb), noctAccuracyName(rungs[c].accuracy),
-                   sub ? "yes" : "no", ms[c], (double)col[c].n / steps, fx, mx,
-                   first[c].begins, bx + by, div ? ds : "-");
-            fprintf(f, "%s,%zu,%s,%d,%.6g,%.3f,%zu,%zu,%zu,%zu,%u,%s\n", specs[i],
-                    first[c].objects, noctAccuracyName(rungs[c].accuracy), sub, ms[c],
-                    (double)col[c].n / steps, fx, mx, first[c].begins, bx + by, div,
-                    rungs[c].name);
+            error[c] = e.fx + e.mx + e.bmissed;
+            printf("%-12s %10.4f %7.2f %10.1f %9zu %9zu %8zu %8zu %8zu %9zu %9s\n",
+                   rungs[c].name, ms[c], ms[c] / median(t[2], (size_t)repeats),
+                   (double)ans[c].n / steps, e.fx, e.mx, beg[c].n, e.bmissed, e.bfalse,
+                   error[c], e.first ? ds : "-");
+            fprintf(f, "%s,%zu,%s,%s,%s,%.6g,%.3f,%zu,%zu,%zu,%zu,%zu,%zu,%u\n", specs[i],
+                    objects[i], rungs[c].name, noctAccuracyName(rungs[c].accuracy),
+                    rung_substeps(&rungs[c], sb), ms[c], (double)ans[c].n / steps, e.fx, e.mx,
+                    beg[c].n, e.bmissed, e.bfalse, error[c], e.first);
         }
         if (ok) {
             int front[NRUNGS], nf = pareto_front(ms, error, front);
             for (int k = 0; k < nf; ++k)
                 fprintf(ff, "%s,%s,%.6g,%zu\n", specs[i], rungs[front[k]].name,
                         ms[front[k]], error[front[k]]);
-            objects[i] = first[0].objects;
+        }
+        if (ok && strcmp(specs[i], tunnel) == 0) {
+            keep_exact = ans[2];
+            keep_cont = ans[REFERENCE];
+            ans[2] = ans[REFERENCE] = (pair_log){0};
         }
         for (int c = 0; c < NRUNGS; ++c) {
-            free(col[c].p);
+            free(ans[c].p);
             free(beg[c].p);
         }
         fflush(stdout);
     }
     fclose(f);
     fclose(ff);
+    if (ok)
+        ok = settings_table(tunnel, repeats, steps, &keep_exact, &keep_cont);
+    free(keep_exact.p);
+    free(keep_cont.p);
+    if (ok)
+        ok = continuous_cost(big, repeats, opt.quick ? 10 : 50);
     return ok;
 }
 
 /*
  * The accuracy chart: one panel per scene, time per step against error
- * (false + missed colliding (pair, step) entries), both on log scales.
+ * (false + missed (pair, step) entries + missed begins), both on log scales.
  * The error axis is placed at 1 + error and labelled in errors, so an
  * error-free rung sits on the dashed line marked 0 instead of at minus
  * infinity. One marker per rung, named in a legend under the panels; the
@@ -890,7 +1263,7 @@ static void accuracy_plot(const char *const *specs, const size_t *objects, size_
     fprintf(s, "set terminal svg size %zu,560 dynamic font 'sans,12'\n"
                "set output '%s/accuracy.svg'\n"
                "f = '%s/accuracy.csv'\nfront = '%s/accuracy-front.csv'\n"
-               "err(s) = strcol('scene') eq s ? column('false') + column('missed') + 1 : NaN\n"
+               "err(s) = strcol('scene') eq s ? column('error') + 1 : NaN\n"
                "set logscale y\n",
             nspecs > 2 ? 400 * nspecs : 800, opt.out, opt.out, opt.out);
     char tics[1024];
@@ -899,7 +1272,7 @@ static void accuracy_plot(const char *const *specs, const size_t *objects, size_
     for (int e = 3; e <= 12; ++e)
         fprintf(s, ", \"10^{%d}\" %.0f", e, pow(10, e) + 1);
     fprintf(s, ")\nset multiplot layout 1,%zu title 'What accuracy costs: time against error "
-               "(reference: exact with sub-steps; the Pareto front circled and joined)' "
+               "(reference: exact continuous; the Pareto front circled and joined)' "
                "margins 0.08,0.98,%g,0.86 spacing 0.05,0\n",
             nspecs, bottom);
     for (size_t i = 0; i < nspecs; ++i) {
@@ -925,7 +1298,7 @@ static void accuracy_plot(const char *const *specs, const size_t *objects, size_
                    "set title '%s (%zu objects)'\n",
                 specs[i], tics, scene_label(specs[i], lb), objects[i]);
         if (i == 0)
-            fprintf(s, "set ylabel 'false + missed colliding (pair, step) entries (log of 1 + error)'\n"
+            fprintf(s, "set ylabel 'false + missed (pair, step) entries + missed begins (log of 1 + error)'\n"
                        "set key at screen 0.5, 0.02 center bottom vertical maxrows %d "
                        "reverse Left width 2 samplen 2\n", rows);
         else
@@ -1095,13 +1468,14 @@ int main(int argc, char **argv)
             status = 1;
     }
     if (status == 0 && (opt.sections & SEC_ACCURACY)) {
-        static const char *full[] = {"planes:10", "gas:1000", "notch:64"};
-        static const char *quick[] = {"planes:2", "gas:100", "notch:8"};
-        size_t objects[3];
-        if (accuracy_section(opt.quick ? quick : full, 3, NOCT_AUTO,
-                             opt.repeats ? opt.repeats : 3,
-                             opt.steps ? opt.steps : opt.quick ? 60 : 200, objects))
-            accuracy_plot(opt.quick ? quick : full, objects, 3);
+        static const char *full[] = {"planes:10", "gas:1000", "notch:64", "bullets:1000"};
+        static const char *quick[] = {"planes:2", "gas:100", "notch:8", "bullets:200"};
+        size_t objects[4] = {0};
+        const char *const *specs = opt.quick ? quick : full;
+        if (accuracy_section(specs, 4, opt.repeats ? opt.repeats : 3,
+                             opt.steps ? opt.steps : opt.quick ? 60 : 200, objects, specs[3],
+                             opt.quick ? "gas:1000" : "gas:10000"))
+            accuracy_plot(specs, objects, 4);
         else
             status = 1;
     }
