@@ -781,9 +781,10 @@ START_TEST(bullet_through_a_plate)
     noctMesh *plate, *bullet;
     ck_assert_int_eq(noctMeshCreateBox(0.01, 1, 1, &plate, NULL), NOCT_OK);
     ck_assert_int_eq(noctMeshCreateBox(0.0005, 0.0005, 0.0005, &bullet, NULL), NOCT_OK);
-    /* 1e-3 wide, 1e3 a step, from x = -500 to 500; its face at
-     * -500 + 0.0005 + 1000 t meets the plate's at -0.01 */
-    const long double t = (500.0L - (long double)0.0005 - (long double)0.01) / 1000;
+    /* 1e-3 wide, 1e3 a step, from x = -500 to 500; its face, placed at
+     * fl(-500 + 0.0005), then at that + 1000 t, meets the plate's at -0.01 */
+    volatile double face = -500.0 + 0.0005;
+    const long double t = (-(long double)0.01 - (long double)face) / 1000;
     for (int level = 0; level < 2; ++level) {
         noctObjectId id;
         noctWorld *w = plate_world(level ? NOCT_ACCURACY_EXACT : NOCT_ACCURACY_CONTINUOUS,
