@@ -203,6 +203,8 @@ noctStatus noct_world_stage_grow(noctWorld *w)
 static void step_done(noctWorld *w, uint32_t s)
 {
     noct_sweeps *sw = &w->sweeps;
+    if (sw->from_tick[s] == w->tick)
+        return; /* done already: a mover that was also placed (todo) */
     memcpy(sw->from[s], sw->start[s], sizeof sw->from[s]);
     sw->from_q[s] = sw->start_q[s];
     sw->from_tick[s] = w->tick;

@@ -17,13 +17,14 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
 	tests/check-near tests/check-near-efficient \
 	tests/check-families tests/check-families-efficient \
-	tests/check-readers tests/check-readers-efficient
+	tests/check-readers tests/check-readers-efficient \
+	tests/check-continuous tests/check-continuous-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
 # random rotated scenes (testgeom) and the short direction names. And the
 # tests' allocator (testalloc: counts allocations and fails them on
-# demand), for the three suites that replace malloc.
+# demand), for the four suites that replace malloc.
 if HAVE_CHECK
 check_PROGRAMS += $(suites)
 TESTS += $(suites)
@@ -185,6 +186,19 @@ tests_check_readers_efficient_SOURCES = tests/check_readers.c
 tests_check_readers_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_readers_efficient_CFLAGS = $(check_cflags)
 tests_check_readers_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
+
+# check-continuous: the world's continuous level against the all-pairs
+# brute force of noctCollideSwept() on random worlds (fast movers,
+# teleports, tracks, churn), tunnelling cases of known time, the exact
+# level's lists without motion, and allocations failing in its steps (the
+# tests' allocator; that test skips, saying so, where it is not in force).
+tests_check_continuous_SOURCES = tests/check_continuous.c
+tests_check_continuous_CFLAGS = $(check_cflags)
+tests_check_continuous_LDADD = tests/libtestalloc.la $(check_ldadd)
+tests_check_continuous_efficient_SOURCES = tests/check_continuous.c
+tests_check_continuous_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_continuous_efficient_CFLAGS = $(check_cflags)
+tests_check_continuous_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh
