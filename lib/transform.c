@@ -197,6 +197,11 @@ static double dot4(const noctQuat *a, const noctQuat *b)
 
 noctQuat noct_quat_slerp(const noctQuat *q0, const noctQuat *q1_, double s)
 {
+    /* Two keys of the same rotation, bit for bit: that rotation (a track
+     * that only translates keeps its rotation exactly, so continuous
+     * detection sees no turn). */
+    if (memcmp(q0, q1_, sizeof *q0) == 0)
+        return *q0;
     noctQuat q1 = *q1_;
     double d = dot4(q0, &q1);
     if (d < 0) {

@@ -734,7 +734,7 @@ START_TEST(scenes_written_read_back)
     const char *off = write_text("cube.off", CUBE_OFF);
     char text[2048];
     snprintf(text, sizeof text,
-             "N big\nmax-depth 12\naccuracy exact\nmaintenance rebuild\nsteps 60\nmargin 0.25\n"
+             "N big\nmax-depth 12\naccuracy continuous\nmaintenance rebuild\nsteps 60\nmargin 0.25\n"
              "walls -10 -10 -10 10 10 10\n"
              "mesh a box 0.5 0.25 0.125\nmesh f file %s\n"
              "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
@@ -747,7 +747,7 @@ START_TEST(scenes_written_read_back)
     const char *path = write_text("all.scene", text);
     const char *const specs[] = {"arms:1",     "arms:3",       "keyframes:25", "gas:40",
                                  "mixed:40",   "clusters:40",  "static:40",    "escape:40",
-                                 "planes:1",   "notch:5",      path};
+                                 "planes:1",   "notch:5",      "bullets:30",   path};
     for (size_t i = 0; i < sizeof specs / sizeof *specs; ++i) {
         noctScene *a, *b;
         noctError err;

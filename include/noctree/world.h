@@ -616,8 +616,10 @@ typedef struct noctKeyframe {
  * - each coordinate of the position is `fl(fl(fl(1 - s) p_k) + fl(s p_k+1))`
  *   (linear interpolation, every operation rounded once, no fused
  *   multiply-add);
- * - the rotation is the spherical linear interpolation along the shorter
- *   arc: with `d` the dot product of the two quaternions (((x x + y y) +
+ * - the rotation is, when the two keyframes' quaternions are the same bit
+ *   for bit, that quaternion (a track that only translates keeps its
+ *   rotation exactly); otherwise the spherical linear interpolation along
+ *   the shorter arc: with `d` the dot product of the two quaternions (((x x + y y) +
  *   z z) + w w) and q_k+1 negated when d < 0 (then d = -d), `q = a q_k +
  *   b q_k+1` with `a = 1 - s, b = s` when d > 0.9995 (nearly the same
  *   rotation), else `a = sin((1 - s) t) / sin(t)`, `b = sin(s t) / sin(t)`
