@@ -203,24 +203,31 @@ static noctStatus bits(parser *p, const char *what, uint64_t *out)
 #define OBJECT_SYNTAX                                                                    \
     "expected 'object MESH X Y Z [DX DY DZ SPEED] [velocity VX VY VZ] "                \
     "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK] "     \
-    "[sensor] [spin AX AY AZ DEGREES]'"
+    "[sensor] [spin AX AY AZ DEGREES] [continuous|discrete]'"
 
 /* The object's attributes after its position and legacy motion: each
  * keyword once. */
 static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool legacy)
 {
-    bool seen[6] = {false, false, false, false, false, false};
-    static const char *const KW[6] = {"velocity", "rotate", "type", "filter", "sensor", "spin"};
+    bool seen[8] = {false, false, false, false, false, false, false, false};
+    static const char *const KW[8] = {"velocity", "rotate",     "type",    "filter",
+                                      "sensor",   "spin",       "continuous", "discrete"};
     noctStatus st = NOCT_OK;
     for (; tok != NULL && st == NOCT_OK; tok = next(p)) {
         int k = 0;
-        while (k < 6 && strcmp(tok, KW[k]) != 0)
+        while (k < 8 && strcmp(tok, KW[k]) != 0)
             ++k;
-        if (k == 6)
+        if (k == 8)
             return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
         if (seen[k])
             return perr(p, NOCT_ERR_PARSE, "'%s' given twice", tok);
         seen[k] = true;
+        if (k >= 6) {
+            if (seen[13 - k])
+                return perr(p, NOCT_ERR_PARSE, "an object is continuous or discrete, not both");
+            o->quality = k == 6 ? NOCT_QUALITY_CONTINUOUS : NOCT_QUALITY_DISCRETE;
+            continue;
+        }
         if (k == 0) {
             if (legacy)
                 return perr(p, NOCT_ERR_PARSE,
@@ -272,7 +279,8 @@ static bool is_attribute(const char *tok)
 {
     return strcmp(tok, "velocity") == 0 || strcmp(tok, "rotate") == 0 ||
            strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0 ||
-           strcmp(tok, "sensor") == 0 || strcmp(tok, "spin") == 0;
+           strcmp(tok, "sensor") == 0 || strcmp(tok, "spin") == 0 ||
+           strcmp(tok, "continuous") == 0 || strcmp(tok, "discrete") == 0;
 }
 
 static noctStatus parse_object(parser *p, noctScene *s)
@@ -660,6 +668,7 @@ noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
         d.category = o->category;
         d.mask = o->mask;
         d.sensor = o->sensor;
+        d.quality = o->quality;
         d.angular_velocity = o->spin;
         double speed = 0;
         if (o->has_velocity) {

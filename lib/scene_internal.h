@@ -50,6 +50,7 @@ typedef struct scene_object {
     noctObjectType type;
     uint64_t category, mask;
     bool sensor;
+    noctMotionQuality quality; /* 'continuous' or 'discrete', else the world's */
     noctQuat spin;           /* from 'spin', else the identity */
     bool has_type;           /* 'type' given */
     size_t first_key, nkeys; /* its keyframes in noctScene.keys */

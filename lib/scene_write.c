@@ -103,6 +103,8 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
         if (o->sensor)
             fprintf(f, " sensor");
         turn(f, "spin", &o->spin_turn);
+        if (o->quality != NOCT_QUALITY_WORLD)
+            fprintf(f, o->quality == NOCT_QUALITY_CONTINUOUS ? " continuous" : " discrete");
         fprintf(f, "\n");
         for (size_t j = 0; j < o->nkeys; ++j) {
             const scene_key *k = &s->keys[o->first_key + j];

@@ -74,7 +74,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
     }
     noct_bp_set_rebuild_mode(&w->bp, def->maintenance == NOCT_MAINTAIN_REBUILD);
     w->def = *def;
-    w->sweeps.on = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
+    w->sweeps.world = w->sweeps.on = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
     *world = w;
     return NOCT_OK;
 }

@@ -45,6 +45,7 @@ typedef struct noct_object {
     bool sensor;           /* reports overlaps in the sensor lists only */
     uint8_t type;          /* noctObjectType */
     bool box;              /* a box primitive (its pose holds half-extents) */
+    uint8_t quality;       /* noctMotionQuality */
 } noct_object;
 
 /* What the program set of an object and the step never reads: its
@@ -117,17 +118,20 @@ typedef struct noct_spin {
 } noct_spin;
 
 /*
- * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, world_sweep.c):
+ * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, or objects of
+ * continuous quality; world_sweep.c):
  * per slot, where each object's next step starts (its position at the end
  * of the last step, or where it was made); its mesh's local box (base) and
  * how far each side of it the broadphase's local box is grown (grow), so
  * that its box at the step's end holds its box at the step's start; the
  * objects a program or a stage placed since their growth was last made
  * (todo, with a flag a slot); and the hits of the step's began contacts.
- * All NULL (and unused) in a discrete world.
+ * All NULL (and unused) until the world is continuous or has had a
+ * continuous object (on).
  */
 typedef struct noct_sweeps {
     bool on;
+    bool world;            /* the world's accuracy is continuous */
     double (*start)[3];
     noctQuat *start_q;     /* and its rotation then */
     double (*from)[3];     /* where the last step started, for objects it
@@ -299,11 +303,35 @@ noctStatus noct_world_stage_grow(noctWorld *w);
  * is. */
 void noct_world_sweeps_done(noctWorld *w);
 
-/* Did object s turn since its step started? */
+/* Is object s's motion tested continuously (sweeps on)? */
+static inline bool noct_world_continuous(const noctWorld *w, uint32_t s)
+{
+    const uint8_t q = w->obj[s].quality;
+    return q == NOCT_QUALITY_CONTINUOUS || (q == NOCT_QUALITY_WORLD && w->sweeps.world);
+}
+
+/* Where object s's step starts, as the continuous level takes it: its
+ * start if it is continuous, where it is now if not. */
+static inline const double *noct_world_from(const noctWorld *w, uint32_t s)
+{
+    return noct_world_continuous(w, s) ? w->sweeps.start[s] : w->pos[s];
+}
+
+static inline const noctQuat *noct_world_from_q(const noctWorld *w, uint32_t s)
+{
+    return noct_world_continuous(w, s) ? &w->sweeps.start_q[s] : &w->pose[s].q;
+}
+
+/* Did object s turn since its step started (as continuous detection
+ * takes it)? */
 static inline bool noct_world_turned(const noctWorld *w, uint32_t s)
 {
-    return memcmp(&w->sweeps.start_q[s], &w->pose[s].q, sizeof(noctQuat)) != 0;
+    return memcmp(noct_world_from_q(w, s), &w->pose[s].q, sizeof(noctQuat)) != 0;
 }
+
+/* Make the sweeps' records for every object (the first continuous object
+ * of a discrete world); false without memory (nothing changed). */
+bool noct_world_sweeps_enable(noctWorld *w);
 
 /* The continuous level on a pair over the step under way: its verdict. */
 noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding);

@@ -61,21 +61,25 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
         bool hit;
         int d = 0;
         const double *ta = w->pos[ia], *tb = w->pos[ib];
-        if (start != NULL && (memcmp(start[ia], ta, sizeof start[ia]) != 0 ||
-                              memcmp(start[ib], tb, sizeof start[ib]) != 0 ||
-                              noct_world_turned(w, ia) || noct_world_turned(w, ib))) {
-            /* Either moved: the continuous level. Two boxes first on their
-             * slots: apart over the motion, or colliding at the end or at
-             * the start, as most pairs are decided. */
+        if (start != NULL &&
+            (noct_world_continuous(w, ia) || noct_world_continuous(w, ib)) &&
+            (memcmp(noct_world_from(w, ia), ta, sizeof start[ia]) != 0 ||
+             memcmp(noct_world_from(w, ib), tb, sizeof start[ib]) != 0 ||
+             noct_world_turned(w, ia) || noct_world_turned(w, ib))) {
+            /* Either moved, one of them continuous: the continuous level.
+             * Two boxes first on their slots: apart over the motion, or
+             * colliding at the end or at the start, as most pairs are
+             * decided. */
+            const double *fa = noct_world_from(w, ia), *fb = noct_world_from(w, ib);
             hit = false;
             int decided = 0;
             if (slot[ia].has_box && slot[ib].has_box && !noct_world_turned(w, ia) &&
                 !noct_world_turned(w, ib)) {
                 ++w->c.narrow.exact_tests;
-                if (noct_swept_slots_apart(&slot[ia], start[ia], ta, &slot[ib], start[ib], tb))
+                if (noct_swept_slots_apart(&slot[ia], fa, ta, &slot[ib], fb, tb))
                     decided = -1;
                 else if (noct_box_decide(&slot[ia], ta, &slot[ib], tb) > 0 ||
-                         noct_box_decide(&slot[ia], start[ia], &slot[ib], start[ib]) > 0)
+                         noct_box_decide(&slot[ia], fa, &slot[ib], fb) > 0)
                     decided = 1;
                 if (decided != 0)
                     ++*(decided < 0 ? &w->c.narrow.sat_rejects : &w->c.narrow.witnesses);

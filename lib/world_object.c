@@ -117,6 +117,12 @@ static noctStatus stale(noctObjectId id, noctError *err)
                      "stale or unknown object handle (%u, %u)", id.index, id.generation);
 }
 
+static bool known_quality(noctMotionQuality q)
+{
+    return q == NOCT_QUALITY_WORLD || q == NOCT_QUALITY_DISCRETE ||
+           q == NOCT_QUALITY_CONTINUOUS;
+}
+
 static bool known_type(noctObjectType t)
 {
     return t == NOCT_OBJECT_STATIC || t == NOCT_OBJECT_KINEMATIC || t == NOCT_OBJECT_MOVING;
@@ -329,6 +335,11 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     if (!known_type(def->type))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown object type %d",
                          (int)def->type);
+    if (!known_quality(def->quality))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown motion quality %d",
+                         (int)def->quality);
+    if (def->quality == NOCT_QUALITY_CONTINUOUS && !noct_world_sweeps_enable(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (def->category == 0)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
                          "an object's category is 0: it could never pair");
@@ -385,6 +396,7 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     }
     o->alive = true;
     o->sensor = def->sensor;
+    o->quality = (uint8_t)def->quality;
     w->nsensors += def->sensor;
     noct_world_sweep_touch(w, slot, true);
     set_motion(w, slot, def->type, def->velocity);
@@ -622,6 +634,38 @@ noctStatus noctWorldGetSensor(const noctWorld *w, noctObjectId id, bool *sensor)
     if (o == NULL)
         return NOCT_ERR_INVALID;
     *sensor = o->sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetMotionQuality(noctWorld *w, noctObjectId id, noctMotionQuality quality,
+                                     noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    noct_object *o = noct_world_lookup(w, id);
+    if (o == NULL)
+        return stale(id, err);
+    if (!known_quality(quality))
+        return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown motion quality %d",
+                         (int)quality);
+    if (quality == NOCT_QUALITY_CONTINUOUS && !noct_world_sweeps_enable(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    const bool was = w->sweeps.on && noct_world_continuous(w, id.index);
+    o->quality = (uint8_t)quality;
+    if (w->sweeps.on && noct_world_continuous(w, id.index) != was) {
+        /* its next step starts where it is; its growth follows */
+        noct_world_sweep_touch(w, id.index, true);
+    }
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetMotionQuality(const noctWorld *w, noctObjectId id,
+                                     noctMotionQuality *quality)
+{
+    NOCT_REQUIRE(w != NULL && quality != NULL);
+    const noct_object *o = noct_world_lookup(w, id);
+    if (o == NULL)
+        return NOCT_ERR_INVALID;
+    *quality = (noctMotionQuality)o->quality;
     return NOCT_OK;
 }
 

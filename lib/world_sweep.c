@@ -42,11 +42,11 @@ NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
 NOCT_DEFINE_RESIZE(resize_doubles, double)
 NOCT_DEFINE_GROW(grow_hits, noctSweepHit)
 
-bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
+/* The sweeps' arrays to cap slots, those from slot `from` on marked
+ * neither in todo nor moved by a step. */
+static bool reserve_from(noctWorld *w, uint32_t from, uint32_t cap)
 {
     noct_sweeps *sw = &w->sweeps;
-    if (!sw->on)
-        return true;
     if (!resize_vec3s(&sw->start, cap) || !resize_vec3s(&sw->from, cap) ||
         !resize_quats(&sw->start_q, cap) || !resize_quats(&sw->from_q, cap) ||
         !resize_doubles(&sw->radius, cap) ||
@@ -54,9 +54,50 @@ bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
         !resize_vec3s(&sw->grow, cap) || !resize_u32s(&sw->todo, cap) ||
         !resize_u8s(&sw->in_todo, cap))
         return false;
-    for (uint32_t s = w->capslots; s < cap; ++s) {
+    for (uint32_t s = from; s < cap; ++s) {
         sw->in_todo[s] = 0;
         sw->from_tick[s] = UINT64_MAX;
+    }
+    return true;
+}
+
+bool noct_world_reserve_sweeps(noctWorld *w, uint32_t cap)
+{
+    return !w->sweeps.on || reserve_from(w, w->capslots, cap);
+}
+
+/* Object s's radius, for the growth a turn asks. */
+static void set_radius(noctWorld *w, uint32_t s)
+{
+    double r2 = 0;
+    const noctMesh *m = noct_world_shape_of(w, s);
+    if (m == NULL)
+        r2 = noct_dot3(w->pose[s].shape.half, w->pose[s].shape.half);
+    else
+        for (size_t i = 0; i < m->nv; ++i)
+            r2 = noct_max(r2, noct_dot3(&m->v[3 * i], &m->v[3 * i]));
+    w->sweeps.radius[s] = sqrt(r2) * (1 + 0x1p-40);
+}
+
+bool noct_world_sweeps_enable(noctWorld *w)
+{
+    noct_sweeps *sw = &w->sweeps;
+    if (sw->on)
+        return true;
+    if (w->capslots > 0 && !reserve_from(w, 0, w->capslots))
+        return false; /* what grew is kept, unused, for the next try */
+    sw->on = true;
+    sw->ntodo = 0;
+    for (uint32_t s = 0; s < noct_bp_slots(&w->bp); ++s) {
+        if (!w->obj[s].alive)
+            continue;
+        /* no growth yet: the local box is the mesh's */
+        memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
+        sw->start_q[s] = w->pose[s].q;
+        memcpy(sw->base[s], w->obj[s].mlo, sizeof w->obj[s].mlo);
+        memcpy(sw->base[s] + 3, w->obj[s].mhi, sizeof w->obj[s].mhi);
+        memset(sw->grow[s], 0, sizeof sw->grow[s]);
+        set_radius(w, s);
     }
     return true;
 }
@@ -86,15 +127,7 @@ void noct_world_sweep_touch(noctWorld *w, uint32_t s, bool made)
         memcpy(sw->start[s], w->pos[s], sizeof sw->start[s]);
         sw->start_q[s] = w->pose[s].q;
         sw->from_tick[s] = UINT64_MAX;
-        /* the radius, for the growth a turn asks */
-        double r2 = 0;
-        const noctMesh *m = noct_world_shape_of(w, s);
-        if (m == NULL)
-            r2 = noct_dot3(w->pose[s].shape.half, w->pose[s].shape.half);
-        else
-            for (size_t i = 0; i < m->nv; ++i)
-                r2 = noct_max(r2, noct_dot3(&m->v[3 * i], &m->v[3 * i]));
-        sw->radius[s] = sqrt(r2) * (1 + 0x1p-40);
+        set_radius(w, s);
     }
     if (!sw->in_todo[s]) {
         sw->in_todo[s] = 1;
@@ -122,8 +155,10 @@ static void wanted(const noctWorld *w, uint32_t s, double g[3])
     const double *start = w->sweeps.start[s], *base = w->sweeps.base[s];
     const bool moves = (w->def.effects & NOCT_EFFECT_MOTION) &&
                        o->type == NOCT_OBJECT_MOVING && o->speed > 0;
+    const bool cont = noct_world_continuous(w, s);
     const bool turned = memcmp(&w->sweeps.start_q[s], &w->pose[s].q, sizeof(noctQuat)) != 0;
-    bool still = !moves && !turned && memcmp(start, w->pos[s], 3 * sizeof *start) == 0;
+    /* a discrete object is where the step leaves it: no growth */
+    bool still = !cont || (!moves && !turned && memcmp(start, w->pos[s], 3 * sizeof *start) == 0);
     /* A turn by theta moves no point farther than r theta (the end box
      * grown by it holds the turning solid). */
     double arc = 0;
@@ -246,8 +281,8 @@ static noctStatus sweep(noctWorld *w, uint32_t a, const double a0[3], const noct
 
 noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding)
 {
-    return sweep(w, a, w->sweeps.start[a], &w->sweeps.start_q[a], b, w->sweeps.start[b],
-                 &w->sweeps.start_q[b], colliding, NULL);
+    return sweep(w, a, noct_world_from(w, a), noct_world_from_q(w, a), b,
+                 noct_world_from(w, b), noct_world_from_q(w, b), colliding, NULL);
 }
 
 noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n,
@@ -267,7 +302,19 @@ noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n
          * where it is. */
         for (size_t i = 0; i < began->n; ++i) {
             const uint32_t a = began->p[i].a.index, b = began->p[i].b.index;
-            const bool ma = sw->from_tick[a] + 1 == w->tick, mb = sw->from_tick[b] + 1 == w->tick;
+            const bool ca = noct_world_continuous(w, a), cb = noct_world_continuous(w, b);
+            if (!ca && !cb) {
+                /* a discrete pair: found where the step left it */
+                noctSweepHit *h = &sw->hits[i];
+                memset(h, 0, sizeof *h);
+                memset(h->a, 0xff, sizeof h->a);
+                memset(h->b, 0xff, sizeof h->b);
+                h->time = 1;
+                h->feature = NOCT_SWEEP_END;
+                continue;
+            }
+            const bool ma = ca && sw->from_tick[a] + 1 == w->tick;
+            const bool mb = cb && sw->from_tick[b] + 1 == w->tick;
             bool colliding;
             noctStatus st = sweep(w, a, ma ? sw->from[a] : w->pos[a],
                                   ma ? &sw->from_q[a] : &w->pose[a].q, b,

@@ -84,6 +84,16 @@ sed 's/^steps 4$/steps 4\naccuracy continuous/' "$tmp/tunnel.scene" > "$tmp/tunn
 expect_run 0 '^contact begins 1$' --quiet "$tmp/tunnel-c.scene"
 expect_run 0 '^accuracy continuous$' --quiet "$tmp/tunnel-c.scene"
 expect_run 0 '^accuracy continuous$' --write-scene - "$tmp/tunnel-c.scene"
+# Per object: the cube alone continuous in an exact world sees the wall; a
+# discrete cube in a continuous world does not.
+sed 's/^object cube -3 0 0$/object cube -3 0 0 continuous/' "$tmp/tunnel.scene" > "$tmp/bullet.scene"
+expect_run 0 '^first collision at step 2, time 0.40625 of the step: objects 0 and 1' \
+    --first --quiet "$tmp/bullet.scene"
+expect_run 0 '^object cube -3 0 0 type kinematic continuous$' --write-scene - "$tmp/bullet.scene"
+sed 's/^object cube -3 0 0$/object cube -3 0 0 discrete/' "$tmp/tunnel-c.scene" > "$tmp/slow.scene"
+expect_run 0 '^contact begins 0$' --quiet "$tmp/slow.scene"
+sed 's/^object cube -3 0 0$/object cube -3 0 0 discrete continuous/' "$tmp/tunnel.scene" > "$tmp/both.scene"
+expect_run 2 "both.scene:5: an object is continuous or discrete, not both" "$tmp/both.scene"
 expect_run 2 "--accuracy must be box, convex, exact or continuous, not 'sweep'" --accuracy sweep "$tmp/tunnel.scene"
 sed 's/^steps 4$/accuracy sweep/' "$tmp/tunnel.scene" > "$tmp/bad-acc.scene"
 expect_run 2 "bad-acc.scene:1: unknown accuracy 'sweep' (box, convex, exact or continuous)" "$tmp/bad-acc.scene"

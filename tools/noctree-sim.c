@@ -434,7 +434,8 @@ int main(int argc, char **argv)
         begins += nbegan;
         const noctSweepHit *hits = NULL;
         size_t nhits = 0;
-        if (def->accuracy == NOCT_ACCURACY_CONTINUOUS && nbegan > 0 && (events || first) &&
+        /* with continuous detection (the world's, or an object's) */
+        if (nbegan > 0 && (events || first) &&
             noctWorldBeganHits(w, &hits, &nhits, &err) != NOCT_OK) {
             tool_progress_end();
             tool_error("step %d: %s", s, err.message);

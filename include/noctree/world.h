@@ -289,6 +289,29 @@ typedef enum noctObjectType {
 } noctObjectType;
 
 /**
+ * @brief How an object's motion is tested: at the world's accuracy, or
+ *        continuously whatever the world's (noctObjectDef::quality).
+ *
+ * Continuous detection costs where objects move (world.h, "Continuous
+ * detection"); a program can give it to the few objects that need it
+ * (a thrown tool, a fast arm link: Box2D's bullets, Jolt's linear-cast
+ * motion quality) in a discrete world, or take it from objects that
+ * need none in a continuous one.
+ */
+typedef enum noctMotionQuality {
+    NOCT_QUALITY_WORLD,      /**< As the world's accuracy says: continuous
+                                  in a world of #NOCT_ACCURACY_CONTINUOUS,
+                                  discrete otherwise. */
+    NOCT_QUALITY_DISCRETE,   /**< Tested where each step leaves it, at the
+                                  world's accuracy (the exact level in a
+                                  continuous world). */
+    NOCT_QUALITY_CONTINUOUS  /**< Swept: its pairs are decided over its
+                                  motion during the step, as a continuous
+                                  world decides them, whatever the world's
+                                  accuracy. */
+} noctMotionQuality;
+
+/**
  * @brief Everything an object is made with; fill with
  *        noctDefaultObjectDef(), then set what differs.
  */
@@ -338,6 +361,17 @@ typedef struct noctObjectDef {
                                   colliding list, and never turn anything
                                   back; two sensors are never paired.
                                   Default false. */
+    noctMotionQuality quality; /**< How its motion is tested. A pair is
+                                  decided continuously if either object's
+                                  quality is continuous (its own or, with
+                                  #NOCT_QUALITY_WORLD, the world's); the
+                                  other object is then taken over its own
+                                  motion if it is continuous too, and at
+                                  the step's end pose if not (so a bullet
+                                  meets a discrete object where the step
+                                  leaves that one). A world with any
+                                  continuous object takes no sub-steps.
+                                  Default #NOCT_QUALITY_WORLD. */
 } noctObjectDef;
 
 /**
@@ -942,6 +976,34 @@ NOCT_API noctStatus noctWorldSetSensor(noctWorld *world, noctObjectId id, bool s
  */
 NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
                                        bool *sensor);
+
+/**
+ * @brief Set how an object's motion is tested (noctObjectDef::quality).
+ * @param[in]  world   The world.
+ * @param[in]  id      The object.
+ * @param[in]  quality The quality.
+ * @param[out] err     Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK, the next step tests the object's motion so: from
+ *       where the last step left it, if it becomes continuous.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or an unknown
+ *         quality; #NOCT_ERR_NOMEM when the first continuous object of a
+ *         discrete world needs the world's per-object records of where
+ *         each step starts (then nothing changed).
+ */
+NOCT_API noctStatus noctWorldSetMotionQuality(noctWorld *world, noctObjectId id,
+                                              noctMotionQuality quality, noctError *err);
+
+/**
+ * @brief Get how an object's motion is tested.
+ * @param[in]  world   The world.
+ * @param[in]  id      The object.
+ * @param[out] quality Receives its quality, as set.
+ * @pre @p world and @p quality are not NULL.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetMotionQuality(const noctWorld *world, noctObjectId id,
+                                              noctMotionQuality *quality);
 
 /**
  * @brief Set an object's angular velocity (see #NOCT_EFFECT_SPIN).
