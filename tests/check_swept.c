@@ -995,7 +995,7 @@ START_TEST(random_tetrahedra_grid)
 {
     uint64_t rng = 0x5eed0000u + (uint64_t)_i;
     tally t = {0};
-    for (int n = 0; n < 300; ++n) {
+    for (int n = 0; n < 100; ++n) {
         tmesh a, b;
         motion mo;
         random_tet(&rng, &a, true);
@@ -1016,7 +1016,7 @@ START_TEST(random_tetrahedra_doubles)
 {
     uint64_t rng = 0xd0b1e000u + (uint64_t)_i;
     tally t = {0};
-    for (int n = 0; n < 300; ++n) {
+    for (int n = 0; n < 100; ++n) {
         tmesh a, b;
         motion mo;
         random_tet(&rng, &a, false);
@@ -1060,7 +1060,7 @@ START_TEST(random_boxes_and_ell)
 {
     uint64_t rng = 0xb0c5e000u + (uint64_t)_i;
     tally t = {0};
-    for (int n = 0; n < 60; ++n) {
+    for (int n = 0; n < 30; ++n) {
         tmesh a, b;
         motion mo;
         random_mesh(&rng, &a, (int)test_rand_below(&rng, 5));
@@ -1233,7 +1233,7 @@ START_TEST(end_only)
     tm_box(&b, 0.5, 0.5, 0.5);
     int ends = 0, swept = 0, never = 0;
     uint64_t rng = 77;
-    for (int n = 0; n < 200; ++n) {
+    for (int n = 0; n < 100; ++n) {
         tmesh a;
         const double hx = 0.05 + 0.4 * test_uniform(&rng);
         tm_box(&a, hx, 0.5, 0.5);
@@ -1346,7 +1346,7 @@ static void add3(double out[3], const double t[3], const double w[3])
 START_TEST(invariances)
 {
     uint64_t rng = 0x1a7a0000u + (uint64_t)_i;
-    for (int n = 0; n < 40; ++n) {
+    for (int n = 0; n < 10; ++n) {
         tmesh a, b;
         motion mo, m2;
         random_mesh(&rng, &a, (int)test_rand_below(&rng, 5));
@@ -1401,17 +1401,17 @@ static void scaled_mesh(tmesh *t, int kind, int e, const double R[9])
     }
 }
 
-/* _i: the seed. The same cases at scales 2^-332 (about 1e-100) to 2^330
- * (translations to about 1e100) and at offsets to 2^40: the same verdict
- * and time as at scale 1, and against the oracle. */
+/* _i: the seed. The same cases at scales 2^-332 (about 1e-100) to 2^328
+ * (translations, at most 6 at scale 1, to about 3e99) and at offsets to
+ * 2^40: the same verdict and time as at scale 1, and against the oracle. */
 START_TEST(scales_and_offsets)
 {
     uint64_t rng = 0x5ca1e000u + (uint64_t)_i;
-    static const int exps[] = {-332, -200, -60, -1, 7, 100, 330};
+    static const int exps[] = {-332, -200, -60, -1, 7, 100, 328};
     static const int kinds[] = {0, 1, 3, 4};
     double R[9];
     dyadic_rotation(&rng, R);
-    for (int n = 0; n < 12; ++n) {
+    for (int n = 0; n < 4; ++n) {
         const int ka = kinds[test_rand_below(&rng, 4)], kb = kinds[test_rand_below(&rng, 4)];
         motion mo;
         random_motion(&rng, &mo, true);
@@ -1470,7 +1470,7 @@ END_TEST
 START_TEST(rounded_flat)
 {
     uint64_t rng = 0xf1a70000u + (uint64_t)_i;
-    for (int n = 0; n < 60; ++n) {
+    for (int n = 0; n < 20; ++n) {
         tmesh a, b;
         motion mo;
         random_tet(&rng, &a, false);
@@ -1498,7 +1498,7 @@ START_TEST(near_touch)
 {
     uint64_t rng = 0x7e0c0000u + (uint64_t)_i;
     int touched = 0, missed = 0;
-    for (int n = 0; n < 30; ++n) {
+    for (int n = 0; n < 10; ++n) {
         tmesh a, b;
         motion mo;
         random_mesh(&rng, &a, (int)test_rand_below(&rng, 5));
@@ -1590,24 +1590,26 @@ static Suite *swept_suite(void)
     TCase *tc = test_case(s, "hard cases", 60, NULL);
     add_tests(tc, grazes, sliding, start_in_contact, end_only, tunnelling, bad_translations,
               same_mesh_twice);
+    /* Each random test runs its cases from the seed _i: seed 0 here (under
+     * valgrind too), more seeds in the slow case. */
     tc = test_case(s, "random against the oracle", 120, NULL);
-    tcase_add_loop_test(tc, random_tetrahedra_grid, 0, 3);
-    tcase_add_loop_test(tc, random_tetrahedra_doubles, 0, 2);
-    tcase_add_loop_test(tc, random_boxes_and_ell, 0, 3);
+    tcase_add_loop_test(tc, random_tetrahedra_grid, 0, 1);
+    tcase_add_loop_test(tc, random_tetrahedra_doubles, 0, 1);
+    tcase_add_loop_test(tc, random_boxes_and_ell, 0, 1);
+    tcase_add_loop_test(tc, rounded_flat, 0, 1);
+    tcase_add_loop_test(tc, near_touch, 0, 1);
     tc = test_case(s, "invariances", 120, NULL);
-    tcase_add_loop_test(tc, invariances, 0, 2);
-    tcase_add_loop_test(tc, scales_and_offsets, 0, 2);
-    tcase_add_loop_test(tc, rounded_flat, 0, 2);
-    tcase_add_loop_test(tc, near_touch, 0, 2);
+    tcase_add_loop_test(tc, invariances, 0, 1);
+    tcase_add_loop_test(tc, scales_and_offsets, 0, 1);
 
-    /* More seeds of the same, left out under valgrind. */
-    tc = test_case(s, "random, long", 600, "slow");
-    tcase_add_loop_test(tc, random_tetrahedra_grid, 3, 23);
-    tcase_add_loop_test(tc, random_tetrahedra_doubles, 2, 12);
-    tcase_add_loop_test(tc, random_boxes_and_ell, 3, 23);
-    tcase_add_loop_test(tc, invariances, 2, 12);
-    tcase_add_loop_test(tc, rounded_flat, 2, 22);
-    tcase_add_loop_test(tc, near_touch, 2, 22);
+    tc = test_case(s, "random, more seeds", 300, "slow");
+    tcase_add_loop_test(tc, random_tetrahedra_grid, 1, 6);
+    tcase_add_loop_test(tc, random_tetrahedra_doubles, 1, 4);
+    tcase_add_loop_test(tc, random_boxes_and_ell, 1, 8);
+    tcase_add_loop_test(tc, rounded_flat, 1, 6);
+    tcase_add_loop_test(tc, near_touch, 1, 10);
+    tcase_add_loop_test(tc, invariances, 1, 6);
+    tcase_add_loop_test(tc, scales_and_offsets, 1, 4);
     return s;
 }
 
