@@ -1130,7 +1130,7 @@ START_TEST(grazes)
     double ta0[3] = {-2, 0, -1}, ta1[3] = {0, -2, -1};
     outcome r = check_case(&a, ta0, ta1, &b, zero, zero);
     expect_time(&r, 0.5);
-    ta0[2] = ta1[2] = 0;
+    ta0[2] = ta1[2] = 0; /* edges along z, meeting along a segment */
     r = check_case(&a, ta0, ta1, &b, zero, zero);
     expect_time(&r, 0.5);
     /* an ulp further out: no contact */
@@ -1216,8 +1216,7 @@ START_TEST(sliding)
 END_TEST
 
 /* Contact at the start: overlapping, touching by a face and moving apart,
- * a tetrahedron inside a box, and an end pose that only meets because of
- * rounding is not needed here (see end_only). */
+ * a tetrahedron inside a box (either way round), touching at a corner. */
 START_TEST(start_in_contact)
 {
     tmesh a, b, c;
@@ -1315,8 +1314,8 @@ START_TEST(tunnelling)
         double v0[3] = {0, 0, L / 4}, v1[3] = {0, 0, -L / 4};
         r = check_case(&bullet, b0, b1, &wall, v0, v1);
         ck_assert(r.colliding);
-        /* a random bullet path through a tilted thin wall */
     }
+    /* random bullet paths through a tilted thin wall */
     tmesh tilted;
     uint64_t rng = 99;
     double R[9];
