@@ -1562,6 +1562,16 @@ START_TEST(near_touch)
 }
 END_TEST
 
+/* The reproducers' meshes, freed by the checked teardown, which runs
+ * even when the test fails (as these do), so valgrind sees no leak. */
+static tmesh repro[2];
+
+static void repro_teardown(void)
+{
+    tm_free(&repro[0]);
+    tm_free(&repro[1]);
+}
+
 /* Found by near_touch (a long run's seed 21; seeds 11, 45 and 99 fail
  * alike): the first contact is at s* = 1 - 1/5629499534213121, in
  * (1 - 2^-52, 1), by A's edge {2 8} and B's edge {0 1}, so time 1 is
@@ -1574,16 +1584,14 @@ END_TEST
  * the time's 2^-52. */
 START_TEST(first_features_near_the_end)
 {
-    tmesh a, b;
-    tm_ell(&a, 0.5);
+    tmesh *a = &repro[0], *b = &repro[1];
+    tm_ell(a, 0.5);
     static const double p[12] = {0, -0.5, -0.25, -0.25, 0, 0.25, 1, 1, 0.5, 0.5, 0, 1};
-    ck_assert(tm_tet(&b, p));
+    ck_assert(tm_tet(b, p));
     const double ta0[3] = {0, 0x1p-2, 0}, ta1[3] = {0, 0x1p-2, 0x1.5555555555556p-4};
     const double tb0[3] = {0x1.4p+0, 0x1p-1, 0x1.8p-1};
     const double tb1[3] = {0x1.ffffffffffffep-2, 0x1.8p-1, 0x1.555555555555p-4};
-    check_case(&a, ta0, ta1, &b, tb0, tb1);
-    tm_free(&a);
-    tm_free(&b);
+    check_case(a, ta0, ta1, b, tb0, tb1);
 }
 END_TEST
 
@@ -1592,10 +1600,10 @@ END_TEST
  * same features reported (so not a matter of the last step before 1). */
 START_TEST(first_features_midway)
 {
-    tmesh a, b;
-    tm_ell(&a, 0.5);
+    tmesh *a = &repro[0], *b = &repro[1];
+    tm_ell(a, 0.5);
     static const double p[12] = {0, -0.5, -0.25, -0.25, 0, 0.25, 1, 1, 0.5, 0.5, 0, 1};
-    ck_assert(tm_tet(&b, p));
+    ck_assert(tm_tet(b, p));
     const double ta0[3] = {0, 0x1p-2, 0}, ta1[3] = {0, 0x1p-2, 0x1.5555555555556p-4};
     const double tb0[3] = {0x1.4p+0, 0x1p-1, 0x1.8p-1};
     const double tb1[3] = {0x1.ffffffffffffep-2, 0x1.8p-1, 0x1.555555555555p-4};
@@ -1605,9 +1613,7 @@ START_TEST(first_features_midway)
         ta2[k] = ta0[k] + m * (ta1[k] - ta0[k]);
         tb2[k] = tb0[k] + m * (tb1[k] - tb0[k]);
     }
-    check_case(&a, ta0, ta2, &b, tb0, tb2);
-    tm_free(&a);
-    tm_free(&b);
+    check_case(a, ta0, ta2, b, tb0, tb2);
 }
 END_TEST
 
@@ -1669,7 +1675,11 @@ static Suite *swept_suite(void)
     Suite *s = suite_create("swept");
     TCase *tc = test_case(s, "hard cases", 60, NULL);
     add_tests(tc, grazes, sliding, start_in_contact, end_only, tunnelling, bad_translations,
-              same_mesh_twice, first_features_near_the_end);
+              same_mesh_twice);
+    /* A disagreement with the header, minimised: fails for now. */
+    tc = test_case(s, "features touching first", 0, NULL);
+    tcase_add_checked_fixture(tc, NULL, repro_teardown);
+    tcase_add_test(tc, first_features_near_the_end);
     tcase_add_loop_test(tc, first_features_midway, 0, 3);
     /* Each random test runs its cases from the seed _i: seed 0 here (under
      * valgrind too), more seeds in the slow case. */
