@@ -18,7 +18,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-near tests/check-near-efficient \
 	tests/check-families tests/check-families-efficient \
 	tests/check-readers tests/check-readers-efficient \
-	tests/check-continuous tests/check-continuous-efficient
+	tests/check-continuous tests/check-continuous-efficient \
+	tests/check-swept tests/check-swept-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -75,6 +76,18 @@ tests_check_narrowphase_efficient_SOURCES = tests/check_narrowphase.c
 tests_check_narrowphase_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_narrowphase_efficient_CFLAGS = $(check_cflags)
 tests_check_narrowphase_efficient_LDADD = $(efficient_ldadd)
+
+# check-swept: continuous detection (noctCollideSwept(), narrowphase.h)
+# against the test's own oracle in GMP rationals: every feature pair's
+# first contact as a tiny linear program, the start and end poses by
+# exact edge-triangle tests and ray parity.
+tests_check_swept_SOURCES = tests/check_swept.c
+tests_check_swept_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_swept_LDADD = $(check_ldadd) $(GMP_LIBS)
+tests_check_swept_efficient_SOURCES = tests/check_swept.c
+tests_check_swept_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_swept_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_swept_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
 
 # check-predicates: the private exact predicates, through a test-only build
 # of lib/predicates.c, against integer and GMP arithmetic (no twin).

@@ -197,7 +197,11 @@ typedef enum noctSweepFeature {
  * noctMeshCreate() numbered them): one for a vertex, two for an edge,
  * three for a triangle (a triangle of the mesh's triangulation, its
  * vertices counter-clockwise seen from outside); unused entries are
- * UINT32_MAX. Where several features touch first at once, one of them.
+ * UINT32_MAX. The features reported touch within the time's resolution
+ * of the first contact: their own first contact lies in
+ * [time - 2^-52, time]; where several pairs touch within that step, one
+ * of them (not necessarily the very first: the bisection tells times
+ * apart only to 2^-52).
  */
 typedef struct noctSweepHit {
     double time;              /**< The time of first contact, in [0, 1]:
