@@ -92,12 +92,15 @@ static double radius_of(const noct_turning *T)
 }
 
 /* The turn's angle, rounded up (acos near 1 loses half the digits: the
- * bound adds 2^-24). */
+ * bound adds 2^-24), as a rate: for turns under about 3.6 degrees the
+ * interpolation is normalized linear (noct_quat_slerp()), whose angle
+ * grows unevenly, at most 1 + phi^2 / 12 times the mean rate for a half
+ * angle phi (under 1e-4 there): the bound allows 2^-10 more. */
 static double angle_of(const noct_turning *T)
 {
     const noctQuat *a = &T->q0, *b = &T->q1;
     double d = fabs(a->x * b->x + a->y * b->y + a->z * b->z + a->w * b->w);
-    return 2 * acos(noct_min(d, 1)) * (1 + 0x1p-40) + 0x1p-24;
+    return 2 * acos(noct_min(d, 1)) * (1 + 0x1p-10) + 0x1p-24;
 }
 
 /* How far any point of the shape moves per unit of time, at most. */

@@ -19,7 +19,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-families tests/check-families-efficient \
 	tests/check-readers tests/check-readers-efficient \
 	tests/check-continuous tests/check-continuous-efficient \
-	tests/check-swept tests/check-swept-efficient
+	tests/check-swept tests/check-swept-efficient \
+	tests/check-turning tests/check-turning-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -167,6 +168,18 @@ tests_check_families_efficient_SOURCES = tests/check_families.c
 tests_check_families_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_families_efficient_CFLAGS = $(check_cflags)
 tests_check_families_efficient_LDADD = $(efficient_ldadd)
+
+# check-turning: the conservative level for turning motions
+# (noctCollideSweptTransformed(), continuous worlds whose objects turn)
+# against the test's own slerp, dense exact sampling and long double
+# distances.
+tests_check_turning_SOURCES = tests/check_turning.c
+tests_check_turning_CFLAGS = $(check_cflags)
+tests_check_turning_LDADD = $(check_ldadd)
+tests_check_turning_efficient_SOURCES = tests/check_turning.c
+tests_check_turning_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_turning_efficient_CFLAGS = $(check_cflags)
+tests_check_turning_efficient_LDADD = $(efficient_ldadd)
 
 # check-broadphase: the broadphase on its own (broadphase.h) against an
 # all-pairs test of random boxes, with its queries and filters.

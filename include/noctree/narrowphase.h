@@ -297,11 +297,15 @@ NOCT_API noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3],
  * Each mesh moves from its start transform to its end one: its
  * translation along the straight line, its rotation along the shorter
  * arc between the two quaternions (spherical interpolation, the angle
- * growing evenly), about the mesh's own origin. At each end it is placed
+ * growing evenly; for turns under about 3.6 degrees, normalized linear
+ * interpolation, whose rate stays within 1e-4 of even: noctTrackAt()'s
+ * formula), about the mesh's own origin. At each end it is placed
  * as noctCollideTransformed() places it.
  * - If neither rotation changes (the same quaternion bit for bit), this is
  *   noctCollideSwept() on the meshes so rotated: exact, and
- *   @c hit->conservative is false.
+ *   @c hit->conservative is false (the rotated copy's triangles may name
+ *   an edge from its other end than a mesh made of the same rotated
+ *   vertices would).
  * - Otherwise the **conservative level**: the exact level at the start
  *   (and the end); between them conservative advancement: from a time t,
  *   the motion may go on by an interval in which no point of either solid
