@@ -445,8 +445,9 @@ int main(int argc, char **argv)
         for (size_t i = 0; events && i < nbegan; ++i) {
             if (i < nhits) {
                 char t[32];
-                fprintf(info, "%d begin %u %u at %s\n", s, began[i].a.index, began[i].b.index,
-                        tool_format_double(hits[i].time, t));
+                fprintf(info, "%d begin %u %u at %s%s\n", s, began[i].a.index,
+                        began[i].b.index, tool_format_double(hits[i].time, t),
+                        hits[i].conservative ? " near" : "");
             } else {
                 fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
             }
