@@ -149,6 +149,19 @@ void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 bool noct_swept_slots_apart(const noct_box_slot *a, const double ta0[3], const double ta1[3],
                             const noct_box_slot *b, const double tb0[3], const double tb1[3]);
 
+/* A hit of nothing (noctSweepHit): time 1, no feature, no indices. */
+static inline void noct_sweep_hit_none(noctSweepHit *h)
+{
+    *h = (noctSweepHit){.time = 1, .feature = NOCT_SWEEP_NONE,
+                        .a = {UINT32_MAX, UINT32_MAX, UINT32_MAX},
+                        .b = {UINT32_MAX, UINT32_MAX, UINT32_MAX}};
+}
+
+/* The centre of the overlap of a's box placed at ta and b's at tb (a hit's
+ * point where no feature gives one). */
+void noct_box_overlap_centre(const noctMesh *a, const double ta[3], const noctMesh *b,
+                             const double tb[3], double c[3]);
+
 /* A shape's motion for the conservative level (narrowphase_turning.c):
  * a mesh (unrotated), or a box primitive of half-extents half when shape
  * is NULL, from rotation q0 and translation p0 to q1 and p1. */

@@ -381,8 +381,8 @@ static noctStatus placed_collide(const noctMesh *a, const double ta[3], const no
     return noct_collide_overlapping(a, ta, b, tb, NOCT_ACCURACY_EXACT, hit, st);
 }
 
-static void box_overlap_centre(const noctMesh *a, const double ta[3], const noctMesh *b,
-                               const double tb[3], double c[3])
+void noct_box_overlap_centre(const noctMesh *a, const double ta[3], const noctMesh *b,
+                             const double tb[3], double c[3])
 {
     for (int k = 0; k < 3; ++k) {
         double lo = noct_max(a->lo[k] + ta[k], b->lo[k] + tb[k]);
@@ -447,13 +447,8 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
     if (!finite_in_range(ta0, &st) || !finite_in_range(ta1, &st) ||
         !finite_in_range(tb0, &st) || !finite_in_range(tb1, &st))
         return st;
-    if (hit != NULL) {
-        memset(hit, 0, sizeof *hit);
-        memset(hit->a, 0xff, sizeof hit->a);
-        memset(hit->b, 0xff, sizeof hit->b);
-        hit->time = 1;
-        hit->feature = NOCT_SWEEP_NONE;
-    }
+    if (hit != NULL)
+        noct_sweep_hit_none(hit);
     sweep w = {.A = {a, {ta0[0], ta0[1], ta0[2]}},
                .B = {b, {tb0[0], tb0[1], tb0[2]}},
                .dv = {ta1, ta0, tb1, tb0},
@@ -489,7 +484,7 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
         if (hit != NULL) {
             hit->time = 0;
             hit->feature = NOCT_SWEEP_START;
-            box_overlap_centre(a, ta0, b, tb0, hit->point);
+            noct_box_overlap_centre(a, ta0, b, tb0, hit->point);
         }
         return NOCT_OK;
     }
@@ -522,7 +517,7 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
         if (touch && hit != NULL) {
             hit->time = 1;
             hit->feature = NOCT_SWEEP_END;
-            box_overlap_centre(a, ta1, b, tb1, hit->point);
+            noct_box_overlap_centre(a, ta1, b, tb1, hit->point);
         }
     }
     return st;

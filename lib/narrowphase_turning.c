@@ -147,15 +147,6 @@ static noctStatus placed_meet(const posed *A, const posed *B, bool *hit, noctNar
     return noct_collide_overlapping(A->m, A->t, B->m, B->t, NOCT_ACCURACY_EXACT, hit, st);
 }
 
-static void near_point(const posed *A, const posed *B, double c[3])
-{
-    for (int k = 0; k < 3; ++k) {
-        double lo = noct_max(A->m->lo[k] + A->t[k], B->m->lo[k] + B->t[k]);
-        double hi = noct_min(A->m->hi[k] + A->t[k], B->m->hi[k] + B->t[k]);
-        c[k] = lo + (hi - lo) / 2;
-    }
-}
-
 static void report(noctSweepHit *hit, double time, noctSweepFeature f, const posed *A,
                    const posed *B)
 {
@@ -164,18 +155,14 @@ static void report(noctSweepHit *hit, double time, noctSweepFeature f, const pos
     hit->time = time;
     hit->feature = f;
     hit->conservative = true;
-    near_point(A, B, hit->point);
+    noct_box_overlap_centre(A->m, A->t, B->m, B->t, hit->point);
 }
 
 noctStatus noct_collide_turning(const noct_turning *TA, const noct_turning *TB, bool *colliding,
                                 noctSweepHit *hit, noctNarrowStats *stats)
 {
     if (hit != NULL) {
-        memset(hit, 0, sizeof *hit);
-        memset(hit->a, 0xff, sizeof hit->a);
-        memset(hit->b, 0xff, sizeof hit->b);
-        hit->time = 1;
-        hit->feature = NOCT_SWEEP_NONE;
+        noct_sweep_hit_none(hit);
         hit->conservative = true;
     }
     const double ra = radius_of(TA), rb = radius_of(TB);

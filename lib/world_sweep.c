@@ -306,10 +306,7 @@ noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n
             if (!ca && !cb) {
                 /* a discrete pair: found where the step left it */
                 noctSweepHit *h = &sw->hits[i];
-                memset(h, 0, sizeof *h);
-                memset(h->a, 0xff, sizeof h->a);
-                memset(h->b, 0xff, sizeof h->b);
-                h->time = 1;
+                noct_sweep_hit_none(h);
                 h->feature = NOCT_SWEEP_END;
                 continue;
             }

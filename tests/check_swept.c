@@ -1018,45 +1018,36 @@ static void expect_varied(const tally *t, const char *what)
                   t->cases, t->colliding, t->start, t->later, t->end);
 }
 
-/* _i: the seed; grid tetrahedra and motions (many exact touches,
- * parallel edges and coplanar faces). */
-START_TEST(random_tetrahedra_grid)
+/* Random tetrahedra and motions: on the grid (many exact touches,
+ * parallel edges and coplanar faces), or of random doubles (placement
+ * rounds). */
+static void random_tetrahedra(uint64_t rng, bool grid, const char *what)
 {
-    uint64_t rng = 0x5eed0000u + (uint64_t)_i;
     tally t = {0};
     for (int n = 0; n < 100; ++n) {
         tmesh a, b;
         motion mo;
-        random_tet(&rng, &a, true);
-        random_tet(&rng, &b, true);
-        random_motion(&rng, &mo, true);
+        random_tet(&rng, &a, grid);
+        random_tet(&rng, &b, grid);
+        random_motion(&rng, &mo, grid);
         outcome r = check_motion(&a, &b, &mo);
         count(&t, &r);
         tm_free(&a);
         tm_free(&b);
     }
-    expect_varied(&t, "grid tetrahedra");
+    expect_varied(&t, what);
+}
+
+/* _i: the seed. */
+START_TEST(random_tetrahedra_grid)
+{
+    random_tetrahedra(0x5eed0000u + (uint64_t)_i, true, "grid tetrahedra");
 }
 END_TEST
 
-/* _i: the seed; random double coordinates and translations (placement
- * rounds). */
 START_TEST(random_tetrahedra_doubles)
 {
-    uint64_t rng = 0xd0b1e000u + (uint64_t)_i;
-    tally t = {0};
-    for (int n = 0; n < 100; ++n) {
-        tmesh a, b;
-        motion mo;
-        random_tet(&rng, &a, false);
-        random_tet(&rng, &b, false);
-        random_motion(&rng, &mo, false);
-        outcome r = check_motion(&a, &b, &mo);
-        count(&t, &r);
-        tm_free(&a);
-        tm_free(&b);
-    }
-    expect_varied(&t, "random tetrahedra");
+    random_tetrahedra(0xd0b1e000u + (uint64_t)_i, false, "random tetrahedra");
 }
 END_TEST
 
