@@ -501,9 +501,14 @@ noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3], const double
     bool swept = noct_bvh_pair_walk(&w.A, &w.B, swept_prune, swept_pair, &w);
     if (swept || w.found) {
         *colliding = true;
-        if (hit != NULL) {
+        if (hit != NULL && w.found) {
             hit->time = (double)w.best / (double)HORIZON_ONE;
             describe(&w, ta0, ta1, tb0, tb1, hit);
+        } else if (hit != NULL) {
+            /* the walk's stack overflowed (never within the size limits):
+             * the conservative answer, without a time */
+            hit->feature = NOCT_SWEEP_END;
+            noct_box_overlap_centre(a, ta1, b, tb1, hit->point);
         }
         return NOCT_OK;
     }

@@ -302,6 +302,12 @@ noctStatus noctWorldBeganHits(noctWorld *w, const noctSweepHit **hits, size_t *n
          * where it is. */
         for (size_t i = 0; i < began->n; ++i) {
             const uint32_t a = began->p[i].a.index, b = began->p[i].b.index;
+            if (noct_world_lookup(w, began->p[i].a) == NULL ||
+                noct_world_lookup(w, began->p[i].b) == NULL) {
+                /* removed since the step: no motion to tell */
+                noct_sweep_hit_none(&sw->hits[i]);
+                continue;
+            }
             const bool ca = noct_world_continuous(w, a), cb = noct_world_continuous(w, b);
             if (!ca && !cb) {
                 /* a discrete pair: found where the step left it */

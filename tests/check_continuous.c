@@ -780,6 +780,31 @@ START_TEST(keyframed_cube_through_a_wall)
 }
 END_TEST
 
+/* The began hits asked for after a removal: the pair whose object went
+ * gets no hit, and nothing fails. */
+START_TEST(hits_after_a_removal)
+{
+    noctScene *sc = read_scene(TUNNEL_SCENE);
+    noctWorld *w;
+    noctError err;
+    ck_assert_msg(noctSceneBuild(sc, &w, &err) == NOCT_OK, "%s", err.message);
+    for (int s = 0; s < 2; ++s)
+        ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s", err.message);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldBegan(w, &p), 1);
+    const noctPair began = p[0];
+    ck_assert_int_eq(noctWorldRemove(w, began.b, NULL), NOCT_OK);
+    const noctSweepHit *hits;
+    size_t n;
+    ck_assert_int_eq(noctWorldBeganHits(w, &hits, &n, NULL), NOCT_OK);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_int_eq(hits[0].feature, NOCT_SWEEP_NONE);
+    ck_assert_msg(noctWorldStep(w, &err) == NOCT_OK, "%s", err.message);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+}
+END_TEST
+
 /* A world of a static thin plate (object 0) and another object (1). */
 static noctWorld *plate_world(noctAccuracy level, const noctMesh *plate, const noctMesh *other,
                               const double p[3], noctObjectType type, const double v[3],
@@ -1214,7 +1239,8 @@ int main(void)
     tc = test_case(s, "random worlds, long", 600, "slow");
     tcase_add_loop_test(tc, random_worlds_long, 0, 4);
     tc = test_case(s, "tunnelling", 0, NULL);
-    add_tests(tc, keyframed_cube_through_a_wall, teleport_through_a_wall, bullet_through_a_plate);
+    add_tests(tc, keyframed_cube_through_a_wall, teleport_through_a_wall, bullet_through_a_plate,
+              hits_after_a_removal);
     tc = test_case(s, "discrete levels", 120, NULL);
     add_tests(tc, static_families_as_exact, moving_families_contain_exact,
               spinning_does_not_fail);

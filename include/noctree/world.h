@@ -809,7 +809,8 @@ NOCT_API size_t noctWorldEnded(const noctWorld *world, const noctPair **pairs);
  * after a step does (a bisection of about fifty exact tests per pair, on
  * the features that may touch first), so a world whose program never
  * asks pays nothing for them. Call it before changing the world: the
- * hits are those of the objects as they are now.
+ * hits are those of the objects as they are now (a pair one of whose
+ * objects was removed since gets #NOCT_SWEEP_NONE).
  * @param[in]  world The world.
  * @param[out] hits  Receives the array (valid until the next step,
  *                   change of the world or noctWorldDestroy()), NULL in a
