@@ -54,9 +54,12 @@ static const char usage[] =
     "\n"
     "The accuracy section runs the ladder box, convex, exact, exact k=2, exact\n"
     "k=4, exact k=8 (fixed sub-steps), exact auto k (--substep's) and continuous\n"
-    "(the reference) on planes:10, gas:1000, notch:64 and bullets:1000 (a tenth\n"
-    "of its objects thin and fast: they tunnel), then the broadphase's settings\n"
-    "on bullets:1000 and continuous against exact on gas:10000.\n"
+    "(the reference) on planes:10, gas:1000, notch:64, bullets:1000 (a tenth\n"
+    "of its objects thin and fast: they tunnel) and gas:1000+spin (gas:1000, each\n"
+    "object turning 12 degrees a step: there the continuous rung is conservative,\n"
+    "missed entries count against it and false ones against exact k=32), then\n"
+    "the broadphase's settings on bullets:1000 and continuous against exact on\n"
+    "gas:10000.\n"
     "\n"
     "Exit status: 0 on success, 1 if a run failed, 2 for bad usage.\n";
 
@@ -799,6 +802,60 @@ static const rung rungs[] = {
 };
 enum { NRUNGS = sizeof rungs / sizeof *rungs, REFERENCE = NRUNGS - 1 };
 
+/*
+ * The turning scene, a family's spec followed by "+spin" (gas:1000+spin):
+ * the family's scene, then every object given an angular velocity of
+ * SPIN_DEGREES per step about an axis drawn from its index i: with
+ * h = (i + 1) * 2654435761 mod 2^32, the axis (h mod 1024 - 511.5,
+ * (h >> 10) mod 1024 - 511.5, (h >> 20) mod 1024 - 511.5), never zero; and
+ * #NOCT_EFFECT_SPIN on for every rung (only moving objects turn). With k
+ * fixed sub-steps the bench divides the turn as it divides the velocity:
+ * SPIN_DEGREES / k about the same axis, once per sub-step, so the k
+ * sub-steps' ends lie on the motion the continuous level sweeps (the
+ * shorter arc and the straight line), and k = 2, 4 and 8 sample a subset
+ * of DENSE's instants. The automatic k turns the whole angle before its
+ * first sub-step (#NOCT_EFFECT_SPIN), its samples off that motion.
+ *
+ * No rung is exact there: the continuous level is conservative for turning
+ * objects (world.h, "Turning: conservative"): it misses nothing and may
+ * report near misses. So its row is named CONSERVATIVE, and the scene has
+ * two references: missed entries and begins are counted against the
+ * conservative rung (it misses nothing, so a rung's true misses are at
+ * most these), false entries and begins against DENSE, the exact level at
+ * 32 fixed sub-steps (its samples are contacts, so a rung's true false
+ * reports are at most these; DENSE can itself miss a contact between its
+ * samples). Both counts are upper bounds.
+ */
+enum { SPIN_DEGREES = 12 };
+static const char SPIN_SUFFIX[] = "+spin";
+static const char CONSERVATIVE[] = "conservative continuous";
+static const rung DENSE = {"exact k=32", NOCT_ACCURACY_EXACT, 0, 32};
+
+/* Whether spec is a turning scene; its family's spec into base. */
+static bool spin_scene(const char *spec, char base[64])
+{
+    const size_t n = strlen(spec), m = sizeof SPIN_SUFFIX - 1;
+    const bool spin = n > m && strcmp(spec + n - m, SPIN_SUFFIX) == 0;
+    snprintf(base, 64, "%.*s", (int)(spin ? n - m : n), spec);
+    return spin;
+}
+
+/* A rung's name on a scene: the continuous rung is conservative on a
+ * turning scene. */
+static const char *rung_name(const rung *r, bool spin)
+{
+    return spin && r == &rungs[REFERENCE] ? CONSERVATIVE : r->name;
+}
+
+/* Object i's angular velocity on a turning scene, at k sub-steps a step. */
+static noctStatus spin_of(size_t i, int k, noctQuat *q)
+{
+    const uint32_t h = (uint32_t)((i + 1) * 2654435761u);
+    const double axis[3] = {(double)(h & 1023) - 511.5, (double)(h >> 10 & 1023) - 511.5,
+                            (double)(h >> 20 & 1023) - 511.5};
+    return noctQuatFromAxisAngle(axis, (double)SPIN_DEGREES / k, q);
+}
+
 static const char *rung_substeps(const rung *r, char buf[16])
 {
     if (r->effects & NOCT_EFFECT_SUBSTEP)
@@ -926,7 +983,9 @@ static bool ladder_run(const char *spec, settings at, const rung *rg, int steps,
     noctError err;
     pair_set now = {0}, last = {0};
     bool ok = false;
-    if (noctSceneFamily(spec, &scene, &err) != NOCT_OK) {
+    char base[64];
+    const bool spin = spin_scene(spec, base);
+    if (noctSceneFamily(base, &scene, &err) != NOCT_OK) {
         tool_error("%s: %s", spec, err.message);
         return false;
     }
@@ -935,13 +994,23 @@ static bool ladder_run(const char *spec, settings at, const rung *rg, int steps,
     def->N = at.N;
     def->max_depth = at.max_depth;
     def->accuracy = rg->accuracy;
-    def->effects = (def->effects | NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | rg->effects) &
+    def->effects = (def->effects | NOCT_EFFECT_MOTION | NOCT_EFFECT_EVENTS | rg->effects |
+                    (spin ? NOCT_EFFECT_SPIN : 0)) &
                    ~(NOCT_EFFECT_RESPONSE | NOCT_EFFECT_WALLS);
     if (noctSceneBuild(scene, &w, &err) != NOCT_OK) {
         tool_error("%s: %s", spec, err.message);
         goto done;
     }
     const size_t n = noctWorldObjectCount(w);
+    for (size_t i = 0; i < n && spin; ++i) {
+        noctQuat q;
+        if (spin_of(i, rg->k, &q) != NOCT_OK ||
+            noctWorldSetAngularVelocity(w, (noctObjectId){(uint32_t)i, 1}, &q, &err) !=
+                NOCT_OK) {
+            tool_error("%s: object %zu cannot turn", spec, i);
+            goto done;
+        }
+    }
     for (size_t i = 0; i < n && rg->k > 1; ++i) {
         const noctObjectId id = {(uint32_t)i, 1};
         double v[3];
@@ -970,7 +1039,8 @@ static bool ladder_run(const char *spec, settings at, const rung *rg, int steps,
             noctStatus st = noctWorldStep(w, &err);
             elapsed += tool_now() - t0;
             if (st != NOCT_OK) {
-                tool_error("%s, %s, step %d: %s", spec, rg->name, s, err.message);
+                tool_error("%s, %s, step %d: %s", spec, rung_name(rg, spin), s,
+                           err.message);
                 goto done;
             }
             if (answers == NULL)
@@ -1055,6 +1125,26 @@ static rung_errors compare(const pair_log *ans, const pair_log *beg, const pair_
     log_diff(beg, ref_beg, &e.bfalse, &e.bmissed, &d);
     if (d && (e.first == 0 || d < e.first))
         e.first = d;
+    return e;
+}
+
+/* On a turning scene: missed entries and begins against the conservative
+ * rung's, false ones against DENSE's; the first step that differs from
+ * either reference. */
+static rung_errors compare_turning(const pair_log *ans, const pair_log *beg,
+                                   const pair_log *cons_ans, const pair_log *cons_beg,
+                                   const pair_log *dense_ans, const pair_log *dense_beg)
+{
+    rung_errors e = {0};
+    size_t unused;
+    uint32_t d[4];
+    log_diff(ans, dense_ans, &e.fx, &unused, &d[0]);
+    log_diff(ans, cons_ans, &unused, &e.mx, &d[1]);
+    log_diff(beg, dense_beg, &e.bfalse, &unused, &d[2]);
+    log_diff(beg, cons_beg, &unused, &e.bmissed, &d[3]);
+    for (int i = 0; i < 4; ++i)
+        if (d[i] && (e.first == 0 || d[i] < e.first))
+            e.first = d[i];
     return e;
 }
 
@@ -1147,7 +1237,12 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int repeat
            "events (a pair in the answer that was not at the step before); error = false\n"
            "+ missed + begins missed; diverges: first step that differs ('-': never).\n"
            "No response, and the walls applied after whole steps: every rung follows the\n"
-           "same paths. x exact: time over the exact rung's.\n");
+           "same paths. x exact: time over the exact rung's.\n"
+           "%s (turning, %d degrees a step): no rung is exact; the continuous rung is\n"
+           "conservative (misses nothing, may report near misses). missed and begins\n"
+           "missed: against it; false and begins false: against %s, whose samples\n"
+           "are contacts; both upper bounds. diverges: first step unlike either.\n",
+           specs[nspecs - 1], SPIN_DEGREES, DENSE.name);
     FILE *f = open_out("accuracy.csv");
     FILE *ff = open_out("accuracy-front.csv");
     if (f == NULL || ff == NULL) {
@@ -1160,17 +1255,27 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int repeat
     fprintf(f, "scene,objects,rung,accuracy,substeps,ms_per_step,colliding_per_step,false,"
                "missed,begins,begins_missed,begins_false,error,first_divergence\n");
     fprintf(ff, "scene,rung,ms_per_step,error\n");
-    size_t total = nspecs * NRUNGS * (size_t)repeats, done = 0;
+    size_t total = nspecs * NRUNGS * (size_t)repeats + 1, done = 0;
     bool ok = true;
     const settings defaults = {NOCT_AUTO, NOCT_AUTO};
     pair_log keep_exact = {0}, keep_cont = {0};
     for (size_t i = 0; i < nspecs && ok; ++i) {
-        printf("\n%-12s %10s %7s %10s %9s %9s %8s %8s %8s %9s %9s\n", "rung", "ms/step",
+        printf("\n%-23s %10s %7s %10s %9s %9s %8s %8s %8s %9s %9s\n", "rung", "ms/step",
                "x exact", "colliding", "false", "missed", "begins", "b.missed", "b.false",
                "error", "diverges");
-        pair_log ans[NRUNGS] = {{0}}, beg[NRUNGS] = {{0}};
-        double t[NRUNGS][MAX_REPEATS], ms[NRUNGS];
+        char base[64];
+        const bool spin = spin_scene(specs[i], base);
+        pair_log ans[NRUNGS] = {{0}}, beg[NRUNGS] = {{0}}, dense_ans = {0}, dense_beg = {0};
+        double t[NRUNGS][MAX_REPEATS], ms[NRUNGS], dense_ms = 0;
         size_t error[NRUNGS];
+        if (spin) {
+            tool_progress(opt.bar, (long)done++, (long)total, DENSE.name);
+            ok = ladder_run(specs[i], defaults, &DENSE, steps, &dense_ms, &dense_ans);
+            if (ok && !log_begins(&dense_ans, &dense_beg)) {
+                tool_error("out of memory");
+                ok = false;
+            }
+        }
         for (int rep = 0; rep < repeats && ok; ++rep)
             for (int c = 0; c < NRUNGS && ok; ++c) {
                 char label[64];
@@ -1187,7 +1292,7 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int repeat
             }
         if (ok) {
             noctScene *sc;
-            if (noctSceneFamily(specs[i], &sc, NULL) == NOCT_OK) {
+            if (noctSceneFamily(base, &sc, NULL) == NOCT_OK) {
                 noctWorld *w;
                 if (noctSceneBuild(sc, &w, NULL) == NOCT_OK) {
                     objects[i] = noctWorldObjectCount(w);
@@ -1198,26 +1303,41 @@ static bool accuracy_section(const char *const *specs, size_t nspecs, int repeat
             printf("%s (%zu objects)\n", scene_label(specs[i], (char[32]){0}), objects[i]);
         }
         for (int c = 0; c < NRUNGS && ok; ++c) {
-            rung_errors e = compare(&ans[c], &beg[c], &ans[REFERENCE], &beg[REFERENCE]);
+            rung_errors e =
+                spin ? compare_turning(&ans[c], &beg[c], &ans[REFERENCE], &beg[REFERENCE],
+                                       &dense_ans, &dense_beg)
+                     : compare(&ans[c], &beg[c], &ans[REFERENCE], &beg[REFERENCE]);
             char ds[16], sb[16];
             snprintf(ds, sizeof ds, "%u", e.first);
             ms[c] = median(t[c], (size_t)repeats);
             error[c] = e.fx + e.mx + e.bmissed;
-            printf("%-12s %10.4f %7.2f %10.1f %9zu %9zu %8zu %8zu %8zu %9zu %9s\n",
-                   rungs[c].name, ms[c], ms[c] / median(t[2], (size_t)repeats),
+            printf("%-23s %10.4f %7.2f %10.1f %9zu %9zu %8zu %8zu %8zu %9zu %9s\n",
+                   rung_name(&rungs[c], spin), ms[c], ms[c] / median(t[2], (size_t)repeats),
                    (double)ans[c].n / steps, e.fx, e.mx, beg[c].n, e.bmissed, e.bfalse,
                    error[c], e.first ? ds : "-");
             fprintf(f, "%s,%zu,%s,%s,%s,%.6g,%.3f,%zu,%zu,%zu,%zu,%zu,%zu,%u\n", specs[i],
-                    objects[i], rungs[c].name, noctAccuracyName(rungs[c].accuracy),
+                    objects[i], rung_name(&rungs[c], spin), noctAccuracyName(rungs[c].accuracy),
                     rung_substeps(&rungs[c], sb), ms[c], (double)ans[c].n / steps, e.fx, e.mx,
                     beg[c].n, e.bmissed, e.bfalse, error[c], e.first);
         }
         if (ok) {
             int front[NRUNGS], nf = pareto_front(ms, error, front);
             for (int k = 0; k < nf; ++k)
-                fprintf(ff, "%s,%s,%.6g,%zu\n", specs[i], rungs[front[k]].name,
+                fprintf(ff, "%s,%s,%.6g,%zu\n", specs[i], rung_name(&rungs[front[k]], spin),
                         ms[front[k]], error[front[k]]);
         }
+        if (ok && spin) {
+            size_t dx, dm;
+            uint32_t d;
+            log_diff(&dense_ans, &ans[REFERENCE], &dx, &dm, &d);
+            printf("%s (the false reference, one run): %.4f ms/step, %.1f colliding per "
+                   "step;\nthe conservative rung's entries it lacks: %zu (its misses or the "
+                   "conservative rung's near misses), its entries the conservative rung "
+                   "lacks: %zu\n",
+                   DENSE.name, dense_ms, (double)dense_ans.n / steps, dm, dx);
+        }
+        free(dense_ans.p);
+        free(dense_beg.p);
         if (ok && strcmp(specs[i], tunnel) == 0) {
             keep_exact = ans[2];
             keep_cont = ans[REFERENCE];
@@ -1272,7 +1392,8 @@ static void accuracy_plot(const char *const *specs, const size_t *objects, size_
     for (int e = 3; e <= 12; ++e)
         fprintf(s, ", \"10^{%d}\" %.0f", e, pow(10, e) + 1);
     fprintf(s, ")\nset multiplot layout 1,%zu title 'What accuracy costs: time against error "
-               "(reference: exact continuous; the Pareto front circled and joined)' "
+               "(reference: exact continuous, turning: see the text; the Pareto front circled "
+               "and joined)' "
                "margins 0.08,0.98,%g,0.86 spacing 0.05,0\n",
             nspecs, bottom);
     for (size_t i = 0; i < nspecs; ++i) {
@@ -1316,10 +1437,12 @@ static void accuracy_plot(const char *const *specs, const size_t *objects, size_
                                          "#7f7f7f", "#bcbd22", "#000000", "#aec7e8"};
         enum { NSTYLE = sizeof pt / sizeof *pt };
         for (int c = 0; c < NRUNGS; ++c)
-            fprintf(s, ", \\\n  f using 'ms_per_step':(strcol('rung') eq '%s' ? err('%s') : "
-                       "NaN) with points lc rgb '%s' pt %d ps %g title '%s'",
-                    rungs[c].name, specs[i], lc[c % NSTYLE], pt[c % NSTYLE],
-                    pt[c % NSTYLE] % 2 ? 1.2 : 2.0, rungs[c].name);
+            fprintf(s, ", \\\n  f using 'ms_per_step':(strcol('rung') eq '%s'%s%s%s ? "
+                       "err('%s') : NaN) with points lc rgb '%s' pt %d ps %g title '%s%s'",
+                    rungs[c].name, c == REFERENCE ? " || strcol('rung') eq '" : "",
+                    c == REFERENCE ? CONSERVATIVE : "", c == REFERENCE ? "'" : "", specs[i],
+                    lc[c % NSTYLE], pt[c % NSTYLE], pt[c % NSTYLE] % 2 ? 1.2 : 2.0,
+                    rungs[c].name, c == REFERENCE ? " (conservative when turning)" : "");
         fputc('\n', s);
     }
     fputs("unset multiplot\n", s);
@@ -1468,14 +1591,17 @@ int main(int argc, char **argv)
             status = 1;
     }
     if (status == 0 && (opt.sections & SEC_ACCURACY)) {
-        static const char *full[] = {"planes:10", "gas:1000", "notch:64", "bullets:1000"};
-        static const char *quick[] = {"planes:2", "gas:100", "notch:8", "bullets:200"};
-        size_t objects[4] = {0};
+        /* The turning scene last (accuracy_section() says so). */
+        static const char *full[] = {"planes:10", "gas:1000", "notch:64", "bullets:1000",
+                                     "gas:1000+spin"};
+        static const char *quick[] = {"planes:2", "gas:100", "notch:8", "bullets:200",
+                                      "gas:100+spin"};
+        size_t objects[5] = {0};
         const char *const *specs = opt.quick ? quick : full;
-        if (accuracy_section(specs, 4, opt.repeats ? opt.repeats : 3,
+        if (accuracy_section(specs, 5, opt.repeats ? opt.repeats : 3,
                              opt.steps ? opt.steps : opt.quick ? 60 : 200, objects, specs[3],
                              opt.quick ? "gas:1000" : "gas:10000"))
-            accuracy_plot(specs, objects, 4);
+            accuracy_plot(specs, objects, 5);
         else
             status = 1;
     }
