@@ -872,6 +872,8 @@ typedef struct pair_set {
 
 static bool set_add(pair_set *s, const noctPair *p, size_t n)
 {
+    if (n == 0) /* p may be NULL then, and memcpy may not take it */
+        return true;
     if (s->n + n > s->cap) {
         size_t cap = s->cap ? s->cap : 1024;
         while (cap < s->n + n)
