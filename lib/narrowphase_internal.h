@@ -21,6 +21,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include <noctree/narrowphase.h>
+
 #include "bvh.h"
 #include "internal.h"
 #include "mesh_internal.h"
@@ -201,5 +203,12 @@ static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double
  */
 noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
                          bool *inside);
+
+/* ---- distances (narrowphase_distance.c) ----------------------------------- */
+
+/* noctDistance() of two meshes placed at translations (already rotated). */
+noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                const double tb[3], double max_distance,
+                                noctDistanceResult *result, noctNarrowStats *stats);
 
 #endif /* NOCT_LIB_NARROWPHASE_INTERNAL_H */

@@ -347,6 +347,118 @@ NOCT_API noctStatus noctCollideSweptTransformed(const noctMesh *a, const noctTra
                                                 noctSweepHit *hit, noctNarrowStats *stats,
                                                 noctError *err);
 
+/** @brief A triangle's corners when a distance has none
+ *  (noctDistanceResult). */
+#define NOCT_NO_TRIANGLE UINT32_MAX
+
+/**
+ * @brief How far apart two placed solids are, with a proof
+ *        (noctDistance()).
+ *
+ * The distance of two closed solids is the least distance between a point
+ * of one and a point of the other: 0 when they meet (touching, crossing or
+ * one inside the other), else the distance between their boundaries. It
+ * is a real number that doubles seldom hold; the result brackets it:
+ * `lower <= distance(true) <= upper`, both proved in floating point, and
+ * `distance` is a value in [lower, upper].
+ */
+typedef struct noctDistanceResult {
+    double distance;      /**< The distance, in [lower, upper]: the
+                               distance between the two points (as
+                               computed in floating point), or 0 when the
+                               solids meet; INFINITY when @c beyond. */
+    double lower;         /**< A proved lower bound on the distance:
+                               the least, over the triangle pairs that
+                               could be nearest, of the largest gap
+                               between their projections on the
+                               separating axes that hold the direction
+                               between their nearest points, less an
+                               allowance for its rounding. 0 when the
+                               solids meet. */
+    double upper;         /**< A proved upper bound: the distance between
+                               the two points, rounded up and grown by an
+                               allowance for the rounding of the points
+                               themselves (each lies within 2^-48 of the
+                               coordinates' magnitude of its triangle);
+                               0 when the solids meet; INFINITY when
+                               @c beyond. */
+    double point_a[3];    /**< A point of the first solid's boundary
+                               nearest the second (within the allowance
+                               above), in world coordinates. When they
+                               meet: the centre of the overlap of their
+                               placed bounding boxes, which need not lie
+                               in either (noctCollideContact() tells
+                               where they touch). */
+    double point_b[3];    /**< The point of the second solid nearest
+                               point_a, likewise. */
+    uint32_t triangle_a[3]; /**< The first mesh's triangle holding
+                               point_a, by its vertices' indices (as
+                               noctMeshCreate() numbered them, counter-
+                               clockwise seen from outside), or
+                               #NOCT_NO_TRIANGLE three times when they
+                               meet or are beyond. */
+    uint32_t triangle_b[3]; /**< The second mesh's triangle holding
+                               point_b, likewise. */
+    bool colliding;       /**< The solids meet, decided exactly (as
+                               #NOCT_ACCURACY_EXACT decides it). */
+    bool beyond;          /**< They are proved farther apart than the
+                               call's max_distance, and the search
+                               stopped: lower is max_distance, distance
+                               and upper are INFINITY, and there are no
+                               points (zeros). */
+} noctDistanceResult;
+
+/**
+ * @brief The distance between two placed meshes, their nearest points,
+ *        and a proved interval that holds it.
+ *
+ * Each mesh is placed as noctCollideTransformed() places it (its vertices
+ * fl(fl(R v) + t); a rotated mesh is copied as there). Whether they meet
+ * is decided first, exactly; if they do not, their boundaries' distance is
+ * searched over the two bounding-volume hierarchies, pruning node pairs
+ * whose boxes are farther apart than the best distance so far, and the
+ * lower bound is proved over the triangle pairs the best distance leaves.
+ *
+ * **Accuracy.** `lower <= true distance <= upper`, always, and
+ * `upper - lower` is at most a few roundings of the coordinates: at most
+ * 2^-40 of the largest magnitude of the two placed bounding boxes' corners
+ * (or of the distance, if larger). So `distance` is within that of the
+ * true distance, at any scale the meshes allow (a mesh 1e-100 across or
+ * placed 2^40 from the origin: the error is relative to its coordinates,
+ * not to the distance between them, as for every floating-point
+ * distance). Touching solids give 0 exactly. The answer does not depend on
+ * the order of the two meshes: swapping them swaps the points and keeps
+ * every number.
+ *
+ * **Cost.** The exact collision test, then a walk of the two hierarchies
+ * near their nearest triangles; the lower bound walks the same pairs
+ * again. A finite @p max_distance lets the search stop once it proves the
+ * meshes farther apart (a planner's "is the arm within 0.3 of anything").
+ * @param[in]  a            The first mesh.
+ * @param[in]  xa           Its transform.
+ * @param[in]  b            The second mesh (may be @p a).
+ * @param[in]  xb           Its transform.
+ * @param[in]  max_distance Where the search may stop: 0 or more, or
+ *                          INFINITY for no limit.
+ * @param[out] result       Receives the answer on #NOCT_OK.
+ * @param[in,out] stats     Counters to add this test's work to, or NULL.
+ * @param[out] err          Receives the details of a failure, or NULL.
+ * @pre @p a, @p xa, @p b, @p xb and @p result are not NULL.
+ * @post On #NOCT_OK, @p *result is as #noctDistanceResult says: either
+ *       @c beyond and the true distance exceeds @p max_distance, or
+ *       lower <= distance <= upper bracket the true distance within the
+ *       accuracy above.
+ * @return #NOCT_OK; the failures of noctTransformCheck() for a bad
+ *         transform; #NOCT_ERR_NONFINITE or #NOCT_ERR_INVALID for a NaN or
+ *         negative @p max_distance; #NOCT_ERR_DEGENERATE (or another mesh
+ *         status) if rounding the rotated vertices made a mesh degenerate;
+ *         #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
+                                 const noctTransform *xb, double max_distance,
+                                 noctDistanceResult *result, noctNarrowStats *stats,
+                                 noctError *err);
+
 /**
  * @brief Return the name of an accuracy level.
  * @param[in] accuracy A level.
