@@ -255,7 +255,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/corpus/narrowphase/raw-huge \
 	tests/fuzz/corpus/narrowphase/tet-vs-rotated
 
-# The peer benchmark's event counts against SCENES.md, when it is built.
+# The peer benchmark's event counts against noctree-families(7)'s known answers, when it is built.
 if HAVE_PEERS
 TESTS += tests/peers.sh
 endif

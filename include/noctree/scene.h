@@ -5,8 +5,8 @@
  * or a built-in family.
  *
  * @defgroup noctree_scene Scenes
- * @brief Scene files (noctree-scene(5)) and the built-in families of
- * SCENES.md.
+ * @brief Scene files (noctree-scene(5)) and the built-in families
+ * (noctree-families(7), the @ref families "families page").
  *
  * A scene is read completely, and every line checked, before anything is
  * built: a file with an error anywhere yields an error naming the file,

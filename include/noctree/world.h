@@ -36,7 +36,7 @@
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every moving object in at
  *    least one pair that began colliding reverses its velocity once
- *    (SCENES.md's contact-begin rule; the colliding set before step 1 is
+ *    (noctree-families(7)'s contact-begin rule; the colliding set before step 1 is
  *    empty). Sensors' pairs never turn anything.
  *
  * **Layers.** The world is built on the broadphase (broadphase.h): its
@@ -1207,7 +1207,7 @@ NOCT_API noctStatus noctWorldObjectBox(const noctWorld *world, noctObjectId id,
                                        double lo[3], double hi[3]);
 
 /**
- * @brief Add the report's test set t_k (SCENES.md, "Planes").
+ * @brief Add the report's test set t_k (noctree-families(7), THE PLANES).
  *
  * Two planes of axis-aligned unit cubes, each a central cube and @p k
  * rings, moving towards each other at speed 0.05.
@@ -1241,11 +1241,11 @@ NOCT_API noctStatus noctWorldAddPlanes(noctWorld *world, int k,
 NOCT_API double noctGasContainerSize(size_t n);
 
 /**
- * @brief Add the scene gas_n (SCENES.md, "Gas"): n oriented boxes with
+ * @brief Add the scene gas_n (noctree-families(7), FAMILIES OF BOXES): n oriented boxes with
  *        seeded random sizes, orientations, positions and directions.
  *
  * The boxes are box primitives (noctObjectDef::half_extents) turned by
- * the scene's quaternions, whose matrices are SCENES.md's bit for bit
+ * the scene's quaternions, whose matrices are noctree-families(7)'s bit for bit
  * (noctQuatToMatrix() computes that formula and, for these quaternions,
  * neither normalises nor snaps: all 10 000 000 were checked); room for
  * them is reserved at once (noctWorldReserve()). For the scene as
