@@ -22,7 +22,10 @@ noctree_sources = \
 	lib/mesh.c \
 	lib/mesh_box.c \
 	lib/mesh_internal.h \
+	lib/meshdata.c \
+	lib/meshdata_internal.h \
 	lib/meshio.c \
+	lib/meshio_assimp.c \
 	lib/narrowphase.c \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
@@ -50,8 +53,8 @@ noctree_sources = \
 	lib/world_step.c \
 	lib/world_sweep.c \
 	lib/world_track.c
-noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS)
-noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(LIBS)
+noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS) $(ASSIMP_CFLAGS)
+noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(ASSIMP_LIBS) $(LIBS)
 
 noctree_ldflags = -version-info $(NOCT_LT_VERSION) -no-undefined
 if HAVE_LD_VERSION_SCRIPT

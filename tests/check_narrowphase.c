@@ -953,7 +953,8 @@ START_TEST(read_off_files)
     char five[sizeof CUBE_OFF];
     strcpy(five, CUBE_OFF);
     memcpy(strstr(five, "8 6 12"), "8 5 12", 6);
-    expect_read("open2.off", five, NOCT_ERR_OPEN, "is used by 1 polygon");
+    expect_read("open2.off", five, NOCT_ERR_OPEN, ": not a closed, consistently oriented "
+                "solid: 4 boundary edges, first 1-3, 1-5, 3-7 (noctree-mesh(1)");
     expect_read("count.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 1\n",
                 NOCT_ERR_PARSE, ":7: expected a face's corner count");
 }
@@ -982,8 +983,8 @@ START_TEST(read_obj_files)
     char reversed[sizeof CUBE_OBJ];
     strcpy(reversed, CUBE_OBJ);
     memcpy(strstr(reversed, "f 1 5 6 2"), "f 2 6 5 1", 9);
-    expect_read("reversed.obj", reversed, NOCT_ERR_ORIENTATION, "in the same direction");
-    expect_read("format.stl", "solid\n", NOCT_ERR_INVALID, "unknown mesh format");
+    expect_read("reversed.obj", reversed, NOCT_ERR_ORIENTATION, "4 misoriented edges, first 0-1");
+    expect_read("format.xyzw", "solid\n", NOCT_ERR_INVALID, "unknown mesh format");
     noctMesh *m = (noctMesh *)1;
     noctError err;
     ck_assert_int_eq(noctMeshRead("/nonexistent/dir/x.off", &m, &err), NOCT_ERR_IO);

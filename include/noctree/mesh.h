@@ -4,8 +4,9 @@
  * @brief Polyhedral solids given as closed polygon meshes.
  *
  * @defgroup noctree_mesh Meshes
- * @brief Closed polygon meshes: creation, validation, built-in boxes and
- * OFF and Wavefront OBJ readers.
+ * @brief Closed polygon meshes: creation, validation, built-in boxes, and
+ * mesh files (OFF, OBJ, STL, PLY and, through assimp, glTF and others):
+ * reading, welding, inspection and repair.
  *
  * A #noctMesh is an immutable solid: the closed region bounded by a closed,
  * consistently oriented surface of planar convex polygons, in its own
@@ -166,33 +167,373 @@ NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
                                               noctMesh **mesh, noctError *err);
 
 /**
- * @brief Read a mesh from a file in OFF or Wavefront OBJ format.
+ * @brief Read a solid from a mesh file: noctMeshDataRead(), an exact weld
+ *        (noctMeshDataWeld() with tolerance 0) and noctMeshCreateFromData().
  *
- * The format is chosen by the file name's extension (`.off` or `.obj`,
- * in any case). OFF: the `OFF` header, the counts line, vertices, then
- * polygons as `n i1 ... in` (colours after the indices are ignored), `#`
- * comments. OBJ: `v x y z [w]` and `f` lines whose corners are `i`,
- * `i/t`, `i/t/n` or `i//n` with 1-based or negative (relative) indices;
- * other statements (`vn`, `vt`, `o`, `g`, `s`, `usemtl`, `mtllib`) are
- * ignored. Either way the result is validated as by noctMeshCreate(). A
- * NUL byte anywhere in a line that is read is a syntax error.
+ * Every format of noctMeshDataRead() is read. The exact weld makes a
+ * triangle soup (an STL file, or an OBJ, OFF or PLY file that repeats
+ * each triangle's corners) into a connected surface and drops the
+ * polygons it collapses; nothing else is changed: coordinates that differ
+ * by one unit in the last place stay apart. The result must then be a
+ * closed, consistently oriented solid as noctMeshCreate() requires. A
+ * surface that is not closed or not consistently oriented fails with
+ * #NOCT_ERR_OPEN or #NOCT_ERR_ORIENTATION and a message that says why
+ * (noctMeshDataInspect()'s reason, such as `12 boundary edges, first
+ * 3-7, ...`, vertex numbers counted after the weld) and names the
+ * noctree-mesh(1) tool, which inspects and repairs mesh files.
  * @param[in]  path Path of the file.
  * @param[out] mesh Receives the new mesh on success, NULL otherwise.
  * @param[out] err  Receives the details of a failure, or NULL. Its message
  *                  starts with the path and, for syntax and validation
- *                  errors, the line.
+ *                  errors, the line (for binary files, the triangle or
+ *                  face).
  * @pre @p path and @p mesh are not NULL.
  * @post On #NOCT_OK, @p *mesh is the file's mesh. Nothing is kept from a
  *       file that fails.
- * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
- *         #NOCT_ERR_NOMEM if memory runs out, opening and reading lines
- *         included (never a file read short); #NOCT_ERR_INVALID for an
- *         unknown extension; #NOCT_ERR_PARSE for a syntax error;
- *         #NOCT_ERR_TOO_LARGE for more vertices or polygon corners than
- *         the limits; any status of noctMeshCreate().
+ * @return #NOCT_OK; any status of noctMeshDataRead(); any status of
+ *         noctMeshCreate().
  */
 NOCT_API noctStatus noctMeshRead(const char *path, noctMesh **mesh,
                                  noctError *err);
+
+/**
+ * @name Mesh data: what a mesh file holds, before it is a solid
+ *
+ * A #noctMeshData is a list of vertices and of polygons over them, as a
+ * file gives them: possibly a triangle soup, open, non-manifold, in
+ * several pieces or inconsistently oriented. It can be welded, inspected,
+ * repaired, written as OFF, and made into a solid (noctMeshCreateFromData())
+ * when it is one. Its arrays can be read back (noctMeshDataVertices() and
+ * the others) to build other kinds of shapes from it.
+ *
+ * **Exact weld** (noctMeshDataWeld() with tolerance 0, and noctMeshRead()):
+ * vertices whose three coordinates are equal as doubles, bit for bit, are
+ * one vertex, except that -0.0 and +0.0 count as equal. Coordinates that
+ * differ by one unit in the last place are not welded.
+ *
+ * **Tolerance weld** (a tolerance eps > 0): two vertices whose Euclidean
+ * distance, computed in double, is at most eps are merged, and so,
+ * transitively, are chains of them: a chain of vertices each within eps
+ * of the next becomes one vertex even if its ends are farther apart. The
+ * classes are found by union-find over a grid of cells of side 2 eps, so
+ * the result depends on the vertices alone, not on their order in a grid
+ * walk.
+ *
+ * Either way the welded vertex of a class is the class's first vertex (the
+ * lowest index), with its coordinates (not an average); the kept vertices
+ * keep their order. Each polygon's corners are renamed; corners that then
+ * repeat their predecessor (cyclically) are removed, and a polygon left
+ * with fewer than 3 corners, or with a vertex twice, is dropped and
+ * counted (#noctMeshWeldReport). Duplicate polygons (the same vertices as
+ * another, in the same or the reverse cyclic order) are kept by a weld
+ * and counted by noctMeshDataInspect(); noctMeshDataRepair() resolves
+ * them.
+ * @{
+ */
+
+/** @brief A mesh file's vertices and polygons; opaque. */
+typedef struct noctMeshData noctMeshData;
+
+/** How many edges of each kind a #noctMeshReport lists. */
+#define NOCT_MESH_REPORT_FIRST 3
+
+/** @brief What a weld did. */
+typedef struct noctMeshWeldReport {
+    size_t welded_vertices;  /**< Vertices merged into another (removed). */
+    size_t dropped_polygons; /**< Polygons the weld collapsed, dropped. */
+} noctMeshWeldReport;
+
+/** @brief What noctMeshDataRepair() did. */
+typedef struct noctMeshRepairReport {
+    size_t welded_vertices;      /**< As #noctMeshWeldReport. */
+    size_t dropped_polygons;     /**< As #noctMeshWeldReport. */
+    size_t removed_duplicates;   /**< Duplicate polygons removed. */
+    size_t flipped_polygons;     /**< Polygons whose corner order was reversed. */
+    size_t unorientable_components; /**< Components no orientation suits. */
+} noctMeshRepairReport;
+
+/**
+ * @brief The inspection of a #noctMeshData (noctMeshDataInspect()).
+ *
+ * Edges are the unordered pairs of vertices that are consecutive corners
+ * of a polygon (cyclically); an edge is used once per such occurrence.
+ * Edges are named `a-b`, a < b, by the data's vertex numbers (0-based,
+ * after any weld). The components are the classes of polygons connected
+ * through shared edges.
+ */
+typedef struct noctMeshReport {
+    size_t vertices;            /**< Vertices of the data. */
+    size_t unused_vertices;     /**< Vertices on no polygon. */
+    size_t coincident_vertices; /**< Vertices equal to an earlier one: the
+                                     number an exact weld would remove. */
+    size_t polygons;            /**< Polygons of the data. */
+    size_t triangles;           /**< Triangles of their fan triangulation. */
+    size_t welded_vertices;     /**< Vertices removed by the welds applied. */
+    size_t dropped_polygons;    /**< Polygons those welds dropped. */
+    size_t skipped_primitives;  /**< Points and lines the reader skipped. */
+    size_t duplicate_polygons;  /**< Polygons with the vertices of an earlier
+                                     one, in the same or the reverse order. */
+    size_t edges;               /**< Distinct edges. */
+    size_t boundary_edges;      /**< Edges used once. */
+    /** The first boundary edges (in the order of their vertex numbers). */
+    uint32_t boundary_first[NOCT_MESH_REPORT_FIRST][2];
+    size_t nonmanifold_edges;   /**< Edges used more than twice. */
+    /** The first non-manifold edges. */
+    uint32_t nonmanifold_first[NOCT_MESH_REPORT_FIRST][2];
+    /** How many times each of them is used. */
+    size_t nonmanifold_uses[NOCT_MESH_REPORT_FIRST];
+    size_t misoriented_edges;   /**< Edges used twice in the same direction. */
+    /** The first misoriented edges. */
+    uint32_t misoriented_first[NOCT_MESH_REPORT_FIRST][2];
+    size_t components;          /**< Connected components of polygons. */
+    bool closed;      /**< Every edge is used exactly twice. */
+    bool orientable;  /**< Some choice of each polygon's direction makes
+                           every edge used twice run both ways. */
+    bool oriented;    /**< No edge is misoriented. */
+    bool has_volume;  /**< Closed and oriented: #volume is defined. */
+    /** The signed enclosed volume (positive if the polygons face outwards),
+     *  or 0 without #has_volume. */
+    double volume;
+    bool solid;       /**< noctMeshCreateFromData() would succeed. */
+    /** #NOCT_OK if solid, else the status noctMeshCreateFromData() would
+     *  return (#NOCT_ERR_OPEN, #NOCT_ERR_ORIENTATION, ...). */
+    noctStatus status;
+    /** Why it is not a solid (empty if it is), such as `12 boundary edges,
+     *  first 3-7, 7-9, 2-3; 2 non-manifold edges, first 5-9 (4 polygons)`. */
+    char reason[NOCT_ERROR_MESSAGE_SIZE];
+} noctMeshReport;
+
+/**
+ * @brief Make mesh data from arrays (copied).
+ * @param[in]  vertices  `3 * nvertices` coordinates.
+ * @param[in]  nvertices Number of vertices.
+ * @param[in]  sizes     Number of corners of each polygon.
+ * @param[in]  npolygons Number of polygons.
+ * @param[in]  indices   The polygons' corners, `sum(sizes)` entries.
+ * @param[out] data      Receives the new data, or NULL on failure.
+ * @param[out] err       Receives the details of a failure, or NULL.
+ * @pre @p data is not NULL; the arrays are not NULL where their counts are
+ *      not zero.
+ * @post On #NOCT_OK, @p *data holds copies of the arrays; free it with
+ *       noctMeshDataDestroy().
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE for a coordinate that is not
+ *         finite; #NOCT_ERR_DEGENERATE for a polygon of fewer than 3
+ *         corners; #NOCT_ERR_INDEX for a corner out of range;
+ *         #NOCT_ERR_TOO_LARGE beyond #NOCT_MESH_MAX_VERTICES or
+ *         #NOCT_MESH_MAX_INDICES; #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctMeshDataCreate(const double *vertices, size_t nvertices,
+                                       const uint32_t *sizes, size_t npolygons,
+                                       const uint32_t *indices, noctMeshData **data,
+                                       noctError *err);
+
+/**
+ * @brief Read the vertices and polygons of a mesh file, as they are.
+ *
+ * The format is chosen by the file name's extension, in any case:
+ * - `.off`: the `OFF` header, the counts, vertices, then polygons as
+ *   `n i1 ... in` (colours after the indices are ignored), `#` comments.
+ * - `.obj` (Wavefront): `v x y z [w]` and `f` lines whose corners are
+ *   `i`, `i/t`, `i/t/n` or `i//n` with 1-based or negative (relative)
+ *   indices; `vn`, `vt`, `vp`, `o`, `g`, `s`, `usemtl` and `mtllib` are
+ *   ignored, any other statement is an error.
+ * - `.stl`: binary if the file's size is 84 + 50 n bytes, n the count at
+ *   byte 80 (whatever its first bytes: binary files often start with
+ *   `solid` too); else ASCII (`solid`, `facet normal`, `outer loop`, three
+ *   `vertex x y z`, `endloop`, `endfacet`, `endsolid`, keywords in any
+ *   case, several solids in a row allowed). A file of another size that
+ *   holds a NUL byte is a binary file of the wrong size: an error. Facet
+ *   normals are ignored: the corners' order gives the orientation. Each
+ *   triangle has its own three vertices (weld them).
+ * - `.ply`: `format ascii 1.0`, `binary_little_endian 1.0` or
+ *   `binary_big_endian 1.0`; the `vertex` element's `x`, `y` and `z`
+ *   properties of any numeric type (char, uchar, short, ushort, int,
+ *   uint, float, double, or int8 ... float64); the `face` element's
+ *   `vertex_indices` or `vertex_index` list, whose count and items are of
+ *   any integer type. Other elements and properties, lists included, are
+ *   skipped; `comment` and `obj_info` lines are ignored.
+ * - any other extension: through the Open Asset Import Library (assimp)
+ *   when the library was built with it (configure `--with-assimp`):
+ *   glTF 2 (`.gltf`, `.glb`), COLLADA (`.dae`), FBX, 3DS, and every other
+ *   format assimp reads. All meshes of the scene are merged, each placed
+ *   by the product of its nodes' transforms from the root (once per node
+ *   that names it; the matrices' affine part; a mirroring transform
+ *   reverses the polygons' corners so that they keep facing the same
+ *   side). Polygons are triangulated by assimp (aiProcess_Triangulate);
+ *   its JoinIdenticalVertices step is not used, since it may merge
+ *   vertices within a tolerance: weld the data instead. Points and lines
+ *   are skipped and counted (#noctMeshReport's skipped_primitives). A
+ *   scene without meshes, or whose meshes have no polygons, is an error.
+ *   In a build without assimp such a file is an #NOCT_ERR_INVALID error
+ *   that says so.
+ *
+ * Nothing is welded or checked beyond the syntax, finite coordinates and
+ * indices in range: the data may be any surface.
+ * @param[in]  path Path of the file.
+ * @param[out] data Receives the data, or NULL on failure.
+ * @param[out] err  Receives the details of a failure, or NULL: a message
+ *                  starting with the path and, where there is one, the
+ *                  line (`path:12: ...`) or, in a binary file, the
+ *                  triangle or face (`path: triangle 7: ...`).
+ * @pre @p path and @p data are not NULL.
+ * @post On #NOCT_OK, @p *data is the file's data, owned by the caller. It
+ *       remembers the path and the line of each vertex and polygon, for
+ *       the messages of noctMeshCreateFromData().
+ * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
+ *         #NOCT_ERR_NOMEM if memory runs out; #NOCT_ERR_INVALID for an
+ *         unknown extension, or one that needs assimp in a build without
+ *         it; #NOCT_ERR_PARSE for a syntax error, a truncated file, a
+ *         wrong count, an unsupported PLY type or layout, or a scene
+ *         without meshes; #NOCT_ERR_NONFINITE for a coordinate that is
+ *         NaN or infinite; #NOCT_ERR_INDEX for a corner out of range;
+ *         #NOCT_ERR_TOO_LARGE for more vertices or polygon corners than
+ *         the limits.
+ */
+NOCT_API noctStatus noctMeshDataRead(const char *path, noctMeshData **data,
+                                     noctError *err);
+
+/**
+ * @brief Weld the data's vertices (exactly, or within a tolerance) and
+ *        drop the polygons that collapse: see the group's text.
+ * @param[in,out] data      Mesh data.
+ * @param[in]     tolerance 0 for the exact weld, or eps > 0.
+ * @param[out]    report    Receives what was done, or NULL.
+ * @param[out]    err       Receives the details of a failure, or NULL.
+ * @pre @p data is not NULL.
+ * @post On #NOCT_OK, each class of the weld is one vertex (so no two
+ *       vertices are within @p tolerance, or equal for 0); polygons are
+ *       renamed and the collapsed ones dropped; the data's counts of
+ *       welded vertices and dropped polygons (#noctMeshReport) grow by the
+ *       report's. On failure the data is unchanged.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID if @p tolerance is negative, not
+ *         finite, or so small that some coordinate is more than 2^40
+ *         tolerances from 0; #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctMeshDataWeld(noctMeshData *data, double tolerance,
+                                     noctMeshWeldReport *report, noctError *err);
+
+/**
+ * @brief Inspect the data: counts, edges, components, orientation, volume,
+ *        and why it is not a solid.
+ *
+ * The topology is decided first: a data with boundary, non-manifold or
+ * misoriented edges is not a solid, for that reason. Otherwise the data
+ * is tried with noctMeshCreateFromData() (which may refuse it for its
+ * geometry: non-planar or non-convex polygons, no volume...).
+ * @param[in]  data   Mesh data.
+ * @param[out] report Receives the inspection.
+ * @param[out] err    Receives the details of a failure, or NULL.
+ * @pre @p data and @p report are not NULL.
+ * @post On #NOCT_OK, @p *report is filled (see #noctMeshReport).
+ * @return #NOCT_OK, or #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctMeshDataInspect(const noctMeshData *data, noctMeshReport *report,
+                                        noctError *err);
+
+/**
+ * @brief Repair the data as far as it goes: weld, resolve duplicate
+ *        polygons, orient each component consistently, outwards if closed.
+ *
+ * 1. noctMeshDataWeld() with @p tolerance.
+ * 2. Duplicate polygons (the same vertices in the same or reverse cyclic
+ *    order) are resolved by their net orientation: counting the copies
+ *    that run like the first as +1 and the reversed ones as -1, a positive
+ *    sum keeps the first alone, a negative one keeps the first reversed
+ *    copy alone, and zero (a two-sided sheet) drops them all.
+ * 3. In each component (polygons connected through edges), the polygons
+ *    are flipped (corner order reversed) to run like the component's first
+ *    polygon across every edge used exactly twice, as far as that can be
+ *    done (in an unorientable component, the constraints met first, in
+ *    the order of the edges' vertex numbers, win).
+ * 4. Each closed, orientable component whose signed volume is negative is
+ *    turned outside in (all its polygons flipped), so that it faces
+ *    outwards.
+ * @param[in,out] data      Mesh data.
+ * @param[in]     tolerance The weld's tolerance, 0 for the exact weld.
+ * @param[out]    report    Receives what was done, or NULL.
+ * @param[out]    err       Receives the details of a failure, or NULL.
+ * @pre @p data is not NULL.
+ * @post On #NOCT_OK, the data is repaired as above.
+ * @return #NOCT_OK, any status of noctMeshDataWeld(), or #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctMeshDataRepair(noctMeshData *data, double tolerance,
+                                       noctMeshRepairReport *report, noctError *err);
+
+/**
+ * @brief Write the data as an OFF file (coordinates to 17 significant
+ *        digits: they read back as the same doubles).
+ * @param[in]  data Mesh data.
+ * @param[in]  path Path of the file to write (replaced).
+ * @param[out] err  Receives the details of a failure, or NULL.
+ * @pre @p data and @p path are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_IO naming the path.
+ */
+NOCT_API noctStatus noctMeshDataWriteOff(const noctMeshData *data, const char *path,
+                                         noctError *err);
+
+/**
+ * @brief Make a solid of the data, as noctMeshCreate() does of its arrays.
+ * @param[in]  data Mesh data.
+ * @param[out] mesh Receives the new mesh, or NULL on failure.
+ * @param[out] err  Receives the details of a failure, or NULL; for data
+ *                  read from a file, the message names the file and the
+ *                  line (or triangle) of the vertex or polygon at fault.
+ * @pre @p data and @p mesh are not NULL.
+ * @return Any status of noctMeshCreate().
+ */
+NOCT_API noctStatus noctMeshCreateFromData(const noctMeshData *data, noctMesh **mesh,
+                                           noctError *err);
+
+/**
+ * @brief Destroy mesh data.
+ * @param[in] data Mesh data, or NULL (then nothing happens).
+ */
+NOCT_API void noctMeshDataDestroy(noctMeshData *data);
+
+/**
+ * @brief Return the number of vertices.
+ * @param[in] data Mesh data.
+ * @pre @p data is not NULL.
+ * @return The number of vertices.
+ */
+NOCT_API size_t noctMeshDataVertexCount(const noctMeshData *data);
+
+/**
+ * @brief Return the vertices' coordinates.
+ * @param[in] data Mesh data.
+ * @pre @p data is not NULL.
+ * @return `3 * noctMeshDataVertexCount()` coordinates, valid until the data
+ *         is changed or destroyed (NULL if there are none).
+ */
+NOCT_API const double *noctMeshDataVertices(const noctMeshData *data);
+
+/**
+ * @brief Return the number of polygons.
+ * @param[in] data Mesh data.
+ * @pre @p data is not NULL.
+ * @return The number of polygons.
+ */
+NOCT_API size_t noctMeshDataPolygonCount(const noctMeshData *data);
+
+/**
+ * @brief Return the polygons' sizes (numbers of corners).
+ * @param[in] data Mesh data.
+ * @pre @p data is not NULL.
+ * @return noctMeshDataPolygonCount() sizes, valid until the data is changed
+ *         or destroyed (NULL if there are none).
+ */
+NOCT_API const uint32_t *noctMeshDataPolygonSizes(const noctMeshData *data);
+
+/**
+ * @brief Return the polygons' corners, polygon after polygon.
+ * @param[in] data Mesh data.
+ * @pre @p data is not NULL.
+ * @return The sum of the sizes' vertex indices, valid until the data is
+ *         changed or destroyed (NULL if there are none).
+ */
+NOCT_API const uint32_t *noctMeshDataIndices(const noctMeshData *data);
+
+/** @} */
 
 /**
  * @brief Destroy a mesh.
