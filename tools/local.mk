@@ -13,7 +13,7 @@ tools_libtoolkit_la_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_efficient_ldadd = tools/libtoolkit.la lib/libnoctree-efficient.la
 
 # Installed tools, each with its section 1 man page.
-bin_PROGRAMS = tools/noctree-sim tools/noctree-bench tools/octprint
+bin_PROGRAMS = tools/noctree-sim tools/noctree-bench tools/octprint tools/noctree-mesh
 tools_noctree_sim_SOURCES = tools/noctree-sim.c
 tools_noctree_sim_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_noctree_sim_LDADD = $(tools_efficient_ldadd)
@@ -23,7 +23,11 @@ tools_noctree_bench_LDADD = $(tools_efficient_ldadd)
 tools_octprint_SOURCES = tools/octprint.c
 tools_octprint_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_octprint_LDADD = $(tools_efficient_ldadd)
+tools_noctree_mesh_SOURCES = tools/noctree-mesh.c
+tools_noctree_mesh_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
+tools_noctree_mesh_LDADD = $(tools_efficient_ldadd)
 dist_man_MANS = docs/man/noctree-sim.1 docs/man/noctree-bench.1 docs/man/octprint.1 \
+	docs/man/noctree-mesh.1 \
 	docs/man/noctree-scene.5
 
 # The octree ADT benchmark, once per build (make bench runs both).
