@@ -20,7 +20,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-readers tests/check-readers-efficient \
 	tests/check-continuous tests/check-continuous-efficient \
 	tests/check-swept tests/check-swept-efficient \
-	tests/check-turning tests/check-turning-efficient
+	tests/check-turning tests/check-turning-efficient \
+	tests/check-meshio tests/check-meshio-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -212,6 +213,22 @@ tests_check_readers_efficient_SOURCES = tests/check_readers.c
 tests_check_readers_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_readers_efficient_CFLAGS = $(check_cflags)
 tests_check_readers_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
+
+# check-meshio: mesh files and mesh data (mesh.h): soups of the test's
+# own closed meshes in every format read back as the same solid; welds,
+# malformed files, inspection and repair on counted cases; glTF through
+# assimp in builds with it.
+if HAVE_ASSIMP
+meshio_cppflags = -DNOCT_TEST_ASSIMP=1
+endif
+tests_check_meshio_SOURCES = tests/check_meshio.c
+tests_check_meshio_CPPFLAGS = $(AM_CPPFLAGS) $(meshio_cppflags)
+tests_check_meshio_CFLAGS = $(check_cflags)
+tests_check_meshio_LDADD = $(check_ldadd)
+tests_check_meshio_efficient_SOURCES = tests/check_meshio.c
+tests_check_meshio_efficient_CPPFLAGS = $(efficient_cppflags) $(meshio_cppflags)
+tests_check_meshio_efficient_CFLAGS = $(check_cflags)
+tests_check_meshio_efficient_LDADD = $(efficient_ldadd)
 
 # check-continuous: the world's continuous level against the all-pairs
 # brute force of noctCollideSwept() on random worlds (fast movers,
