@@ -255,8 +255,10 @@ EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tes
 # by file (a folder here would also take a build tree's tests/fuzz/).
 EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/fuzz_mesh.h tests/fuzz/fuzz_scene.c tests/fuzz/fuzz_off.c \
-	tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_narrowphase.c \
+	tests/fuzz/fuzz_obj.c tests/fuzz/fuzz_stl.c tests/fuzz/fuzz_ply.c \
+	tests/fuzz/fuzz_narrowphase.c \
 	tests/fuzz/scene.dict tests/fuzz/off.dict tests/fuzz/obj.dict \
+	tests/fuzz/stl.dict tests/fuzz/ply.dict \
 	tests/fuzz/corpus/scene/coincident.scene \
 	tests/fuzz/corpus/scene/every-statement.scene \
 	tests/fuzz/corpus/scene/two-cubes.scene \
@@ -264,6 +266,8 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/corpus/off/cube.off tests/fuzz/corpus/off/dented.off \
 	tests/fuzz/corpus/off/tet.off \
 	tests/fuzz/corpus/obj/cube.obj tests/fuzz/corpus/obj/tet.obj \
+	tests/fuzz/corpus/stl/cube.stl tests/fuzz/corpus/stl/cube-binary.stl \
+	tests/fuzz/corpus/ply/cube.ply tests/fuzz/corpus/ply/cube-be.ply \
 	tests/fuzz/corpus/narrowphase/boxes-touching \
 	tests/fuzz/corpus/narrowphase/dent-vs-tet \
 	tests/fuzz/corpus/narrowphase/flattened-numeric \

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # octprint and noctree-bench end to end: octprint's tree text against the
 # objects of the scene, its dot and SVG output, noctree-bench --quick's
-# tables and CSV files, and exit status 2 with a message for bad usage.
+# tables and CSV files, and exit status 2 with a message for bad usage;
+# noctree-mesh's inspection, repair and exit statuses on STL files.
 set -u
 . "${srcdir:-.}/lib.sh"
 octprint="$top_builddir/tools/octprint"
@@ -259,5 +260,59 @@ expect_prog "$octprint" 2 '^octprint: --step needs a scene' --broadphase "$tmp/t
 expect_prog "$octprint" 2 '^octprint: give a scene or --broadphase FILE, not both' \
     --broadphase "$tmp/three.boxes" --scene planes:1
 expect_prog "$octprint" 2 'unknown option or missing value' --broadphase
+
+# ---- noctree-mesh ----------------------------------------------------------
+
+mesh="$top_builddir/tools/noctree-mesh"
+# The unit cube as an ASCII STL soup (12 triangles, 36 vertices).
+awk 'BEGIN {
+    split("0 2 3 1 4 5 7 6 0 1 5 4 2 6 7 3 1 3 7 5 0 4 6 2", q, " ")
+    print "solid cube"
+    for (f = 0; f < 6; f++)
+        for (h = 0; h < 2; h++) {
+            a = q[4 * f + 1]; b = q[4 * f + 2 + h]; c = q[4 * f + 3 + h]
+            print " facet normal 0 0 0"; print "  outer loop"
+            n = split(a " " b " " c, v, " ")
+            for (i = 1; i <= 3; i++)
+                printf "   vertex %d %d %d\n", v[i] % 2, int(v[i] / 2) % 2, int(v[i] / 4)
+            print "  endloop"; print " endfacet"
+        }
+    print "endsolid cube"
+}' > "$tmp/cube.stl"
+expect_prog "$mesh" 0 '^solid: yes' "$tmp/cube.stl"
+expect_prog "$mesh" 0 '^welded vertices: 28' "$tmp/cube.stl"
+expect_prog "$mesh" 0 '^volume: 1$' "$tmp/cube.stl"
+# The last face (two facets of 7 lines) removed: open, 4 boundary edges, exit
+# status 1.
+head -n 71 "$tmp/cube.stl" > "$tmp/open.stl"
+echo "endsolid cube" >> "$tmp/open.stl"
+expect_prog "$mesh" 1 '^boundary edges: 4 (first' "$tmp/open.stl"
+expect_prog "$mesh" 1 '^solid: no: 4 boundary edges' "$tmp/cube.stl" "$tmp/open.stl"
+# Inside out (every facet's corners reversed): a solid; --repair turns it.
+awk '/vertex/ { v[++n] = $0; if (n == 3) { print v[1]; print v[3]; print v[2]; n = 0 }; next }
+     { print }' "$tmp/cube.stl" > "$tmp/inside.stl"
+expect_prog "$mesh" 0 '^volume: -1$' "$tmp/inside.stl"
+expect_prog "$mesh" 0 '^repaired: 0 duplicates removed, 12 polygons flipped' --repair \
+    --output "$tmp/fixed.off" "$tmp/inside.stl"
+expect_prog "$mesh" 0 '^volume: 1$' "$tmp/fixed.off"
+check "noctree-mesh --output: an OFF of 8 vertices and 12 triangles" \
+    [ "$(sed -n 2p "$tmp/fixed.off")" = "8 12 0" ]
+# One corner one ulp off: not welded unless within a tolerance.
+sed '0,/vertex 1 1 1/s//vertex 1.0000000000000002 1 1/' "$tmp/cube.stl" > "$tmp/ulp.stl"
+expect_prog "$mesh" 1 '^solid: no: .*boundary edges' "$tmp/ulp.stl"
+expect_prog "$mesh" 0 '^solid: yes' --weld-tolerance 1e-9 "$tmp/ulp.stl"
+# Errors: the file and line, exit status 2 (and 2 beats 1).
+sed '5s/.*/   vertex 1 0/' "$tmp/cube.stl" > "$tmp/bad.stl"
+expect_prog "$mesh" 2 "^noctree-mesh: $tmp/bad.stl:5: expected 3 coordinates" "$tmp/bad.stl"
+expect_prog "$mesh" 2 "bad.stl:5:" "$tmp/open.stl" "$tmp/bad.stl"
+printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty int128 x\nend_header\n' \
+    > "$tmp/bad.ply"
+expect_prog "$mesh" 2 "bad.ply:4: unsupported PLY property type 'int128'" "$tmp/bad.ply"
+expect_prog "$mesh" 2 "none.stl: cannot open" "$tmp/none.stl"
+expect_prog "$mesh" 2 'give at least one mesh file'
+expect_prog "$mesh" 2 'must be a number >= 0' --weld-tolerance -1 "$tmp/cube.stl"
+expect_prog "$mesh" 2 '--output takes one mesh file' --output "$tmp/x.off" "$tmp/cube.stl" \
+    "$tmp/open.stl"
+expect_prog "$mesh" 0 '^usage: noctree-mesh' --help
 
 finish tools

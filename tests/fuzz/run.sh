@@ -7,7 +7,7 @@
 #
 # BUILD_TREE is a configured build tree (its config.h and version.h are
 # used; nothing in it is rebuilt). SECONDS per target, 60 by default.
-# Targets: scene off obj narrowphase (all by default). Everything goes to
+# Targets: scene off obj stl ply narrowphase (all by default). Everything goes to
 # BUILD_TREE/fuzz-out/: the programs fuzz-TARGET, the corpora the runs
 # grow (corpus/TARGET; the seeds in the source tree are only read), the
 # logs TARGET.log and any crashing input, TARGET-crash-... (or -leak-,
@@ -34,7 +34,7 @@ build=$(cd "$1" && pwd)
 secs=${2:-60}
 case $secs in '' | *[!0-9]*) usage ;; esac
 if [ $# -ge 2 ]; then shift 2; else shift; fi
-targets=${*:-scene off obj narrowphase}
+targets=${*:-scene off obj stl ply narrowphase}
 cc=${CLANG:-clang}
 out=$build/fuzz-out
 
@@ -49,8 +49,13 @@ if [ -z "${ASAN_SYMBOLIZER_PATH:-}" ] && ! command -v llvm-symbolizer > /dev/nul
 fi
 
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-deps_cflags=$(pkg-config --cflags ccd qhull_r gmp)
-deps_libs=$(pkg-config --libs ccd qhull_r gmp)
+deps="ccd qhull_r gmp"
+# assimp when the build tree was configured with it (lib/meshio_assimp.c)
+grep -q '^#define HAVE_ASSIMP 1' "$build/config.h" && deps="$deps assimp"
+# shellcheck disable=SC2086 # the list is split on purpose
+deps_cflags=$(pkg-config --cflags $deps)
+# shellcheck disable=SC2086
+deps_libs=$(pkg-config --libs $deps)
 cflags="-std=c11 -g -O1 -Wall -Wextra $san -DNOCT_BUILDING -I$build -I$build/include \
 -I$top/include -I$top/lib $deps_cflags"
 
