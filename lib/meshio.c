@@ -13,6 +13,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -716,6 +717,28 @@ static noctStatus ply_value(reader *r, const ply *h, ply_type t, double *out,
     return NOCT_OK;
 }
 
+/* A failure at the current line (ASCII) or without one (binary: the
+ * message names the element instead). */
+static noctStatus ply_fail(const reader *r, bool text, noctError *err, noctStatus st,
+                           long index, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 6, 7)))
+#endif
+    ;
+
+static noctStatus ply_fail(const reader *r, bool text, noctError *err, noctStatus st,
+                           long index, const char *fmt, ...)
+{
+    char what[NOCT_ERROR_MESSAGE_SIZE];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (text)
+        return noct_fail(err, st, index, r->line, "%s:%ld: %s", r->path, r->line, what);
+    return noct_fail(err, st, index, 0, "%s: %s", r->path, what);
+}
+
 static noctStatus read_ply(reader *r, noctMeshData *d, noctError *err)
 {
     ply *h = calloc(1, sizeof *h);
@@ -726,10 +749,10 @@ static noctStatus read_ply(reader *r, noctMeshData *d, noctError *err)
     size_t ccap = 0;
     d->lines = h->format == 0;
     d->record = h->format == 0 ? NULL : "face";
-    if (h->format == 0)
+    if (st == NOCT_OK && h->format == 0)
         r->pos = r->buf + strlen(r->buf); /* past end_header */
     bool have_vertex = false;
-    for (size_t i = 0; i < h->nelements && st == NOCT_OK; ++i) {
+    for (size_t i = 0; st == NOCT_OK && i < h->nelements; ++i) {
         const ply_element *e = &h->el[i];
         have_vertex = have_vertex || e->role == 1;
         for (unsigned long k = 0; k < e->count && st == NOCT_OK; ++k) {
@@ -759,17 +782,16 @@ static noctStatus read_ply(reader *r, noctMeshData *d, noctError *err)
                 if (st != NOCT_OK)
                     break;
                 if (count < 0 || count > 1000000) {
-                    st = noct_fail(err, NOCT_ERR_PARSE, (long)k, d->lines ? r->line : 0,
-                                   "%s: %s %lu: list of %g items (0 to 1000000)", r->path,
-                                   e->name, k, count);
+                    st = ply_fail(r, d->lines, err, NOCT_ERR_PARSE, (long)k,
+                                  "%s %lu: list of %g items (0 to 1000000)", e->name, k,
+                                  count);
                     break;
                 }
                 if (p->role == 4) {
                     line = r->line;
                     if (count < 3) {
-                        st = noct_fail(err, NOCT_ERR_PARSE, (long)k, d->lines ? line : 0,
-                                       "%s: face %lu has %g corners (at least 3)", r->path, k,
-                                       count);
+                        st = ply_fail(r, d->lines, err, NOCT_ERR_PARSE, (long)k,
+                                      "face %lu has %g corners (at least 3)", k, count);
                         break;
                     }
                     if (!grow_u32(&corners, &ccap, room(ccap, (size_t)count))) {
@@ -783,9 +805,8 @@ static noctStatus read_ply(reader *r, noctMeshData *d, noctError *err)
                     if (st != NOCT_OK || p->role != 4)
                         continue;
                     if (v < 0 || v >= (double)UINT32_MAX)
-                        st = noct_fail(err, NOCT_ERR_INDEX, (long)k, d->lines ? r->line : 0,
-                                       "%s: face %lu: vertex index %.0f out of range",
-                                       r->path, k, v);
+                        st = ply_fail(r, d->lines, err, NOCT_ERR_INDEX, (long)k,
+                                      "face %lu: vertex index %.0f out of range", k, v);
                     else
                         corners[n++] = (uint32_t)v;
                 }

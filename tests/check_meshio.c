@@ -412,7 +412,9 @@ static void expect_same(const tmesh *m, const noctMeshData *d, const char *what)
     qsort(a, m->nt, sizeof *a, cmp_tri9);
     qsort(b, m->nt, sizeof *b, cmp_tri9);
     for (size_t t = 0; t < m->nt; ++t)
-        ck_assert_msg(cmp_tri9(&a[t], &b[t]) == 0, "%s: triangle %zu differs: %.17g %.17g %.17g vs %.17g %.17g %.17g", what, t, a[t].p[0], a[t].p[1], a[t].p[2], b[t].p[0], b[t].p[1], b[t].p[2]);
+        ck_assert_msg(cmp_tri9(&a[t], &b[t]) == 0,
+                      "%s: triangle %zu differs: %.17g %.17g %.17g vs %.17g %.17g %.17g", what,
+                      t, a[t].p[0], a[t].p[1], a[t].p[2], b[t].p[0], b[t].p[1], b[t].p[2]);
     free(a);
     free(b);
 }

@@ -290,9 +290,9 @@ typedef struct noctMeshReport {
     bool orientable;  /**< Some choice of each polygon's direction makes
                            every edge used twice run both ways. */
     bool oriented;    /**< No edge is misoriented. */
-    bool has_volume;  /**< Closed and oriented: #volume is defined. */
+    bool has_volume;  /**< Closed and oriented: noctMeshReport::volume is defined. */
     /** The signed enclosed volume (positive if the polygons face outwards),
-     *  or 0 without #has_volume. */
+     *  or 0 without noctMeshReport::has_volume. */
     double volume;
     bool solid;       /**< noctMeshCreateFromData() would succeed. */
     /** #NOCT_OK if solid, else the status noctMeshCreateFromData() would
