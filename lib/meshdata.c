@@ -194,6 +194,24 @@ static size_t lower_bound(const weld_key *keys, size_t n, const double cell[3])
     return lo;
 }
 
+/* |p - q| <= eps, the distance computed in double: directly when the
+ * squares cannot overflow (every difference within eps <= 1e150), else
+ * scaled by eps. */
+static bool within(const double *p, const double *q, double eps)
+{
+    double e[3];
+    for (int k = 0; k < 3; ++k) {
+        e[k] = p[k] - q[k];
+        if (!(fabs(e[k]) <= eps))
+            return false;
+    }
+    if (eps <= 1e150)
+        return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) <= eps;
+    for (int k = 0; k < 3; ++k)
+        e[k] /= eps;
+    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) <= 1;
+}
+
 /* The classes of the weld, as each vertex's least-index representative in
  * parent[]. Exact: equal keys (with -0 as +0, by adding +0.0). Tolerance:
  * cells of side 2 eps, so that two vertices within eps are in the same or
@@ -237,8 +255,7 @@ static void weld_classes(const noctMeshData *d, double eps, weld_key *keys, uint
                         if (keys[b].i <= keys[a].i)
                             continue;
                         const double *q = &d->v[3 * keys[b].i];
-                        double e[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-                        if (sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) <= eps)
+                        if (within(p, q, eps))
                             uf_union(parent, keys[a].i, keys[b].i);
                     }
                 }

@@ -6,7 +6,9 @@
  */
 #include "config.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
@@ -105,6 +107,13 @@ noctStatus noct_read_assimp(const char *path, noctMeshData *d, noctError *err)
                          "one the Open Asset Import Library reads)", path);
     d->lines = false;
     d->record = NULL;
+    FILE *probe = fopen(path, "rb"); /* a file that is not there is an I/O error */
+    if (probe == NULL) {
+        int e = errno;
+        return noct_fail(err, e == ENOMEM ? NOCT_ERR_NOMEM : NOCT_ERR_IO, -1, 0,
+                         "%s: cannot open: %s", path, strerror(e));
+    }
+    fclose(probe);
     const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate);
     if (sc == NULL)
         return noct_fail(err, NOCT_ERR_PARSE, -1, 0, "%s: the Open Asset Import Library "

@@ -926,6 +926,9 @@ START_TEST(assimp_files)
                                    "\"scene\":0,\"scenes\":[{\"nodes\":[]}]}");
 #ifdef NOCT_TEST_ASSIMP
     expect_error(empty, NOCT_ERR_PARSE, "no meshes");
+    expect_error(temp_path("missing.glb"), NOCT_ERR_IO, "cannot open");
+    expect_error(write_text("junk.gltf", "{ not json"), NOCT_ERR_PARSE,
+                 "the Open Asset Import Library cannot read it");
     /* translated by (10, 0, 0) and mirrored in x: the same cube, moved, outward */
     const double mirror[16] = {-2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1};
     const double *mats[2] = {NULL, mirror};
