@@ -787,7 +787,8 @@ START_TEST(scenes_written_read_back)
                 "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n",
                 "object f 0.3 5 0 type static sensor name the.sensor\n",
                 " spin 0 0 1 7.5 margin 0.1\n",
-                "object f 1 1 1 type kinematic margin 1e-300 name _keyed-1\n", "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
+                "object f 1 1 1 type kinematic margin 1e-300 name _keyed-1\n",
+                "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
                 "key 20 -1 0 0\n", "effects motion events response walls spin track\n"};
             for (size_t k = 0; k < sizeof LINES / sizeof *LINES; ++k)
                 ck_assert_msg(strstr(t1, LINES[k]) != NULL, "'%s' not in:\n%s", LINES[k], t1);

@@ -472,14 +472,16 @@ SCENE
 awk 'BEGIN { for (s = 1; s <= 30; ++s) { d = 3 - s / 8; if (d < 0) d = 0
     if (d == 0) printf "%d,collide,left,right,\n", s
     if (d <= 0.75) printf "%d,near,left,right,%s\n", s, d } }' > "$tmp/want-skins.csv"
-"$sim" --quiet --report csv --near-distances "$tmp/skins.scene" > "$tmp/skins.csv" 2> "$tmp/skins.err"
+"$sim" --quiet --report csv --near-distances "$tmp/skins.scene" > "$tmp/skins.csv" \
+    2> "$tmp/skins.err"
 check "--near-distances csv: the header has a distance" \
     [ "$(head -1 "$tmp/skins.csv")" = "step,kind,a,b,distance" ]
 tail -n +2 "$tmp/skins.csv" | sort -t, -k1,1n -k2,2 > "$tmp/skins.rows"
 sort -t, -k1,1n -k2,2 "$tmp/want-skins.csv" > "$tmp/want-skins.rows"
 check "objects' margins: near by their skins, with the closed-form distances" \
     cmp -s "$tmp/skins.rows" "$tmp/want-skins.rows"
-check "objects' margins: the summary counts the near pair" grep -q '^near begins 1$' "$tmp/skins.err"
+check "objects' margins: the summary counts the near pair" \
+    grep -q '^near begins 1$' "$tmp/skins.err"
 expect_run 0 '^ *19  *near  *1  *left-right(0.625)$' --quiet --report table --near-distances \
     "$tmp/skins.scene"
 expect_run 0 '^18 near-begin left right distance 0.75$' --quiet --events --near-distances \
