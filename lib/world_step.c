@@ -220,7 +220,9 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, bool last,
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
-    if (last && w->def.margin > 0 && (st = noct_world_stage_near(w, err)) != NOCT_OK) {
+    /* near pairs with a margin (the world's or an object's), and once
+     * more when the last went, to end the pairs it kept */
+    if (last && w->margins.near && (st = noct_world_stage_near(w, err)) != NOCT_OK) {
         noct_record_unrotate(&w->events.contact);
         noct_record_unrotate(&w->events.sensor);
         return st;
