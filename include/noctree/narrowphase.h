@@ -514,7 +514,11 @@ typedef enum noctContactKind {
  *
  * The candidate points are the vertices of the overlap A ∩ B: each point
  * where an edge of one crosses a triangle of the other, and each vertex of
- * one inside the other (decided exactly). Each is then moved along the
+ * one inside the other (decided exactly); and, when the minimum is an
+ * edge pair's axis, the middle of the closest points of the two edges
+ * that support the overlap along it (the deepest point of an edge
+ * across an edge, which is no vertex of the overlap), if it lies in both
+ * solids (decided exactly). Each is then moved along the
  * normal to the middle of the overlap's chord through it (the segment of
  * the line through it along @c normal that lies in both solids, clipped
  * by the placed triangles' planes), and that chord's length is its
@@ -523,7 +527,8 @@ typedef enum noctContactKind {
  * corner poking into a face, the corner pushed back half its depth. The
  * points are then reduced to at most #NOCT_CONTACT_POINTS as Box2D and
  * Jolt reduce manifolds, in the plane normal to @c normal: the deepest
- * first, then the one farthest from it, then the one spanning the largest
+ * first (of those within the tolerance below of the deepest, the one
+ * farthest from the candidates' mean), then the one farthest from it, then the one spanning the largest
  * triangle with those two, then the one that adds the most area to that
  * triangle; points within the tolerance below of one kept are dropped.
  *
