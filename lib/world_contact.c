@@ -54,7 +54,7 @@ noctStatus noctWorldContacts(noctWorld *w, const noctContact **contacts, size_t 
         }
         w->contacts_made = true;
     }
-    *contacts = w->contacts;
+    *contacts = now->n > 0 ? w->contacts : NULL;
     *n = now->n;
     return NOCT_OK;
 }

@@ -750,6 +750,19 @@ START_TEST(test_world_box_primitives)
     ck_assert_uint_eq(cs[0].count, 4);
     ck_assert(has_point(&cs[0], 0.875, -0.5, -1, 1e-15));
     ck_assert(has_point(&cs[0], 0.875, 1, 1, 1e-15));
+    /* after the next step, b removed before asking: the pair is still
+     * listed, with no contact */
+    ck_assert(noctWorldStep(w, NULL) == NOCT_OK);
+    ck_assert(noctWorldRemove(w, ib, NULL) == NOCT_OK);
+    ck_assert(noctWorldContacts(w, &cs, &n, NULL) == NOCT_OK);
+    ck_assert_uint_eq(n, 1);
+    ck_assert_int_eq(cs[0].kind, NOCT_CONTACT_NONE);
+    ck_assert_uint_eq(cs[0].count, 0);
+    ck_assert(cs[0].depth == 0 && cs[0].normal[0] == 0);
+    /* and none once a step ends the pair */
+    ck_assert(noctWorldStep(w, NULL) == NOCT_OK);
+    ck_assert(noctWorldContacts(w, &cs, &n, NULL) == NOCT_OK);
+    ck_assert(n == 0 && cs == NULL);
     noctWorldDestroy(w);
 }
 END_TEST
