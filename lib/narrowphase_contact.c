@@ -357,9 +357,10 @@ static void min_translation(const convex_shape *A, const convex_shape *B, best_a
             const double d[3] = {-eb->n2[0], -eb->n2[1], -eb->n2[2]};
             double dxc[3];
             noct_cross3(d, c, dxc);
-            if (noct_dot3(c, bxa) * noct_dot3(d, bxa) > 0 ||
-                noct_dot3(ea->n1, dxc) * noct_dot3(ea->n2, dxc) > 0)
-                continue;
+            if (noct_dot3(c, bxa) * noct_dot3(d, bxa) > 1e-20 ||
+                noct_dot3(ea->n1, dxc) * noct_dot3(ea->n2, dxc) > 1e-20)
+                continue; /* (the slack keeps the near ties, which rounding
+                             could otherwise drop) */
             double cr[3], u[3];
             noct_cross3(ea->dir, eb->dir, cr);
             double la = noct_norm3(ea->dir), lb = noct_norm3(eb->dir);
@@ -429,7 +430,7 @@ static bool supporting_edges(const convex_shape *A, const convex_shape *B,
     return true;
 }
 
-/* Move p to the middle of the chord of A ∩ B along n through it; the
+/* Move p to the middle of the chord of the overlap along n through it; the
  * chord's length. A plane p is outside of (by rounding) does not cut the
  * chord on its side of p, so the point moves no farther out than p is. */
 static double chord_middle(const convex_shape *const S[2], const double n[3], double p[3])

@@ -512,7 +512,7 @@ typedef enum noctContactKind {
  * Vb)) for the axes kept, for meshes of E edges, F triangles and V
  * vertices: meant for the small convex shapes of games and robots.
  *
- * The candidate points are the vertices of the overlap A ∩ B: each point
+ * The candidate points are the vertices of the overlap of A and B: each point
  * where an edge of one crosses a triangle of the other, and each vertex of
  * one inside the other (decided exactly); and, when the minimum is an
  * edge pair's axis, the middle of the closest points of the two edges
@@ -528,9 +528,10 @@ typedef enum noctContactKind {
  * points are then reduced to at most #NOCT_CONTACT_POINTS as Box2D and
  * Jolt reduce manifolds, in the plane normal to @c normal: the deepest
  * first (of those within the tolerance below of the deepest, the one
- * farthest from the candidates' mean), then the one farthest from it, then the one spanning the largest
- * triangle with those two, then the one that adds the most area to that
- * triangle; points within the tolerance below of one kept are dropped.
+ * farthest from the candidates' mean), then the one farthest from it,
+ * then the one spanning the largest triangle with those two, then the one
+ * that adds the most area to that triangle; points within the tolerance
+ * below of one kept are dropped.
  *
  * **Non-convex shapes** (#NOCT_CONTACT_CROSSING): the candidate points are
  * where the boundaries meet: each point where an edge of a triangle of A
