@@ -14,6 +14,7 @@
  *   world_near.c     the margin's near pairs
  *   world_track.c    keyframe tracks
  *   world_query.c    the queries (query.h)
+ *   world_contact.c  the colliding pairs' contacts, on request
  *
  * The files call one way: world.c and world_step.c call the stage files
  * and world_object.c, which calls none of them.
@@ -223,6 +224,11 @@ struct noctWorld {
     size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */
+    /* noctWorldContacts(): the contacts of contact.now, made on the first
+     * call after a step (world_contact.c); made is cleared by each step. */
+    noctContact *contacts;
+    size_t capcontacts;
+    bool contacts_made;
     noctWorldCounters c;   /* the world's own stages'; the broadphase's
                               are added when they are read */
 };

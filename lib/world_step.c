@@ -35,6 +35,7 @@ static void fail_step(noctWorld *w, uint64_t k);
 noctStatus noctWorldStep(noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
+    w->contacts_made = false; /* they were the last step's */
     noct_record_clear(&w->events.contact);
     noct_record_clear(&w->events.sensor);
     noct_record_clear(&w->events.near);

@@ -20,7 +20,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-readers tests/check-readers-efficient \
 	tests/check-continuous tests/check-continuous-efficient \
 	tests/check-swept tests/check-swept-efficient \
-	tests/check-turning tests/check-turning-efficient
+	tests/check-turning tests/check-turning-efficient \
+	tests/check-contacts tests/check-contacts-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -225,6 +226,19 @@ tests_check_continuous_efficient_SOURCES = tests/check_continuous.c
 tests_check_continuous_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_continuous_efficient_CFLAGS = $(check_cflags)
 tests_check_continuous_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
+
+# check-contacts: the contacts (noctCollideContact(), noctWorldContacts())
+# against closed forms (boxes face on face, edge across edge, a corner in a
+# face, containment), a brute-force minimum translation of convex meshes,
+# the points' tolerance in both solids or on both boundaries, and the
+# world's contacts against the pairwise calls.
+tests_check_contacts_SOURCES = tests/check_contacts.c
+tests_check_contacts_CFLAGS = $(check_cflags)
+tests_check_contacts_LDADD = $(check_ldadd)
+tests_check_contacts_efficient_SOURCES = tests/check_contacts.c
+tests_check_contacts_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_contacts_efficient_CFLAGS = $(check_cflags)
+tests_check_contacts_efficient_LDADD = $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh

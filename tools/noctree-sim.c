@@ -37,6 +37,9 @@ static const char usage[] =
     "  --margin D            also find the pairs within distance D (near pairs;\n"
     "                        objects' own margins add to it)\n"
     "  --events              print every contact event: STEP begin|end A B\n"
+    "  --contacts            print the colliding pairs' contacts after every step:\n"
+    "                        STEP contact A B KIND depth D normal X Y Z, then its\n"
+    "                        points as STEP point X Y Z DEPTH\n"
     "                        (sensor-begin|sensor-end for sensors, and\n"
     "                        near-begin|near-end with a margin); objects by\n"
     "                        name when the scene names them, else by index\n"
@@ -304,6 +307,34 @@ static bool parted_within(const noctPair *began, size_t nb, const noctPair *col,
     return false;
 }
 
+/* --contacts: the contact of each colliding pair after step s
+ * (noctWorldContacts()), a line each and a line per point. */
+static bool print_contacts(FILE *out, noctWorld *w, int s, const noctScene *scene,
+                           noctError *err)
+{
+    static const char *const kinds[] = {"none", "convex", "crossing", "contained"};
+    const noctPair *p;
+    const noctContact *c;
+    size_t n;
+    noctWorldColliding(w, &p);
+    if (noctWorldContacts(w, &c, &n, err) != NOCT_OK)
+        return false;
+    for (size_t i = 0; i < n; ++i) {
+        char d[32], x[32], y[32], z[32], la[24], lb[24];
+        fprintf(out, "%d contact %s %s %s depth %s normal %s %s %s\n", s,
+                label(scene, p[i].a.index, la), label(scene, p[i].b.index, lb),
+                kinds[c[i].kind], tool_format_double(c[i].depth, d),
+                tool_format_double(c[i].normal[0], x), tool_format_double(c[i].normal[1], y),
+                tool_format_double(c[i].normal[2], z));
+        for (unsigned k = 0; k < c[i].count; ++k)
+            fprintf(out, "%d point %s %s %s %s\n", s, tool_format_double(c[i].points[k][0], x),
+                    tool_format_double(c[i].points[k][1], y),
+                    tool_format_double(c[i].points[k][2], z),
+                    tool_format_double(c[i].point_depth[k], d));
+    }
+    return true;
+}
+
 /* --first: the line for the first pair colliding after step s, with its
  * contact box, the intersection of the objects' placed bounding boxes. */
 static bool print_first(const noctWorld *w, const noctScene *scene, int s, noctPair pair)
@@ -442,7 +473,7 @@ int main(int argc, char **argv)
     const char *opt_acc = NULL,
                *opt_maint = NULL;
     long steps = 0;
-    bool events = false, quiet = false, substep = false, first = false;
+    bool events = false, quiet = false, substep = false, first = false, contacts = false;
     bool near_distances = false;
     const char *dist_arg[2] = {NULL, NULL}; /* --distance A B */
     const char *write_scene = NULL;
@@ -456,6 +487,8 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(a, "--events") == 0) {
             events = true;
+        } else if (strcmp(a, "--contacts") == 0) {
+            contacts = true;
         } else if (strcmp(a, "--quiet") == 0) {
             quiet = true;
         } else if (strcmp(a, "--substep") == 0) {
@@ -650,7 +683,7 @@ int main(int argc, char **argv)
         report_begin(&rep, sa.family != NULL ? sa.family : sa.file, svg);
         free(svg);
     }
-    bool bar = !quiet && !events && dist_arg[0] == NULL && isatty(STDERR_FILENO);
+    bool bar = !quiet && !events && !contacts && dist_arg[0] == NULL && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0, sensor_events = 0, near_events[2] = {0, 0};
     int status = 0, stopped = 0;
     bool told_parted = false;
@@ -712,6 +745,12 @@ int main(int argc, char **argv)
             status = 1;
         if (status != 0) {
             tool_progress_end();
+            break;
+        }
+        if (contacts && !print_contacts(info, w, s, scene, &err)) {
+            tool_progress_end();
+            tool_error("step %d: %s", s, err.message);
+            status = 1;
             break;
         }
         if (rep.format != REPORT_NONE || first) {

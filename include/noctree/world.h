@@ -856,6 +856,39 @@ NOCT_API noctStatus noctWorldBeganHits(noctWorld *world, const noctSweepHit **hi
                                        noctError *err);
 
 /**
+ * @brief The contacts of the colliding pairs: where each pair's solids
+ *        meet, and for convex shapes the minimum translation.
+ *
+ * For each pair noctWorldColliding() lists, in the same order, its
+ * contact as noctCollideContact() computes it for the two objects as
+ * they are placed (#noctContact: normal from the pair's first object
+ * towards its second, depth, up to four points). Box primitives are the
+ * solids of their corners as the world turns them, and count as convex,
+ * as do objects made with a convex or box-shaped mesh. A pair whose
+ * solids share no point, which a world at the box or convex level lists
+ * when their boxes or hulls meet, and continuous detection when they
+ * touched during the step but not at its end, gets #NOCT_CONTACT_NONE;
+ * so does a pair one of whose objects was removed since the step.
+ *
+ * The step does not compute them: the first call after a step does, and
+ * keeps them until the next step, so a world whose program never asks
+ * pays nothing for them (the step only marks them stale). Call it before
+ * changing the world: the contacts are those of the objects as they are
+ * when it is first called.
+ * @param[in]  world    The world.
+ * @param[out] contacts Receives the array (valid until the next step or
+ *                      noctWorldDestroy()), NULL when there are none.
+ * @param[out] n        Receives their number: noctWorldColliding()'s.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p world, @p contacts and @p n are not NULL.
+ * @post On #NOCT_OK, (*contacts)[i] is the contact of the i-th pair of
+ *       noctWorldColliding().
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM or #NOCT_ERR_NUMERIC (then *n is 0).
+ */
+NOCT_API noctStatus noctWorldContacts(noctWorld *world, const noctContact **contacts, size_t *n,
+                                      noctError *err);
+
+/**
  * @brief Read an object's position and direction.
  * @param[in]  world     The world.
  * @param[in]  id        The object.
