@@ -542,6 +542,18 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     return NOCT_OK;
 }
 
+noctStatus noctWorldObjectAt(const noctWorld *w, uint32_t index, noctObjectId *id)
+{
+    NOCT_REQUIRE(w != NULL && id != NULL);
+    if (index >= noct_bp_slots(&w->bp) || !noct_bp_proxy(&w->bp, index)->alive) {
+        id->index = id->generation = 0;
+        return NOCT_ERR_INVALID;
+    }
+    id->index = index;
+    id->generation = noct_bp_generation(&w->bp, index);
+    return NOCT_OK;
+}
+
 noctStatus noctWorldSetTransform(noctWorld *w, noctObjectId id, const noctTransform *x,
                                  noctError *err)
 {

@@ -421,36 +421,27 @@ static bool print_distance(FILE *f, int s, distances *dist, const noctScene *sce
     return true;
 }
 
-/* The handles of the objects of a world just built: every proxy of its
- * broadphase (an infinite box meets them all; an object whose mask is 0
- * passes no query's filter, and has the generation of a slot used once). */
+/* The handles of the objects of a world just built, by index (id may be
+ * NULL: only any_margin wanted), and whether any has a margin of its own. */
 typedef struct handles {
-    noctObjectId *id;  /* by index, or NULL: only any_margin wanted */
+    noctObjectId *id;
     size_t n;
     const noctWorld *w;
     bool any_margin;
 } handles;
 
-static bool take_handle(void *context, noctProxyId id, void *user)
-{
-    (void)user;
-    handles *h = context;
-    if (h->id != NULL && id.index < h->n)
-        h->id[id.index] = id;
-    double m = 0;
-    if (noctWorldGetMargin(h->w, id, &m) == NOCT_OK && m > 0)
-        h->any_margin = true;
-    return h->id != NULL || !h->any_margin;
-}
-
 static void find_handles(handles *h)
 {
-    const double lo[3] = {-INFINITY, -INFINITY, -INFINITY}, hi[3] = {INFINITY, INFINITY, INFINITY};
-    noctBroadphaseQueryBox(noctWorldBroadphase(h->w), lo, hi, noctDefaultQueryFilter(),
-                           take_handle, h);
-    for (size_t i = 0; h->id != NULL && i < h->n; ++i)
-        if (h->id[i].generation == 0)
-            h->id[i] = (noctObjectId){(uint32_t)i, 1};
+    for (size_t i = 0; i < h->n && i <= UINT32_MAX; ++i) {
+        noctObjectId id;
+        double m = 0;
+        if (noctWorldObjectAt(h->w, (uint32_t)i, &id) != NOCT_OK)
+            continue;
+        if (h->id != NULL)
+            h->id[i] = id;
+        if (noctWorldGetMargin(h->w, id, &m) == NOCT_OK && m > 0)
+            h->any_margin = true;
+    }
 }
 
 /* An object named on the command line: its name, or its index. */

@@ -889,6 +889,24 @@ NOCT_API noctStatus noctWorldContacts(noctWorld *world, const noctContact **cont
                                       noctError *err);
 
 /**
+ * @brief The handle of the object at an index (its slot), if one lives
+ *        there.
+ *
+ * Indices are what the world's pairs, events and a scene's objects name
+ * (noctPair's `index`; a world built by noctSceneBuild() holds the
+ * scene's i-th object at index i). A program that keeps only indices (a
+ * tool, a log) gets the handle back here, generation included.
+ * @param[in]  world The world.
+ * @param[in]  index An index.
+ * @param[out] id    Receives the handle of the live object there.
+ * @pre @p world and @p id are not NULL.
+ * @post On #NOCT_OK, noctWorldObject(world, *id, ...) succeeds.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID if no object lives at @p index
+ *         (never made, or removed); then *id is (0, 0).
+ */
+NOCT_API noctStatus noctWorldObjectAt(const noctWorld *world, uint32_t index, noctObjectId *id);
+
+/**
  * @brief Read an object's position and direction.
  * @param[in]  world     The world.
  * @param[in]  id        The object.
