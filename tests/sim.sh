@@ -493,4 +493,18 @@ expect_run 2 "^noctree-sim: --near-distances needs" --near-distances "$tmp/skins
 expect_run 2 "^noctree-sim: --near-distances needs" --near-distances --report gnuplot \
     "$tmp/skins.scene"
 
+# --contacts: cube b overlaps cube a by 0.25 along x (and is shifted 0.25
+# along y), so the contact is convex, 0.25 deep along +x, at the four
+# corners of the overlap's middle section x = 0.375.
+printf 'steps 1\nmesh cube box 0.5 0.5 0.5\nobject cube 0 0 0 type static name a\nobject cube 0.75 0.25 0 type static name b\nobject cube 5 0 0 type static\n' \
+    > "$tmp/contact.scene"
+"$sim" --quiet --contacts "$tmp/contact.scene" > "$tmp/contact.out" 2>&1
+check "--contacts: exit 0" [ $? -eq 0 ]
+check "--contacts: the pair by name, convex, 0.25 deep along +x" \
+    grep -q '^1 contact a b convex depth 0.25 normal 1 -\{0,1\}0 -\{0,1\}0$' "$tmp/contact.out"
+check "--contacts: the overlap's four corners at x = 0.375" \
+    sh -c "[ \"\$(grep -c '^1 point 0.375 \(0.5\|-0.25\) \(0.5\|-0.5\) 0.25$' '$tmp/contact.out')\" -eq 4 ]"
+check "--contacts: one contact, for the one colliding pair" \
+    [ "$(grep -c ' contact ' "$tmp/contact.out")" -eq 1 ]
+
 finish sim
