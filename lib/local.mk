@@ -26,6 +26,7 @@ noctree_sources = \
 	lib/narrowphase.c \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
+	lib/narrowphase_point.c \
 	lib/narrowphase_query.c \
 	lib/narrowphase_swept.c \
 	lib/narrowphase_turning.c \
@@ -46,6 +47,7 @@ noctree_sources = \
 	lib/world_narrow.c \
 	lib/world_near.c \
 	lib/world_object.c \
+	lib/world_distance.c \
 	lib/world_query.c \
 	lib/world_step.c \
 	lib/world_sweep.c \
