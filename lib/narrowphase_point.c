@@ -125,9 +125,11 @@ static double proved_gap(const double u[3], const double p[3], double t[3][3], d
 
 /* A proved lower bound on the distance from p to closed triangle t: the
  * largest gap over the axes that may hold the direction from p to its
- * nearest point (the face's normal, p to each corner, the perpendicular
- * from each edge's line to p) and the direction to the computed point. */
-static double point_tri_lower_bound(const double p[3], double t[3][3])
+ * nearest point (the direction to the computed point first, then the
+ * face's normal, p to each corner, the perpendicular from each edge's line
+ * to p); it stops once a gap reaches enough (the caller keeps the least
+ * bound over triangles: one at least enough changes nothing). */
+static double point_tri_lower_bound(const double p[3], double t[3][3], double enough)
 {
     double s = 0;
     for (int k = 0; k < 3; ++k) {
@@ -135,23 +137,39 @@ static double point_tri_lower_bound(const double p[3], double t[3][3])
         for (int i = 0; i < 3; ++i)
             s = noct_max(s, fabs(t[i][k]));
     }
+    double u[3], v[3], w[3], q[3];
+    point_tri_nearest(p, t, q);
+    noct_sub3(p, q, u);
+    double best = proved_gap(u, p, t, s);
+    if (best >= enough)
+        return best;
     double e[3][3];
     for (int i = 0; i < 3; ++i)
         noct_sub3(t[(i + 1) % 3], t[i], e[i]);
-    double u[3], v[3], w[3], best = 0;
     cross_into(e[0], e[1], u);
     best = noct_max(best, proved_gap(u, p, t, s));
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3 && best < enough; ++i) {
         noct_sub3(p, t[i], v);
         best = noct_max(best, proved_gap(v, p, t, s));
         cross_into(e[i], v, w);
         cross_into(w, e[i], u);
         best = noct_max(best, proved_gap(u, p, t, s));
     }
-    double q[3];
-    point_tri_nearest(p, t, q);
-    noct_sub3(p, q, u);
-    return noct_max(best, proved_gap(u, p, t, s));
+    return best;
+}
+
+/* Squared distance from p to the box of triangle x, a lower bound on the
+ * squared distance to it (all scaled alike). */
+static double tri_box_dist2(const double p[3], double x[3][3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = noct_min(x[0][k], noct_min(x[1][k], x[2][k]));
+        const double hi = noct_max(x[0][k], noct_max(x[1][k], x[2][k]));
+        const double g = noct_max(noct_max(lo - p[k], p[k] - hi), 0);
+        s += g * g;
+    }
+    return s;
 }
 
 /* The walk's state: p and the mesh (both scaled by scale when tiny). */
@@ -192,6 +210,8 @@ static void nearest_walk(point_walk *w)
             for (uint32_t i = n->first; i < n->first + n->count; ++i) {
                 double x[3][3], q[3];
                 placed_triangle(w, i, x);
+                if (tri_box_dist2(w->ps, x) >= w->best2)
+                    continue;
                 point_tri_nearest(w->ps, x, q);
                 const double d2 = dist2(w->ps, q);
                 if (d2 < w->best2) {
@@ -227,7 +247,9 @@ static double lower_walk(const point_walk *w, double reach, double lower)
             for (uint32_t i = n->first; i < n->first + n->count; ++i) {
                 double x[3][3];
                 placed_triangle(w, i, x);
-                lower = noct_min(lower, point_tri_lower_bound(w->ps, x));
+                if (tri_box_dist2(w->ps, x) > reach2)
+                    continue;
+                lower = noct_min(lower, point_tri_lower_bound(w->ps, x, lower));
             }
             continue;
         }
@@ -260,10 +282,16 @@ noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, cons
                     {0, 0, 0}, 0, false};
     const bool far = box_dist2(p, &m->nodes[0], t, scale) > reach_max * reach_max;
     if (!far) {
-        bool inside;
-        const noctStatus st = noct_point_in_solid(m, t, p, &inside);
-        if (st != NOCT_OK)
-            return st;
+        /* outside the placed box, outside the solid (fl(v + t) is
+         * monotone: the placed box holds the placed vertices) */
+        bool inside = true;
+        for (int k = 0; k < 3; ++k)
+            inside = inside && m->lo[k] + t[k] <= p[k] && p[k] <= m->hi[k] + t[k];
+        if (inside) {
+            const noctStatus st = noct_point_in_solid(m, t, p, &inside);
+            if (st != NOCT_OK)
+                return st;
+        }
         if (inside) {
             r->colliding = true;
             noct_copy3(p, r->point_a);

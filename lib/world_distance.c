@@ -45,6 +45,8 @@ typedef struct dquery {
     const double *t;        /* the shape's translation, or the point */
     double lo[3], hi[3];    /* the placed box (the point twice) */
     double mag;             /* the largest magnitude of its corners */
+    noct_box_slot slot;     /* its box form (a point's: a box of no size) */
+    bool has_slot;
 } dquery;
 
 static noctStatus check_distance(double d, const char *what, noctError *err)
@@ -80,6 +82,14 @@ static noctStatus dquery_make(dquery *d, const noctWorld *w, const noctMesh *mes
                              : noct_query_shape_make(&d->q, mesh, half_extents, x, err);
     if (st != NOCT_OK)
         return st;
+    if (d->point) {
+        memset(&d->slot, 0, sizeof d->slot);
+        d->slot.has_box = 1;
+        d->has_slot = true;
+    } else {
+        d->slot = d->q.slot;
+        d->has_slot = d->q.has_slot;
+    }
     d->mag = 0;
     for (int k = 0; k < 3; ++k) {
         d->lo[k] = d->point ? x->p[k] : d->q.m->lo[k] + x->p[k];
@@ -102,6 +112,15 @@ static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
     if (st != NOCT_OK)
         return noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
     return NOCT_OK;
+}
+
+/* Is object s proved farther than d from the query by the box forms'
+ * separating axes (the world's test of near pairs)? */
+static bool apart(const dquery *d, uint32_t s, double dist)
+{
+    const noctWorld *w = d->w;
+    return d->has_slot && w->slot[s].has_box && isfinite(dist) &&
+           noct_box_apart_by(&d->slot, d->t, &w->slot[s], w->pos[s], dist);
 }
 
 /* The magnitude of object s's placed box. */
@@ -287,8 +306,8 @@ noctStatus noctWorldQueryNearest(const noctWorld *w, const noctMesh *mesh,
             const double mb = box_magnitude(noct_bp_box(&w->bp, s));
             const double cap =
                 reach(&d, mb, *found ? noct_min(best.distance, max_distance) : max_distance);
-            if (c.c[i].gap > cap)
-                continue;
+            if (c.c[i].gap > cap || (*found && best.distance == 0 && s > bs) || apart(&d, s, cap))
+                continue; /* farther, or no nearer than the best */
             noctDistanceResult res;
             if ((st = dquery_distance(&d, s, cap, &res, err)) != NOCT_OK)
                 break;
@@ -353,8 +372,9 @@ noctStatus noctWorldQueryWithin(const noctWorld *w, const noctMesh *mesh,
     st = gather(&c, lo, hi, filter, true, err);
     for (size_t i = 0; i < c.n && st == NOCT_OK; ++i) {
         const uint32_t s = c.c[i].s;
-        if (c.c[i].gap > reach(&d, box_magnitude(noct_bp_box(&w->bp, s)), distance))
-            continue; /* its box proves it farther than it could compute */
+        const double cap = reach(&d, box_magnitude(noct_bp_box(&w->bp, s)), distance);
+        if (c.c[i].gap > cap || apart(&d, s, cap))
+            continue; /* its boxes prove it farther than it could compute */
         noctDistanceHit h;
         if ((st = dquery_distance(&d, s, distance, &h.result, err)) != NOCT_OK)
             break;
