@@ -281,9 +281,11 @@ noctStatus noctWorldQueryNearest(const noctWorld *w, const noctMesh *mesh,
         noctMeshDestroy(d.q.rotated);
         return st;
     }
-    /* The first round: the query's own size, or the spacing the objects
-     * would have if they filled the root evenly (only the cost depends on
-     * it). */
+    /* The first round: the query's own size, or an eighth of the spacing
+     * the objects would have if they filled the root evenly; then twice as
+     * far each round until an object is found (only the cost depends on
+     * it: a box about a leaf's size reads every box of the leaves it
+     * meets, from all over memory). */
     const noct_aabb root = noct_bp_root_box(&w->bp);
     double r = 0, size = 0;
     for (int k = 0; k < 3; ++k) {
@@ -291,8 +293,10 @@ noctStatus noctWorldQueryNearest(const noctWorld *w, const noctMesh *mesh,
         size = noct_max(size, root.hi[k] - root.lo[k]);
     }
     if (isfinite(size))
-        r = noct_max(r, size / (2 * cbrt((double)noct_bp_live(&w->bp) + 1)));
+        r = noct_max(r, size / (8 * cbrt((double)noct_bp_live(&w->bp) + 1)));
     r = noct_max(r, noct_max(0x1p-30 * d.mag, 0x1p-1000));
+    if (noct_bp_root(&w->bp) == NULL)
+        r = INFINITY; /* no tree (a failed step tore it down): one pass over all */
     cands c = {NULL, 0, 0, w, &d, NULL, NULL, false};
     double lo[3], hi[3], plo[3], phi[3];
     noctDistanceResult best;
@@ -330,7 +334,7 @@ noctStatus noctWorldQueryNearest(const noctWorld *w, const noctMesh *mesh,
         memcpy(phi, hi, sizeof phi);
         c.plo = plo;
         c.phi = phi;
-        r = *found ? noct_max(need * (1 + 0x1p-40), r) : 4 * r;
+        r = *found ? noct_max(need * (1 + 0x1p-40), r) : 2 * r;
     }
     free(c.c);
     noctMeshDestroy(d.q.rotated);
