@@ -27,6 +27,7 @@ noctree_sources = \
 	lib/narrowphase_contact.c \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
+	lib/narrowphase_point.c \
 	lib/narrowphase_query.c \
 	lib/narrowphase_swept.c \
 	lib/narrowphase_turning.c \
@@ -48,6 +49,7 @@ noctree_sources = \
 	lib/world_narrow.c \
 	lib/world_near.c \
 	lib/world_object.c \
+	lib/world_distance.c \
 	lib/world_query.c \
 	lib/world_step.c \
 	lib/world_sweep.c \

@@ -106,6 +106,7 @@ void noctWorldDestroy(noctWorld *w)
     noct_record_free(&w->events.contact);
     noct_record_free(&w->events.sensor);
     noct_record_free(&w->events.near);
+    free(w->near_dist);
     free(w->spin.w);
     free(w->spin.spinners);
     free(w->margins.of);

@@ -15,6 +15,8 @@
  *   world_track.c    keyframe tracks
  *   world_query.c    the queries (query.h)
  *   world_contact.c  the colliding pairs' contacts, on request
+ *   world_distance.c the distance queries (query.h) and the near pairs'
+ *                    distances
  *
  * The files call one way: world.c and world_step.c call the stage files
  * and world_object.c, which calls none of them.
@@ -231,6 +233,9 @@ struct noctWorld {
     bool contacts_made;
     noctWorldCounters c;   /* the world's own stages'; the broadphase's
                               are added when they are read */
+    noctDistanceResult *near_dist; /* noctWorldNearDistances(), made on */
+    size_t capnear_dist;           /* request after a step (never before) */
+    bool near_dist_made;
 };
 
 /* A pair list for the program: its pairs and their number. */
@@ -388,6 +393,26 @@ typedef struct noct_shape_view {
  * as placed), or a view of its box primitive's corners in *v; reads the
  * world only (no mesh is made). */
 const noctMesh *noct_world_shape(const noctWorld *w, uint32_t s, noct_shape_view *v);
+
+/* A query's shape, placed by a transform's rotation: a mesh (rotated
+ * when it must be) or a box primitive's corners as a view; with its box
+ * slot when it has a box form. */
+typedef struct noct_query_shape {
+    const noctMesh *m;
+    noctMesh *rotated;     /* owned: noctMeshDestroy() it */
+    noctMesh view;
+    bvh_node leaf;
+    double v[24];
+    noct_box_slot slot;
+    bool has_slot;
+} noct_query_shape;
+
+/* Make the shape of mesh (or of the box primitive of half_extents when
+ * mesh is NULL) at x's rotation, checking x and the half-extents as
+ * noctWorldCreateObject() does. */
+noctStatus noct_query_shape_make(noct_query_shape *q, const noctMesh *mesh,
+                                 const double half_extents[3], const noctTransform *x,
+                                 noctError *err);
 
 /* ---- world_events.c (the lists) --- */
 

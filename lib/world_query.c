@@ -254,22 +254,11 @@ noctStatus noctWorldQueryBox(const noctWorld *w, const double lo[3], const doubl
                           w->def.accuracy, 0, false, filter, fcn, context, err);
 }
 
-/* A query's shape, placed by a transform's rotation: a mesh (rotated
- * when it must be) or a box primitive's corners as a view; with its box
- * slot when it has a box form. */
-typedef struct query_shape {
-    const noctMesh *m;
-    noctMesh *rotated;
-    noctMesh view;
-    bvh_node leaf;
-    double v[24];
-    noct_box_slot slot;
-    bool has_slot;
-} query_shape;
+typedef noct_query_shape query_shape;
 
-static noctStatus query_shape_make(query_shape *q, const noctMesh *mesh,
-                                   const double half_extents[3], const noctTransform *x,
-                                   noctError *err)
+noctStatus noct_query_shape_make(query_shape *q, const noctMesh *mesh,
+                                 const double half_extents[3], const noctTransform *x,
+                                 noctError *err)
 {
     q->rotated = NULL;
     noctStatus st = noctTransformCheck(x, err);
@@ -305,7 +294,7 @@ static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
                               noctObjectFcn *fcn, void *context, noctError *err)
 {
     query_shape q;
-    noctStatus st = query_shape_make(&q, mesh, half_extents, x, err);
+    noctStatus st = noct_query_shape_make(&q, mesh, half_extents, x, err);
     if (st == NOCT_OK)
         st = report_meeting(w, q.m, x->p, q.has_slot ? &q.slot : NULL, NOCT_ACCURACY_EXACT,
                             margin, skins, filter, fcn, context, err);
@@ -553,7 +542,7 @@ noctStatus noctWorldCastShape(const noctWorld *w, const noctMesh *mesh,
     if ((st = check_point(p1, "end", err)) != NOCT_OK)
         return st;
     query_shape q;
-    if ((st = query_shape_make(&q, mesh, half_extents, x, err)) != NOCT_OK)
+    if ((st = noct_query_shape_make(&q, mesh, half_extents, x, err)) != NOCT_OK)
         return st;
     /* The swept box: the placed boxes at both ends, padded by far more than
      * the end's placement differs from the start's moved exactly. */

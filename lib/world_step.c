@@ -39,6 +39,7 @@ noctStatus noctWorldStep(noctWorld *w, noctError *err)
     noct_record_clear(&w->events.contact);
     noct_record_clear(&w->events.sensor);
     noct_record_clear(&w->events.near);
+    w->near_dist_made = false; /* the near pairs change, whatever the step does */
     if (noct_bp_tree_owed(&w->bp)) {
         noctStatus st = noct_bp_rebuild(&w->bp, 0);
         if (st != NOCT_OK)

@@ -664,6 +664,35 @@ NOCT_API size_t noctWorldNearBegan(const noctWorld *world, const noctPair **pair
  */
 NOCT_API size_t noctWorldNearEnded(const noctWorld *world, const noctPair **pairs);
 
+/**
+ * @brief The distances and nearest points of the near pairs
+ * (noctWorldNear()): how near each is, with a proved interval.
+ *
+ * One result per pair of noctWorldNear(), in the same order, the pair's
+ * first object first: what noctWorldDistance() gives for the two objects
+ * (max_distance INFINITY), so `lower <= distance(true) <= upper` and a
+ * colliding pair has 0 (noctDistanceResult). The step does not compute
+ * them: the first call after a step does (a distance search per pair)
+ * and keeps them until the next step, so a world whose program never asks
+ * pays nothing, as for noctWorldBeganHits(). Call it before changing the
+ * world: the distances are those of the objects as they are at that first
+ * call (a pair one of whose objects was removed since gets distance,
+ * lower and upper NaN, no points and #NOCT_NO_TRIANGLE).
+ * @pre world != NULL && results != NULL && n != NULL
+ * @post On #NOCT_OK, *n is noctWorldNear()'s count and *results its
+ *       pairs' results (NULL when there are none), valid until the next
+ *       noctWorldStep() (succeeded or failed) or noctWorldDestroy(); on
+ *       failure *n is 0 and *results NULL, and a later call tries again.
+ * @param world the world.
+ * @param results receives the array.
+ * @param n receives its length.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM; a narrowphase status
+ *         (#NOCT_ERR_NUMERIC, never seen).
+ */
+NOCT_API noctStatus noctWorldNearDistances(noctWorld *world, const noctDistanceResult **results,
+                                           size_t *n, noctError *err);
+
 /** @brief A keyframe of a track: where an object is at a tick. */
 typedef struct noctKeyframe {
     uint64_t tick;   /**< The world's tick (steps done, noctWorldTick()) at
