@@ -27,8 +27,10 @@ noctree_sources = \
 	lib/meshio.c \
 	lib/meshio_assimp.c \
 	lib/narrowphase.c \
+	lib/narrowphase_contact.c \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
+	lib/narrowphase_point.c \
 	lib/narrowphase_query.c \
 	lib/narrowphase_swept.c \
 	lib/narrowphase_turning.c \
@@ -43,12 +45,14 @@ noctree_sources = \
 	lib/status.c \
 	lib/transform.c \
 	lib/world.c \
+	lib/world_contact.c \
 	lib/world_events.c \
 	lib/world_internal.h \
 	lib/world_motion.c \
 	lib/world_narrow.c \
 	lib/world_near.c \
 	lib/world_object.c \
+	lib/world_distance.c \
 	lib/world_query.c \
 	lib/world_step.c \
 	lib/world_sweep.c \

@@ -9,6 +9,8 @@
  *                           queries)
  *   narrowphase_distance.c  distances: box forms apart by more than a
  *                           distance, and solids within one (the margin)
+ *   narrowphase_point.c     a point's distance to a solid (the world's
+ *                           point queries)
  *   bvh.c, bvh.h            the bounding-volume hierarchies and their walks
  *
  * The exact primitives below decide every question by the sign of
@@ -210,5 +212,15 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
                                 noctDistanceResult *result, noctNarrowStats *stats);
+
+/* ---- a point's distance (narrowphase_point.c) ------------------------------ */
+
+/* The distance from point p to the solid of m placed at t, as
+ * noct_distance_placed() gives a pair's with p the first solid: point_a is
+ * p, triangle_a none; 0 and colliding when the solid contains p (exactly);
+ * beyond max_distance as there. NUMERIC if the containment count stayed
+ * ambiguous. */
+noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, const double t[3],
+                                      double max_distance, noctDistanceResult *result);
 
 #endif /* NOCT_LIB_NARROWPHASE_INTERNAL_H */

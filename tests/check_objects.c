@@ -1360,6 +1360,41 @@ START_TEST(spinning_meshes_are_fresh_meshes)
 }
 END_TEST
 
+/* noctWorldObjectAt(): the live object at each index, generation and all,
+ * and none where none lives (never made, removed, beyond the slots). */
+START_TEST(handles_by_index)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 0.5;
+    noctObjectId id[3], got;
+    for (int i = 0; i < 3; ++i) {
+        d.transform.p[0] = 3.0 * i;
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+    }
+    for (uint32_t i = 0; i < 3; ++i) {
+        ck_assert_int_eq(noctWorldObjectAt(w, i, &got), NOCT_OK);
+        ck_assert(got.index == id[i].index && got.generation == id[i].generation);
+    }
+    ck_assert_int_eq(noctWorldRemove(w, id[1], NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectAt(w, id[1].index, &got), NOCT_ERR_INVALID);
+    ck_assert(got.index == 0 && got.generation == 0);
+    ck_assert_int_eq(noctWorldObjectAt(w, 3, &got), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldObjectAt(w, UINT32_MAX, &got), NOCT_ERR_INVALID);
+    /* the slot made again: a new generation, which the old handle lacks */
+    noctObjectId again;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &again, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldObjectAt(w, again.index, &got), NOCT_OK);
+    ck_assert(got.generation == again.generation);
+    if (again.index == id[1].index)
+        ck_assert(got.generation != id[1].generation);
+    ck_assert_int_eq(noctWorldObject(w, got, NULL, NULL), NOCT_OK);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("objects");
@@ -1373,7 +1408,7 @@ int main(void)
     tcase_add_loop_test(tc, rotated_scenes_against_brute_force, 0, 4);
     add_tests(tc, events_follow_changes, quaternions_compose, spin_quarter_turns,
               teleports_within_a_leaf, velocity_bit_for_bit, bad_input_changes_nothing,
-              box_corners_beyond_the_limit);
+              box_corners_beyond_the_limit, handles_by_index);
     tcase_add_loop_test(tc, spinning_meshes_are_fresh_meshes, 0, 2);
     return run_suite(s);
 }

@@ -21,6 +21,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-continuous tests/check-continuous-efficient \
 	tests/check-swept tests/check-swept-efficient \
 	tests/check-turning tests/check-turning-efficient \
+	tests/check-contacts tests/check-contacts-efficient \
+	tests/check-distance-world tests/check-distance-world-efficient \
 	tests/check-meshio tests/check-meshio-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
@@ -242,6 +244,31 @@ tests_check_continuous_efficient_SOURCES = tests/check_continuous.c
 tests_check_continuous_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_continuous_efficient_CFLAGS = $(check_cflags)
 tests_check_continuous_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
+
+# check-contacts: the contacts (noctCollideContact(), noctWorldContacts())
+# against closed forms (boxes face on face, edge across edge, a corner in a
+# face, containment), a brute-force minimum translation of convex meshes,
+# the points' tolerance in both solids or on both boundaries, and the
+# world's contacts against the pairwise calls.
+tests_check_contacts_SOURCES = tests/check_contacts.c
+tests_check_contacts_CFLAGS = $(check_cflags)
+tests_check_contacts_LDADD = $(check_ldadd)
+tests_check_contacts_efficient_SOURCES = tests/check_contacts.c
+tests_check_contacts_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_contacts_efficient_CFLAGS = $(check_cflags)
+tests_check_contacts_efficient_LDADD = $(efficient_ldadd)
+
+# check-distance-world: the world's distance queries (noctWorldDistance(),
+# noctWorldQueryNearest(), noctWorldQueryWithin(), noctWorldNearDistances())
+# against brute forces over every object: noctDistance() on the test's
+# meshes, and the ideal solids of random rotated scenes.
+tests_check_distance_world_SOURCES = tests/check_distance_world.c
+tests_check_distance_world_CFLAGS = $(check_cflags)
+tests_check_distance_world_LDADD = $(check_ldadd)
+tests_check_distance_world_efficient_SOURCES = tests/check_distance_world.c
+tests_check_distance_world_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_distance_world_efficient_CFLAGS = $(check_cflags)
+tests_check_distance_world_efficient_LDADD = $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh

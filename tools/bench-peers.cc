@@ -65,7 +65,14 @@
  * with ours; Bullet's are printed beside them, with a line when they
  * differ (its tolerances decide touching boxes and grazing rays).
  *
- * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q]]
+ * With --nearest [Q] (gas scenes only, default gas:100000, Q 1000) it
+ * times the nearest-object query on the scene as set up: Q random points
+ * and Q random turned cubes, libnoctree's noctWorldQueryNearest() against
+ * FCL's dynamic AABB tree distance() with a distance callback, per query,
+ * with how many answers agree (run_nearest()).
+ *
+ * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q] |
+ *                    --nearest [Q]]
  *                    [--steps S] [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST]
  *                    [--csv FILE] [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
@@ -73,7 +80,9 @@
 #include <btBulletCollisionCommon.h>
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 #include <ode/ode.h>
 
 #include <sys/resource.h>
@@ -1129,8 +1138,9 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 void usage(FILE *f)
 {
     std::fputs("usage: bench-peers [--quick] [--broadphase [--disputed] | --driven |\n"
-               "                   --queries [Q]] [--steps S] [--repeats R] [--N N|auto]\n"
-               "                   [--budget SEC] [--libs LIST] [--csv FILE] [SCENE...]\n"
+               "                   --queries [Q] | --nearest [Q]] [--steps S] [--repeats R]\n"
+               "                   [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE]\n"
+               "                   [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
                "libnoctree,noct-driven,fcl-dtree,ode-sap,ode-hash (default\n"
@@ -1155,7 +1165,11 @@ void usage(FILE *f)
                "--queries [Q]: no steps; Q (default 10000) random box, point and\n"
                "segment queries on each gas scene (default gas:10000 gas:100000) as\n"
                "set up, queries a second; FCL answers the boxes, and the objects both\n"
-               "find must agree.\n",
+               "find must agree.\n"
+               "--nearest [Q]: no steps; the nearest object to Q (default 1000) random\n"
+               "points and boxes on each gas scene (default gas:100000), libnoctree's\n"
+               "noctWorldQueryNearest() against FCL's distance(): microseconds a query,\n"
+               "their ratio, and how many answers agree.\n",
                f);
 }
 
@@ -1409,6 +1423,155 @@ bool run_queries(const char *spec, long q, const Options &o)
     return bullet_ok;
 }
 
+// ---- the nearest object (--nearest) ------------------------------------------------
+
+// FCL's broadphase distance: each candidate pair through fcl::distance, the
+// best so far kept here and handed back as the manager's bound (so that it
+// prunes the boxes farther than it), stopping at a contact.
+struct FclNearest {
+    fcl::CollisionObjectd *q;
+    double best;
+    long object;
+};
+
+bool fcl_nearest(fcl::CollisionObjectd *a, fcl::CollisionObjectd *b, void *data, double &dist)
+{
+    FclNearest *c = static_cast<FclNearest *>(data);
+    fcl::DistanceRequestd req;
+    fcl::DistanceResultd res;
+    fcl::distance(a, b, req, res);
+    const double d = std::max(0.0, res.min_distance);
+    fcl::CollisionObjectd *o = a == c->q ? b : a;
+    const long i = static_cast<long>(reinterpret_cast<intptr_t>(o->getUserData()));
+    if (d < c->best || (d == c->best && i < c->object)) {
+        c->best = d;
+        c->object = i;
+    }
+    dist = c->best;
+    return c->best <= 0;
+}
+
+// Q random points and Q random boxes (cubes of side 0.75, turned at random)
+// in the container of a gas scene as set up: the nearest object to each,
+// libnoctree's noctWorldQueryNearest() against FCL's dynamic AABB tree's
+// distance() with a distance callback (fcl::distance on each candidate,
+// GJK), in one process, the same queries for both. Prints the time per
+// query, their ratio, and how many answers agree: the same object, and
+// the same distance within 1e-6 (FCL's GJK is approximate; a point
+// inside several objects is at distance 0 from each, and the two may
+// name different ones).
+bool run_nearest(const char *spec, long q, const Options &o)
+{
+    bool gas;
+    long size;
+    if (!parse_scene(spec, &gas, &size) || !gas) {
+        std::fprintf(stderr, "bench-peers: --nearest runs on gas scenes only: %s\n", spec);
+        return false;
+    }
+    Scene s = make_scene(gas, size);
+    noctError err;
+    noctScene *sc;
+    noctWorld *w = nullptr;
+    if (noctSceneFamily(spec, &sc, &err) != NOCT_OK ||
+        (noctSceneDef(sc)->N = o.N, noctSceneBuild(sc, &w, &err)) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: %s: %s\n", spec, err.message);
+        return false;
+    }
+    noctSceneDestroy(sc);
+    // the queries: a point, then a box, each at a random place and turn
+    struct Query {
+        noctTransform x;
+        double r[9];
+    };
+    std::vector<Query> qs;
+    uint64_t st = 11;
+    const double pi = 3.141592653589793, half = 0.375;
+    for (long i = 0; i < 2 * q; ++i) {
+        Query k;
+        for (int a = 0; a < 3; ++a)
+            k.x.p[a] = s.lb * draw(st);
+        const double u1 = draw(st), u2 = draw(st), u3 = draw(st);
+        const double x = std::sqrt(1 - u1) * std::sin(2 * pi * u2);
+        const double y = std::sqrt(1 - u1) * std::cos(2 * pi * u2);
+        const double z = std::sqrt(u1) * std::sin(2 * pi * u3);
+        const double ww = std::sqrt(u1) * std::cos(2 * pi * u3);
+        k.x.q = {x, y, z, ww};
+        if (noctQuatToMatrix(&k.x.q, k.r, &err) != NOCT_OK) {
+            std::fprintf(stderr, "bench-peers: %s\n", err.message);
+            return false;
+        }
+        qs.push_back(k);
+    }
+    const double halves[3] = {half, half, half};
+    const noctQueryFilter all = noctDefaultQueryFilter();
+    std::vector<long> ours(qs.size());
+    std::vector<double> ours_d(qs.size());
+    double t_ours[2] = {0, 0};
+    for (size_t i = 0; i < qs.size(); ++i) {
+        const bool box = i % 2 == 1;
+        noctDistanceHit h;
+        bool found;
+        const double t = now();
+        const noctStatus stt = noctWorldQueryNearest(w, nullptr, box ? halves : nullptr,
+                                                     &qs[i].x, INFINITY, all, &h, &found, &err);
+        t_ours[box] += now() - t;
+        if (stt != NOCT_OK || !found) {
+            std::fprintf(stderr, "bench-peers: %s: nearest: %s\n", spec,
+                         stt != NOCT_OK ? err.message : "nothing found");
+            noctWorldDestroy(w);
+            return false;
+        }
+        ours[i] = static_cast<long>(h.id.index);
+        ours_d[i] = h.result.distance;
+    }
+    noctWorldDestroy(w);
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> obj;
+    std::vector<fcl::CollisionObjectd *> raw;
+    for (size_t i = 0; i < s.body.size(); ++i) {
+        const Body &b = s.body[i];
+        auto shape = std::make_shared<fcl::Boxd>(2 * b.h[0], 2 * b.h[1], 2 * b.h[2]);
+        fcl::Matrix3d rot;
+        rot << b.r[0], b.r[1], b.r[2], b.r[3], b.r[4], b.r[5], b.r[6], b.r[7], b.r[8];
+        obj.emplace_back(new fcl::CollisionObjectd(shape, rot,
+                                                   fcl::Vector3d(b.c[0], b.c[1], b.c[2])));
+        obj.back()->setUserData(reinterpret_cast<void *>(static_cast<intptr_t>(i)));
+        raw.push_back(obj.back().get());
+    }
+    fcl::DynamicAABBTreeCollisionManagerd mgr;
+    mgr.registerObjects(raw);
+    mgr.setup();
+    auto point = std::make_shared<fcl::Sphered>(0.0);
+    auto cube = std::make_shared<fcl::Boxd>(2 * half, 2 * half, 2 * half);
+    double t_fcl[2] = {0, 0};
+    size_t same[2] = {0, 0}, close[2] = {0, 0};
+    double worst[2] = {0, 0};
+    for (size_t i = 0; i < qs.size(); ++i) {
+        const bool box = i % 2 == 1;
+        const double *r = qs[i].r;
+        fcl::Matrix3d rot;
+        rot << r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8];
+        fcl::CollisionObjectd qo(box ? std::static_pointer_cast<fcl::CollisionGeometryd>(cube)
+                                     : std::static_pointer_cast<fcl::CollisionGeometryd>(point),
+                                 rot, fcl::Vector3d(qs[i].x.p[0], qs[i].x.p[1], qs[i].x.p[2]));
+        FclNearest c = {&qo, INFINITY, -1};
+        const double t = now();
+        mgr.distance(&qo, &c, fcl_nearest);
+        t_fcl[box] += now() - t;
+        same[box] += c.object == ours[i];
+        const double diff = std::fabs(c.best - ours_d[i]);
+        close[box] += diff <= 1e-6;
+        worst[box] = std::max(worst[box], diff);
+    }
+    static const char *const kind[2] = {"point", "box"};
+    for (int b = 0; b < 2; ++b) {
+        const double n = static_cast<double>(q);
+        std::printf("%-12s %-6s %8ld %12.2f %12.2f %8.2f %10zu %10zu %10.1e\n", spec, kind[b], q,
+                    1e6 * t_ours[b] / n, 1e6 * t_fcl[b] / n, t_fcl[b] / t_ours[b], same[b],
+                    close[b], worst[b]);
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -1417,7 +1580,7 @@ int main(int argc, char **argv)
     std::vector<const char *> scenes;
     bool use[NLIBS] = {true, false, true, true, false};
     bool quick = false, driven = false, disputed = false;
-    long queries = 0;
+    long queries = 0, nearest = 0;
     const char *csv_path = nullptr;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -1437,6 +1600,10 @@ int main(int argc, char **argv)
                 queries = v;
                 ++i;
             }
+        } else if (std::strcmp(a, "--nearest") == 0) {
+            nearest = 1000;
+            if (has && parse_int(argv[i + 1], 1, 100000000, &v))
+                nearest = v, ++i;
         } else if (std::strcmp(a, "--help") == 0) {
             usage(stdout);
             return 0;
@@ -1505,6 +1672,21 @@ int main(int argc, char **argv)
         return all ? 0 : 1;
     }
     const std::string n_name = o.N == NOCT_AUTO ? std::string("auto") : std::to_string(o.N);
+    if (nearest > 0) {
+        if (scenes.empty())
+            scenes = {"gas:100000"};
+        std::printf("bench-peers --nearest: the nearest object to %ld random points and %ld "
+                    "random boxes (cubes of side 0.75, turned) on each gas scene as set up:\n"
+                    "libnoctree %s (noctWorldQueryNearest(), efficient build, N = %s) against "
+                    "FCL %s (dynamic AABB tree distance(), GJK); one thread\n",
+                    nearest, nearest, NOCT_VERSION_STRING, n_name.c_str(), FCL_VERSION);
+        std::printf("%-12s %-6s %8s %12s %12s %8s %10s %10s %10s\n", "scene", "query", "queries",
+                    "ours us", "fcl us", "ratio", "same obj", "same dist", "max diff");
+        bool all = true;
+        for (const char *spec : scenes)
+            all = run_nearest(spec, nearest, o) && all;
+        return all ? 0 : 1;
+    }
     if (queries > 0) {
         if (scenes.empty())
             scenes = {"gas:10000", "gas:100000"};

@@ -23,6 +23,10 @@
  *   those within a distance of it ("would it come within d?");
  *   noctWorldCastShape(): the first object a shape meets as it moves
  *   along a translation, and when (continuous detection, exact);
+ * - noctWorldDistance(): how far apart two objects are;
+ *   noctWorldQueryNearest(): the object nearest a shape or a point, and
+ *   noctWorldQueryWithin(): every object within a distance of one, each
+ *   with its distance, nearest points and a proved interval (noctDistance());
  * - noctWorldRayCast() and noctWorldRayCastClosest(): the objects a
  *   closed segment meets (noctWorldRayCastAlong(): the first along a ray
  *   given by a direction and a distance). Whether it meets a solid is decided exactly;
@@ -208,7 +212,9 @@ NOCT_API noctStatus noctWorldQueryShape(const noctWorld *world, const noctMesh *
  * those that collide with it (exactly), and those whose triangles come
  * within margin of its, as noctWorldNear() decides it: every object within
  * margin, and none farther than margin plus twice a slack of 2^-40 of the
- * coordinates' magnitude.
+ * coordinates' magnitude. An object with its own margin m
+ * (noctObjectDef::margin) is reported within `margin + m` instead: its
+ * skin counts, as in its near pairs.
  * @pre As noctWorldQueryShape().
  * @post As noctWorldQueryShape(), for the objects within margin; with a
  *       margin of 0, its objects exactly.
@@ -353,6 +359,146 @@ NOCT_API noctStatus noctWorldCastShape(const noctWorld *world, const noctMesh *m
                                        const double half_extents[3], const noctTransform *x,
                                        const double translation[3], noctQueryFilter filter,
                                        noctShapeHit *hit, bool *found, noctError *err);
+
+/**
+ * @brief The distance between two objects of the world, as they are
+ * placed now, with their nearest points and a proved interval.
+ *
+ * What noctDistance() gives for the two objects' shapes (a mesh, or a box
+ * primitive's box) at their transforms, the first object's first: placed
+ * as the world places them (a rotated object's rotated copy of its mesh),
+ * so the answer is bit for bit noctDistance()'s on the object's mesh and
+ * transform. An object's distance to itself is 0.
+ * @pre world != NULL && result != NULL
+ * @post On #NOCT_OK, *result is as #noctDistanceResult says (beyond, or
+ *       lower <= true distance <= upper); nothing else changed.
+ * @param world the world.
+ * @param a the first object.
+ * @param b the second object.
+ * @param max_distance where the search may stop: 0 or more, or INFINITY.
+ * @param result receives the answer.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NONFINITE (NaN) or #NOCT_ERR_INVALID
+ *         (negative) for a bad max_distance; #NOCT_ERR_INVALID for a
+ *         stale or unknown handle (a removed object), as
+ *         noctWorldGetTransform(); #NOCT_ERR_NUMERIC (never seen).
+ */
+NOCT_API noctStatus noctWorldDistance(const noctWorld *world, noctObjectId a, noctObjectId b,
+                                      double max_distance, noctDistanceResult *result,
+                                      noctError *err);
+
+/** @brief An object a distance query found, and how far it is. */
+typedef struct noctDistanceHit {
+    noctObjectId id;            /**< The object. */
+    void *user_data;            /**< Its user data. */
+    noctDistanceResult result;  /**< The distance: the query's shape (or
+                                     point) first, the object second; for
+                                     a point, point_a is the point and
+                                     triangle_a #NOCT_NO_TRIANGLE. */
+} noctDistanceHit;
+
+/**
+ * @brief A function called for each object a distance query found.
+ * @param context the query's context.
+ * @param hit the object and its distance (valid during the call).
+ * @return false to stop the query.
+ */
+typedef bool noctDistanceHitFcn(void *context, const noctDistanceHit *hit);
+
+/**
+ * @brief The object nearest a shape placed at x, or nearest a point.
+ *
+ * The query is a shape (mesh, or the box primitive of half_extents when
+ * mesh is NULL) placed by x as noctWorldQueryShape() places it, or, when
+ * mesh and half_extents are both NULL, the point x->p (x's rotation is
+ * then ignored). An object's distance is noctDistance()'s between the
+ * query and the object as placed (noctWorldDistance()); a point's is its
+ * distance to the object's closed solid: 0 (colliding) when the solid
+ * contains it, decided exactly (as noctWorldQueryPoint()), else to its
+ * boundary, with the same proved interval and accuracy (2^-40 of the
+ * coordinates' magnitude) and point_b the boundary's nearest point.
+ *
+ * The search goes outward in the broadphase (boxes about the query's
+ * box, growing until an object is found, then to the best distance so
+ * far), testing nearer boxes first and skipping objects whose boxes are
+ * farther than the best so far; each object's search stops once it is
+ * proved farther. It never tests every object unless they are all near.
+ * @pre world != NULL && x != NULL && hit != NULL && found != NULL
+ * @post *found tells whether an object the filter lets through has a
+ *       computed distance (noctDistanceResult::distance) at most
+ *       max_distance; if so, *hit is the one of least distance, ties to
+ *       the least index, with its result. The choice depends only on the
+ *       objects and the query, never on the tree or its history. Objects
+ *       are compared by their computed distances; every object whose true
+ *       distance is within 2^-36 of the magnitude (of the query's placed
+ *       box, or of the distance) of the best one's is compared, so the
+ *       answer is the least of them all whenever each object's accuracy
+ *       is that of coordinates no larger than 16 times the query's (an
+ *       object reaching far beyond, whose own rounding is larger, may lose
+ *       a near tie it would win by a hair); hit->result's points may then
+ *       differ from noctWorldDistance()'s in a tie of nearest features.
+ *       Nothing is found (and *found is false) on failure.
+ * @param world the world.
+ * @param mesh the shape, or NULL for a box primitive or a point.
+ * @param half_extents the box primitive's half-extents when mesh is NULL,
+ *        or NULL for a point.
+ * @param x where the shape is; for a point, x->p is the point.
+ * @param max_distance how far to look: 0 or more, or INFINITY.
+ * @param filter which objects to consider.
+ * @param hit receives the nearest object.
+ * @param found receives whether there is one.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; as noctWorldQueryShape() for a bad shape or
+ *         transform; for a point, #NOCT_ERR_NONFINITE or
+ *         #NOCT_ERR_TOO_LARGE (beyond #NOCT_MAX_COORDINATE);
+ *         #NOCT_ERR_NONFINITE (NaN) or #NOCT_ERR_INVALID (negative) for a
+ *         bad max_distance; #NOCT_ERR_NOMEM; #NOCT_ERR_NUMERIC.
+ */
+NOCT_API noctStatus noctWorldQueryNearest(const noctWorld *world, const noctMesh *mesh,
+                                          const double half_extents[3],
+                                          const noctTransform *x, double max_distance,
+                                          noctQueryFilter filter, noctDistanceHit *hit,
+                                          bool *found, noctError *err);
+
+/**
+ * @brief Visit every object within a distance of a shape placed at x, or
+ * of a point, with its distance.
+ *
+ * The query and the distances are noctWorldQueryNearest()'s. An object is
+ * reported when its distance search with max_distance @p distance (what
+ * noctDistance(), or the point's search, gives with it) is not beyond and
+ * its proved lower bound is at most @p distance: so every object whose
+ * true distance is at most @p distance is reported, and none whose true
+ * distance exceeds it by more than its interval's width (upper - lower,
+ * at most 2^-40 of the coordinates' magnitude). In that band
+ * (lower <= distance < upper) an object may be reported although its true
+ * distance exceeds @p distance by less than the width: hit->result tells
+ * (its lower, distance and upper). Objects whose boxes are farther than
+ * @p distance (and 2^-36 of the magnitude) are not searched at all.
+ * @pre world != NULL && x != NULL && fcn != NULL; fcn does not change the
+ *      world.
+ * @post fcn was called once for each such object the filter lets through,
+ *       in order of index, until it returned false; nothing else changed.
+ * @param world the world.
+ * @param mesh the shape, or NULL for a box primitive or a point.
+ * @param half_extents the box primitive's half-extents when mesh is NULL,
+ *        or NULL for a point.
+ * @param x where the shape is; for a point, x->p is the point.
+ * @param distance the distance: 0 to #NOCT_MAX_COORDINATE (0: the objects
+ *        that collide with the shape, or contain the point).
+ * @param filter which objects to report.
+ * @param fcn called for each.
+ * @param context passed to fcn.
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldQueryNearest(); #NOCT_ERR_INVALID for a distance
+ *         beyond #NOCT_MAX_COORDINATE (no call made on failure before the
+ *         search).
+ */
+NOCT_API noctStatus noctWorldQueryWithin(const noctWorld *world, const noctMesh *mesh,
+                                         const double half_extents[3], const noctTransform *x,
+                                         double distance, noctQueryFilter filter,
+                                         noctDistanceHitFcn *fcn, void *context,
+                                         noctError *err);
 
 /** @brief An array for a query's objects: pass noctCollectObjects() as the
  *  function and a pointer to this as its context. */

@@ -11,8 +11,8 @@
  * A world holds objects (noctObjectDef): a mesh (borrowed; it must outlive
  * the objects), a rigid transform (a rotation, then a translation: see
  * transform.h for exactly how the vertices are placed), a velocity, a
- * type (static, kinematic or moving), a collision filter, a sensor flag
- * and a pointer for the program. A program may change any of them
+ * type (static, kinematic or moving), a collision filter, a sensor flag,
+ * a margin (for the near pairs) and a pointer for the program. A program may change any of them
  * between steps (noctWorldSetTransform(), noctWorldSetVelocity(), ...);
  * the next step sees the new state, and the events follow every change:
  * a pair that a removal, a teleport, a filter or a sensor flag parted ends
@@ -272,9 +272,13 @@ typedef struct noctWorldDef {
                                  #NOCT_EFFECT_WALLS. Default 0. */
     double walls_hi[3];     /**< The container's high corner. Default 0. */
     double margin;          /**< Distance within which two objects are
-                                 "near" (noctWorldNear()): 0 (the
-                                 default) keeps no near pairs and costs
-                                 nothing; at most #NOCT_MAX_COORDINATE. */
+                                 "near" (noctWorldNear()), on top of
+                                 their own margins
+                                 (noctObjectDef::margin): 0 (the
+                                 default), in a world whose objects
+                                 have no margins either, keeps no near
+                                 pairs and costs nothing; at most
+                                 #NOCT_MAX_COORDINATE. */
 } noctWorldDef;
 
 /** @brief How an object moves. */
@@ -372,6 +376,19 @@ typedef struct noctObjectDef {
                                   leaves that one). A world with any
                                   continuous object takes no sub-steps.
                                   Default #NOCT_QUALITY_WORLD. */
+    double margin;           /**< Its own margin: a skin of this
+                                  thickness around it, for the near
+                                  pairs. Two objects are near when their
+                                  skins come within the world's margin
+                                  (noctWorldDef::margin) of each other:
+                                  their pair's margin is the world's
+                                  plus both of theirs (noctWorldNear()
+                                  says exactly); and noctWorldQueryNear()
+                                  reports the object within its query's
+                                  margin plus this. Finite, 0 to
+                                  #NOCT_MAX_COORDINATE. A world whose
+                                  objects all have 0 pays nothing for
+                                  it. Default 0. */
 } noctObjectDef;
 
 /**
@@ -509,7 +526,8 @@ NOCT_API noctStatus noctWorldReserve(noctWorld *world, size_t more, noctError *e
  * @return No mesh and zero half-extents (one or the other must be set),
  *         the identity transform, zero velocity, no angular velocity
  *         (the identity), #NOCT_OBJECT_MOVING, no user data, every category
- *         and mask bit set, not a sensor.
+ *         and mask bit set, not a sensor, the world's motion quality, no
+ *         margin (0).
  */
 NOCT_API noctObjectDef noctDefaultObjectDef(void);
 
@@ -540,7 +558,11 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  *         would carry an object beyond #NOCT_MAX_COORDINATE fails the
  *         step that would);
  *         #NOCT_ERR_INVALID for an unknown type or a category of 0;
- *         #NOCT_ERR_NOMEM (as for noctWorldAdd()).
+ *         #NOCT_ERR_NONFINITE for a margin that is not finite,
+ *         #NOCT_ERR_INVALID for one below 0 or beyond
+ *         #NOCT_MAX_COORDINATE;
+ *         #NOCT_ERR_NOMEM (as for noctWorldAdd(); and the first object
+ *         with a margin makes a per-object array).
  */
 NOCT_API noctStatus noctWorldCreateObject(noctWorld *world, const noctObjectDef *def,
                                           noctObjectId *id, noctError *err);
@@ -587,10 +609,19 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError
 NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
 
 /**
- * @brief The pairs near each other after the last step: with a margin
- * (noctWorldDef::margin) d > 0, the pairs of objects that are not sensors,
- * whose filters let them pair, and whose solids come within d of each
- * other, colliding ones included, sorted as noctWorldColliding()'s.
+ * @brief The pairs near each other after the last step: the pairs of
+ * objects that are not sensors, whose filters let them pair, and whose
+ * solids come within their pair's margin d of each other, colliding ones
+ * included, sorted as noctWorldColliding()'s.
+ *
+ * A pair's margin is the world's margin W (noctWorldDef::margin) plus
+ * the two objects' own margins m_a and m_b (noctObjectDef::margin):
+ * `d = W + (m_a + m_b)` in doubles (each object's margin a skin around
+ * it, the pair near when the skins come within W). A world whose margin
+ * and objects' margins are all 0 keeps no near pairs and pays nothing;
+ * once any is not 0, a pair whose own margin is 0 is near when it
+ * collides. Each object looks for its partners with its box grown by
+ * W + m + M, m its margin and M the largest object margin in the world.
  *
  * Found once a step, after its last sub-step. At the box level, two
  * objects are near when their placed boxes are within d (Euclidean
@@ -632,6 +663,35 @@ NOCT_API size_t noctWorldNearBegan(const noctWorld *world, const noctPair **pair
  * @return how many.
  */
 NOCT_API size_t noctWorldNearEnded(const noctWorld *world, const noctPair **pairs);
+
+/**
+ * @brief The distances and nearest points of the near pairs
+ * (noctWorldNear()): how near each is, with a proved interval.
+ *
+ * One result per pair of noctWorldNear(), in the same order, the pair's
+ * first object first: what noctWorldDistance() gives for the two objects
+ * (max_distance INFINITY), so `lower <= distance(true) <= upper` and a
+ * colliding pair has 0 (noctDistanceResult). The step does not compute
+ * them: the first call after a step does (a distance search per pair)
+ * and keeps them until the next step, so a world whose program never asks
+ * pays nothing, as for noctWorldBeganHits(). Call it before changing the
+ * world: the distances are those of the objects as they are at that first
+ * call (a pair one of whose objects was removed since gets distance,
+ * lower and upper NaN, no points and #NOCT_NO_TRIANGLE).
+ * @pre world != NULL && results != NULL && n != NULL
+ * @post On #NOCT_OK, *n is noctWorldNear()'s count and *results its
+ *       pairs' results (NULL when there are none), valid until the next
+ *       noctWorldStep() (succeeded or failed) or noctWorldDestroy(); on
+ *       failure *n is 0 and *results NULL, and a later call tries again.
+ * @param world the world.
+ * @param results receives the array.
+ * @param n receives its length.
+ * @param err receives the details of a failure; may be NULL.
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM; a narrowphase status
+ *         (#NOCT_ERR_NUMERIC, never seen).
+ */
+NOCT_API noctStatus noctWorldNearDistances(noctWorld *world, const noctDistanceResult **results,
+                                           size_t *n, noctError *err);
 
 /** @brief A keyframe of a track: where an object is at a tick. */
 typedef struct noctKeyframe {
@@ -825,6 +885,57 @@ NOCT_API noctStatus noctWorldBeganHits(noctWorld *world, const noctSweepHit **hi
                                        noctError *err);
 
 /**
+ * @brief The contacts of the colliding pairs: where each pair's solids
+ *        meet, and for convex shapes the minimum translation.
+ *
+ * For each pair noctWorldColliding() lists, in the same order, its
+ * contact as noctCollideContact() computes it for the two objects as
+ * they are placed (#noctContact: normal from the pair's first object
+ * towards its second, depth, up to four points). Box primitives are the
+ * solids of their corners as the world turns them, and count as convex,
+ * as do objects made with a convex or box-shaped mesh. A pair whose
+ * solids share no point, which a world at the box or convex level lists
+ * when their boxes or hulls meet, and continuous detection when they
+ * touched during the step but not at its end, gets #NOCT_CONTACT_NONE;
+ * so does a pair one of whose objects was removed since the step.
+ *
+ * The step does not compute them: the first call after a step does, and
+ * keeps them until the next step, so a world whose program never asks
+ * pays nothing for them (the step only marks them stale). Call it before
+ * changing the world: the contacts are those of the objects as they are
+ * when it is first called.
+ * @param[in]  world    The world.
+ * @param[out] contacts Receives the array (valid until the next step or
+ *                      noctWorldDestroy()), NULL when there are none.
+ * @param[out] n        Receives their number: noctWorldColliding()'s.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p world, @p contacts and @p n are not NULL.
+ * @post On #NOCT_OK, (*contacts)[i] is the contact of the i-th pair of
+ *       noctWorldColliding().
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM or #NOCT_ERR_NUMERIC (then *n is 0).
+ */
+NOCT_API noctStatus noctWorldContacts(noctWorld *world, const noctContact **contacts, size_t *n,
+                                      noctError *err);
+
+/**
+ * @brief The handle of the object at an index (its slot), if one lives
+ *        there.
+ *
+ * Indices are what the world's pairs, events and a scene's objects name
+ * (noctPair's `index`; a world built by noctSceneBuild() holds the
+ * scene's i-th object at index i). A program that keeps only indices (a
+ * tool, a log) gets the handle back here, generation included.
+ * @param[in]  world The world.
+ * @param[in]  index An index.
+ * @param[out] id    Receives the handle of the live object there.
+ * @pre @p world and @p id are not NULL.
+ * @post On #NOCT_OK, noctWorldObject(world, *id, ...) succeeds.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID if no object lives at @p index
+ *         (never made, or removed); then *id is (0, 0).
+ */
+NOCT_API noctStatus noctWorldObjectAt(const noctWorld *world, uint32_t index, noctObjectId *id);
+
+/**
  * @brief Read an object's position and direction.
  * @param[in]  world     The world.
  * @param[in]  id        The object.
@@ -977,6 +1088,36 @@ NOCT_API noctStatus noctWorldSetSensor(noctWorld *world, noctObjectId id, bool s
  */
 NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
                                        bool *sensor);
+
+/**
+ * @brief Set an object's own margin (see noctObjectDef::margin).
+ *
+ * Its near pairs follow at the next step, with their near events.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[in]  margin Its margin: finite, 0 to #NOCT_MAX_COORDINATE.
+ * @param[out] err    Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK the object's pairs have the new margin from the next
+ *       step on. On failure nothing changed.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or a margin
+ *         below 0 or beyond #NOCT_MAX_COORDINATE; #NOCT_ERR_NONFINITE for
+ *         a NaN or infinite one; #NOCT_ERR_NOMEM when the first margin of
+ *         a world needs its per-object array.
+ */
+NOCT_API noctStatus noctWorldSetMargin(noctWorld *world, noctObjectId id, double margin,
+                                       noctError *err);
+
+/**
+ * @brief Read an object's own margin.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[out] margin Receives it, as set (0 for none).
+ * @pre @p world and @p margin are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetMargin(const noctWorld *world, noctObjectId id,
+                                       double *margin);
 
 /**
  * @brief Set how an object's motion is tested (noctObjectDef::quality).

@@ -1,0 +1,329 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The distance from a point to a placed solid (the world's point queries:
+ * noctWorldQueryNearest() and noctWorldQueryWithin() without a shape),
+ * with the proved interval of noctDistance(): 0 when the solid contains
+ * the point (decided exactly, noct_point_in_solid()), else the distance
+ * to its boundary, searched over the mesh's hierarchy nearer child first,
+ * pruning boxes farther than the best so far; the lower bound is proved
+ * over the triangles the best leaves, as narrowphase_distance.c proves
+ * it for two triangles (the gap on separating axes, less its rounding).
+ */
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "narrowphase_internal.h"
+
+/* Squared distance from p to the placed box [lo, hi] + t, each gap scaled
+ * before it is squared. */
+static double box_dist2(const double p[3], const bvh_node *n, const double t[3], double scale)
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double g =
+            noct_max(noct_max((n->lo[k] + t[k]) - p[k], p[k] - (n->hi[k] + t[k])), 0) * scale;
+        s += g * g;
+    }
+    return s;
+}
+
+/* The point of segment ab nearest p, in floating point. */
+static void point_seg_nearest(const double p[3], const double a[3], const double b[3],
+                              double out[3])
+{
+    double ab[3], ap[3];
+    noct_sub3(b, a, ab);
+    noct_sub3(p, a, ap);
+    const double l2 = noct_dot3(ab, ab);
+    double u = l2 > 0 ? noct_dot3(ap, ab) / l2 : 0;
+    u = noct_min(noct_max(u, 0), 1);
+    for (int k = 0; k < 3; ++k)
+        out[k] = a[k] + u * ab[k];
+}
+
+static double dist2(const double a[3], const double b[3])
+{
+    double d[3];
+    noct_sub3(a, b, d);
+    return noct_dot3(d, d);
+}
+
+/* The point of closed triangle t nearest p, in floating point: by the
+ * Voronoi regions of its corners, edges and face; a triangle too flat for
+ * the face's formula is decided by its edges. */
+static void point_tri_nearest(const double p[3], double t[3][3], double out[3])
+{
+    const double *a = t[0], *b = t[1], *c = t[2];
+    double ab[3], ac[3], ap[3], bp[3], cp[3];
+    noct_sub3(b, a, ab);
+    noct_sub3(c, a, ac);
+    noct_sub3(p, a, ap);
+    const double d1 = noct_dot3(ab, ap), d2 = noct_dot3(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        noct_copy3(a, out);
+        return;
+    }
+    noct_sub3(p, b, bp);
+    const double d3 = noct_dot3(ab, bp), d4 = noct_dot3(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        noct_copy3(b, out);
+        return;
+    }
+    noct_sub3(p, c, cp);
+    const double d5 = noct_dot3(ab, cp), d6 = noct_dot3(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        noct_copy3(c, out);
+        return;
+    }
+    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    const double sum = va + vb + vc;
+    if (sum > 0 && va >= 0 && vb >= 0 && vc >= 0) {
+        const double v = vb / sum, w = vc / sum;
+        for (int k = 0; k < 3; ++k)
+            out[k] = a[k] + ab[k] * v + ac[k] * w;
+        return;
+    }
+    /* outside the face's prism, or flat: the nearest of the edges' points */
+    double best = INFINITY, q[3];
+    for (int e = 0; e < 3; ++e) {
+        point_seg_nearest(p, t[e], t[(e + 1) % 3], q);
+        const double d = dist2(p, q);
+        if (d < best) {
+            best = d;
+            noct_copy3(q, out);
+        }
+    }
+}
+
+/* The gap between p and the triangle along u proved, as
+ * narrowphase_distance.c's proved_gap(): (the projections' gap less twice
+ * an allowance for their rounding) over |u|, or 0; s bounds every
+ * coordinate. */
+static double proved_gap(const double u[3], const double p[3], double t[3][3], double s)
+{
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    if (!(l1 > 0))
+        return 0;
+    double tmax = -INFINITY, tmin = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+        const double x = noct_dot3(u, t[i]);
+        tmax = noct_max(tmax, x);
+        tmin = noct_min(tmin, x);
+    }
+    const double pp = noct_dot3(u, p);
+    /* each projection errs by at most 4 ulp of l1 s; the difference one
+     * more */
+    const double err = 0x1p-50 * l1 * s;
+    const double gap = noct_max(pp - tmax, tmin - pp) - 2 * err;
+    if (!(gap > 0))
+        return 0;
+    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return gap / (n * (1 + 0x1p-48));
+}
+
+/* A proved lower bound on the distance from p to closed triangle t: the
+ * largest gap over the axes that may hold the direction from p to its
+ * nearest point (the direction to the computed point first, then the
+ * face's normal, p to each corner, the perpendicular from each edge's line
+ * to p); it stops once a gap reaches enough (the caller keeps the least
+ * bound over triangles: one at least enough changes nothing). */
+static double point_tri_lower_bound(const double p[3], double t[3][3], double enough)
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        s = noct_max(s, fabs(p[k]));
+        for (int i = 0; i < 3; ++i)
+            s = noct_max(s, fabs(t[i][k]));
+    }
+    double u[3], v[3], w[3], q[3];
+    point_tri_nearest(p, t, q);
+    noct_sub3(p, q, u);
+    double best = proved_gap(u, p, t, s);
+    if (best >= enough)
+        return best;
+    double e[3][3];
+    for (int i = 0; i < 3; ++i)
+        noct_sub3(t[(i + 1) % 3], t[i], e[i]);
+    cross_into(e[0], e[1], u);
+    best = noct_max(best, proved_gap(u, p, t, s));
+    for (int i = 0; i < 3 && best < enough; ++i) {
+        noct_sub3(p, t[i], v);
+        best = noct_max(best, proved_gap(v, p, t, s));
+        cross_into(e[i], v, w);
+        cross_into(w, e[i], u);
+        best = noct_max(best, proved_gap(u, p, t, s));
+    }
+    return best;
+}
+
+/* Squared distance from p to the box of triangle x, a lower bound on the
+ * squared distance to it (all scaled alike). */
+static double tri_box_dist2(const double p[3], double x[3][3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = noct_min(x[0][k], noct_min(x[1][k], x[2][k]));
+        const double hi = noct_max(x[0][k], noct_max(x[1][k], x[2][k]));
+        const double g = noct_max(noct_max(lo - p[k], p[k] - hi), 0);
+        s += g * g;
+    }
+    return s;
+}
+
+/* The walk's state: p and the mesh (both scaled by scale when tiny). */
+typedef struct point_walk {
+    const noctMesh *m;
+    const double *t;
+    const double *p;      /* the point */
+    double ps[3];         /* and scaled */
+    double scale;
+    double best2, q[3];   /* the best squared distance and point (scaled) */
+    uint32_t tri;         /* its triangle (BVH order) */
+    bool found;
+} point_walk;
+
+static void placed_triangle(const point_walk *w, uint32_t i, double x[3][3])
+{
+    for (int c = 0; c < 3; ++c) {
+        const double *v = &w->m->v[3 * w->m->tri[3 * i + c]];
+        for (int k = 0; k < 3; ++k)
+            x[c][k] = (v[k] + w->t[k]) * w->scale;
+    }
+}
+
+/* Node stack depth: the hierarchies are far shallower (bvh.h). */
+#define POINT_STACK 256
+
+/* The nearest triangle within sqrt(best2), nearer child first. */
+static void nearest_walk(point_walk *w)
+{
+    uint32_t stack[POINT_STACK];
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const bvh_node *n = &w->m->nodes[stack[--top]];
+        if (box_dist2(w->p, n, w->t, w->scale) >= w->best2)
+            continue;
+        if (n->count > 0) {
+            for (uint32_t i = n->first; i < n->first + n->count; ++i) {
+                double x[3][3], q[3];
+                placed_triangle(w, i, x);
+                if (tri_box_dist2(w->ps, x) >= w->best2)
+                    continue;
+                point_tri_nearest(w->ps, x, q);
+                const double d2 = dist2(w->ps, q);
+                if (d2 < w->best2) {
+                    w->best2 = d2;
+                    noct_copy3(q, w->q);
+                    w->tri = i;
+                    w->found = true;
+                }
+            }
+            continue;
+        }
+        NOCT_INVARIANT(top + 2 <= POINT_STACK);
+        const double d0 = box_dist2(w->p, &w->m->nodes[n->first], w->t, w->scale);
+        const double d1 = box_dist2(w->p, &w->m->nodes[n->first + 1], w->t, w->scale);
+        /* the nearer child on top */
+        stack[top++] = d0 <= d1 ? n->first + 1 : n->first;
+        stack[top++] = d0 <= d1 ? n->first : n->first + 1;
+    }
+}
+
+/* The least lower bound over the triangles within reach (scaled). */
+static double lower_walk(const point_walk *w, double reach, double lower)
+{
+    const double reach2 = reach * reach;
+    uint32_t stack[POINT_STACK];
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const bvh_node *n = &w->m->nodes[stack[--top]];
+        if (box_dist2(w->p, n, w->t, w->scale) > reach2)
+            continue;
+        if (n->count > 0) {
+            for (uint32_t i = n->first; i < n->first + n->count; ++i) {
+                double x[3][3];
+                placed_triangle(w, i, x);
+                if (tri_box_dist2(w->ps, x) > reach2)
+                    continue;
+                lower = noct_min(lower, point_tri_lower_bound(w->ps, x, lower));
+            }
+            continue;
+        }
+        NOCT_INVARIANT(top + 2 <= POINT_STACK);
+        stack[top++] = n->first;
+        stack[top++] = n->first + 1;
+    }
+    return lower;
+}
+
+noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, const double t[3],
+                                      double max_distance, noctDistanceResult *r)
+{
+    memset(r, 0, sizeof *r);
+    for (int k = 0; k < 3; ++k)
+        r->triangle_a[k] = r->triangle_b[k] = NOCT_NO_TRIANGLE;
+    double mag = 0;
+    for (int k = 0; k < 3; ++k)
+        mag = noct_max(mag, noct_max(fabs(p[k]), noct_max(fabs(m->lo[k] + t[k]),
+                                                          fabs(m->hi[k] + t[k]))));
+    /* Tiny coordinates scaled up (exactly), as noctDistance() does. */
+    double scale = 1;
+    if (mag > 0 && mag < 0x1p-200)
+        scale = noct_pow2(-ilogb(mag));
+    const double slack = 0x1p-40 * noct_max(mag, isfinite(max_distance) ? max_distance : 0);
+    const double reach_max = isfinite(max_distance)
+                                 ? (max_distance * (1 + 0x1p-40) + slack) * scale
+                                 : (double)INFINITY;
+    point_walk w = {m, t, p, {p[0] * scale, p[1] * scale, p[2] * scale}, scale, INFINITY,
+                    {0, 0, 0}, 0, false};
+    const bool far = box_dist2(p, &m->nodes[0], t, scale) > reach_max * reach_max;
+    if (!far) {
+        /* outside the placed box, outside the solid (fl(v + t) is
+         * monotone: the placed box holds the placed vertices) */
+        bool inside = true;
+        for (int k = 0; k < 3; ++k)
+            inside = inside && m->lo[k] + t[k] <= p[k] && p[k] <= m->hi[k] + t[k];
+        if (inside) {
+            const noctStatus st = noct_point_in_solid(m, t, p, &inside);
+            if (st != NOCT_OK)
+                return st;
+        }
+        if (inside) {
+            r->colliding = true;
+            noct_copy3(p, r->point_a);
+            noct_copy3(p, r->point_b);
+            return NOCT_OK;
+        }
+        w.best2 = reach_max * reach_max;
+        nearest_walk(&w);
+    }
+    const double slack_s = slack * scale, allow = 0x1p-47 * mag * scale;
+    if (!w.found) {
+        /* Nothing within the reach in floating point: prove it. */
+        if (far || lower_walk(&w, reach_max, INFINITY) > max_distance * scale) {
+            r->beyond = true;
+            r->lower = max_distance;
+            r->distance = r->upper = INFINITY;
+            return NOCT_OK;
+        }
+        w.best2 = INFINITY;
+        nearest_walk(&w);
+        NOCT_INVARIANT(w.found);
+    }
+    const double d = sqrt(w.best2);
+    const double upper = d * (1 + 0x1p-50) + 2 * allow;
+    const double lower = lower_walk(&w, upper * (1 + 0x1p-40) + slack_s, upper);
+    r->lower = lower / scale;
+    r->upper = upper / scale;
+    r->distance = noct_min(noct_max(d / scale, r->lower), r->upper);
+    noct_copy3(p, r->point_a);
+    for (int k = 0; k < 3; ++k) {
+        r->point_b[k] = w.q[k] / scale;
+        r->triangle_b[k] = m->tri[3 * w.tri + k];
+    }
+    return NOCT_OK;
+}
