@@ -685,12 +685,43 @@ static bool boxes_deep(const noctMesh *a, const double ta[3], const noctMesh *b,
     return a_in_b || b_in_a;
 }
 
+/* The exact test on the meshes of a search, which may be rotated views
+ * (noct_dist_exact): the rotated meshes are made the first time. */
+static noctStatus exact_of(const noctMesh *a, const double ta[3], const noctMesh *b,
+                           const double tb[3], noct_dist_exact *ex, bool *colliding,
+                           noctNarrowStats *stats)
+{
+    const noctMesh *m[2] = {a, b};
+    for (int i = 0; ex != NULL && i < 2; ++i) {
+        if (ex[i].R == NULL)
+            continue;
+        if (ex[i].made == NULL) {
+            const noctStatus st = noct_mesh_rotated(ex[i].src, ex[i].R, &ex[i].made, NULL);
+            if (st != NOCT_OK)
+                return st;
+        }
+        m[i] = ex[i].made;
+    }
+    return noctCollide(m[0], ta, m[1], tb, NOCT_ACCURACY_EXACT, colliding, stats);
+}
+
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
-                                noctDistanceResult *r, noctNarrowStats *stats)
+                                noctDistanceResult *r, noctNarrowStats *stats,
+                                noct_dist_exact ex[2])
 {
     if (!placed_first(a, ta, b, tb)) {
-        const noctStatus st = noct_distance_placed(b, tb, a, ta, max_distance, r, stats);
+        noct_dist_exact sw[2];
+        if (ex != NULL) {
+            sw[0] = ex[1];
+            sw[1] = ex[0];
+        }
+        const noctStatus st =
+            noct_distance_placed(b, tb, a, ta, max_distance, r, stats, ex ? sw : NULL);
+        if (ex != NULL) {
+            ex[0].made = sw[1].made;
+            ex[1].made = sw[0].made;
+        }
         mirror(r);
         return st;
     }
@@ -717,8 +748,7 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
     bool decided = root2 > 0;
     if (!decided && boxes_deep(a, ta, b, tb)) {
         bool colliding = false;
-        const noctStatus st =
-            noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, &colliding, stats);
+        const noctStatus st = exact_of(a, ta, b, tb, ex, &colliding, stats);
         if (st != NOCT_OK)
             return st;
         if (colliding) {
@@ -759,8 +789,7 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
     if (!decided && (!(w.lower > 0) || placed_box_inside(a, ta, b, tb) ||
                      placed_box_inside(b, tb, a, ta))) {
         bool colliding = false;
-        const noctStatus st =
-            noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, &colliding, stats);
+        const noctStatus st = exact_of(a, ta, b, tb, ex, &colliding, stats);
         if (st != NOCT_OK)
             return st;
         if (colliding) {
@@ -1163,6 +1192,59 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     return answered;
 }
 
+/* A view of m rotated by R, for the general path: m's fields, with its
+ * vertices fl(R v) and its hierarchy's boxes refitted to them (the same
+ * tree, children after their parents), the bounds theirs; *buf owns the
+ * arrays. DEGENERATE when a rotated triangle is near noctMeshCreate()'s
+ * tolerance (rotated_fine()), NOMEM. */
+static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *view, void **buf)
+{
+    *buf = NULL;
+    double *v = malloc(3 * m->nv * sizeof *v + m->nnodes * sizeof(bvh_node));
+    if (v == NULL)
+        return NOCT_ERR_NOMEM;
+    *buf = v;
+    bvh_node *nodes = (bvh_node *)(v + 3 * m->nv);
+    for (size_t i = 0; i < m->nv; ++i)
+        noct_rotate(R, &m->v[3 * i], &v[3 * i]);
+    if (!rotated_fine(m, v))
+        return NOCT_ERR_DEGENERATE;
+    for (size_t n = m->nnodes; n-- > 0;) {
+        const bvh_node *o = &m->nodes[n];
+        bvh_node *x = &nodes[n];
+        x->first = o->first;
+        x->count = o->count;
+        for (int k = 0; k < 3; ++k) {
+            x->lo[k] = INFINITY;
+            x->hi[k] = -INFINITY;
+        }
+        if (o->count > 0) {
+            for (uint32_t t = o->first; t < o->first + o->count; ++t)
+                for (int c = 0; c < 3; ++c) {
+                    const double *p = &v[3 * m->tri[3 * t + c]];
+                    for (int k = 0; k < 3; ++k) {
+                        x->lo[k] = noct_min(x->lo[k], p[k]);
+                        x->hi[k] = noct_max(x->hi[k], p[k]);
+                    }
+                }
+        } else {
+            for (int c = 0; c < 2; ++c)
+                for (int k = 0; k < 3; ++k) {
+                    x->lo[k] = noct_min(x->lo[k], nodes[o->first + (uint32_t)c].lo[k]);
+                    x->hi[k] = noct_max(x->hi[k], nodes[o->first + (uint32_t)c].hi[k]);
+                }
+        }
+    }
+    *view = *m;
+    view->v = v;
+    view->nodes = nodes;
+    for (int k = 0; k < 3; ++k) {
+        view->lo[k] = nodes[0].lo[k];
+        view->hi[k] = nodes[0].hi[k];
+    }
+    return NOCT_OK;
+}
+
 /* Is m worth the convex path: convex, a box form (a rotated box's rounded
  * corners may bend it by an ulp), or every vertex a corner of its hull (a
  * convex shape whose flat faces rounding bent; mesh.c runs qhull only on
@@ -1201,18 +1283,39 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     if (convex_like(a) && convex_like(b) &&
         convex_path(m, R, turned, x, max_distance, result, stats))
         return NOCT_OK;
-    for (int i = 0; i < 2 && st == NOCT_OK; ++i)
-        if (turned[i]) {
+    /* The general path reads a rotated mesh's vertices, triangles and
+     * hierarchy only: a view of the mesh with its vertices rotated and its
+     * hierarchy's boxes refitted, not a new mesh (its checks, hull and
+     * hierarchy cost far more than the search). The exact test, when the
+     * search needs it, makes the rotated meshes (exact_of()). */
+    noctMesh view[2];
+    void *buf[2] = {NULL, NULL};
+    noct_dist_exact ex[2] = {{m[0], NULL, NULL}, {m[1], NULL, NULL}};
+    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
+        if (!turned[i])
+            continue;
+        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
+        if (st == NOCT_OK) {
+            ex[i].R = R[i];
+            m[i] = &view[i];
+        } else if (st == NOCT_ERR_DEGENERATE) {
+            /* near the tolerance: the rotated mesh says what it is */
             st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
             if (st == NOCT_OK)
                 m[i] = rotated[i];
+        } else {
+            noct_fail(err, st, -1, 0, "out of memory");
         }
+    }
     if (st == NOCT_OK) {
-        st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats);
+        st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats, ex);
         if (st != NOCT_OK)
             noct_fail(err, st, -1, 0, "distance: %s", noctStatusString(st));
     }
-    noctMeshDestroy(rotated[0]);
-    noctMeshDestroy(rotated[1]);
+    for (int i = 0; i < 2; ++i) {
+        free(buf[i]);
+        noctMeshDestroy(ex[i].made);
+        noctMeshDestroy(rotated[i]);
+    }
     return st;
 }

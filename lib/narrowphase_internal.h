@@ -206,9 +206,21 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
 
 /* ---- distances (narrowphase_distance.c) ----------------------------------- */
 
-/* noctDistance() of two meshes placed at translations (already rotated). */
+/* Where the exact test of a distance search finds a mesh: src rotated by
+ * R (made, owned, the first time the test is needed), or with R NULL the
+ * searched mesh itself. */
+typedef struct noct_dist_exact {
+    const noctMesh *src;
+    const double *R;
+    noctMesh *made;
+} noct_dist_exact;
+
+/* noctDistance() of two meshes placed at translations (already rotated,
+ * or rotated views that only the search reads: ex says where the exact
+ * test finds their meshes; NULL: a and b themselves). */
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
-                                noctDistanceResult *result, noctNarrowStats *stats);
+                                noctDistanceResult *result, noctNarrowStats *stats,
+                                noct_dist_exact ex[2]);
 
 #endif /* NOCT_LIB_NARROWPHASE_INTERNAL_H */
