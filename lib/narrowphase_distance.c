@@ -685,30 +685,80 @@ static bool boxes_deep(const noctMesh *a, const double ta[3], const noctMesh *b,
     return a_in_b || b_in_a;
 }
 
-/* The exact test on the meshes of a search, which may be rotated views
- * (noct_dist_exact): the rotated meshes are made the first time. */
+typedef struct meet_walk {
+    const placed *A, *B;
+    const exact_ctx *x;
+    noctNarrowStats *st;
+} meet_walk;
+
+static inline bool meet_prune(void *context, const bvh_node *na, const bvh_node *nb)
+{
+    const meet_walk *w = context;
+    if (w->st)
+        ++w->st->bvh_pairs;
+    return !noct_boxes_overlap(na->lo, na->hi, w->A->t, nb->lo, nb->hi, w->B->t);
+}
+
+static inline bool meet_pair(void *context, uint32_t i, double ta[3][3], uint32_t j,
+                             double tb[3][3])
+{
+    (void)i;
+    (void)j;
+    const meet_walk *w = context;
+    if (w->st)
+        ++w->st->triangle_pairs;
+    return tri_tri(w->x, ta, tb);
+}
+
+/*
+ * The exact test on the meshes of a search. Meshes as made go to
+ * noctCollide(); rotated views (ex[i].R set) have no box form, filter or
+ * hull, so the test is the exact level's own decision without its
+ * shortcuts (which only prove it sooner): the boundaries meet (exact
+ * triangle pairs through the hierarchies), or a placed box lies in the
+ * other and a vertex of its mesh in the other's solid (exact).
+ */
 static noctStatus exact_of(const noctMesh *a, const double ta[3], const noctMesh *b,
-                           const double tb[3], noct_dist_exact *ex, bool *colliding,
+                           const double tb[3], const noct_dist_exact *ex, bool *colliding,
                            noctNarrowStats *stats)
 {
-    const noctMesh *m[2] = {a, b};
-    for (int i = 0; ex != NULL && i < 2; ++i) {
-        if (ex[i].R == NULL)
-            continue;
-        if (ex[i].made == NULL) {
-            const noctStatus st = noct_mesh_rotated(ex[i].src, ex[i].R, &ex[i].made, NULL);
-            if (st != NOCT_OK)
-                return st;
-        }
-        m[i] = ex[i].made;
+    if (ex == NULL || (ex[0].R == NULL && ex[1].R == NULL))
+        return noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, colliding, stats);
+    const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
+    exact_ctx x = {stats ? &stats->exact_fallbacks : NULL};
+    if (stats)
+        ++stats->exact_tests;
+    meet_walk w = {&A, &B, &x, stats};
+    if (noct_bvh_pair_walk(&A, &B, meet_prune, meet_pair, &w)) {
+        *colliding = true;
+        return NOCT_OK;
     }
-    return noctCollide(m[0], ta, m[1], tb, NOCT_ACCURACY_EXACT, colliding, stats);
+    const placed *pair[2][2] = {{&A, &B}, {&B, &A}};
+    for (int i = 0; i < 2; ++i) {
+        const placed *in = pair[i][0], *out = pair[i][1];
+        if (!placed_box_inside(in->m, in->t, out->m, out->t))
+            continue;
+        double p[3];
+        noct_place_vertex(in, in->m->tri[0], p);
+        if (stats)
+            ++stats->containment_tests;
+        bool inside;
+        const noctStatus st = noct_contains(out, p, &x, &inside);
+        if (st != NOCT_OK)
+            return st;
+        if (inside) {
+            *colliding = true;
+            return NOCT_OK;
+        }
+    }
+    *colliding = false;
+    return NOCT_OK;
 }
 
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
                                 noctDistanceResult *r, noctNarrowStats *stats,
-                                noct_dist_exact ex[2])
+                                const noct_dist_exact ex[2])
 {
     if (!placed_first(a, ta, b, tb)) {
         noct_dist_exact sw[2];
@@ -718,10 +768,6 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
         }
         const noctStatus st =
             noct_distance_placed(b, tb, a, ta, max_distance, r, stats, ex ? sw : NULL);
-        if (ex != NULL) {
-            ex[0].made = sw[1].made;
-            ex[1].made = sw[0].made;
-        }
         mirror(r);
         return st;
     }
@@ -1287,10 +1333,10 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
      * hierarchy only: a view of the mesh with its vertices rotated and its
      * hierarchy's boxes refitted, not a new mesh (its checks, hull and
      * hierarchy cost far more than the search). The exact test, when the
-     * search needs it, makes the rotated meshes (exact_of()). */
+     * search needs it, decides on the views (exact_of()). */
     noctMesh view[2];
     void *buf[2] = {NULL, NULL};
-    noct_dist_exact ex[2] = {{m[0], NULL, NULL}, {m[1], NULL, NULL}};
+    noct_dist_exact ex[2] = {{NULL}, {NULL}};
     for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
         if (!turned[i])
             continue;
@@ -1314,7 +1360,6 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     }
     for (int i = 0; i < 2; ++i) {
         free(buf[i]);
-        noctMeshDestroy(ex[i].made);
         noctMeshDestroy(rotated[i]);
     }
     return st;

@@ -206,21 +206,18 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
 
 /* ---- distances (narrowphase_distance.c) ----------------------------------- */
 
-/* Where the exact test of a distance search finds a mesh: src rotated by
- * R (made, owned, the first time the test is needed), or with R NULL the
- * searched mesh itself. */
+/* Is a mesh of a distance search a rotated view (R set: the rotation;
+ * only its vertices, triangles and hierarchy are valid), not a made mesh
+ * (R NULL)? */
 typedef struct noct_dist_exact {
-    const noctMesh *src;
     const double *R;
-    noctMesh *made;
 } noct_dist_exact;
 
 /* noctDistance() of two meshes placed at translations (already rotated,
- * or rotated views that only the search reads: ex says where the exact
- * test finds their meshes; NULL: a and b themselves). */
+ * or rotated views, as ex says; NULL: both made meshes). */
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
                                 noctDistanceResult *result, noctNarrowStats *stats,
-                                noct_dist_exact ex[2]);
+                                const noct_dist_exact ex[2]);
 
 #endif /* NOCT_LIB_NARROWPHASE_INTERNAL_H */
