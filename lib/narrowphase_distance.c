@@ -981,32 +981,40 @@ static bool gjk(const convex_set *A, const convex_set *B, size_t ia[4], size_t i
         double p[3];
         noct_sub3(&A->p[3 * i], &B->p[3 * j], p);
         const double vv = noct_dot3(v, v);
-        if (k > 0 && vv - noct_dot3(v, p) <= 0x1p-48 * vv)
+        /* settled: the support's bound is within 2^-44 of |v|^2 */
+        if (k > 0 && vv - noct_dot3(v, p) <= 0x1p-44 * vv)
             break;
         bool again = false;
         for (int s = 0; s < k; ++s)
             again = again || (ia[s] == i && ib[s] == j);
         if (again)
             break;
-        noct_copy3(p, w[k]);
-        ia[k] = i;
-        ib[k] = j;
-        ++k;
-        double l[4];
-        const unsigned mask = simplex_nearest(w, k, l, v);
+        double tw[4][3], tv[3] = {0, 0, 0}, l[4];
+        size_t tia[4], tib[4];
+        for (int s = 0; s < k; ++s) {
+            noct_copy3(w[s], tw[s]);
+            tia[s] = ia[s];
+            tib[s] = ib[s];
+        }
+        noct_copy3(p, tw[k]);
+        tia[k] = i;
+        tib[k] = j;
+        const unsigned mask = simplex_nearest(tw, k + 1, l, tv);
+        /* no progress (rounding): keep the last simplex, the best */
+        if (k > 0 && !(noct_dot3(tv, tv) < vv))
+            break;
         int m = 0;
-        for (int s = 0; s < k; ++s)
+        for (int s = 0; s <= k; ++s)
             if (mask & (1u << s)) {
-                noct_copy3(w[s], w[m]);
-                ia[m] = ia[s];
-                ib[m] = ib[s];
+                noct_copy3(tw[s], w[m]);
+                ia[m] = tia[s];
+                ib[m] = tib[s];
                 lam[m] = l[s];
                 ++m;
             }
         k = m;
+        noct_copy3(tv, v);
         if (k == 4 || !(noct_dot3(v, v) > tiny2))
-            return false;
-        if (iter == 63)
             return false;
     }
     *n = k;
@@ -1077,15 +1085,18 @@ static bool rotated_fine(const noctMesh *m, const double *r)
         double e1[3], e2[3], e3[3], n[3];
         noct_sub3(&r[3 * v[1]], &r[3 * v[0]], e1);
         noct_sub3(&r[3 * v[2]], &r[3 * v[0]], e2);
-        /* scaled to the triangle's size: no underflow at any size */
+        /* scaled to the triangle's size if far from 1: no underflow or
+         * overflow at any size */
         const double big = noct_max(noct_max_abs3(e1), noct_max_abs3(e2));
         if (!(big > 0))
             return false;
-        const int ex = -ilogb(big);
-        const double f = noct_pow2(ex < 1023 ? ex : 1023);
-        for (int k = 0; k < 3; ++k) {
-            e1[k] *= f;
-            e2[k] *= f;
+        if (big < 0x1p-200 || big > 0x1p200) {
+            const int ex = -ilogb(big);
+            const double f = noct_pow2(ex < 1023 ? ex : 1023);
+            for (int k = 0; k < 3; ++k) {
+                e1[k] *= f;
+                e2[k] *= f;
+            }
         }
         noct_sub3(e2, e1, e3);
         noct_cross3(e1, e2, n);
@@ -1095,6 +1106,25 @@ static bool rotated_fine(const noctMesh *m, const double *r)
             return false;
     }
     return true;
+}
+
+/* A box form with a dual (every triangle on a face of the ideal box, so
+ * three corners of a face, legs along two edges) whose edges are within a
+ * factor 10^6 of each other, its corners within 2^-30 of its least
+ * half-edge of the box: every triangle has an area over 10^-7 of its
+ * longest side squared, rotated or not, far from noctMeshCreate()'s
+ * tolerance, so rotated_fine() need not look. */
+static bool box_far_from_flat(const noctMesh *m)
+{
+    if (!m->has_dual)
+        return false;
+    double lo = INFINITY, hi = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double n = noct_norm3(m->box.e[i]);
+        lo = noct_min(lo, n);
+        hi = noct_max(hi, n);
+    }
+    return lo > 1e-6 * hi && (double)m->box.dev <= 0x1p-30 * lo;
 }
 
 /* Lexicographic order of the two placed sets: the canonical order of a
@@ -1211,7 +1241,7 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             else
                 noct_copy3(&m[i]->v[3 * j], p);
         }
-        ok = !turned[i] || rotated_fine(m[i], s[i].p);
+        ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
         for (size_t j = 0; j < s[i].n && ok; ++j)
             for (int k = 0; k < 3; ++k) {
                 s[i].p[3 * j + k] += x[i]->p[k];
