@@ -21,7 +21,7 @@ examplescenesdir = $(docdir)/examples/scenes
 dist_examplescenes_DATA = docs/examples/scenes/arms-3.scene \
 	docs/examples/scenes/keyframes-20.scene
 
-EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md \
+EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md docs/families.md \
 	docs/doxygen-header.html $(docs_results)
 docs_results = \
 	docs/results/default.txt docs/results/scale.txt docs/results/peers.txt \
@@ -32,14 +32,22 @@ docs_results = \
 	docs/results/fig9.svg docs/results/fig10.svg docs/results/scaling.svg \
 	docs/results/accuracy.svg docs/results/octprint-t3.svg
 
-# The overview page; the section 1 and 5 pages are in tools/local.mk.
-dist_man_MANS += docs/man/noctree.7
+# The overview page and the families' definitions; the section 1 and 5
+# pages are in tools/local.mk.
+dist_man_MANS += docs/man/noctree.7 docs/man/noctree-families.7
 
 if HAVE_DOXYGEN
 doc: docs/html/index.html
 docs/html/index.html: docs/Doxyfile $(noctreeinclude_HEADERS) $(include_HEADERS) \
-		docs/mainpage.md docs/results.md docs/doxygen-header.html $(docs_results)
+		docs/mainpage.md docs/results.md docs/families.md docs/families.txt \
+		docs/doxygen-header.html $(docs_results)
 	$(AM_V_GEN)rm -rf docs/html docs/man/man3 && $(DOXYGEN) docs/Doxyfile
+
+# The families' page of the HTML docs is their manual page, as text.
+docs/families.txt: docs/man/noctree-families.7
+	$(AM_V_GEN)$(MKDIR_P) docs && LC_ALL=C.UTF-8 groff -man -Tutf8 -rLL=78n -rHY=0 \
+	  -P-c -P-b -P-o -P-u $(srcdir)/docs/man/noctree-families.7 > $@.tmp && mv $@.tmp $@
+CLEANFILES += docs/families.txt
 
 # make install puts the section 3 pages of the public names (oct*, noct*,
 # OCT_*, NOCT_*: not the pages Doxygen makes for struct fields, whose

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The built-in families of SCENES.md and noctree-sim(1), one row each in
+ * The built-in families of noctree-families(7), one row each in
  * FAMILIES below: the report's planes t_k, the gas of oriented boxes and
  * its kinds (mixed, clusters, static, escape), the bullets that tunnel,
  * the robot arms and the keyframed boxes. Each row has the family's name, its size's range and
@@ -35,11 +35,11 @@
 enum { FAM_PLANES, FAM_GAS, FAM_MIXED, FAM_CLUSTERS, FAM_STATIC, FAM_ESCAPE, FAM_BULLETS,
        FAM_NOTCH, FAM_ARMS, FAM_KEYFRAMES, FAM_ROWS };
 
-/* The kinds of gas: SCENES.md's, mixed sizes, dense clusters, mostly
+/* The kinds of gas: the plain one, mixed sizes, dense clusters, mostly
  * static, escaping outward. */
 enum { GAS_UNIFORM, GAS_MIXED, GAS_CLUSTERS, GAS_STATIC, GAS_ESCAPE };
 
-/* splitmix64, and its doubles in [0, 1), as SCENES.md defines them: the
+/* splitmix64, and its doubles in [0, 1), as noctree-families(7) defines them: the
  * gas's draws (from 42) and the keyframes' (from 1234). */
 static uint64_t fam_splitmix64(uint64_t *state)
 {
@@ -268,7 +268,7 @@ static noctStatus fam_gas_add(noctWorld *w, const noct_family *f, long size,
             for (int k = 0; k < 3; ++k)
                 dir[k] = centre[k] - lb / 2;
         }
-        /* a box primitive turned by (x, y, z, qw), whose matrix SCENES.md
+        /* a box primitive turned by (x, y, z, qw), whose matrix noctree-families(7)
          * gives: noctQuatToMatrix() computes that formula, in the same
          * order, and neither normalises nor snaps these quaternions
          * (tests/check_objects.c checks the first 100 000; the first

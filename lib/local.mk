@@ -24,6 +24,7 @@ noctree_sources = \
 	lib/mesh_internal.h \
 	lib/meshio.c \
 	lib/narrowphase.c \
+	lib/narrowphase_contact.c \
 	lib/narrowphase_distance.c \
 	lib/narrowphase_internal.h \
 	lib/narrowphase_query.c \
@@ -40,6 +41,7 @@ noctree_sources = \
 	lib/status.c \
 	lib/transform.c \
 	lib/world.c \
+	lib/world_contact.c \
 	lib/world_events.c \
 	lib/world_internal.h \
 	lib/world_motion.c \

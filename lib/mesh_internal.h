@@ -236,6 +236,14 @@ double noct_distance_slack(const noctMesh *a, const double ta[3], const noctMesh
 bool noct_solids_within(const noctMesh *a, const double ta[3], const noctMesh *b,
                         const double tb[3], double d);
 
+/* The contact of two meshes placed at ta and tb (already rotated), each
+ * treated as convex or not (narrowphase.h, noctContact): kind
+ * NOCT_CONTACT_NONE when they share no point (decided exactly); NOMEM,
+ * NUMERIC (narrowphase_contact.c). */
+noctStatus noct_contact_placed(const noctMesh *a, const double ta[3], bool a_convex,
+                               const noctMesh *b, const double tb[3], bool b_convex,
+                               noctContact *contact);
+
 /* ---- box primitives (mesh.c) ---- */
 
 /* The corners fl(R v) of the box with these half-extents (bit 2 of the

@@ -203,29 +203,58 @@ static noctStatus bits(parser *p, const char *what, uint64_t *out)
 #define OBJECT_SYNTAX                                                                    \
     "expected 'object MESH X Y Z [DX DY DZ SPEED] [velocity VX VY VZ] "                \
     "[rotate AX AY AZ DEGREES] [type static|kinematic|moving] [filter CATEGORY MASK] "     \
-    "[sensor] [spin AX AY AZ DEGREES] [continuous|discrete]'"
+    "[sensor] [spin AX AY AZ DEGREES] [continuous|discrete] [margin D] [name NAME]'"
+
+/* The object attributes' keywords. */
+#define ATTRIBUTES 10
+static const char *const KW[ATTRIBUTES] = {"velocity", "rotate",     "type",     "filter",
+                                           "sensor",   "spin",       "continuous", "discrete",
+                                           "margin",   "name"};
 
 /* The object's attributes after its position and legacy motion: each
- * keyword once. */
-static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool legacy)
+ * keyword once; *name is the line's 'name' token (NULL without one). */
+static noctStatus parse_attributes(parser *p, const noctScene *s, scene_object *o, char *tok,
+                                   bool legacy, const char **name)
 {
-    bool seen[8] = {false, false, false, false, false, false, false, false};
-    static const char *const KW[8] = {"velocity", "rotate",     "type",    "filter",
-                                      "sensor",   "spin",       "continuous", "discrete"};
+    bool seen[ATTRIBUTES] = {false};
     noctStatus st = NOCT_OK;
     for (; tok != NULL && st == NOCT_OK; tok = next(p)) {
         int k = 0;
-        while (k < 8 && strcmp(tok, KW[k]) != 0)
+        while (k < ATTRIBUTES && strcmp(tok, KW[k]) != 0)
             ++k;
-        if (k == 8)
+        if (k == ATTRIBUTES)
             return perr(p, NOCT_ERR_PARSE, "unexpected '%s'; " OBJECT_SYNTAX, tok);
         if (seen[k])
             return perr(p, NOCT_ERR_PARSE, "'%s' given twice", tok);
         seen[k] = true;
-        if (k >= 6) {
+        if (k == 6 || k == 7) {
             if (seen[13 - k])
                 return perr(p, NOCT_ERR_PARSE, "an object is continuous or discrete, not both");
             o->quality = k == 6 ? NOCT_QUALITY_CONTINUOUS : NOCT_QUALITY_DISCRETE;
+            continue;
+        }
+        if (k == 8) {
+            if ((st = number(p, "margin", &o->margin)) != NOCT_OK)
+                return st;
+            if (!(o->margin >= 0 && o->margin <= NOCT_MAX_COORDINATE))
+                return perr(p, NOCT_ERR_INVALID, "object margin %g: it must be 0 to %g",
+                            o->margin, NOCT_MAX_COORDINATE);
+            continue;
+        }
+        if (k == 9) {
+            const char *n = next(p);
+            if (n == NULL)
+                return perr(p, NOCT_ERR_PARSE, "missing the object's name");
+            if (!noct_scene_name_ok(n))
+                return perr(p, NOCT_ERR_INVALID,
+                            "bad object name '%.80s': 1 to %d letters, digits, '_', '-' or "
+                            "'.', the first a letter or '_'",
+                            n, NOCT_SCENE_NAME_MAX);
+            const size_t other = noct_scene_named(s, n);
+            if (other != SIZE_MAX)
+                return perr(p, NOCT_ERR_INVALID, "object name '%s' is taken (line %ld)", n,
+                            s->objects[other].line);
+            *name = n;
             continue;
         }
         if (k == 0) {
@@ -277,10 +306,10 @@ static noctStatus parse_attributes(parser *p, scene_object *o, char *tok, bool l
 
 static bool is_attribute(const char *tok)
 {
-    return strcmp(tok, "velocity") == 0 || strcmp(tok, "rotate") == 0 ||
-           strcmp(tok, "type") == 0 || strcmp(tok, "filter") == 0 ||
-           strcmp(tok, "sensor") == 0 || strcmp(tok, "spin") == 0 ||
-           strcmp(tok, "continuous") == 0 || strcmp(tok, "discrete") == 0;
+    for (int k = 0; k < ATTRIBUTES; ++k)
+        if (strcmp(tok, KW[k]) == 0)
+            return true;
+    return false;
 }
 
 static noctStatus parse_object(parser *p, noctScene *s)
@@ -322,7 +351,8 @@ static noctStatus parse_object(parser *p, noctScene *s)
             return perr(p, NOCT_ERR_INVALID, "a moving object needs a non-zero direction");
         tok = next(p);
     }
-    if ((st = parse_attributes(p, &o, tok, legacy)) != NOCT_OK)
+    const char *oname = NULL;
+    if ((st = parse_attributes(p, s, &o, tok, legacy, &oname)) != NOCT_OK)
         return st;
     if (s->meshes[mi].mesh == NULL) { /* a box primitive: its corners as turned */
         double R[9];
@@ -336,8 +366,17 @@ static noctStatus parse_object(parser *p, noctScene *s)
             return perr(p, NOCT_ERR_TOO_LARGE, "position beyond the coordinate limit");
     if ((st = count_objects(p, 1)) != NOCT_OK)
         return st;
-    return noct_scene_add_object(s, &o) == NOCT_OK ? NOCT_OK
-                                                   : perr(p, NOCT_ERR_NOMEM, "out of memory");
+    o.line = p->line;
+    if (oname != NULL && (o.name = strdup(oname)) == NULL)
+        return perr(p, NOCT_ERR_NOMEM, "out of memory");
+    if (noct_scene_add_object(s, &o) != NOCT_OK) {
+        free(o.name);
+        return perr(p, NOCT_ERR_NOMEM, "out of memory");
+    }
+    /* (the scene owns the name now, findable or not) */
+    if (o.name != NULL && noct_scene_index_name(s) != NOCT_OK)
+        return perr(p, NOCT_ERR_NOMEM, "out of memory");
+    return NOCT_OK;
 }
 
 /* 'key TICK X Y Z [rotate AX AY AZ DEGREES]': a keyframe of the last
@@ -670,6 +709,7 @@ noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
         d.sensor = o->sensor;
         d.quality = o->quality;
         d.angular_velocity = o->spin;
+        d.margin = o->margin;
         double speed = 0;
         if (o->has_velocity) {
             memcpy(d.velocity, o->vel, sizeof d.velocity);

@@ -54,6 +54,9 @@ typedef struct scene_object {
     noctQuat spin;           /* from 'spin', else the identity */
     bool has_type;           /* 'type' given */
     size_t first_key, nkeys; /* its keyframes in noctScene.keys */
+    double margin;           /* its own margin (noctObjectDef::margin) */
+    char *name;              /* 'name', owned; NULL without one */
+    long line;               /* the line that gave it, for messages */
 } scene_object;
 
 /* A family kept by name and size, whose objects the world gets when the
@@ -74,6 +77,10 @@ struct noctScene {
     size_t nkeys, capkeys;
     scene_family families[16];
     size_t nfamilies;
+    /* the objects' names: an open-addressing table of 1 + the index in
+     * objects of each named object (0: empty), by noct_scene_name_hash() */
+    size_t *names;
+    size_t capnames, nnames;
     /* the meshes the kept families share (families_internal.h,
      * FAM_MESH_*), made when a family that needs one is added */
     noctMesh *shared[3];
@@ -97,7 +104,18 @@ noctStatus noct_scene_add_object(noctScene *s, const scene_object *o);
 noctStatus noct_scene_add_key(noctScene *s, const scene_key *k);
 
 /* A scene_object with the defaults of an object line: not moving, not
- * turned, moving type, every filter bit. */
+ * turned, moving type, every filter bit, no margin, no name. */
 scene_object noct_scene_object(size_t mesh, const double pos[3]);
+
+/* The object line named name, or SIZE_MAX. */
+size_t noct_scene_named(const noctScene *s, const char *name);
+
+/* Make the last object's name (o->name, already unique) findable. NOMEM
+ * (then the name is still the object's, but not findable: the caller
+ * fails the scene). */
+noctStatus noct_scene_index_name(noctScene *s);
+
+/* Is name a valid object name (noctree-scene(5))? */
+bool noct_scene_name_ok(const char *name);
 
 #endif /* NOCT_LIB_SCENE_INTERNAL_H */

@@ -105,6 +105,12 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
         turn(f, "spin", &o->spin_turn);
         if (o->quality != NOCT_QUALITY_WORLD)
             fprintf(f, o->quality == NOCT_QUALITY_CONTINUOUS ? " continuous" : " discrete");
+        if (o->margin > 0) {
+            char b[32];
+            fprintf(f, " margin %s", num(b, o->margin));
+        }
+        if (o->name != NULL)
+            fprintf(f, " name %s", o->name);
         fprintf(f, "\n");
         for (size_t j = 0; j < o->nkeys; ++j) {
             const scene_key *k = &s->keys[o->first_key + j];

@@ -74,6 +74,7 @@ noctStatus noctWorldCreate(const noctWorldDef *def, noctWorld **world, noctError
     }
     noct_bp_set_rebuild_mode(&w->bp, def->maintenance == NOCT_MAINTAIN_REBUILD);
     w->def = *def;
+    w->margins.near = def->margin > 0;
     w->sweeps.world = w->sweeps.on = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
     *world = w;
     return NOCT_OK;
@@ -107,9 +108,11 @@ void noctWorldDestroy(noctWorld *w)
     noct_record_free(&w->events.near);
     free(w->spin.w);
     free(w->spin.spinners);
+    free(w->margins.of);
     free(w->placed);
     noct_world_free_sweeps(w);
     noct_world_free_tracks(w);
+    free(w->contacts);
     free(w);
 }
 
@@ -239,6 +242,26 @@ noctStatus noctWorldObjectBox(const noctWorld *w, noctObjectId id, double lo[3],
 noctStatus noctWorldValidate(const noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
+    /* the objects' margins: in range, counted, none above the largest */
+    size_t with_margin = 0;
+    for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i) {
+        const double m = noct_world_margin(w, i);
+        if (!(m >= 0 && m <= NOCT_MAX_COORDINATE) || (!w->obj[i].alive && m != 0))
+            return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
+                             "object %u's margin %g is out of range or kept dead", i, m);
+        if (m > w->margins.max)
+            return noct_fail(err, NOCT_ERR_INVARIANT, (long)i, 0,
+                             "object %u's margin %g is above the largest, %g", i, m,
+                             w->margins.max);
+        with_margin += m > 0;
+    }
+    if (with_margin != w->margins.count)
+        return noct_fail(err, NOCT_ERR_INVARIANT, -1, 0,
+                         "%zu objects have a margin, but the world counts %zu", with_margin,
+                         w->margins.count);
+    if ((w->def.margin > 0 || with_margin > 0) && !w->margins.near)
+        return noct_fail(err, NOCT_ERR_INVARIANT, -1, 0,
+                         "the world has a margin but its steps would find no near pairs");
     /* the world's own records against the broadphase's proxies */
     for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i) {
         if (w->obj[i].alive != noct_bp_proxy(&w->bp, i)->alive)

@@ -14,6 +14,7 @@
  *   world_near.c     the margin's near pairs
  *   world_track.c    keyframe tracks
  *   world_query.c    the queries (query.h)
+ *   world_contact.c  the colliding pairs' contacts, on request
  *
  * The files call one way: world.c and world_step.c call the stage files
  * and world_object.c, which calls none of them.
@@ -117,6 +118,21 @@ typedef struct noct_spin {
     bool stale;
 } noct_spin;
 
+/* The objects' own margins (noctObjectDef::margin): per slot, made when
+ * the first object gets one (NULL before: every one 0, and a world
+ * without them pays nothing); how many live objects have one above 0;
+ * and max, at least each live object's (the largest once a step has
+ * refreshed it: stale says a margin that was the largest went down). */
+typedef struct noct_margins {
+    double *of;
+    size_t count;
+    double max;
+    bool stale;
+    bool near;             /* the next step finds near pairs: a margin
+                              (the world's or an object's), or pairs the
+                              last one kept to end */
+} noct_margins;
+
 /*
  * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, or objects of
  * continuous quality; world_sweep.c):
@@ -199,6 +215,7 @@ struct noctWorld {
     noct_motion motion;
     noct_events events;
     noct_spin spin;
+    noct_margins margins;
     noct_tracks tracks;
     noct_sweeps sweeps;
     noct_placed *placed;   /* this step's placements (spin, tracks) */
@@ -207,6 +224,11 @@ struct noctWorld {
     size_t nsensors;       /* live sensors */
     bool moved, touched;   /* this step moved objects; changed the tree */
     uint64_t substeps;     /* this step's */
+    /* noctWorldContacts(): the contacts of contact.now, made on the first
+     * call after a step (world_contact.c); made is cleared by each step. */
+    noctContact *contacts;
+    size_t capcontacts;
+    bool contacts_made;
     noctWorldCounters c;   /* the world's own stages'; the broadphase's
                               are added when they are read */
 };
@@ -238,11 +260,20 @@ static inline bool noct_quat_is_identity(const noctQuat *q)
     return q->x == 0 && q->y == 0 && q->z == 0 && q->w == 1;
 }
 
+/* Object s's own margin (0 for none). */
+static inline double noct_world_margin(const noctWorld *w, uint32_t s)
+{
+    return w->margins.of != NULL ? w->margins.of[s] : 0;
+}
+
 /* ---- world_object.c ------------------------------------------------------------- */
 
 /* The world's per-slot arrays to the broadphase's capacity; false without
  * memory (each that grew is kept). */
 bool noct_world_reserve_slots(noctWorld *w);
+
+/* The largest live object margin, made again (after one went down). */
+void noct_world_refresh_margins(noctWorld *w);
 
 /* Object s is gone: its track goes too. */
 void noct_world_drop_track(noctWorld *w, uint32_t s);

@@ -11,7 +11,9 @@
  * one proved beyond it on the axis through those points is not
  * (near_witness(): the answers noct_solids_within() would give), and
  * else the distance of their triangles decides (noct_solids_within()).
- * A world without a margin never comes here.
+ * A pair's margin is the world's plus its objects' own (noct_margins).
+ * A world without any margin never comes here (but once, to end the
+ * pairs of the last margin that went).
  */
 #include "config.h"
 
@@ -265,20 +267,31 @@ static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], co
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
 {
     noct_event_record *e = &w->events.near;
-    const double d = w->def.margin;
+    const double W = w->def.margin;
     noct_record_rotate(e);
+    /* The objects' own margins, if any: a pair's margin is W + (m_i + m_j),
+     * and each object looks as far as W + m_i + M for M the largest. */
+    if (w->margins.stale)
+        noct_world_refresh_margins(w);
+    const double *m = w->margins.count > 0 ? w->margins.of : NULL;
+    const double M = m != NULL ? w->margins.max : 0;
     partners p = {0, NULL, 0, 0, false};
     noctStatus st = NOCT_OK;
-    for (uint32_t i = 0; i < noct_bp_slots(&w->bp) && st == NOCT_OK; ++i) {
+    /* (no margin left: the pairs the last one kept end) */
+    const uint32_t slots = W > 0 || m != NULL ? noct_bp_slots(&w->bp) : 0;
+    for (uint32_t i = 0; i < slots && st == NOCT_OK; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
             continue;
         const noct_proxy *o = noct_bp_proxy(&w->bp, i);
         const noct_aabb *b = noct_bp_box(&w->bp, i);
-        double lo[3], hi[3], scale = d;
+        const double mi = m != NULL ? m[i] : 0;
+        const double reach = m != NULL ? (W + mi) + M : W;
+        double lo[3], hi[3], scale = reach;
         for (int k = 0; k < 3; ++k)
             scale = noct_max(scale, noct_max(fabs(b->lo[k]), fabs(b->hi[k])));
-        /* grown by the margin and more than its rounding */
-        const double grow = d + 0x1p-38 * scale;
+        /* grown by the farthest pair margin and more than its rounding
+         * (W + (mi + mj) <= (W + mi) + M within a few roundings of it) */
+        const double grow = reach + 0x1p-38 * scale;
         for (int k = 0; k < 3; ++k) {
             lo[k] = b->lo[k] - grow;
             hi[k] = b->hi[k] + grow;
@@ -296,6 +309,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             qsort(p.s, p.n, sizeof *p.s, by_index);
         for (size_t k = 0; k < p.n; ++k) {
             const uint32_t j = p.s[k];
+            const double d = m != NULL ? W + (mi + m[j]) : W;
             if (w->obj[j].sensor || !near(w, i, j, d))
                 continue;
             const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
@@ -313,5 +327,6 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         noct_record_unrotate(e); /* the failed step clears the events */
         return noct_fail(err, st, -1, 0, "near pairs: %s", noctStatusString(st));
     }
+    w->margins.near = W > 0 || w->margins.count > 0 || e->now.n > 0;
     return NOCT_OK;
 }

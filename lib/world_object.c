@@ -20,6 +20,7 @@ NOCT_DEFINE_RESIZE(resize_objects, noct_object)
 NOCT_DEFINE_RESIZE(resize_vectors, noct_vec3)
 NOCT_DEFINE_RESIZE(resize_meshes, const noctMesh *)
 NOCT_DEFINE_RESIZE(resize_quats, noctQuat)
+NOCT_DEFINE_RESIZE(resize_doubles, double)
 NOCT_DEFINE_RESIZE(resize_turns, noct_turn *)
 
 NOCT_DEFINE_RESIZE(resize_placed, noct_placed)
@@ -34,10 +35,14 @@ bool noct_world_reserve_slots(noctWorld *w)
     if (!resize_objects(&w->obj, cap) || !resize_vectors(&w->pos, cap) ||
         !resize_meshes(&w->mesh, cap) || !resize_turns(&w->turn, cap) ||
         (w->spin.w != NULL && !resize_quats(&w->spin.w, cap)) ||
+        (w->margins.of != NULL && !resize_doubles(&w->margins.of, cap)) ||
         !noct_world_reserve_sweeps(w, cap))
         return false;
-    for (uint32_t i = w->capslots; i < cap; ++i)
+    for (uint32_t i = w->capslots; i < cap; ++i) {
         w->turn[i] = NULL;
+        if (w->margins.of != NULL)
+            w->margins.of[i] = 0;
+    }
     /* aligned, so not realloc: a pose is one cache line */
     noct_pose *poses = aligned_alloc(64, cap * sizeof *poses);
     if (poses == NULL)
@@ -83,6 +88,7 @@ noctObjectDef noctDefaultObjectDef(void)
     d.user_data = NULL;
     d.category = d.mask = NOCT_FILTER_ALL;
     d.angular_velocity = (noctQuat){0, 0, 0, 1};
+    d.margin = 0;
     return d;
 }
 
@@ -300,6 +306,55 @@ static bool set_spin(noctWorld *w, uint32_t s, const noctQuat *q, bool was_live)
     return true;
 }
 
+/* An object's margin: finite, 0 to NOCT_MAX_COORDINATE. */
+static noctStatus check_margin(double m, long index, noctError *err)
+{
+    if (!isfinite(m))
+        return noct_fail(err, NOCT_ERR_NONFINITE, index, 0, "object margin is not finite");
+    if (!(m >= 0 && m <= NOCT_MAX_COORDINATE))
+        return noct_fail(err, NOCT_ERR_INVALID, index, 0,
+                         "object margin %g: it must be 0 to %g", m, NOCT_MAX_COORDINATE);
+    return NOCT_OK;
+}
+
+/* The per-slot margins, made (all 0) for the world's first margin; false
+ * without memory. */
+static bool margins_enable(noctWorld *w)
+{
+    if (w->margins.of != NULL)
+        return true;
+    w->margins.of = calloc(w->capslots > 0 ? w->capslots : 1, sizeof *w->margins.of);
+    return w->margins.of != NULL;
+}
+
+/* Object s's margin becomes m (the array made, if m > 0). */
+static void set_margin(noctWorld *w, uint32_t s, double m)
+{
+    noct_margins *g = &w->margins;
+    if (g->of == NULL)
+        return;
+    const double old = g->of[s];
+    g->count = g->count - (old > 0) + (m > 0);
+    g->of[s] = m;
+    g->near = g->near || g->count > 0;
+    if (m > g->max)
+        g->max = m;
+    else if (old == g->max && m < old)
+        g->stale = true;
+}
+
+void noct_world_refresh_margins(noctWorld *w)
+{
+    noct_margins *g = &w->margins;
+    double max = 0;
+    if (g->of != NULL && g->count > 0)
+        for (uint32_t i = 0; i < noct_bp_slots(&w->bp); ++i)
+            if (w->obj[i].alive && g->of[i] > max)
+                max = g->of[i];
+    g->max = max;
+    g->stale = false;
+}
+
 /* An angular velocity as noctQuatToMatrix() checks a rotation. */
 static noctStatus check_spin(const noctQuat *q, noctError *err)
 {
@@ -330,6 +385,8 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
         st = check_velocity(def->velocity, err);
     if (st == NOCT_OK)
         st = check_spin(&def->angular_velocity, err);
+    if (st == NOCT_OK)
+        st = check_margin(def->margin, -1, err);
     if (st != NOCT_OK)
         return st;
     if (!known_type(def->type))
@@ -339,6 +396,8 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "unknown motion quality %d",
                          (int)def->quality);
     if (def->quality == NOCT_QUALITY_CONTINUOUS && !noct_world_sweeps_enable(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    if (def->margin > 0 && !margins_enable(w))
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     if (def->category == 0)
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0,
@@ -398,6 +457,9 @@ noctStatus noctWorldCreateObject(noctWorld *w, const noctObjectDef *def, noctObj
     o->sensor = def->sensor;
     o->quality = (uint8_t)def->quality;
     w->nsensors += def->sensor;
+    if (w->margins.of != NULL)
+        w->margins.of[slot] = 0; /* (a slot's margin is 0 while it is dead) */
+    set_margin(w, slot, def->margin);
     noct_world_sweep_touch(w, slot, true);
     set_motion(w, slot, def->type, def->velocity);
     id->index = slot;
@@ -464,6 +526,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     NOCT_INVARIANT(w->nsensors >= (size_t)o->sensor);
     w->nsensors -= o->sensor;
     o->sensor = false;
+    set_margin(w, id.index, 0);
     if (w->spin.w != NULL) {
         w->spin.count -= !noct_quat_is_identity(&w->spin.w[id.index]);
         w->spin.w[id.index] = (noctQuat){0, 0, 0, 1};
@@ -624,6 +687,29 @@ noctStatus noctWorldSetSensor(noctWorld *w, noctObjectId id, bool sensor, noctEr
         return stale(id, err);
     w->nsensors = w->nsensors - o->sensor + sensor;
     o->sensor = sensor;
+    return NOCT_OK;
+}
+
+noctStatus noctWorldSetMargin(noctWorld *w, noctObjectId id, double margin, noctError *err)
+{
+    NOCT_REQUIRE(w != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return stale(id, err);
+    const noctStatus st = check_margin(margin, (long)id.index, err);
+    if (st != NOCT_OK)
+        return st;
+    if (margin > 0 && !margins_enable(w))
+        return noct_fail(err, NOCT_ERR_NOMEM, (long)id.index, 0, "out of memory");
+    set_margin(w, id.index, margin);
+    return NOCT_OK;
+}
+
+noctStatus noctWorldGetMargin(const noctWorld *w, noctObjectId id, double *margin)
+{
+    NOCT_REQUIRE(w != NULL && margin != NULL);
+    if (noct_world_lookup(w, id) == NULL)
+        return NOCT_ERR_INVALID;
+    *margin = noct_world_margin(w, id.index);
     return NOCT_OK;
 }
 

@@ -171,12 +171,17 @@ static noctStatus meets(const noctWorld *w, uint32_t s, const noctMesh *q, const
     return noct_collide_overlapping(q, tq, m, w->pos[s], level, hit, NULL);
 }
 
-/* Report the candidates that meet q placed at tq, in order. */
+/* Report the candidates that meet q placed at tq, in order; with skins,
+ * those within margin plus their own margins. */
 static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const double tq[3],
                                  const noct_box_slot *qs, noctAccuracy level, double margin,
-                                 noctQueryFilter filter,
+                                 bool skins, noctQueryFilter filter,
                                  noctObjectFcn *fcn, void *context, noctError *err)
 {
+    const double *own = skins && w->margins.count > 0 ? w->margins.of : NULL;
+    const double base = margin;
+    if (own != NULL) /* (max bounds every margin, stale or not) */
+        margin += w->margins.max;
     double lo[3], hi[3], scale = margin;
     for (int k = 0; k < 3; ++k) {
         lo[k] = q->lo[k] + tq[k];
@@ -193,6 +198,8 @@ static noctStatus report_meeting(const noctWorld *w, const noctMesh *q, const do
     noctStatus st = gather(w, lo, hi, filter, &c, err);
     for (size_t i = 0; i < c.n && st == NOCT_OK; ++i) {
         const uint32_t s = c.s[i];
+        if (own != NULL)
+            margin = base + own[s];
         bool hit;
         st = meets(w, s, q, tq, qs, level, &hit);
         if (st == NOCT_OK && !hit && margin > 0 &&
@@ -244,7 +251,7 @@ noctStatus noctWorldQueryBox(const noctWorld *w, const double lo[3], const doubl
     if (solid)
         noct_box_slot_of_corners(v, identity, &slot, blo, bhi);
     return report_meeting(w, &view, origin, solid && slot.has_box ? &slot : NULL,
-                          w->def.accuracy, 0, filter, fcn, context, err);
+                          w->def.accuracy, 0, false, filter, fcn, context, err);
 }
 
 /* A query's shape, placed by a transform's rotation: a mesh (rotated
@@ -294,14 +301,14 @@ static noctStatus query_shape_make(query_shape *q, const noctMesh *mesh,
 /* The objects that meet the shape at x, or come within margin of it. */
 static noctStatus shape_query(const noctWorld *w, const noctMesh *mesh,
                               const double half_extents[3], const noctTransform *x,
-                              double margin, noctQueryFilter filter, noctObjectFcn *fcn,
-                              void *context, noctError *err)
+                              double margin, bool skins, noctQueryFilter filter,
+                              noctObjectFcn *fcn, void *context, noctError *err)
 {
     query_shape q;
     noctStatus st = query_shape_make(&q, mesh, half_extents, x, err);
     if (st == NOCT_OK)
         st = report_meeting(w, q.m, x->p, q.has_slot ? &q.slot : NULL, NOCT_ACCURACY_EXACT,
-                            margin, filter, fcn, context, err);
+                            margin, skins, filter, fcn, context, err);
     noctMeshDestroy(q.rotated);
     return st;
 }
@@ -313,7 +320,7 @@ noctStatus noctWorldQueryShape(const noctWorld *w, const noctMesh *mesh,
 {
     NOCT_REQUIRE(w != NULL && x != NULL && fcn != NULL);
     NOCT_REQUIRE(mesh != NULL || half_extents != NULL);
-    return shape_query(w, mesh, half_extents, x, 0, filter, fcn, context, err);
+    return shape_query(w, mesh, half_extents, x, 0, false, filter, fcn, context, err);
 }
 
 noctStatus noctWorldQueryNear(const noctWorld *w, const noctMesh *mesh,
@@ -328,7 +335,7 @@ noctStatus noctWorldQueryNear(const noctWorld *w, const noctMesh *mesh,
     if (!(margin >= 0 && margin <= NOCT_MAX_COORDINATE))
         return noct_fail(err, NOCT_ERR_INVALID, -1, 0, "query margin %g: it must be 0 to %g",
                          margin, NOCT_MAX_COORDINATE);
-    return shape_query(w, mesh, half_extents, x, margin, filter, fcn, context, err);
+    return shape_query(w, mesh, half_extents, x, margin, true, filter, fcn, context, err);
 }
 
 /* ---- rays -------------------------------------------------------------------------- */

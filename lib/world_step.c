@@ -35,6 +35,7 @@ static void fail_step(noctWorld *w, uint64_t k);
 noctStatus noctWorldStep(noctWorld *w, noctError *err)
 {
     NOCT_REQUIRE(w != NULL);
+    w->contacts_made = false; /* they were the last step's */
     noct_record_clear(&w->events.contact);
     noct_record_clear(&w->events.sensor);
     noct_record_clear(&w->events.near);
@@ -220,7 +221,9 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, bool last,
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
-    if (last && w->def.margin > 0 && (st = noct_world_stage_near(w, err)) != NOCT_OK) {
+    /* near pairs with a margin (the world's or an object's), and once
+     * more when the last went, to end the pairs it kept */
+    if (last && w->margins.near && (st = noct_world_stage_near(w, err)) != NOCT_OK) {
         noct_record_unrotate(&w->events.contact);
         noct_record_unrotate(&w->events.sensor);
         return st;

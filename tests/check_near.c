@@ -7,7 +7,8 @@
  * a pair within the margin is never missed and one clearly beyond it is
  * never near; colliding pairs are near; the near events are the lists'
  * differences step to step, removals included; the box level uses the
- * boxes; a failed step keeps the lists; bad margins get a status.
+ * boxes; a failed step keeps the lists; bad margins get a status. The
+ * objects' own margins against noctDistance()'s proved intervals.
  */
 #include <check.h>
 #include <math.h>
@@ -418,6 +419,265 @@ START_TEST(a_failed_step_keeps_the_near_pairs)
 }
 END_TEST
 
+/*
+ * Objects' own margins (noctObjectDef::margin, noctWorldSetMargin()): on
+ * random scenes, some objects with a margin (set at creation or later,
+ * changed and taken away between steps), with and without a world margin,
+ * every pair that may pair against the library's proved distance
+ * (noctDistance(), an independent search over the triangles): a pair
+ * whose distance's upper bound is within its margin, W + (m_a + m_b),
+ * must be near; one whose lower bound is beyond it by more than the
+ * slack must not. The world validates after every step, and the near
+ * events are the lists' differences.
+ */
+START_TEST(object_margins_against_distance)
+{
+    int within = 0, beyond = 0, events = 0, own = 0;
+    const int rounds = _i ? 6 : 2;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = round % 2 == 0 ? 0 : 0.3 * uniform();
+        const double W = world_margin;
+        scene s;
+        random_scene(&s, 10 + (int)(20 * uniform()), 1 + round % 4, NOCT_ACCURACY_EXACT, ell);
+        world_margin = 0;
+        double m[MAXO];
+        for (int i = 0; i < s.n; ++i) {
+            m[i] = uniform() < 0.5 ? 0 : 0.4 * uniform();
+            ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], m[i], NULL), NOCT_OK);
+        }
+        noctPair prev[MAXO * MAXO / 2];
+        size_t nprev = 0;
+        for (int step = 0; step < 8; ++step) {
+            for (int i = 0; i < s.n; ++i) {
+                if (uniform() < 0.3)
+                    teleport(&s, i);
+                if (uniform() < 0.2) { /* a new margin, none, or a large one */
+                    const double u = uniform();
+                    m[i] = u < 0.3 ? 0 : u < 0.9 ? 0.4 * uniform() : 1 + uniform();
+                    ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], m[i], NULL), NOCT_OK);
+                }
+                double got;
+                ck_assert_int_eq(noctWorldGetMargin(s.w, s.id[i], &got), NOCT_OK);
+                ck_assert(got == m[i]);
+            }
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            ck_assert_int_eq(noctWorldValidate(s.w, NULL), NOCT_OK);
+            const noctPair *near, *b, *e;
+            const size_t nn = noctWorldNear(s.w, &near);
+            const size_t nb = noctWorldNearBegan(s.w, &b), ne = noctWorldNearEnded(s.w, &e);
+            for (int i = 0; i < s.n; ++i)
+                for (int j = i + 1; j < s.n; ++j) {
+                    noctObjectId a = s.id[i], c = s.id[j];
+                    if (a.index > c.index) {
+                        const noctObjectId t = a;
+                        a = c;
+                        c = t;
+                    }
+                    const bool got = in_list(near, nn, a, c);
+                    if (!may_pair(&s, i, j)) {
+                        ck_assert(!got);
+                        continue;
+                    }
+                    const double d = W + (m[i] + m[j]);
+                    noctDistanceResult r;
+                    ck_assert_int_eq(noctDistance(mesh_of(&s, i, ell), &s.x[i],
+                                                  mesh_of(&s, j, ell), &s.x[j], INFINITY, &r,
+                                                  NULL, NULL),
+                                     NOCT_OK);
+                    ck_assert(r.lower <= r.upper);
+                    if (r.upper <= d) {
+                        ck_assert_msg(got, "objects %d and %d, [%.17g, %.17g] apart, not near "
+                                      "(pair margin %.17g)", i, j, r.lower, r.upper, d);
+                        ++within;
+                        own += W < r.lower; /* near by the objects' own margins */
+                    } else if (r.lower > d + 2 * (double)BEYOND) {
+                        ck_assert_msg(!got, "objects %d and %d, [%.17g, %.17g] apart, near "
+                                      "(pair margin %.17g)", i, j, r.lower, r.upper, d);
+                        ++beyond;
+                    }
+                }
+            for (size_t k = 0; k < nn; ++k)
+                ck_assert(in_list(b, nb, near[k].a, near[k].b) ==
+                          !in_list(prev, nprev, near[k].a, near[k].b));
+            for (size_t k = 0; k < nprev; ++k)
+                ck_assert(in_list(e, ne, prev[k].a, prev[k].b) ==
+                          !in_list(near, nn, prev[k].a, prev[k].b));
+            events += (int)(nb + ne);
+            if (nn > 0)
+                memcpy(prev, near, nn * sizeof *near);
+            nprev = nn;
+        }
+        /* every margin taken away: in a world without one, the near pairs
+         * end at the next step, and none come after */
+        for (int i = 0; i < s.n; ++i)
+            ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], 0, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldValidate(s.w, NULL), NOCT_OK);
+        const noctPair *p;
+        if (W == 0) {
+            ck_assert_uint_eq(noctWorldNear(s.w, &p), 0);
+            ck_assert_uint_eq(noctWorldNearEnded(s.w, &p), nprev);
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            ck_assert_uint_eq(noctWorldNearEnded(s.w, &p), 0);
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 150 : 40);
+    ck_assert_int_gt(own, _i ? 60 : 15);
+    ck_assert_int_gt(beyond, _i ? 1000 : 300);
+    ck_assert_int_gt(events, _i ? 60 : 15);
+}
+END_TEST
+
+/* noctWorldQueryNear() counts each object's own margin: an object is
+ * reported within the query's margin plus its own, against noctDistance(). */
+START_TEST(query_near_with_object_margins)
+{
+    int within = 0, beyond = 0, own = 0;
+    for (int round = 0; round < (_i ? 3 : 1); ++round) {
+        scene s;
+        random_scene(&s, 30, 2, NOCT_ACCURACY_EXACT, ell);
+        double m[MAXO];
+        for (int i = 0; i < s.n; ++i) {
+            m[i] = uniform() < 0.5 ? 0 : 0.5 * uniform();
+            ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], m[i], NULL), NOCT_OK);
+        }
+        for (int q = 0; q < (_i ? 40 : 12); ++q) {
+            const double d = q % 4 == 0 ? 0 : 0.5 * uniform();
+            noctTransform x;
+            for (int k = 0; k < 3; ++k)
+                x.p[k] = 6 * uniform();
+            random_quat(&x.q);
+            found got = {0};
+            ck_assert_int_eq(noctWorldQueryNear(s.w, ell, NULL, &x, d, noctDefaultQueryFilter(),
+                                                collect, &got, NULL),
+                             NOCT_OK);
+            for (int i = 0; i < s.n; ++i) {
+                bool in = false;
+                for (int k = 0; k < got.n; ++k)
+                    in = in || got.id[k].index == s.id[i].index;
+                noctDistanceResult r;
+                ck_assert_int_eq(noctDistance(ell, &x, mesh_of(&s, i, ell), &s.x[i], INFINITY,
+                                              &r, NULL, NULL),
+                                 NOCT_OK);
+                const double reach = d + m[i];
+                if (r.upper <= reach) {
+                    ck_assert_msg(in, "query: object %d [%.17g, %.17g] away, not within %g",
+                                  i, r.lower, r.upper, reach);
+                    ++within;
+                    own += d < r.lower;
+                } else if (r.lower > reach + 2 * (double)BEYOND) {
+                    ck_assert_msg(!in, "query: object %d [%.17g, %.17g] away, within %g", i,
+                                  r.lower, r.upper, reach);
+                    ++beyond;
+                }
+            }
+            /* the shape query ignores the margins: only what collides */
+            found hit = {0};
+            ck_assert_int_eq(noctWorldQueryShape(s.w, ell, NULL, &x, noctDefaultQueryFilter(),
+                                                 collect, &hit, NULL),
+                             NOCT_OK);
+            for (int k = 0; k < hit.n; ++k) {
+                const int i = index_of(&s, hit.id[k].index);
+                noctDistanceResult r;
+                ck_assert_int_eq(noctDistance(ell, &x, mesh_of(&s, i, ell), &s.x[i], INFINITY,
+                                              &r, NULL, NULL),
+                                 NOCT_OK);
+                ck_assert(r.colliding);
+            }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 100 : 20);
+    ck_assert_int_gt(own, _i ? 20 : 4);
+    ck_assert_int_gt(beyond, _i ? 600 : 150);
+}
+END_TEST
+
+/* Two boxes 0.25 apart in a world without a margin: near only when their
+ * skins meet; the setters' and the definition's bad margins. */
+START_TEST(object_margin_setters_and_errors)
+{
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef od = noctDefaultObjectDef();
+    ck_assert(od.margin == 0);
+    od.half_extents[0] = od.half_extents[1] = od.half_extents[2] = 0.5;
+    od.type = NOCT_OBJECT_STATIC;
+    noctObjectId a, b, c, bad;
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &a, NULL), NOCT_OK);
+    od.transform.p[0] = 1.25;
+    od.margin = 0.125;
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &b, NULL), NOCT_OK);
+    od.transform.p[0] = 40;
+    od.margin = 0;
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &c, NULL), NOCT_OK);
+    double m = -1;
+    ck_assert_int_eq(noctWorldGetMargin(w, a, &m), NOCT_OK);
+    ck_assert(m == 0);
+    ck_assert_int_eq(noctWorldGetMargin(w, b, &m), NOCT_OK);
+    ck_assert(m == 0.125);
+    const noctPair *p;
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 0); /* 0.125 < 0.25 */
+    /* a skin of 0.125 on each: they meet */
+    ck_assert_int_eq(noctWorldSetMargin(w, a, 0.125, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 1);
+    ck_assert_uint_eq(p[0].a.index, a.index);
+    ck_assert_uint_eq(p[0].b.index, b.index);
+    ck_assert_uint_eq(noctWorldNearBegan(w, &p), 1);
+    /* a far object's large margin reaches them both; then goes down (the
+     * largest goes stale) and the pairs it made end */
+    ck_assert_int_eq(noctWorldSetMargin(w, c, 39, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 3);
+    ck_assert_int_eq(noctWorldSetMargin(w, c, 1, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 1);
+    ck_assert_uint_eq(noctWorldNearEnded(w, &p), 2);
+    /* bad margins change nothing */
+    noctError err;
+    const double bads[] = {NAN, INFINITY, -INFINITY, -0.5, 2e100};
+    const noctStatus want[] = {NOCT_ERR_NONFINITE, NOCT_ERR_NONFINITE, NOCT_ERR_NONFINITE,
+                               NOCT_ERR_INVALID, NOCT_ERR_INVALID};
+    for (int k = 0; k < 5; ++k) {
+        ck_assert_int_eq(noctWorldSetMargin(w, a, bads[k], &err), want[k]);
+        ck_assert_ptr_nonnull(strstr(err.message, "margin"));
+        ck_assert_int_eq(noctWorldGetMargin(w, a, &m), NOCT_OK);
+        ck_assert(m == 0.125);
+        od.margin = bads[k];
+        ck_assert_int_eq(noctWorldCreateObject(w, &od, &bad, &err), want[k]);
+        ck_assert_uint_eq(bad.index, 0);
+        ck_assert_uint_eq(bad.generation, 0);
+    }
+    ck_assert_uint_eq(noctWorldObjectCount(w), 3);
+    od.margin = NOCT_MAX_COORDINATE; /* the largest allowed */
+    ck_assert_int_eq(noctWorldCreateObject(w, &od, &bad, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldRemove(w, bad, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    /* stale handles */
+    ck_assert_int_eq(noctWorldSetMargin(w, bad, 1, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetMargin(w, bad, &m), NOCT_ERR_INVALID);
+    /* the skins taken away: without a world margin, the pair ends and the
+     * world keeps no near pairs */
+    ck_assert_int_eq(noctWorldSetMargin(w, a, 0, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldSetMargin(w, b, 0, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldSetMargin(w, c, 0, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldNear(w, &p), 0);
+    ck_assert_uint_eq(noctWorldNearEnded(w, &p), 1);
+    ck_assert_int_eq(noctWorldValidate(w, NULL), NOCT_OK);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 static Suite *near_suite(void)
 {
     Suite *s = suite_create("near");
@@ -429,12 +689,17 @@ static Suite *near_suite(void)
     tcase_add_test(tc, no_margin_no_near_and_bad_margins);
     tcase_add_test(tc, a_failed_step_keeps_the_near_pairs);
     tcase_add_loop_test(tc, near_pairs_against_the_query, 0, 1);
+    tcase_add_loop_test(tc, object_margins_against_distance, 0, 1);
+    tcase_add_loop_test(tc, query_near_with_object_margins, 0, 1);
+    tcase_add_test(tc, object_margin_setters_and_errors);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
     tcase_add_loop_test(full, box_level_uses_the_boxes, 1, 2);
     tcase_add_loop_test(full, query_near_against_geometry, 1, 2);
     tcase_add_loop_test(full, near_pairs_against_the_query, 1, 2);
+    tcase_add_loop_test(full, object_margins_against_distance, 1, 2);
+    tcase_add_loop_test(full, query_near_with_object_margins, 1, 2);
     return s;
 }
 

@@ -270,15 +270,15 @@ END_TEST
 /* ---- the gas family as box primitives ---------------------------------------- */
 
 static uint64_t gas_state;
-static double gas_draw(void) /* SCENES.md: splitmix64, then 53 bits */
+static double gas_draw(void) /* noctree-families(7): splitmix64, then 53 bits */
 {
     return test_uniform(&gas_state);
 }
 
 /* gas is built of box primitives turned by its quaternions: their
- * matrices must be SCENES.md's, bit for bit (the formula, with no
+ * matrices must be noctree-families(7)'s, bit for bit (the formula, with no
  * normalisation or snapping), and the boxes its boxes. The test draws
- * the scene itself, as SCENES.md defines it. */
+ * the scene itself, as noctree-families(7) defines it. */
 START_TEST(gas_boxes_are_the_scenes)
 {
     const size_t n = 100000;
@@ -310,7 +310,7 @@ START_TEST(gas_boxes_are_the_scenes)
         ck_assert_int_eq(noctWorldGetTransform(w, id, &t), NOCT_OK);
         ck_assert(memcmp(t.p, centre, sizeof centre) == 0);
         ck_assert_int_eq(noctQuatToMatrix(&t.q, R, NULL), NOCT_OK);
-        ck_assert_msg(memcmp(R, r, sizeof R) == 0, "gas box %u: not SCENES.md's matrix", i);
+        ck_assert_msg(memcmp(R, r, sizeof R) == 0, "gas box %u: not noctree-families(7)'s matrix", i);
         ck_assert_int_eq(noctWorldGetHalfExtents(w, id, h), NOCT_OK);
         ck_assert(memcmp(h, half, sizeof half) == 0);
     }

@@ -606,7 +606,7 @@ START_TEST(every_allocation_failing)
         "# two meshes, five objects\n"
         "N 2\nmesh off file tet.off\nmesh obj file tet.obj\n"
         "object obj 0 0 0\nobject off 3 0 0 1 0 0 0.1\nobject obj 6 0 0\n"
-        "object off 9 0 0\nobject obj 12 0 0 0 1e-200 0 1\n");
+        "object off 9 0 0 name nine margin 0.5\nobject obj 12 0 0 0 1e-200 0 1 name twelve\n");
     ck_assert_uint_eq(build_count(path), 5);
     unsigned long nomem = 0, ok = 0;
     for (unsigned long n = 1;; ++n) {
@@ -721,6 +721,10 @@ static void same_runs(const noctScene *a, const noctScene *b)
                 ck_assert_int_eq(noctWorldGetTransform(wa, (noctObjectId){i, 1}, &xa), NOCT_OK);
                 ck_assert_int_eq(noctWorldGetTransform(wb, (noctObjectId){i, 1}, &xb), NOCT_OK);
                 ck_assert(memcmp(&xa, &xb, sizeof xa) == 0);
+                double ma, mb;
+                ck_assert_int_eq(noctWorldGetMargin(wa, (noctObjectId){i, 1}, &ma), NOCT_OK);
+                ck_assert_int_eq(noctWorldGetMargin(wb, (noctObjectId){i, 1}, &mb), NOCT_OK);
+                ck_assert(memcmp(&ma, &mb, sizeof ma) == 0);
             }
     }
     noctWorldDestroy(wa);
@@ -739,9 +743,10 @@ START_TEST(scenes_written_read_back)
              "mesh a box 0.5 0.25 0.125\nmesh f file %s\n"
              "object a 0 0 0 rotate 0 0 1 90 velocity 0.1 -0.2 0.3 filter 0x6 3\n"
              "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n"
-             "object f 0.3 5 0 type static sensor\n"
-             "object a 0 0 5 velocity 1e-3 0 0 type moving spin 0 0 1 7.5\n"
-             "object f 1 1 1\nkey 0 1 1 1\nkey 7 2 1.5 1 rotate 0 1 0 33.3\nkey 20 -1 0 0\n"
+             "object f 0.3 5 0 type static sensor name the.sensor\n"
+             "object a 0 0 5 velocity 1e-3 0 0 type moving spin 0 0 1 7.5 margin 0.1\n"
+             "object f 1 1 1 name _keyed-1 margin 1e-300\n"
+             "key 0 1 1 1\nkey 7 2 1.5 1 rotate 0 1 0 33.3\nkey 20 -1 0 0\n"
              "effects motion events response walls spin track\n",
              off);
     const char *path = write_text("all.scene", text);
@@ -780,13 +785,21 @@ START_TEST(scenes_written_read_back)
                 "object a 0 0 0 velocity 0.1 -0.2 0.3 rotate 0 0 1 90 type moving "
                 "filter 0x6 0x3\n",
                 "object a 5 0 0 1 0 0 0.5 rotate 1 1 0 30 type kinematic\n",
-                "object f 0.3 5 0 type static sensor\n",
-                " spin 0 0 1 7.5\n", "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
+                "object f 0.3 5 0 type static sensor name the.sensor\n",
+                " spin 0 0 1 7.5 margin 0.1\n",
+                "object f 1 1 1 type kinematic margin 1e-300 name _keyed-1\n",
+                "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
                 "key 20 -1 0 0\n", "effects motion events response walls spin track\n"};
             for (size_t k = 0; k < sizeof LINES / sizeof *LINES; ++k)
                 ck_assert_msg(strstr(t1, LINES[k]) != NULL, "'%s' not in:\n%s", LINES[k], t1);
         }
         ck_assert_uint_eq(noctSceneDef(a)->effects, noctSceneDef(b)->effects);
+        ck_assert_uint_eq(noctSceneObjectCount(a), noctSceneObjectCount(b));
+        for (size_t k = 0; k < noctSceneObjectCount(a); ++k) {
+            const char *na = noctSceneObjectName(a, k), *nb = noctSceneObjectName(b, k);
+            ck_assert((na == NULL) == (nb == NULL));
+            ck_assert(na == NULL || strcmp(na, nb) == 0);
+        }
         same_runs(a, b);
         free(t1);
         free(t2);
@@ -807,6 +820,100 @@ START_TEST(scenes_written_read_back)
 }
 END_TEST
 
+/* Objects' margins and names: read, built, found; and every way to get
+ * them wrong, at its line. */
+START_TEST(object_margins_and_names)
+{
+    const char *path = write_text("names.scene",
+        "mesh a box 0.5 0.5 0.5\n"
+        "family planes 0\n" /* two objects first, without names */
+        "object a 0 0 5 margin 0.25 name left\n"
+        "object a 3 0 5 name Right_2.b-c\n"
+        "object a 6 0 5 margin 1e100\n");
+    noctScene *sc;
+    noctWorld *w = read_and_build(path, &sc);
+    ck_assert_uint_eq(noctSceneObjectCount(sc), 5);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 5);
+    static const char *const NAMES[5] = {NULL, NULL, "left", "Right_2.b-c", NULL};
+    static const double MARGINS[5] = {0, 0, 0.25, 0, 1e100};
+    for (size_t i = 0; i < 5; ++i) {
+        const char *n = noctSceneObjectName(sc, i);
+        ck_assert(NAMES[i] == NULL ? n == NULL : n != NULL && strcmp(n, NAMES[i]) == 0);
+        double m;
+        ck_assert_int_eq(noctWorldGetMargin(w, (noctObjectId){(uint32_t)i, 1}, &m), NOCT_OK);
+        ck_assert(m == MARGINS[i]);
+        size_t at = 99;
+        if (NAMES[i] != NULL) {
+            ck_assert(noctSceneFindObject(sc, NAMES[i], &at));
+            ck_assert_uint_eq(at, i);
+        }
+    }
+    ck_assert_ptr_null(noctSceneObjectName(sc, 5));
+    ck_assert_ptr_null(noctSceneObjectName(sc, SIZE_MAX));
+    size_t at = 99;
+    ck_assert(!noctSceneFindObject(sc, "right_2.b-c", &at)); /* case counts */
+    ck_assert(!noctSceneFindObject(sc, "", &at));
+    ck_assert_uint_eq(at, 99);
+    /* the third object's skin reaches nothing 2 away; the fifth's, all */
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    const noctPair *p;
+    ck_assert_uint_eq(noctWorldNear(w, &p), 4);
+    noctWorldDestroy(w);
+    noctSceneDestroy(sc);
+
+    /* many names: every one found (the table grows) */
+    char big[64 * 1024] = "mesh a box 0.5 0.5 0.5\n";
+    size_t len = strlen(big);
+    for (int i = 0; i < 1000; ++i)
+        len += (size_t)snprintf(big + len, sizeof big - len, "object a %d 0 0 name o%d\n", 2 * i,
+                                i);
+    path = write_text("many.scene", big);
+    ck_assert_int_eq(noctSceneRead(path, &sc, NULL), NOCT_OK);
+    for (int i = 0; i < 1000; ++i) {
+        char n[16];
+        snprintf(n, sizeof n, "o%d", i);
+        ck_assert(noctSceneFindObject(sc, n, &at));
+        ck_assert_uint_eq(at, (size_t)i);
+    }
+    noctSceneDestroy(sc);
+
+    static const char M[] = "mesh a box 1 1 1\n";
+    char text[512];
+    struct {
+        const char *line;
+        noctStatus st;
+        long at;
+        const char *what;
+    } const BAD[] = {
+        {"object a 0 0 0 margin nan\n", NOCT_ERR_NONFINITE, 2, "not a finite number"},
+        {"object a 0 0 0 margin inf\n", NOCT_ERR_NONFINITE, 2, "not a finite number"},
+        {"object a 0 0 0 margin -0.5\n", NOCT_ERR_INVALID, 2, "margin -0.5: it must be 0 to"},
+        {"object a 0 0 0 margin 2e100\n", NOCT_ERR_INVALID, 2, "it must be 0 to"},
+        {"object a 0 0 0 margin\n", NOCT_ERR_PARSE, 2, "missing margin"},
+        {"object a 0 0 0 margin 1 margin 1\n", NOCT_ERR_PARSE, 2, "'margin' given twice"},
+        {"object a 0 0 0 name\n", NOCT_ERR_PARSE, 2, "missing the object's name"},
+        {"object a 0 0 0 name 7up\n", NOCT_ERR_INVALID, 2, "bad object name '7up'"},
+        {"object a 0 0 0 name a/b\n", NOCT_ERR_INVALID, 2, "bad object name 'a/b'"},
+        {"object a 0 0 0 name x name y\n", NOCT_ERR_PARSE, 2, "'name' given twice"},
+        {"object a 0 0 0 name x\nobject a 1 0 0\n\nobject a 0 0 0 name x\n", NOCT_ERR_INVALID,
+         5, "object name 'x' is taken (line 2)"},
+        {"object a 0 0 0 name "
+         "a1234567890123456789012345678901234567890123456789012345678901234\n",
+         NOCT_ERR_INVALID, 2, "bad object name"},
+    };
+    for (size_t i = 0; i < sizeof BAD / sizeof *BAD; ++i) {
+        snprintf(text, sizeof text, "%s%s", M, BAD[i].line);
+        char name[32];
+        snprintf(name, sizeof name, "bad%zu.scene", i);
+        expect_scene(name, text, strlen(text), BAD[i].st, BAD[i].at, BAD[i].what);
+    }
+    /* 64 bytes is the longest name */
+    snprintf(text, sizeof text, "%sobject a 0 0 0 name "
+             "a123456789012345678901234567890123456789012345678901234567890123\n", M);
+    ck_assert_uint_eq(build_count(write_text("long.scene", text)), 1);
+}
+END_TEST
+
 static Suite *readers_suite(void)
 {
     Suite *s = suite_create("readers");
@@ -816,7 +923,7 @@ static Suite *readers_suite(void)
 
     tc = test_case(s, "read what builds", 0, NULL);
     add_tests(tc, walls_need_a_container, scene_limits, tiny_and_huge_directions, object_attributes,
-              filter_words_are_decimal, scenes_written_read_back);
+              filter_words_are_decimal, scenes_written_read_back, object_margins_and_names);
 
     tc = test_case(s, "out of memory", 120, NULL);
     add_tests(tc, getline_nomem_is_nomem, every_allocation_failing, every_allocation_failing_mesh);

@@ -2,7 +2,7 @@
 /*
  * Check suite for the collision world (include/noctree/world.h).
  *
- * Oracles: the closed-form event counts of the planes scenes (SCENES.md),
+ * Oracles: the closed-form event counts of the planes scenes (noctree-families(7)),
  * identical event sequences across N and maintenance modes, a brute-force
  * all-pairs exact test after every step of random scenes, and the world's
  * whole-structure validation walk after every step.
@@ -143,7 +143,7 @@ static size_t steps_and_hash(noctWorld *w, int steps, uint64_t *hash)
     return begins;
 }
 
-/* gas_1000 (SCENES.md): 6 212 contact-begin events in 200 steps, the
+/* gas_1000 (noctree-families(7)): 6 212 contact-begin events in 200 steps, the
  * answer ODE, FCL and a brute-force reference agree on; the same event
  * sequence in both maintenance modes. */
 static size_t run_gas(size_t n, int N, noctMaintenance mode, uint64_t *hash)

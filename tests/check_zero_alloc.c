@@ -65,7 +65,7 @@ static unsigned long counting_off(const char *what)
 #define WARM_UP 800
 #define COUNTED 200
 
-/* A SCENES.md scene at N and max_depth, warmed up, then counted. */
+/* A built-in family's scene at N and max_depth, warmed up, then counted. */
 static void world_stretch(const char *spec, int N, int depth, int warm_up, bool expect_churn)
 {
     noctScene *sc;

@@ -21,6 +21,7 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-continuous tests/check-continuous-efficient \
 	tests/check-swept tests/check-swept-efficient \
 	tests/check-turning tests/check-turning-efficient \
+	tests/check-contacts tests/check-contacts-efficient \
 	tests/check-distance-paths tests/check-distance-paths-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
@@ -227,6 +228,19 @@ tests_check_continuous_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_continuous_efficient_CFLAGS = $(check_cflags)
 tests_check_continuous_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 
+# check-contacts: the contacts (noctCollideContact(), noctWorldContacts())
+# against closed forms (boxes face on face, edge across edge, a corner in a
+# face, containment), a brute-force minimum translation of convex meshes,
+# the points' tolerance in both solids or on both boundaries, and the
+# world's contacts against the pairwise calls.
+tests_check_contacts_SOURCES = tests/check_contacts.c
+tests_check_contacts_CFLAGS = $(check_cflags)
+tests_check_contacts_LDADD = $(check_ldadd)
+tests_check_contacts_efficient_SOURCES = tests/check_contacts.c
+tests_check_contacts_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_contacts_efficient_CFLAGS = $(check_cflags)
+tests_check_contacts_efficient_LDADD = $(efficient_ldadd)
+
 # check-distance-paths: noctDistance()'s fast paths: the convex path
 # (GJK, proved by its direction) against the general path on the same
 # solid, the general search against a brute force over every triangle
@@ -269,7 +283,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/corpus/narrowphase/raw-huge \
 	tests/fuzz/corpus/narrowphase/tet-vs-rotated
 
-# The peer benchmark's event counts against SCENES.md, when it is built.
+# The peer benchmark's event counts against noctree-families(7)'s known answers, when it is built.
 if HAVE_PEERS
 TESTS += tests/peers.sh
 endif

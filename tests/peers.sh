@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # bench-peers end to end: every library finds the scenes' known numbers of
-# contact-begin events (SCENES.md: (2R + 1)^2 on the planes, where R is the
+# contact-begin events (noctree-families(7): (2R + 1)^2 on the planes, where R is the
 # last ring whose facing pair met, at step 51 + 2R; 6 212 on gas 1 000 in
 # 200 steps), the world driven by the program (--driven) the same as the
 # built-in motion, the queries (--queries) the same as FCL's where both

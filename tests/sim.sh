@@ -391,4 +391,106 @@ check "no margin: no near events" sh -c "! grep -q near '$tmp/nomargin.ev'"
 expect_run 2 "^noctree-sim: --margin must be a distance" --margin -1 --scene arms:1
 expect_run 2 "^noctree-sim: --margin must be a distance" --margin nan --scene arms:1
 
+
+# ---- names, objects' margins, --distance, --near-distances -------------------
+# three.scene with names for two of its cubes: the same rows, by name.
+sed -e '3s/$/ name left/' -e '4s/$/ name right/' "$tmp/three.scene" > "$tmp/named.scene"
+sed -e 's/,0,/,left,/; s/,0$/,left/; s/,1,/,right,/; s/,1$/,right/' "$tmp/want.csv" \
+    > "$tmp/want-named.csv"
+"$sim" --report csv --steps 20 --quiet "$tmp/named.scene" 2> /dev/null | tail -n +2 \
+    > "$tmp/named.csv"
+check "names: the csv rows name the objects (indices for the unnamed)" \
+    cmp -s "$tmp/named.csv" "$tmp/want-named.csv"
+check "names: the oracle's rows hold names" grep -q '^9,collide,right,2$' "$tmp/want-named.csv"
+expect_run 0 '^ *8  *collide  *2  *left-right left-2$' --report table --steps 20 --quiet \
+    "$tmp/named.scene"
+expect_run 0 '^first collision at step 3: objects left and 2, contact box ' --first --quiet \
+    "$tmp/named.scene"
+expect_run 0 '^8 begin left right$' --events --quiet --steps 20 "$tmp/named.scene"
+expect_run 0 '^13 end left right$' --events --quiet --steps 20 "$tmp/named.scene"
+"$sim" --write-scene "$tmp/named2.scene" "$tmp/named.scene"
+check "names: written back" grep -q ' name right$' "$tmp/named2.scene"
+"$sim" --events --quiet --steps 20 "$tmp/named2.scene" 2>&1 | grep ' begin \| end ' \
+    > "$tmp/named2.ev"
+"$sim" --events --quiet --steps 20 "$tmp/named.scene" 2>&1 | grep ' begin \| end ' \
+    > "$tmp/named.ev"
+check "names: the written scene gives the same events" \
+    sh -c "[ -s '$tmp/named.ev' ] && cmp -s '$tmp/named.ev' '$tmp/named2.ev'"
+printf 'mesh c box 1 1 1\nobject c 0 0 0 name x\nobject c 5 0 0 name x\n' > "$tmp/dup.scene"
+expect_run 2 "dup.scene:3: object name 'x' is taken (line 2)" "$tmp/dup.scene"
+printf 'mesh c box 1 1 1\nobject c 0 0 0 name 12\n' > "$tmp/badname.scene"
+expect_run 2 "badname.scene:2: bad object name '12'" "$tmp/badname.scene"
+printf 'mesh c box 1 1 1\nobject c 0 0 0 margin -1\n' > "$tmp/badmargin.scene"
+expect_run 2 "badmargin.scene:2: object margin -1: it must be 0 to" "$tmp/badmargin.scene"
+
+# --distance: a unit cube at the origin and a slab of half-extents
+# (1, 0.5, 0.25) at (4.5, 4, 0) moving by -1/8 along x: after step s the
+# gaps are 3 on y and max(0, 3 - s/8, -(4 + s/8)...) on x (every position
+# exact), so the distance is sqrt(gx^2 + 9); the nearest points have y 0.5
+# and 3.5.
+cat > "$tmp/dist.scene" <<'SCENE'
+effects motion
+steps 40
+mesh cube box 0.5 0.5 0.5
+mesh slab box 1 0.5 0.25
+object cube 0 0 0 type static name a
+object slab 4.5 4 0 velocity -0.125 0 0 name b
+object cube 0.25 0.25 0 type static
+SCENE
+"$sim" --quiet --distance a b "$tmp/dist.scene" > "$tmp/dist.out" 2>&1
+check "--distance: exit 0" [ $? -eq 0 ]
+check "--distance: a line at the start and after each of the 40 steps" \
+    [ "$(grep -c '^[0-9]* distance a b ' "$tmp/dist.out")" -eq 41 ]
+check "--distance: the closed form, inside the proved interval, with the nearest points" \
+    awk '$2 == "distance" {
+        s = $1; x = 4.5 - s / 8; gx = x - 1 - 0.5; if (-0.5 - (x + 1) > gx) gx = -0.5 - (x + 1)
+        if (gx < 0) gx = 0
+        want = sqrt(gx * gx + 9); d = $5; lo = substr($6, 2) + 0; hi = $7 + 0
+        if (d - want > 1e-12 || want - d > 1e-12 || lo > want + 1e-15 || hi < want - 1e-15) exit 1
+        if ($8 != "points" || $10 != "0.5," || $13 != "3.5,") exit 1
+        n++
+    } END { exit n != 41 }' "$tmp/dist.out"
+expect_run 0 '^0 distance a b 4.2426406871192' --quiet --distance 0 1 --steps 1 "$tmp/dist.scene"
+expect_run 0 '^24 distance b a 3 ' --quiet --distance b a "$tmp/dist.scene"
+expect_run 0 '^0 distance a 2 0 \[0, 0\] colliding$' --quiet --distance a 2 --steps 1 \
+    "$tmp/dist.scene"
+expect_run 2 "^noctree-sim: --distance: no object 'c'" --distance a c "$tmp/dist.scene"
+expect_run 2 "^noctree-sim: --distance: no object '3'" --distance a 3 "$tmp/dist.scene"
+expect_run 2 "give one scene" --distance a "$tmp/dist.scene"
+
+# Objects' margins and --near-distances: cubes 0.25 and 0.5 thick skins,
+# the second coming at 1/8 a step from 4: 3 - s/8 apart after step s,
+# near from step 18 (0.75 = 0.25 + 0.5), colliding from 24 to 30.
+cat > "$tmp/skins.scene" <<'SCENE'
+effects motion events
+steps 30
+mesh cube box 0.5 0.5 0.5
+object cube 0 0 0 type static margin 0.25 name left
+object cube 4 0 0 velocity -0.125 0 0 margin 0.5 name right
+object cube 0 5 0 type static
+SCENE
+awk 'BEGIN { for (s = 1; s <= 30; ++s) { d = 3 - s / 8; if (d < 0) d = 0
+    if (d == 0) printf "%d,collide,left,right,\n", s
+    if (d <= 0.75) printf "%d,near,left,right,%s\n", s, d } }' > "$tmp/want-skins.csv"
+"$sim" --quiet --report csv --near-distances "$tmp/skins.scene" > "$tmp/skins.csv" \
+    2> "$tmp/skins.err"
+check "--near-distances csv: the header has a distance" \
+    [ "$(head -1 "$tmp/skins.csv")" = "step,kind,a,b,distance" ]
+tail -n +2 "$tmp/skins.csv" | sort -t, -k1,1n -k2,2 > "$tmp/skins.rows"
+sort -t, -k1,1n -k2,2 "$tmp/want-skins.csv" > "$tmp/want-skins.rows"
+check "objects' margins: near by their skins, with the closed-form distances" \
+    cmp -s "$tmp/skins.rows" "$tmp/want-skins.rows"
+check "objects' margins: the summary counts the near pair" \
+    grep -q '^near begins 1$' "$tmp/skins.err"
+expect_run 0 '^ *19  *near  *1  *left-right(0.625)$' --quiet --report table --near-distances \
+    "$tmp/skins.scene"
+expect_run 0 '^18 near-begin left right distance 0.75$' --quiet --events --near-distances \
+    "$tmp/skins.scene"
+expect_run 0 '^18 near-begin left right$' --quiet --events "$tmp/skins.scene"
+"$sim" --quiet --events "$tmp/three.scene" > "$tmp/noskins.ev" 2>&1
+check "no margins: no near events" sh -c "! grep -q near '$tmp/noskins.ev'"
+expect_run 2 "^noctree-sim: --near-distances needs" --near-distances "$tmp/skins.scene"
+expect_run 2 "^noctree-sim: --near-distances needs" --near-distances --report gnuplot \
+    "$tmp/skins.scene"
+
 finish sim

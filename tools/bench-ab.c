@@ -4,7 +4,7 @@
  *
  * Loads two shared libraries (say, the efficient library of main and of a
  * branch) with dlopen(3), each in its own namespace, builds the same
- * SCENES.md scene in each, and steps them in turn: on even steps A first,
+ * built-in family's scene in each, and steps them in turn: on even steps A first,
  * on odd steps B first, so that whatever the machine does to one does it
  * to the other. Prints per scene the median step of each, their ratio
  * B / A with the spread of the per-step ratios (their quartiles), and

@@ -6,7 +6,7 @@
  * The peers are FCL's dynamic AABB tree and ODE's sweep-and-prune and hash
  * spaces, each with its library's own box-box test (FCL's boxBox2, ODE's
  * dBoxBox), the configurations the issue tracker quotes. Every library runs
- * the same SCENES.md scene, built here from SCENES.md for the peers and by
+ * the same scene, built here from noctree-families(7) for the peers and by
  * noctSceneFamily() for libnoctree, with the same dynamics: move, bounce off
  * the container walls, find the colliding pairs, reverse the objects of the
  * pairs that begin. Their contact-begin counts must agree (the scenes' known
@@ -41,7 +41,7 @@
  * noctWorldCreateObject() (the same meshes and positions as the family's),
  * while the program keeps every position and velocity itself, moves them
  * each step as the motion effect would (p += v, the container's walls
- * negating velocity components as SCENES.md says), teleports every object
+ * negating velocity components as noctree-families(7) says), teleports every object
  * with noctWorldSetTransform(), calls noctWorldStep(), and reverses the
  * objects of the pairs noctWorldBegan() reports. The positions are the
  * built-in motion's bit for bit, so the contact begins must be the same:
@@ -134,14 +134,14 @@ double now()
     return tool_now();
 }
 
-// ---- the scenes, from SCENES.md -------------------------------------------
+// ---- the scenes, from noctree-families(7) -------------------------------------------
 
 struct Body {
     double c[3];  // centre
     double r[9];  // rotation, row-major; its columns are the box's axes
     double h[3];  // half-extents
     double v[3];  // velocity: direction times speed
-    double q[4];  // the rotation r as SCENES.md's quaternion (x, y, z, w)
+    double q[4];  // the rotation r as noctree-families(7)'s quaternion (x, y, z, w)
 };
 
 struct Scene {
@@ -186,7 +186,7 @@ bool parse_scene(const char *spec, bool *gas, long *size)
 }
 
 /* The scene's known contact-begin count in the first steps steps, if
- * SCENES.md gives one: on the planes ring r's facing pair begins at step
+ * noctree-families(7) gives one: on the planes ring r's facing pair begins at step
  * 51 + 2r and never again; gas has answers for 200 steps. */
 bool known_begins(bool gas, long size, int steps, size_t *known)
 {
@@ -1916,7 +1916,7 @@ int main(int argc, char **argv)
                                     r.objects, LIBS[l],
                                     o.broadphase ? "overlapping pairs" : "contact begins",
                                     r.begins,
-                                    has_known ? "SCENES.md says" : "another run found",
+                                    has_known ? "noctree-families(7) says" : "another run found",
                                     has_known ? known : first);
                         all_ok = false;
                     }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * bench-world: the collision world on the SCENES.md families.
+ * bench-world: the collision world on the built-in families (noctree-families(7)).
  *
  * For each scene and N (5, 10, 30 and 50 at depth 8, and the defaults:
  * both chosen by the world): per-step wall time (median and 90th percentile

@@ -41,7 +41,7 @@ tools_bench_narrowphase_SOURCES = tools/bench-narrowphase.c
 tools_bench_narrowphase_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT
 tools_bench_narrowphase_LDADD = $(tools_efficient_ldadd)
 
-# The collision world on the SCENES.md families.
+# The collision world on the built-in families (noctree-families(7)).
 noinst_PROGRAMS += tools/bench-world
 tools_bench_world_SOURCES = tools/bench-world.c
 tools_bench_world_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT

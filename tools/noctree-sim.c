@@ -7,6 +7,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,10 +34,21 @@ static const char usage[] =
     "  --maintenance MODE    incremental or rebuild\n"
     "  --steps S             number of steps\n"
     "  --substep             split steps so fast objects cannot pass through others\n"
-    "  --margin D            also find the pairs within distance D (near pairs)\n"
+    "  --margin D            also find the pairs within distance D (near pairs;\n"
+    "                        objects' own margins add to it)\n"
     "  --events              print every contact event: STEP begin|end A B\n"
+    "  --contacts            print the colliding pairs' contacts after every step:\n"
+    "                        STEP contact A B KIND depth D normal X Y Z, then its\n"
+    "                        points as STEP point X Y Z DEPTH\n"
     "                        (sensor-begin|sensor-end for sensors, and\n"
-    "                        near-begin|near-end with a margin)\n"
+    "                        near-begin|near-end with a margin); objects by\n"
+    "                        name when the scene names them, else by index\n"
+    "  --distance A B        print the distance between objects A and B (names\n"
+    "                        or indices) at the start and after every step:\n"
+    "                        STEP distance A B D [LOWER, UPPER] and the nearest\n"
+    "                        points, or 'colliding'\n"
+    "  --near-distances      with --report table or csv and with --events, give\n"
+    "                        each near pair's distance\n"
     "  --report FORMAT       the colliding pairs after every step: table, csv or\n"
     "                        gnuplot (a script plotting them against the step)\n"
     "  --output FILE         write the report to FILE, not standard output\n"
@@ -64,6 +76,57 @@ static const char *const report_names[] = {"", "table", "csv", "gnuplot"};
 static const char kind_collide[] = "collide";
 static const char kind_near[] = "near";
 
+/* The distances (--distance, --near-distances): noctDistance() on the
+ * objects' meshes, a box primitive's made once from its half-extents. */
+typedef struct distances {
+    noctWorld *w;
+    noctMesh **box; /* per object index, made when first needed */
+    size_t n;
+} distances;
+
+/* The distance between objects a and b as they are now; false (said) on
+ * failure. */
+static bool distance_of(distances *d, noctObjectId a, noctObjectId b, noctDistanceResult *r)
+{
+    const noctMesh *m[2];
+    noctTransform x[2];
+    const noctObjectId id[2] = {a, b};
+    noctError err;
+    for (int k = 0; k < 2; ++k) {
+        if (noctWorldGetTransform(d->w, id[k], &x[k]) != NOCT_OK || id[k].index >= d->n) {
+            tool_error("object %u is gone", id[k].index);
+            return false;
+        }
+        m[k] = noctWorldGetMesh(d->w, id[k]);
+        if (m[k] == NULL) { /* a box primitive: its box as a mesh, once */
+            noctMesh **box = &d->box[id[k].index];
+            double h[3];
+            if (*box == NULL && (noctWorldGetHalfExtents(d->w, id[k], h) != NOCT_OK ||
+                                 noctMeshCreateBox(h[0], h[1], h[2], box, &err) != NOCT_OK)) {
+                tool_error("object %u: no box mesh: %s", id[k].index, err.message);
+                return false;
+            }
+            m[k] = *box;
+        }
+    }
+    if (noctDistance(m[0], &x[0], m[1], &x[1], INFINITY, r, NULL, &err) != NOCT_OK) {
+        tool_error("distance between objects %u and %u: %s", a.index, b.index, err.message);
+        return false;
+    }
+    return true;
+}
+
+/* An object as the output names it: its name in the scene, else its
+ * index. */
+static const char *label(const noctScene *scene, uint32_t index, char buf[24])
+{
+    const char *name = noctSceneObjectName(scene, index);
+    if (name != NULL)
+        return name;
+    snprintf(buf, 24, "%u", index);
+    return buf;
+}
+
 typedef struct report {
     report_format format;
     FILE *out;
@@ -71,6 +134,9 @@ typedef struct report {
     size_t most;      /* gnuplot: the most pairs at one step */
     int steps;        /* gnuplot: the steps written */
     bool near;        /* a margin: near pairs too */
+    const noctScene *scene; /* the objects' names */
+    distances *dist;  /* --near-distances: the near pairs' distances */
+    bool failed;      /* a distance could not be had */
 } report;
 
 /* Write PREFIX and S in single quotes for gnuplot, which substitutes nothing
@@ -99,7 +165,7 @@ static void report_begin(report *r, const char *scene, const char *svg)
         fprintf(r->out, "%8s  %-7s  %5s  %s\n", "step", "kind", "count", "pairs");
         break;
     case REPORT_CSV:
-        fputs("step,kind,a,b\n", r->out);
+        fputs(r->dist != NULL ? "step,kind,a,b,distance\n" : "step,kind,a,b\n", r->out);
         break;
     case REPORT_GNUPLOT:
         fputs("# noctree-sim --report gnuplot: the colliding pairs after each step.\n", r->out);
@@ -129,14 +195,46 @@ static void report_begin(report *r, const char *scene, const char *svg)
     }
 }
 
+/* A near pair's distance for the report (its value), or "" when not
+ * asked for (or, said, when it could not be had). */
+static const char *near_distance(report *r, noctPair p, char buf[32])
+{
+    noctDistanceResult d;
+    buf[0] = '\0';
+    if (r->dist == NULL)
+        return buf;
+    if (!distance_of(r->dist, p.a, p.b, &d)) {
+        r->failed = true;
+        return buf;
+    }
+    return tool_format_double(d.distance, buf);
+}
+
 static void table_line(report *r, int s, const char *kind, const noctPair *p, size_t n)
 {
     if (n == 0)
         return;
     fprintf(r->out, "%8d  %-7s  %5zu ", s, kind, n);
-    for (size_t i = 0; i < n; ++i)
-        fprintf(r->out, " %u-%u", p[i].a.index, p[i].b.index);
+    for (size_t i = 0; i < n; ++i) {
+        char a[24], b[24], d[32];
+        fprintf(r->out, " %s-%s", label(r->scene, p[i].a.index, a),
+                label(r->scene, p[i].b.index, b));
+        if (kind == kind_near && r->dist != NULL)
+            fprintf(r->out, "(%s)", near_distance(r, p[i], d));
+    }
     fputc('\n', r->out);
+}
+
+static void csv_lines(report *r, int s, const char *kind, const noctPair *p, size_t n)
+{
+    for (size_t i = 0; i < n; ++i) {
+        char a[24], b[24], d[32];
+        fprintf(r->out, "%d,%s,%s,%s", s, kind, label(r->scene, p[i].a.index, a),
+                label(r->scene, p[i].b.index, b));
+        if (r->dist != NULL)
+            fprintf(r->out, ",%s", kind == kind_near ? near_distance(r, p[i], d) : "");
+        fputc('\n', r->out);
+    }
 }
 
 /* The n pairs p colliding after step s, and the nn pairs q near. */
@@ -151,10 +249,8 @@ static void report_step(report *r, int s, const noctPair *p, size_t n, const noc
         table_line(r, s, kind_near, q, nn);
         break;
     case REPORT_CSV:
-        for (size_t i = 0; i < n; ++i)
-            fprintf(r->out, "%d,%s,%u,%u\n", s, kind_collide, p[i].a.index, p[i].b.index);
-        for (size_t i = 0; i < nn; ++i)
-            fprintf(r->out, "%d,%s,%u,%u\n", s, kind_near, q[i].a.index, q[i].b.index);
+        csv_lines(r, s, kind_collide, p, n);
+        csv_lines(r, s, kind_near, q, nn);
         break;
     case REPORT_GNUPLOT:
         if (r->near)
@@ -211,9 +307,37 @@ static bool parted_within(const noctPair *began, size_t nb, const noctPair *col,
     return false;
 }
 
+/* --contacts: the contact of each colliding pair after step s
+ * (noctWorldContacts()), a line each and a line per point. */
+static bool print_contacts(FILE *out, noctWorld *w, int s, const noctScene *scene,
+                           noctError *err)
+{
+    static const char *const kinds[] = {"none", "convex", "crossing", "contained"};
+    const noctPair *p;
+    const noctContact *c;
+    size_t n;
+    noctWorldColliding(w, &p);
+    if (noctWorldContacts(w, &c, &n, err) != NOCT_OK)
+        return false;
+    for (size_t i = 0; i < n; ++i) {
+        char d[32], x[32], y[32], z[32], la[24], lb[24];
+        fprintf(out, "%d contact %s %s %s depth %s normal %s %s %s\n", s,
+                label(scene, p[i].a.index, la), label(scene, p[i].b.index, lb),
+                kinds[c[i].kind], tool_format_double(c[i].depth, d),
+                tool_format_double(c[i].normal[0], x), tool_format_double(c[i].normal[1], y),
+                tool_format_double(c[i].normal[2], z));
+        for (unsigned k = 0; k < c[i].count; ++k)
+            fprintf(out, "%d point %s %s %s %s\n", s, tool_format_double(c[i].points[k][0], x),
+                    tool_format_double(c[i].points[k][1], y),
+                    tool_format_double(c[i].points[k][2], z),
+                    tool_format_double(c[i].point_depth[k], d));
+    }
+    return true;
+}
+
 /* --first: the line for the first pair colliding after step s, with its
  * contact box, the intersection of the objects' placed bounding boxes. */
-static bool print_first(const noctWorld *w, int s, noctPair pair)
+static bool print_first(const noctWorld *w, const noctScene *scene, int s, noctPair pair)
 {
     double alo[3], ahi[3], blo[3], bhi[3], lo[3], hi[3];
     if (noctWorldObjectBox(w, pair.a, alo, ahi) != NOCT_OK ||
@@ -225,10 +349,11 @@ static bool print_first(const noctWorld *w, int s, noctPair pair)
         lo[k] = alo[k] > blo[k] ? alo[k] : blo[k];
         hi[k] = ahi[k] < bhi[k] ? ahi[k] : bhi[k];
     }
-    char b[6][32];
-    printf("first collision at step %d: objects %u and %u, contact box (%s, %s, %s) "
+    char b[6][32], na[24], nb[24];
+    printf("first collision at step %d: objects %s and %s, contact box (%s, %s, %s) "
            "(%s, %s, %s)\n",
-           s, pair.a.index, pair.b.index, tool_format_double(lo[0], b[0]),
+           s, label(scene, pair.a.index, na), label(scene, pair.b.index, nb),
+           tool_format_double(lo[0], b[0]),
            tool_format_double(lo[1], b[1]), tool_format_double(lo[2], b[2]),
            tool_format_double(hi[0], b[3]), tool_format_double(hi[1], b[4]),
            tool_format_double(hi[2], b[5]));
@@ -237,20 +362,109 @@ static bool print_first(const noctWorld *w, int s, noctPair pair)
 
 /* --first with continuous detection: the pair that touched first within
  * step s, when and where (noctWorldBeganHits()). */
-static void print_first_time(int s, const noctPair *began, const noctSweepHit *hits,
-                             size_t n)
+static void print_first_time(const noctScene *scene, int s, const noctPair *began,
+                             const noctSweepHit *hits, size_t n)
 {
     size_t best = 0;
     for (size_t i = 1; i < n; ++i)
         if (hits[i].time < hits[best].time)
             best = i;
     const noctSweepHit *h = &hits[best];
-    char b[4][32];
-    printf("first collision at step %d, time %s of the step: objects %u and %u, "
+    char b[4][32], na[24], nb[24];
+    printf("first collision at step %d, time %s of the step: objects %s and %s, "
            "touching at (%s, %s, %s)\n",
-           s, tool_format_double(h->time, b[0]), began[best].a.index, began[best].b.index,
+           s, tool_format_double(h->time, b[0]), label(scene, began[best].a.index, na),
+           label(scene, began[best].b.index, nb),
            tool_format_double(h->point[0], b[1]), tool_format_double(h->point[1], b[2]),
            tool_format_double(h->point[2], b[3]));
+}
+
+/* --events: the n pairs p of an event kind after step s, each with its
+ * distance when dist is not NULL (--near-distances); false if a distance
+ * could not be had. */
+static bool print_events(FILE *f, int s, const char *kind, const noctPair *p, size_t n,
+                         const noctScene *scene, distances *dist)
+{
+    for (size_t i = 0; i < n; ++i) {
+        char a[24], b[24], d[32];
+        fprintf(f, "%d %s %s %s", s, kind, label(scene, p[i].a.index, a),
+                label(scene, p[i].b.index, b));
+        if (dist != NULL) {
+            noctDistanceResult r;
+            if (!distance_of(dist, p[i].a, p[i].b, &r))
+                return false;
+            fprintf(f, " distance %s", tool_format_double(r.distance, d));
+        }
+        fputc('\n', f);
+    }
+    return true;
+}
+
+/* --distance: the line for objects a and b after step s (0: the start). */
+static bool print_distance(FILE *f, int s, distances *dist, const noctScene *scene,
+                           noctObjectId a, noctObjectId b)
+{
+    noctDistanceResult r;
+    if (!distance_of(dist, a, b, &r))
+        return false;
+    char na[24], nb[24], v[9][32];
+    fprintf(f, "%d distance %s %s %s [%s, %s]", s, label(scene, a.index, na),
+            label(scene, b.index, nb), tool_format_double(r.distance, v[0]),
+            tool_format_double(r.lower, v[1]), tool_format_double(r.upper, v[2]));
+    if (r.colliding)
+        fputs(" colliding\n", f);
+    else
+        fprintf(f, " points (%s, %s, %s) (%s, %s, %s)\n", tool_format_double(r.point_a[0], v[3]),
+                tool_format_double(r.point_a[1], v[4]), tool_format_double(r.point_a[2], v[5]),
+                tool_format_double(r.point_b[0], v[6]), tool_format_double(r.point_b[1], v[7]),
+                tool_format_double(r.point_b[2], v[8]));
+    return true;
+}
+
+/* The handles of the objects of a world just built: every proxy of its
+ * broadphase (an infinite box meets them all; an object whose mask is 0
+ * passes no query's filter, and has the generation of a slot used once). */
+typedef struct handles {
+    noctObjectId *id;  /* by index, or NULL: only any_margin wanted */
+    size_t n;
+    const noctWorld *w;
+    bool any_margin;
+} handles;
+
+static bool take_handle(void *context, noctProxyId id, void *user)
+{
+    (void)user;
+    handles *h = context;
+    if (h->id != NULL && id.index < h->n)
+        h->id[id.index] = id;
+    double m = 0;
+    if (noctWorldGetMargin(h->w, id, &m) == NOCT_OK && m > 0)
+        h->any_margin = true;
+    return h->id != NULL || !h->any_margin;
+}
+
+static void find_handles(handles *h)
+{
+    const double lo[3] = {-INFINITY, -INFINITY, -INFINITY}, hi[3] = {INFINITY, INFINITY, INFINITY};
+    noctBroadphaseQueryBox(noctWorldBroadphase(h->w), lo, hi, noctDefaultQueryFilter(),
+                           take_handle, h);
+    for (size_t i = 0; h->id != NULL && i < h->n; ++i)
+        if (h->id[i].generation == 0)
+            h->id[i] = (noctObjectId){(uint32_t)i, 1};
+}
+
+/* An object named on the command line: its name, or its index. */
+static bool resolve_object(const noctScene *scene, const char *arg, size_t *index)
+{
+    if (noctSceneFindObject(scene, arg, index))
+        return true;
+    long v;
+    const size_t n = noctSceneObjectCount(scene);
+    if (n > 0 && tool_parse_long(arg, 0, n - 1 < 0x7fffffff ? (long)(n - 1) : 0x7fffffff, &v)) {
+        *index = (size_t)v;
+        return true;
+    }
+    return false;
 }
 
 int main(int argc, char **argv)
@@ -259,7 +473,9 @@ int main(int argc, char **argv)
     const char *opt_acc = NULL,
                *opt_maint = NULL;
     long steps = 0;
-    bool events = false, quiet = false, substep = false, first = false;
+    bool events = false, quiet = false, substep = false, first = false, contacts = false;
+    bool near_distances = false;
+    const char *dist_arg[2] = {NULL, NULL}; /* --distance A B */
     const char *write_scene = NULL;
     double margin = -1; /* --margin, if given */
     report rep = {.format = REPORT_NONE};
@@ -271,12 +487,19 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(a, "--events") == 0) {
             events = true;
+        } else if (strcmp(a, "--contacts") == 0) {
+            contacts = true;
         } else if (strcmp(a, "--quiet") == 0) {
             quiet = true;
         } else if (strcmp(a, "--substep") == 0) {
             substep = true;
         } else if (strcmp(a, "--first") == 0) {
             first = true;
+        } else if (strcmp(a, "--near-distances") == 0) {
+            near_distances = true;
+        } else if (strcmp(a, "--distance") == 0 && i + 2 < argc) {
+            dist_arg[0] = argv[++i];
+            dist_arg[1] = argv[++i];
         } else if (strcmp(a, "--report") == 0 && has_value) {
             const char *f = argv[++i];
             rep.format = REPORT_NONE;
@@ -315,6 +538,11 @@ int main(int argc, char **argv)
         return tool_usage_error("--first and --report cannot be combined");
     if (rep.path != NULL && rep.format == REPORT_NONE)
         return tool_usage_error("--output needs --report");
+    if (near_distances && rep.format == REPORT_GNUPLOT)
+        return tool_usage_error("--near-distances needs --report table or csv (or --events), "
+                                "not gnuplot");
+    if (near_distances && rep.format == REPORT_NONE && !events)
+        return tool_usage_error("--near-distances needs --report table or csv, or --events");
     /* The gnuplot script draws its plot in the --output name with .svg for
      * its extension: that must be another file, and a name gnuplot can hold. */
     if (rep.format == REPORT_GNUPLOT && rep.path != NULL) {
@@ -338,6 +566,15 @@ int main(int argc, char **argv)
     int bad = tool_scene_load(&sa, &scene);
     if (bad)
         return bad;
+    size_t dist_index[2] = {0, 0};
+    for (int k = 0; k < 2 && dist_arg[0] != NULL; ++k)
+        if (!resolve_object(scene, dist_arg[k], &dist_index[k])) {
+            const size_t n = noctSceneObjectCount(scene);
+            noctSceneDestroy(scene);
+            return tool_usage_error("--distance: no object '%s' (a name in the scene, or an "
+                                    "index below its %zu objects)",
+                                    dist_arg[k], n);
+        }
     noctWorldDef *def = noctSceneDef(scene);
     if (opt_acc != NULL && !tool_parse_accuracy(opt_acc, &def->accuracy))
         return noctSceneDestroy(scene), tool_usage_error("--accuracy must be box, convex, exact or continuous, not '%s'", opt_acc);
@@ -353,7 +590,6 @@ int main(int argc, char **argv)
         def->effects |= NOCT_EFFECT_SUBSTEP;
     if (margin >= 0)
         def->margin = margin;
-    rep.near = def->margin > 0;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);
     if (write_scene != NULL) {
         const bool to_stdout = strcmp(write_scene, "-") == 0;
@@ -382,6 +618,35 @@ int main(int argc, char **argv)
         noctSceneDestroy(scene);
         return 2;
     }
+    /* near pairs: the world's margin, or an object's own */
+    const size_t nobjects = noctSceneObjectCount(scene);
+    handles hs = {NULL, nobjects, w, false};
+    if (dist_arg[0] != NULL && (hs.id = calloc(nobjects, sizeof *hs.id)) == NULL) {
+        tool_error("out of memory");
+        noctWorldDestroy(w);
+        noctSceneDestroy(scene);
+        return 1;
+    }
+    find_handles(&hs);
+    rep.near = def->margin > 0 || hs.any_margin;
+    rep.scene = scene;
+    distances dist = {w, NULL, nobjects};
+    if ((dist_arg[0] != NULL || near_distances) &&
+        (dist.box = calloc(nobjects > 0 ? nobjects : 1, sizeof *dist.box)) == NULL) {
+        tool_error("out of memory");
+        free(hs.id);
+        noctWorldDestroy(w);
+        noctSceneDestroy(scene);
+        return 1;
+    }
+    distances *near_dist = near_distances ? &dist : NULL;
+    rep.dist = near_dist;
+    noctObjectId dist_id[2] = {{0, 0}, {0, 0}};
+    if (dist_arg[0] != NULL) {
+        dist_id[0] = hs.id[dist_index[0]];
+        dist_id[1] = hs.id[dist_index[1]];
+    }
+    free(hs.id);
     double ratio = noctWorldMaxStepRatio(w);
     const bool continuous = def->accuracy == NOCT_ACCURACY_CONTINUOUS;
     if (ratio > 0.5 && !(def->effects & NOCT_EFFECT_SUBSTEP) && !continuous)
@@ -418,11 +683,13 @@ int main(int argc, char **argv)
         report_begin(&rep, sa.family != NULL ? sa.family : sa.file, svg);
         free(svg);
     }
-    bool bar = !quiet && !events && isatty(STDERR_FILENO);
+    bool bar = !quiet && !events && !contacts && dist_arg[0] == NULL && isatty(STDERR_FILENO);
     size_t begins = 0, ends = 0, sensor_events = 0, near_events[2] = {0, 0};
     int status = 0, stopped = 0;
     bool told_parted = false;
-    for (int s = 1; s <= nsteps; ++s) {
+    if (dist_arg[0] != NULL && !print_distance(info, 0, &dist, scene, dist_id[0], dist_id[1]))
+        status = 1;
+    for (int s = 1; s <= nsteps && status == 0; ++s) {
         if (noctWorldStep(w, &err) != NOCT_OK) {
             tool_progress_end();
             tool_error("step %d: %s", s, err.message);
@@ -443,54 +710,74 @@ int main(int argc, char **argv)
             break;
         }
         for (size_t i = 0; events && i < nbegan; ++i) {
+            char la[24], lb[24];
+            fprintf(info, "%d begin %s %s", s, label(scene, began[i].a.index, la),
+                    label(scene, began[i].b.index, lb));
             if (i < nhits) {
                 char t[32];
-                fprintf(info, "%d begin %u %u at %s%s\n", s, began[i].a.index,
-                        began[i].b.index, tool_format_double(hits[i].time, t),
+                fprintf(info, " at %s%s", tool_format_double(hits[i].time, t),
                         hits[i].conservative ? " near" : "");
-            } else {
-                fprintf(info, "%d begin %u %u\n", s, began[i].a.index, began[i].b.index);
             }
+            fputc('\n', info);
         }
         size_t ne = noctWorldEnded(w, &p);
         ends += ne;
-        for (size_t i = 0; events && i < ne; ++i)
-            fprintf(info, "%d end %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (events)
+            print_events(info, s, "end", p, ne, scene, NULL);
         size_t nb = noctWorldSensorBegan(w, &p);
         sensor_events += nb;
-        for (size_t i = 0; events && i < nb; ++i)
-            fprintf(info, "%d sensor-begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (events)
+            print_events(info, s, "sensor-begin", p, nb, scene, NULL);
         ne = noctWorldSensorEnded(w, &p);
         sensor_events += ne;
-        for (size_t i = 0; events && i < ne; ++i)
-            fprintf(info, "%d sensor-end %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (events)
+            print_events(info, s, "sensor-end", p, ne, scene, NULL);
         nb = noctWorldNearBegan(w, &p);
         near_events[0] += nb;
-        for (size_t i = 0; events && i < nb; ++i)
-            fprintf(info, "%d near-begin %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (events && !print_events(info, s, "near-begin", p, nb, scene, near_dist))
+            status = 1;
         ne = noctWorldNearEnded(w, &p);
         near_events[1] += ne;
-        for (size_t i = 0; events && i < ne; ++i)
-            fprintf(info, "%d near-end %u %u\n", s, p[i].a.index, p[i].b.index);
+        if (events && status == 0 && !print_events(info, s, "near-end", p, ne, scene, near_dist))
+            status = 1;
+        if (dist_arg[0] != NULL && status == 0 &&
+            !print_distance(info, s, &dist, scene, dist_id[0], dist_id[1]))
+            status = 1;
+        if (status != 0) {
+            tool_progress_end();
+            break;
+        }
+        if (contacts && !print_contacts(info, w, s, scene, &err)) {
+            tool_progress_end();
+            tool_error("step %d: %s", s, err.message);
+            status = 1;
+            break;
+        }
         if (rep.format != REPORT_NONE || first) {
             size_t nc = noctWorldColliding(w, &p);
             noctPair gone;
             if (!told_parted && parted_within(began, nbegan, p, nc, &gone)) {
                 tool_progress_end();
-                tool_error("warning: step %d: objects %u and %u met and parted within the "
+                char la[24], lb[24];
+                tool_error("warning: step %d: objects %s and %s met and parted within the "
                            "step's sub-steps; %s only the pairs colliding at the end of a step",
-                           s, gone.a.index, gone.b.index,
+                           s, label(scene, gone.a.index, la), label(scene, gone.b.index, lb),
                            first ? "--first sees" : "the report lists");
                 told_parted = true;
             }
             const noctPair *q;
             const size_t nn = noctWorldNear(w, &q);
             report_step(&rep, s, p, nc, q, nn);
+            if (rep.failed) {
+                tool_progress_end();
+                status = 1;
+                break;
+            }
             if (first && nc > 0) {
                 tool_progress_end();
                 if (nhits > 0)
-                    print_first_time(s, began, hits, nhits);
-                else if (!print_first(w, s, p[0]))
+                    print_first_time(scene, s, began, hits, nhits);
+                else if (!print_first(w, scene, s, p[0]))
                     status = 1;
                 stopped = s;
                 break;
@@ -529,7 +816,7 @@ int main(int argc, char **argv)
         if (sensor_events > 0 || noctWorldSensing(w, &p) > 0)
             fprintf(info, "sensor events %zu\nsensing at the end %zu\n", sensor_events,
                     noctWorldSensing(w, &p));
-        if (def->margin > 0)
+        if (rep.near)
             fprintf(info, "margin %s\nnear begins %zu\nnear ends %zu\nnear at the end %zu\n",
                     tool_format_double(def->margin, (char[32]){0}), near_events[0],
                     near_events[1], noctWorldNear(w, &p));
@@ -548,6 +835,9 @@ int main(int argc, char **argv)
                 (double)c.colliding_pairs / nsteps, (double)c.neighbor_queries / nsteps,
                 (double)c.splits / nsteps, (double)c.merges / nsteps);
     }
+    for (size_t i = 0; dist.box != NULL && i < nobjects; ++i)
+        noctMeshDestroy(dist.box[i]);
+    free(dist.box);
     noctWorldDestroy(w);
     noctSceneDestroy(scene);
     return status;

@@ -208,7 +208,9 @@ NOCT_API noctStatus noctWorldQueryShape(const noctWorld *world, const noctMesh *
  * those that collide with it (exactly), and those whose triangles come
  * within margin of its, as noctWorldNear() decides it: every object within
  * margin, and none farther than margin plus twice a slack of 2^-40 of the
- * coordinates' magnitude.
+ * coordinates' magnitude. An object with its own margin m
+ * (noctObjectDef::margin) is reported within `margin + m` instead: its
+ * skin counts, as in its near pairs.
  * @pre As noctWorldQueryShape().
  * @post As noctWorldQueryShape(), for the objects within margin; with a
  *       margin of 0, its objects exactly.

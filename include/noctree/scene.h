@@ -5,8 +5,8 @@
  * or a built-in family.
  *
  * @defgroup noctree_scene Scenes
- * @brief Scene files (noctree-scene(5)) and the built-in families of
- * SCENES.md.
+ * @brief Scene files (noctree-scene(5)) and the built-in families
+ * (noctree-families(7), the @ref families "families page").
  *
  * A scene is read completely, and every line checked, before anything is
  * built: a file with an error anywhere yields an error naming the file,
@@ -19,6 +19,8 @@
 #ifndef NOCTREE_SCENE_H
 #define NOCTREE_SCENE_H
 
+#include <stdbool.h>
+#include <stddef.h>
 #include <stdio.h>
 
 #include <noctree/export.h>
@@ -52,7 +54,8 @@ typedef struct noctScene noctScene;
  *         included (never a scene read short); #NOCT_ERR_PARSE for a
  *         syntax error or a NUL byte in a line; #NOCT_ERR_NONFINITE for a
  *         number that is not finite; #NOCT_ERR_INVALID for a value out of
- *         range, an unknown name, a scene without objects, or the walls
+ *         range, an unknown name, an object name given twice (the
+ *         message names the line of the first), a scene without objects, or the walls
  *         effect without a container (named at the `effects` line that
  *         turns it on); #NOCT_ERR_TOO_LARGE for a position beyond
  *         #NOCT_MAX_COORDINATE or more than 2^31 objects; any status of
@@ -108,7 +111,8 @@ NOCT_API noctStatus noctSceneFamily(const char *spec, noctScene **scene,
  *       the steps, every mesh (a mesh read from a file by the path it was
  *       opened by), object, key and family, every number written so that
  *       it reads back bit for bit (rotations as the axis and degrees they
- *       were given by, so that they make the same quaternions).
+ *       were given by, so that they make the same quaternions), the
+ *       objects' margins and names included.
  * @return #NOCT_OK, or #NOCT_ERR_IO if writing failed (the message says
  *         why).
  */
@@ -150,6 +154,49 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
  */
 NOCT_API noctStatus noctSceneBuild(const noctScene *scene, noctWorld **world,
                                    noctError *err);
+
+/** Longest object name, in bytes (noctree-scene(5), `name`). */
+#define NOCT_SCENE_NAME_MAX 64
+
+/**
+ * @brief How many objects a world built from the scene holds.
+ *
+ * noctSceneBuild() adds the objects of the scene's families first (in
+ * the order of their lines), then those of its object lines, in order: an
+ * object's index here is its handle's index in a world just built from it.
+ * @param[in] scene A scene.
+ * @pre @p scene is not NULL.
+ * @return The number of objects.
+ */
+NOCT_API size_t noctSceneObjectCount(const noctScene *scene);
+
+/**
+ * @brief An object's name (noctree-scene(5): an object line's `name`).
+ *
+ * Names are unique within a scene, 1 to #NOCT_SCENE_NAME_MAX bytes of
+ * ASCII letters, digits, `_`, `-` and `.`, the first a letter or `_` (so
+ * a name is never a number).
+ * @param[in] scene A scene.
+ * @param[in] index The object, numbered as noctSceneObjectCount() says.
+ * @pre @p scene is not NULL.
+ * @return Its name, valid while the scene is; NULL for an object without
+ *         one (a family's, or a line without `name`) or an index out of
+ *         range.
+ */
+NOCT_API const char *noctSceneObjectName(const noctScene *scene, size_t index);
+
+/**
+ * @brief Find an object by its name.
+ * @param[in]  scene A scene.
+ * @param[in]  name  The name (compared byte for byte).
+ * @param[out] index Receives the object's index (as noctSceneObjectName()
+ *                   numbers them) when it is found; untouched otherwise.
+ * @pre @p scene, @p name and @p index are not NULL.
+ * @post Finding takes time independent of the number of objects (a hash
+ *       table made as the scene was read).
+ * @return Whether an object has that name.
+ */
+NOCT_API bool noctSceneFindObject(const noctScene *scene, const char *name, size_t *index);
 
 #ifdef __cplusplus
 }

@@ -11,8 +11,8 @@
  * A world holds objects (noctObjectDef): a mesh (borrowed; it must outlive
  * the objects), a rigid transform (a rotation, then a translation: see
  * transform.h for exactly how the vertices are placed), a velocity, a
- * type (static, kinematic or moving), a collision filter, a sensor flag
- * and a pointer for the program. A program may change any of them
+ * type (static, kinematic or moving), a collision filter, a sensor flag,
+ * a margin (for the near pairs) and a pointer for the program. A program may change any of them
  * between steps (noctWorldSetTransform(), noctWorldSetVelocity(), ...);
  * the next step sees the new state, and the events follow every change:
  * a pair that a removal, a teleport, a filter or a sensor flag parted ends
@@ -36,7 +36,7 @@
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every moving object in at
  *    least one pair that began colliding reverses its velocity once
- *    (SCENES.md's contact-begin rule; the colliding set before step 1 is
+ *    (noctree-families(7)'s contact-begin rule; the colliding set before step 1 is
  *    empty). Sensors' pairs never turn anything.
  *
  * **Layers.** The world is built on the broadphase (broadphase.h): its
@@ -272,9 +272,13 @@ typedef struct noctWorldDef {
                                  #NOCT_EFFECT_WALLS. Default 0. */
     double walls_hi[3];     /**< The container's high corner. Default 0. */
     double margin;          /**< Distance within which two objects are
-                                 "near" (noctWorldNear()): 0 (the
-                                 default) keeps no near pairs and costs
-                                 nothing; at most #NOCT_MAX_COORDINATE. */
+                                 "near" (noctWorldNear()), on top of
+                                 their own margins
+                                 (noctObjectDef::margin): 0 (the
+                                 default), in a world whose objects
+                                 have no margins either, keeps no near
+                                 pairs and costs nothing; at most
+                                 #NOCT_MAX_COORDINATE. */
 } noctWorldDef;
 
 /** @brief How an object moves. */
@@ -372,6 +376,19 @@ typedef struct noctObjectDef {
                                   leaves that one). A world with any
                                   continuous object takes no sub-steps.
                                   Default #NOCT_QUALITY_WORLD. */
+    double margin;           /**< Its own margin: a skin of this
+                                  thickness around it, for the near
+                                  pairs. Two objects are near when their
+                                  skins come within the world's margin
+                                  (noctWorldDef::margin) of each other:
+                                  their pair's margin is the world's
+                                  plus both of theirs (noctWorldNear()
+                                  says exactly); and noctWorldQueryNear()
+                                  reports the object within its query's
+                                  margin plus this. Finite, 0 to
+                                  #NOCT_MAX_COORDINATE. A world whose
+                                  objects all have 0 pays nothing for
+                                  it. Default 0. */
 } noctObjectDef;
 
 /**
@@ -509,7 +526,8 @@ NOCT_API noctStatus noctWorldReserve(noctWorld *world, size_t more, noctError *e
  * @return No mesh and zero half-extents (one or the other must be set),
  *         the identity transform, zero velocity, no angular velocity
  *         (the identity), #NOCT_OBJECT_MOVING, no user data, every category
- *         and mask bit set, not a sensor.
+ *         and mask bit set, not a sensor, the world's motion quality, no
+ *         margin (0).
  */
 NOCT_API noctObjectDef noctDefaultObjectDef(void);
 
@@ -540,7 +558,11 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  *         would carry an object beyond #NOCT_MAX_COORDINATE fails the
  *         step that would);
  *         #NOCT_ERR_INVALID for an unknown type or a category of 0;
- *         #NOCT_ERR_NOMEM (as for noctWorldAdd()).
+ *         #NOCT_ERR_NONFINITE for a margin that is not finite,
+ *         #NOCT_ERR_INVALID for one below 0 or beyond
+ *         #NOCT_MAX_COORDINATE;
+ *         #NOCT_ERR_NOMEM (as for noctWorldAdd(); and the first object
+ *         with a margin makes a per-object array).
  */
 NOCT_API noctStatus noctWorldCreateObject(noctWorld *world, const noctObjectDef *def,
                                           noctObjectId *id, noctError *err);
@@ -587,10 +609,19 @@ NOCT_API noctStatus noctWorldRemove(noctWorld *world, noctObjectId id, noctError
 NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
 
 /**
- * @brief The pairs near each other after the last step: with a margin
- * (noctWorldDef::margin) d > 0, the pairs of objects that are not sensors,
- * whose filters let them pair, and whose solids come within d of each
- * other, colliding ones included, sorted as noctWorldColliding()'s.
+ * @brief The pairs near each other after the last step: the pairs of
+ * objects that are not sensors, whose filters let them pair, and whose
+ * solids come within their pair's margin d of each other, colliding ones
+ * included, sorted as noctWorldColliding()'s.
+ *
+ * A pair's margin is the world's margin W (noctWorldDef::margin) plus
+ * the two objects' own margins m_a and m_b (noctObjectDef::margin):
+ * `d = W + (m_a + m_b)` in doubles (each object's margin a skin around
+ * it, the pair near when the skins come within W). A world whose margin
+ * and objects' margins are all 0 keeps no near pairs and pays nothing;
+ * once any is not 0, a pair whose own margin is 0 is near when it
+ * collides. Each object looks for its partners with its box grown by
+ * W + m + M, m its margin and M the largest object margin in the world.
  *
  * Found once a step, after its last sub-step. At the box level, two
  * objects are near when their placed boxes are within d (Euclidean
@@ -825,6 +856,39 @@ NOCT_API noctStatus noctWorldBeganHits(noctWorld *world, const noctSweepHit **hi
                                        noctError *err);
 
 /**
+ * @brief The contacts of the colliding pairs: where each pair's solids
+ *        meet, and for convex shapes the minimum translation.
+ *
+ * For each pair noctWorldColliding() lists, in the same order, its
+ * contact as noctCollideContact() computes it for the two objects as
+ * they are placed (#noctContact: normal from the pair's first object
+ * towards its second, depth, up to four points). Box primitives are the
+ * solids of their corners as the world turns them, and count as convex,
+ * as do objects made with a convex or box-shaped mesh. A pair whose
+ * solids share no point, which a world at the box or convex level lists
+ * when their boxes or hulls meet, and continuous detection when they
+ * touched during the step but not at its end, gets #NOCT_CONTACT_NONE;
+ * so does a pair one of whose objects was removed since the step.
+ *
+ * The step does not compute them: the first call after a step does, and
+ * keeps them until the next step, so a world whose program never asks
+ * pays nothing for them (the step only marks them stale). Call it before
+ * changing the world: the contacts are those of the objects as they are
+ * when it is first called.
+ * @param[in]  world    The world.
+ * @param[out] contacts Receives the array (valid until the next step or
+ *                      noctWorldDestroy()), NULL when there are none.
+ * @param[out] n        Receives their number: noctWorldColliding()'s.
+ * @param[out] err      Receives the details of a failure, or NULL.
+ * @pre @p world, @p contacts and @p n are not NULL.
+ * @post On #NOCT_OK, (*contacts)[i] is the contact of the i-th pair of
+ *       noctWorldColliding().
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM or #NOCT_ERR_NUMERIC (then *n is 0).
+ */
+NOCT_API noctStatus noctWorldContacts(noctWorld *world, const noctContact **contacts, size_t *n,
+                                      noctError *err);
+
+/**
  * @brief Read an object's position and direction.
  * @param[in]  world     The world.
  * @param[in]  id        The object.
@@ -977,6 +1041,36 @@ NOCT_API noctStatus noctWorldSetSensor(noctWorld *world, noctObjectId id, bool s
  */
 NOCT_API noctStatus noctWorldGetSensor(const noctWorld *world, noctObjectId id,
                                        bool *sensor);
+
+/**
+ * @brief Set an object's own margin (see noctObjectDef::margin).
+ *
+ * Its near pairs follow at the next step, with their near events.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[in]  margin Its margin: finite, 0 to #NOCT_MAX_COORDINATE.
+ * @param[out] err    Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK the object's pairs have the new margin from the next
+ *       step on. On failure nothing changed.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or a margin
+ *         below 0 or beyond #NOCT_MAX_COORDINATE; #NOCT_ERR_NONFINITE for
+ *         a NaN or infinite one; #NOCT_ERR_NOMEM when the first margin of
+ *         a world needs its per-object array.
+ */
+NOCT_API noctStatus noctWorldSetMargin(noctWorld *world, noctObjectId id, double margin,
+                                       noctError *err);
+
+/**
+ * @brief Read an object's own margin.
+ * @param[in]  world  The world.
+ * @param[in]  id     The object.
+ * @param[out] margin Receives it, as set (0 for none).
+ * @pre @p world and @p margin are not NULL.
+ * @return #NOCT_OK, or #NOCT_ERR_INVALID for a stale handle.
+ */
+NOCT_API noctStatus noctWorldGetMargin(const noctWorld *world, noctObjectId id,
+                                       double *margin);
 
 /**
  * @brief Set how an object's motion is tested (noctObjectDef::quality).
@@ -1207,7 +1301,7 @@ NOCT_API noctStatus noctWorldObjectBox(const noctWorld *world, noctObjectId id,
                                        double lo[3], double hi[3]);
 
 /**
- * @brief Add the report's test set t_k (SCENES.md, "Planes").
+ * @brief Add the report's test set t_k (noctree-families(7), THE PLANES).
  *
  * Two planes of axis-aligned unit cubes, each a central cube and @p k
  * rings, moving towards each other at speed 0.05.
@@ -1241,11 +1335,11 @@ NOCT_API noctStatus noctWorldAddPlanes(noctWorld *world, int k,
 NOCT_API double noctGasContainerSize(size_t n);
 
 /**
- * @brief Add the scene gas_n (SCENES.md, "Gas"): n oriented boxes with
+ * @brief Add the scene gas_n (noctree-families(7), FAMILIES OF BOXES): n oriented boxes with
  *        seeded random sizes, orientations, positions and directions.
  *
  * The boxes are box primitives (noctObjectDef::half_extents) turned by
- * the scene's quaternions, whose matrices are SCENES.md's bit for bit
+ * the scene's quaternions, whose matrices are noctree-families(7)'s bit for bit
  * (noctQuatToMatrix() computes that formula and, for these quaternions,
  * neither normalises nor snaps: all 10 000 000 were checked); room for
  * them is reserved at once (noctWorldReserve()). For the scene as
