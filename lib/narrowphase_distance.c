@@ -9,6 +9,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "narrowphase_internal.h"
@@ -110,7 +111,12 @@ static double proved_gap(const double u[3], double a[3][3], double b[3][3], doub
     return gap / (n * (1 + 0x1p-48));
 }
 
-static double tri_tri_lower_bound(double a[3][3], double b[3][3])
+/* The bound, or any proved bound of at least target once one axis gives
+ * it: a caller that takes the least bound over many pairs needs no more of
+ * a pair than that it is not below the least so far. The axes the nearest
+ * pair of most triangle pairs lies on come first (faces, then corners,
+ * then edges). */
+static double tri_tri_lower_bound_to(double a[3][3], double b[3][3], double target)
 {
     double s = 0;
     for (int i = 0; i < 3; ++i)
@@ -128,14 +134,21 @@ static double tri_tri_lower_bound(double a[3][3], double b[3][3])
     best = noct_max(best, proved_gap(u, a, b, s));
     cross_into(eb[0], eb[1], u);
     best = noct_max(best, proved_gap(u, a, b, s));
+    if (best >= target)
+        return best;
+    /* corner against corner */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            for (int k = 0; k < 3; ++k)
+                u[k] = b[j][k] - a[i][k];
+            best = noct_max(best, proved_gap(u, a, b, s));
+        }
+    if (best >= target)
+        return best;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             /* edge against edge */
             cross_into(ea[i], eb[j], u);
-            best = noct_max(best, proved_gap(u, a, b, s));
-            /* corner against corner */
-            for (int k = 0; k < 3; ++k)
-                u[k] = b[j][k] - a[i][k];
             best = noct_max(best, proved_gap(u, a, b, s));
             /* corner against edge, both ways: (e x (p - q)) x e */
             for (int k = 0; k < 3; ++k)
@@ -148,8 +161,15 @@ static double tri_tri_lower_bound(double a[3][3], double b[3][3])
             cross_into(ea[i], v, w);
             cross_into(w, ea[i], u);
             best = noct_max(best, proved_gap(u, a, b, s));
+            if (best >= target)
+                return best;
         }
     return best;
+}
+
+static double tri_tri_lower_bound(double a[3][3], double b[3][3])
+{
+    return tri_tri_lower_bound_to(a, b, INFINITY);
 }
 
 /* Squared distance between placed boxes [alo, ahi] + ta and [blo, bhi] + tb. */
@@ -352,11 +372,13 @@ static double tri_tri_nearest(double a[3][3], double b[3][3], double pa[3], doub
     return best;
 }
 
+/* ---- the general search: the two hierarchies, nearest pairs first ---------------- */
+
 /* The two placed meshes of a distance search, scaled by a power of two so
  * that squared distances neither overflow nor underflow: every coordinate
  * is multiplied by scale (exactly) before any arithmetic. */
 typedef struct dist_walk {
-    const double *ta, *tb;
+    const placed *A, *B;
     double scale;
     double best2;              /* the best squared distance so far (scaled) */
     double pa[3], pb[3];       /* its points (scaled) */
@@ -368,7 +390,8 @@ typedef struct dist_walk {
 } dist_walk;
 
 /* Squared distance between boxes, scaled: each gap is computed, then
- * scaled, then squared. */
+ * scaled, then squared. A placed box holds its placed triangles exactly
+ * (bvh.h), and the gaps' rounding is far inside the reaches' 2^-40. */
 static double box_dist2_scaled(const bvh_node *na, const double ta[3], const bvh_node *nb,
                                const double tb[3], double scale)
 {
@@ -383,59 +406,163 @@ static double box_dist2_scaled(const bvh_node *na, const double ta[3], const bvh
     return s;
 }
 
-static inline void scale_tri(double x[3][3], double scale)
+/* Squared distance between the bounding boxes of two placed (scaled)
+ * triangles: a cheap bound below the pair's distance, within rounding. */
+static double tri_box_dist2(double x[3][3], double y[3][3])
 {
-    if (scale != 1)
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k)
-                x[i][k] *= scale;
-}
-
-static inline bool nearest_prune(void *context, const bvh_node *na, const bvh_node *nb)
-{
-    dist_walk *w = context;
-    ++w->nodes;
-    return box_dist2_scaled(na, w->ta, nb, w->tb, w->scale) >= w->best2;
-}
-
-static inline bool nearest_pair(void *context, uint32_t i, double x[3][3], uint32_t j,
-                                double y[3][3])
-{
-    dist_walk *w = context;
-    ++w->pairs;
-    scale_tri(x, w->scale);
-    scale_tri(y, w->scale);
-    double pa[3], pb[3];
-    const double d2 = tri_tri_nearest(x, y, pa, pb);
-    if (d2 < w->best2) {
-        w->best2 = d2;
-        noct_copy3(pa, w->pa);
-        noct_copy3(pb, w->pb);
-        w->ia = i;
-        w->ib = j;
-        w->found = true;
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double xlo = noct_min(x[0][k], noct_min(x[1][k], x[2][k]));
+        const double xhi = noct_max(x[0][k], noct_max(x[1][k], x[2][k]));
+        const double ylo = noct_min(y[0][k], noct_min(y[1][k], y[2][k]));
+        const double yhi = noct_max(y[0][k], noct_max(y[1][k], y[2][k]));
+        const double g = noct_max(noct_max(ylo - xhi, xlo - yhi), 0);
+        s += g * g;
     }
-    return false;
+    return s;
 }
 
-static inline bool lower_prune(void *context, const bvh_node *na, const bvh_node *nb)
+/* Triangle i of P, placed and scaled. */
+static inline void placed_tri(const placed *P, uint32_t i, double scale, double x[3][3])
 {
-    dist_walk *w = context;
-    ++w->nodes;
-    return box_dist2_scaled(na, w->ta, nb, w->tb, w->scale) > w->reach2;
+    for (int c = 0; c < 3; ++c) {
+        noct_place_vertex(P, P->m->tri[3 * i + c], x[c]);
+        if (scale != 1)
+            for (int k = 0; k < 3; ++k)
+                x[c][k] *= scale;
+    }
 }
 
-static inline bool lower_pair(void *context, uint32_t i, double x[3][3], uint32_t j,
-                              double y[3][3])
+typedef struct node_pair {
+    uint32_t a, b;
+    double d2;
+} node_pair;
+
+/* Which node of a pair the walks split: as noct_bvh_pair_walk() does. */
+static inline bool split_first(const bvh_node *na, const bvh_node *nb)
 {
-    (void)i;
-    (void)j;
-    dist_walk *w = context;
-    ++w->pairs;
-    scale_tri(x, w->scale);
-    scale_tri(y, w->scale);
-    w->lower = noct_min(w->lower, tri_tri_lower_bound(x, y));
-    return false;
+    double sa = 0, sb = 0;
+    for (int k = 0; k < 3; ++k) {
+        sa += na->hi[k] - na->lo[k];
+        sb += nb->hi[k] - nb->lo[k];
+    }
+    return nb->count > 0 || (na->count == 0 && sa >= sb);
+}
+
+/*
+ * The float search for the nearest pair of triangles: a depth-first walk
+ * that visits the nearer child pair first (its boxes' distance), so that
+ * the best distance falls early and prunes the rest, and that drops a
+ * pair of nodes or triangles whose boxes are no nearer than the best.
+ * Finds a pair within sqrt(w->best2) if there is one (as floating point
+ * sees it); its points are an upper bound, whatever the pruning missed.
+ */
+static void nearest_search(dist_walk *w)
+{
+    const placed *A = w->A, *B = w->B;
+    node_pair stack[NOCT_BVH_PAIR_STACK];
+    size_t top = 0;
+    stack[top++] = (node_pair){0, 0, box_dist2_scaled(&A->m->nodes[0], A->t,
+                                                      &B->m->nodes[0], B->t, w->scale)};
+    while (top > 0) {
+        const node_pair e = stack[--top];
+        if (e.d2 >= w->best2)
+            continue;
+        ++w->nodes;
+        const bvh_node *na = &A->m->nodes[e.a], *nb = &B->m->nodes[e.b];
+        if (na->count > 0 && nb->count > 0) {
+            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                double x[3][3];
+                placed_tri(A, i, w->scale, x);
+                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
+                    double y[3][3], pa[3], pb[3];
+                    placed_tri(B, j, w->scale, y);
+                    if (tri_box_dist2(x, y) >= w->best2)
+                        continue;
+                    ++w->pairs;
+                    const double d2 = tri_tri_nearest(x, y, pa, pb);
+                    if (d2 < w->best2) {
+                        w->best2 = d2;
+                        noct_copy3(pa, w->pa);
+                        noct_copy3(pb, w->pb);
+                        w->ia = i;
+                        w->ib = j;
+                        w->found = true;
+                    }
+                }
+            }
+            continue;
+        }
+        node_pair c[2];
+        if (split_first(na, nb)) {
+            c[0] = (node_pair){na->first, e.b, 0};
+            c[1] = (node_pair){na->first + 1, e.b, 0};
+        } else {
+            c[0] = (node_pair){e.a, nb->first, 0};
+            c[1] = (node_pair){e.a, nb->first + 1, 0};
+        }
+        for (int k = 0; k < 2; ++k)
+            c[k].d2 = box_dist2_scaled(&A->m->nodes[c[k].a], A->t, &B->m->nodes[c[k].b],
+                                       B->t, w->scale);
+        /* the nearer pair on top; a full stack only loses candidates for
+         * the upper bound, never a proof */
+        const int near = c[1].d2 < c[0].d2;
+        if (top + 2 > NOCT_BVH_PAIR_STACK)
+            continue;
+        if (c[1 - near].d2 < w->best2)
+            stack[top++] = c[1 - near];
+        if (c[near].d2 < w->best2)
+            stack[top++] = c[near];
+    }
+}
+
+/*
+ * The proved lower bound: the least, over every pair of triangles whose
+ * placed boxes are within the reach (sqrt(w->reach2)), of the pair's proved
+ * bound; pairs beyond the reach are at least that far apart. A pair that
+ * proves no less than the least so far stops early. false if the walk's
+ * stack would overflow (never within the size limits): no proof.
+ */
+static bool lower_search(dist_walk *w)
+{
+    const placed *A = w->A, *B = w->B;
+    struct { uint32_t a, b; } stack[NOCT_BVH_PAIR_STACK];
+    size_t top = 0;
+    stack[top].a = 0;
+    stack[top++].b = 0;
+    while (top > 0) {
+        --top;
+        const uint32_t ia = stack[top].a, ib = stack[top].b;
+        const bvh_node *na = &A->m->nodes[ia], *nb = &B->m->nodes[ib];
+        ++w->nodes;
+        if (box_dist2_scaled(na, A->t, nb, B->t, w->scale) > w->reach2)
+            continue;
+        if (na->count > 0 && nb->count > 0) {
+            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                double x[3][3];
+                placed_tri(A, i, w->scale, x);
+                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
+                    double y[3][3];
+                    placed_tri(B, j, w->scale, y);
+                    if (tri_box_dist2(x, y) > w->reach2)
+                        continue;
+                    ++w->pairs;
+                    w->lower = noct_min(w->lower, tri_tri_lower_bound_to(x, y, w->lower));
+                }
+            }
+            continue;
+        }
+        if (top + 2 > NOCT_BVH_PAIR_STACK)
+            return false;
+        if (split_first(na, nb)) {
+            stack[top].a = na->first;     stack[top++].b = ib;
+            stack[top].a = na->first + 1; stack[top++].b = ib;
+        } else {
+            stack[top].a = ia; stack[top++].b = nb->first;
+            stack[top].a = ia; stack[top++].b = nb->first + 1;
+        }
+    }
+    return true;
 }
 
 /* The largest magnitude of a placed mesh's box corners. */
@@ -492,12 +619,155 @@ static void mirror(noctDistanceResult *r)
     }
 }
 
+/* The scale of a search: meshes far from unit size are scaled (exactly,
+ * by a power of two, to [1, 2)) so that neither the squares of their
+ * distances nor the proofs' products of four coordinates (a corner
+ * against an edge) overflow or underflow. Scaling down may round
+ * coordinates under 2^-1022 of the largest, far below the allowances. */
+static double search_scale(double mag)
+{
+    if (!(mag > 0) || (mag >= 0x1p-100 && mag <= 0x1p100))
+        return 1;
+    const int k = -ilogb(mag);
+    return noct_pow2(k < 1023 ? k : 1023);
+}
+
+/* The answer for solids proved farther apart than max_distance. */
+static void set_beyond(noctDistanceResult *r, double max_distance)
+{
+    memset(r, 0, sizeof *r);
+    no_triangle(r->triangle_a);
+    no_triangle(r->triangle_b);
+    r->beyond = true;
+    r->lower = max_distance;
+    r->distance = r->upper = INFINITY;
+}
+
+/* The answer for solids that meet. */
+static void set_colliding(noctDistanceResult *r, const noctMesh *a, const double ta[3],
+                          const noctMesh *b, const double tb[3])
+{
+    memset(r, 0, sizeof *r);
+    no_triangle(r->triangle_a);
+    no_triangle(r->triangle_b);
+    r->colliding = true;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = noct_max(a->lo[k] + ta[k], b->lo[k] + tb[k]);
+        const double hi = noct_min(a->hi[k] + ta[k], b->hi[k] + tb[k]);
+        r->point_a[k] = r->point_b[k] = lo + (hi - lo) / 2;
+    }
+}
+
+/* Is A's placed box inside B's (as the exact level's containment test
+ * asks before it looks for a vertex of A in B)? */
+static bool placed_box_inside(const noctMesh *a, const double ta[3], const noctMesh *b,
+                              const double tb[3])
+{
+    for (int k = 0; k < 3; ++k)
+        if (a->lo[k] + ta[k] < b->lo[k] + tb[k] || a->hi[k] + ta[k] > b->hi[k] + tb[k])
+            return false;
+    return true;
+}
+
+/* Do the placed boxes overlap so deeply (one's centre in the other) that
+ * the solids likely meet, and the exact test should come first? */
+static bool boxes_deep(const noctMesh *a, const double ta[3], const noctMesh *b,
+                       const double tb[3])
+{
+    bool a_in_b = true, b_in_a = true;
+    for (int k = 0; k < 3; ++k) {
+        const double alo = a->lo[k] + ta[k], ahi = a->hi[k] + ta[k];
+        const double blo = b->lo[k] + tb[k], bhi = b->hi[k] + tb[k];
+        const double ca = alo + (ahi - alo) / 2, cb = blo + (bhi - blo) / 2;
+        a_in_b = a_in_b && ca >= blo && ca <= bhi;
+        b_in_a = b_in_a && cb >= alo && cb <= ahi;
+    }
+    return a_in_b || b_in_a;
+}
+
+typedef struct meet_walk {
+    const placed *A, *B;
+    const exact_ctx *x;
+    noctNarrowStats *st;
+} meet_walk;
+
+static inline bool meet_prune(void *context, const bvh_node *na, const bvh_node *nb)
+{
+    const meet_walk *w = context;
+    if (w->st)
+        ++w->st->bvh_pairs;
+    return !noct_boxes_overlap(na->lo, na->hi, w->A->t, nb->lo, nb->hi, w->B->t);
+}
+
+static inline bool meet_pair(void *context, uint32_t i, double ta[3][3], uint32_t j,
+                             double tb[3][3])
+{
+    (void)i;
+    (void)j;
+    const meet_walk *w = context;
+    if (w->st)
+        ++w->st->triangle_pairs;
+    return tri_tri(w->x, ta, tb);
+}
+
+/*
+ * The exact test on the meshes of a search. Meshes as made go to
+ * noctCollide(); rotated views (ex[i].R set) have no box form, filter or
+ * hull, so the test is the exact level's own decision without its
+ * shortcuts (which only prove it sooner): the boundaries meet (exact
+ * triangle pairs through the hierarchies), or a placed box lies in the
+ * other and a vertex of its mesh in the other's solid (exact).
+ */
+static noctStatus exact_of(const noctMesh *a, const double ta[3], const noctMesh *b,
+                           const double tb[3], const noct_dist_exact *ex, bool *colliding,
+                           noctNarrowStats *stats)
+{
+    if (ex == NULL || (ex[0].R == NULL && ex[1].R == NULL))
+        return noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, colliding, stats);
+    const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
+    exact_ctx x = {stats ? &stats->exact_fallbacks : NULL};
+    if (stats)
+        ++stats->exact_tests;
+    meet_walk w = {&A, &B, &x, stats};
+    if (noct_bvh_pair_walk(&A, &B, meet_prune, meet_pair, &w)) {
+        *colliding = true;
+        return NOCT_OK;
+    }
+    const placed *pair[2][2] = {{&A, &B}, {&B, &A}};
+    for (int i = 0; i < 2; ++i) {
+        const placed *in = pair[i][0], *out = pair[i][1];
+        if (!placed_box_inside(in->m, in->t, out->m, out->t))
+            continue;
+        double p[3];
+        noct_place_vertex(in, in->m->tri[0], p);
+        if (stats)
+            ++stats->containment_tests;
+        bool inside;
+        const noctStatus st = noct_contains(out, p, &x, &inside);
+        if (st != NOCT_OK)
+            return st;
+        if (inside) {
+            *colliding = true;
+            return NOCT_OK;
+        }
+    }
+    *colliding = false;
+    return NOCT_OK;
+}
+
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
-                                noctDistanceResult *r, noctNarrowStats *stats)
+                                noctDistanceResult *r, noctNarrowStats *stats,
+                                const noct_dist_exact ex[2])
 {
     if (!placed_first(a, ta, b, tb)) {
-        const noctStatus st = noct_distance_placed(b, tb, a, ta, max_distance, r, stats);
+        noct_dist_exact sw[2];
+        if (ex != NULL) {
+            sw[0] = ex[1];
+            sw[1] = ex[0];
+        }
+        const noctStatus st =
+            noct_distance_placed(b, tb, a, ta, max_distance, r, stats, ex ? sw : NULL);
         mirror(r);
         return st;
     }
@@ -505,68 +775,82 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
     no_triangle(r->triangle_a);
     no_triangle(r->triangle_b);
     const double mag = noct_max(placed_magnitude(a, ta), placed_magnitude(b, tb));
-    /* Scale tiny meshes up (exactly) so that squares of their distances do
-     * not underflow; NOCT_MAX_COORDINATE keeps large ones' squares finite. */
-    double scale = 1;
-    if (mag > 0 && mag < 0x1p-200)
-        scale = noct_pow2(-ilogb(mag));
+    const double scale = search_scale(mag);
     const double slack = 0x1p-40 * noct_max(mag, isfinite(max_distance) ? max_distance : 0);
     const double reach_max = isfinite(max_distance)
                                  ? (max_distance * (1 + 0x1p-40) + slack) * scale
                                  : (double)INFINITY;
     const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
-    dist_walk w = {ta, tb, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0};
-    const bool far = box_dist2_scaled(&a->nodes[0], ta, &b->nodes[0], tb, scale) >
-                     reach_max * reach_max;
-    if (!far) {
+    dist_walk w = {&A, &B, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0};
+    const double root2 = box_dist2_scaled(&a->nodes[0], ta, &b->nodes[0], tb, scale);
+    if (root2 > reach_max * reach_max) {
+        set_beyond(r, max_distance);
+        return NOCT_OK;
+    }
+    /* Placed boxes apart: the solids do not meet. Deeply overlapping
+     * ones: the exact test first, as they likely meet. Else the search
+     * first, and the exact test only if it cannot prove the boundaries
+     * apart, or a box lies in the other (the exact level's containment). */
+    bool decided = root2 > 0;
+    if (!decided && boxes_deep(a, ta, b, tb)) {
         bool colliding = false;
-        const noctStatus st =
-            noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, &colliding, stats);
+        const noctStatus st = exact_of(a, ta, b, tb, ex, &colliding, stats);
         if (st != NOCT_OK)
             return st;
         if (colliding) {
-            r->colliding = true;
-            for (int k = 0; k < 3; ++k) {
-                const double lo = noct_max(a->lo[k] + ta[k], b->lo[k] + tb[k]);
-                const double hi = noct_min(a->hi[k] + ta[k], b->hi[k] + tb[k]);
-                r->point_a[k] = r->point_b[k] = lo + (hi - lo) / 2;
-            }
+            set_colliding(r, a, ta, b, tb);
             return NOCT_OK;
         }
-        w.best2 = reach_max * reach_max;
-        noct_bvh_pair_walk(&A, &B, nearest_prune, nearest_pair, &w);
+        decided = true;
     }
+    w.best2 = reach_max * reach_max;
+    nearest_search(&w);
     /* the slack, and the points' rounding allowance, scaled */
     const double slack_s = slack * scale, allow = 0x1p-47 * mag * scale;
+    double upper = INFINITY, d = INFINITY;
+    bool proved = true;
     if (!w.found) {
         /* Nothing within the reach in floating point: prove it. */
-        if (!far) {
-            w.reach2 = reach_max * reach_max;
-            w.lower = INFINITY;
-            noct_bvh_pair_walk(&A, &B, lower_prune, lower_pair, &w);
+        w.reach2 = reach_max * reach_max;
+        w.lower = INFINITY;
+        proved = lower_search(&w);
+        if (!proved || !(w.lower > max_distance * scale)) {
+            /* Floating point and the proof disagree at the reach: search
+             * without it. */
+            w.best2 = INFINITY;
+            nearest_search(&w);
+            NOCT_INVARIANT(w.found);
         }
-        if (far || w.lower > max_distance * scale) {
-            r->beyond = true;
-            r->lower = max_distance;
-            r->distance = r->upper = INFINITY;
-            if (stats) {
-                stats->bvh_pairs += w.nodes;
-                stats->triangle_pairs += w.pairs;
-            }
+    }
+    if (w.found) {
+        d = sqrt(w.best2);
+        upper = d * (1 + 0x1p-50) + 2 * allow;
+        const double reach = upper * (1 + 0x1p-40) + slack_s;
+        w.reach2 = reach * reach;
+        w.lower = upper;
+        proved = lower_search(&w);
+    }
+    if (!proved)
+        w.lower = 0;
+    if (!decided && (!(w.lower > 0) || placed_box_inside(a, ta, b, tb) ||
+                     placed_box_inside(b, tb, a, ta))) {
+        bool colliding = false;
+        const noctStatus st = exact_of(a, ta, b, tb, ex, &colliding, stats);
+        if (st != NOCT_OK)
+            return st;
+        if (colliding) {
+            set_colliding(r, a, ta, b, tb);
             return NOCT_OK;
         }
-        /* Floating point and the proof disagree at the reach: search
-         * without it. */
-        w.best2 = INFINITY;
-        noct_bvh_pair_walk(&A, &B, nearest_prune, nearest_pair, &w);
-        NOCT_INVARIANT(w.found);
     }
-    const double d = sqrt(w.best2);
-    const double upper = d * (1 + 0x1p-50) + 2 * allow;
-    const double reach = upper * (1 + 0x1p-40) + slack_s;
-    w.reach2 = reach * reach;
-    w.lower = upper;
-    noct_bvh_pair_walk(&A, &B, lower_prune, lower_pair, &w);
+    if (stats) {
+        stats->bvh_pairs += w.nodes;
+        stats->triangle_pairs += w.pairs;
+    }
+    if (!w.found) {
+        set_beyond(r, max_distance);
+        return NOCT_OK;
+    }
     r->lower = w.lower / scale;
     r->upper = upper / scale;
     r->distance = noct_min(noct_max(d / scale, r->lower), r->upper);
@@ -576,11 +860,476 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
         r->triangle_a[k] = a->tri[3 * w.ia + k];
         r->triangle_b[k] = b->tri[3 * w.ib + k];
     }
-    if (stats) {
-        stats->bvh_pairs += w.nodes;
-        stats->triangle_pairs += w.pairs;
+    return NOCT_OK;
+}
+
+/* ---- the convex path: GJK on the placed vertices, proved by its direction ------- */
+
+/* Vertices a convex search keeps on the stack; more are allocated. */
+#define CONVEX_STACK_VERTICES 64
+
+/* The placed vertices of a mesh as the general path would place it:
+ * fl(fl(R v) + t) (fl(v + t) without a rotation), then scaled. */
+typedef struct convex_set {
+    const noctMesh *m;
+    double *p;      /* 3 m->nv */
+    size_t n;
+} convex_set;
+
+static size_t support(const convex_set *s, const double d[3])
+{
+    size_t best = 0;
+    double h = -INFINITY;
+    for (size_t i = 0; i < s->n; ++i) {
+        const double x = noct_dot3(d, &s->p[3 * i]);
+        if (x > h) {
+            h = x;
+            best = i;
+        }
+    }
+    return best;
+}
+
+/* The point of the simplex w[0, n) nearest the origin, by every face's
+ * affine projection (at most 15 for a tetrahedron): the nearest point lies
+ * in the relative interior of one face, whose projection has positive
+ * weights. Keeps the weights in lam; returns a mask of the face used. */
+static unsigned simplex_nearest(double w[4][3], int n, double lam[4], double out[3])
+{
+    double best = INFINITY;
+    unsigned mask = 1;
+    for (unsigned sub = 1; sub < (1u << n); ++sub) {
+        int idx[4], k = 0;
+        for (int i = 0; i < n; ++i)
+            if (sub & (1u << i))
+                idx[k++] = i;
+        double l[4] = {1, 0, 0, 0};
+        if (k > 1) {
+            double dd[3][3], G[3][3], rhs[3], mu[3];
+            const double *o = w[idx[0]];
+            for (int i = 1; i < k; ++i)
+                noct_sub3(w[idx[i]], o, dd[i - 1]);
+            const int m = k - 1;
+            for (int i = 0; i < m; ++i) {
+                rhs[i] = -noct_dot3(dd[i], o);
+                for (int j = 0; j < m; ++j)
+                    G[i][j] = noct_dot3(dd[i], dd[j]);
+            }
+            if (m == 1) {
+                if (!(G[0][0] > 0))
+                    continue;
+                mu[0] = rhs[0] / G[0][0];
+            } else if (m == 2) {
+                const double det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+                if (!(det > 1e-14 * G[0][0] * G[1][1]))
+                    continue;
+                mu[0] = (rhs[0] * G[1][1] - G[0][1] * rhs[1]) / det;
+                mu[1] = (G[0][0] * rhs[1] - rhs[0] * G[1][0]) / det;
+            } else {
+                double C[3][3];
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j)
+                        C[i][j] = G[(i + 1) % 3][(j + 1) % 3] * G[(i + 2) % 3][(j + 2) % 3] -
+                                  G[(i + 1) % 3][(j + 2) % 3] * G[(i + 2) % 3][(j + 1) % 3];
+                const double det = G[0][0] * C[0][0] + G[0][1] * C[0][1] + G[0][2] * C[0][2];
+                if (!(det > 1e-14 * G[0][0] * G[1][1] * G[2][2]))
+                    continue;
+                for (int i = 0; i < 3; ++i)
+                    mu[i] = (C[0][i] * rhs[0] + C[1][i] * rhs[1] + C[2][i] * rhs[2]) / det;
+            }
+            double s = 0;
+            bool ok = true;
+            for (int i = 0; i < m; ++i) {
+                ok = ok && mu[i] > 0;
+                l[i + 1] = mu[i];
+                s += mu[i];
+            }
+            l[0] = 1 - s;
+            if (!ok || !(l[0] > 0))
+                continue;
+        }
+        double x[3] = {0, 0, 0};
+        for (int i = 0; i < k; ++i)
+            for (int c = 0; c < 3; ++c)
+                x[c] += l[i] * w[idx[i]][c];
+        const double d2 = noct_dot3(x, x);
+        if (d2 < best) {
+            best = d2;
+            mask = sub;
+            for (int i = 0; i < 4; ++i)
+                lam[i] = 0;
+            for (int i = 0; i < k; ++i)
+                lam[idx[i]] = l[i];
+            noct_copy3(x, out);
+        }
+    }
+    return mask;
+}
+
+/* GJK on the placed vertices: the nearest points of their hulls, in
+ * floating point, as weights of (at most 4) vertex pairs. false if the
+ * hulls (nearly) meet or it did not settle. */
+static bool gjk(const convex_set *A, const convex_set *B, size_t ia[4], size_t ib[4],
+                double lam[4], int *n, double tiny2)
+{
+    double w[4][3], v[3];
+    int k = 0;
+    noct_sub3(&A->p[0], &B->p[0], v);
+    for (int iter = 0; iter < 64; ++iter) {
+        const double nv[3] = {-v[0], -v[1], -v[2]};
+        const size_t i = support(A, nv), j = support(B, v);
+        double p[3];
+        noct_sub3(&A->p[3 * i], &B->p[3 * j], p);
+        const double vv = noct_dot3(v, v);
+        /* settled: the support's bound is within 2^-44 of |v|^2 */
+        if (k > 0 && vv - noct_dot3(v, p) <= 0x1p-44 * vv)
+            break;
+        bool again = false;
+        for (int s = 0; s < k; ++s)
+            again = again || (ia[s] == i && ib[s] == j);
+        if (again)
+            break;
+        double tw[4][3], tv[3] = {0, 0, 0}, l[4];
+        size_t tia[4], tib[4];
+        for (int s = 0; s < k; ++s) {
+            noct_copy3(w[s], tw[s]);
+            tia[s] = ia[s];
+            tib[s] = ib[s];
+        }
+        noct_copy3(p, tw[k]);
+        tia[k] = i;
+        tib[k] = j;
+        const unsigned mask = simplex_nearest(tw, k + 1, l, tv);
+        /* no progress (rounding): keep the last simplex, the best */
+        if (k > 0 && !(noct_dot3(tv, tv) < vv))
+            break;
+        int m = 0;
+        for (int s = 0; s <= k; ++s)
+            if (mask & (1u << s)) {
+                noct_copy3(tw[s], w[m]);
+                ia[m] = tia[s];
+                ib[m] = tib[s];
+                lam[m] = l[s];
+                ++m;
+            }
+        k = m;
+        noct_copy3(tv, v);
+        if (k == 4 || !(noct_dot3(v, v) > tiny2))
+            return false;
+    }
+    *n = k;
+    return k > 0;
+}
+
+/* The point of closed triangle x nearest p, in floating point (its edges
+ * decide when the face's formula cannot); returns the squared distance. */
+static double point_on_tri(const double p[3], double x[3][3], double out[3])
+{
+    double g[3];
+    if (point_tri_nearest(p, x[0], x[1], x[2], out)) {
+        noct_sub3(p, out, g);
+        return noct_dot3(g, g);
+    }
+    double best = INFINITY, c1[3], c2[3];
+    for (int e = 0; e < 3; ++e) {
+        const double d = seg_seg_nearest(p, p, x[e], x[(e + 1) % 3], c1, c2);
+        if (d < best) {
+            best = d;
+            noct_copy3(c2, out);
+        }
+    }
+    return best;
+}
+
+/* The triangle of s's mesh nearest p and its point nearest p: first among
+ * the triangles at the vertices GJK used (near[0, n)), which hold p unless
+ * a face is triangulated away from them; else among all. */
+static uint32_t nearest_triangle(const convex_set *s, const double p[3], const size_t *near,
+                                 int n, double tol2, double q[3])
+{
+    const noctMesh *m = s->m;
+    double best = INFINITY;
+    uint32_t bt = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        for (uint32_t t = 0; t < m->nt; ++t) {
+            const uint32_t *v = &m->tri[3 * t];
+            bool at = pass == 1;
+            for (int i = 0; i < n && !at; ++i)
+                at = v[0] == near[i] || v[1] == near[i] || v[2] == near[i];
+            if (!at)
+                continue;
+            double x[3][3], c[3];
+            for (int i = 0; i < 3; ++i)
+                noct_copy3(&s->p[3 * v[i]], x[i]);
+            const double d2 = point_on_tri(p, x, c);
+            if (d2 < best) {
+                best = d2;
+                bt = t;
+                noct_copy3(c, q);
+            }
+        }
+        if (best <= tol2)
+            break;
+    }
+    return bt;
+}
+
+/* Are the placed (unscaled) rotated triangles of s far from the
+ * degeneracy noctMeshCreate() rejects (a corner collinear within 1e-9 of
+ * the size), so that the rotated mesh the general path makes would be
+ * made? (Conservative: 4 times the tolerance, in floating point.) */
+static bool rotated_fine(const noctMesh *m, const double *r)
+{
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t *v = &m->tri[3 * t];
+        double e1[3], e2[3], e3[3], n[3];
+        noct_sub3(&r[3 * v[1]], &r[3 * v[0]], e1);
+        noct_sub3(&r[3 * v[2]], &r[3 * v[0]], e2);
+        /* scaled to the triangle's size if far from 1: no underflow or
+         * overflow at any size */
+        const double big = noct_max(noct_max_abs3(e1), noct_max_abs3(e2));
+        if (!(big > 0))
+            return false;
+        if (big < 0x1p-200 || big > 0x1p200) {
+            const int ex = -ilogb(big);
+            const double f = noct_pow2(ex < 1023 ? ex : 1023);
+            for (int k = 0; k < 3; ++k) {
+                e1[k] *= f;
+                e2[k] *= f;
+            }
+        }
+        noct_sub3(e2, e1, e3);
+        noct_cross3(e1, e2, n);
+        const double d2 = noct_max(noct_dot3(e3, e3),
+                                   noct_max(noct_dot3(e1, e1), noct_dot3(e2, e2)));
+        if (!(noct_norm3(n) > 4e-9 * d2))
+            return false;
+    }
+    return true;
+}
+
+/* A box form with a dual (every triangle on a face of the ideal box, so
+ * three corners of a face, legs along two edges) whose edges are within a
+ * factor 10^6 of each other, its corners within 2^-30 of its least
+ * half-edge of the box: every triangle has an area over 10^-7 of its
+ * longest side squared, rotated or not, far from noctMeshCreate()'s
+ * tolerance, so rotated_fine() need not look. */
+static bool box_far_from_flat(const noctMesh *m)
+{
+    if (!m->has_dual)
+        return false;
+    double lo = INFINITY, hi = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double n = noct_norm3(m->box.e[i]);
+        lo = noct_min(lo, n);
+        hi = noct_max(hi, n);
+    }
+    return lo > 1e-6 * hi && (double)m->box.dev <= 0x1p-30 * lo;
+}
+
+/* Lexicographic order of the two placed sets: the canonical order of a
+ * call and its mirror (the same placed vertices either way). */
+static bool set_first(const convex_set *a, const convex_set *b)
+{
+    if (a->n != b->n)
+        return a->n < b->n;
+    for (size_t i = 0; i < 3 * a->n; ++i)
+        if (a->p[i] != b->p[i])
+            return a->p[i] < b->p[i];
+    if (a->m->nt != b->m->nt)
+        return a->m->nt < b->m->nt;
+    for (size_t i = 0; i < 3 * a->m->nt; ++i)
+        if (a->m->tri[i] != b->m->tri[i])
+            return a->m->tri[i] < b->m->tri[i];
+    return true;
+}
+
+/*
+ * The distance of two convex meshes' placed vertex sets (scaled by
+ * scale; mag their unscaled magnitude): GJK gives the nearest points of
+ * their hulls, which are moved onto the nearest triangles; the direction
+ * v between them proves the lower bound, as every closed solid lies in
+ * the hull of its vertices: (min over B of v.b - max over A of v.a) / |v|,
+ * less the rounding of the projections. false when GJK does not settle,
+ * the hulls (nearly) meet, or the interval is wider than the accuracy
+ * noctDistance() promises: the general path then answers.
+ */
+static bool convex_distance(const convex_set *A, const convex_set *B, double scale, double mag,
+                            double max_distance, noctDistanceResult *r)
+{
+    const double mag_s = mag * scale, allow = 0x1p-47 * mag_s;
+    size_t ia[4], ib[4];
+    double lam[4];
+    int n = 0;
+    /* nearly meeting hulls go to the exact test */
+    if (!gjk(A, B, ia, ib, lam, &n, (0x1p-44 * mag_s) * (0x1p-44 * mag_s)))
+        return false;
+    double pa[3] = {0, 0, 0}, pb[3] = {0, 0, 0}, qa[3], qb[3];
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            pa[k] += lam[i] * A->p[3 * ia[i] + k];
+            pb[k] += lam[i] * B->p[3 * ib[i] + k];
+        }
+    const double tol2 = (8 * allow) * (8 * allow);
+    const uint32_t ta = nearest_triangle(A, pa, ia, n, tol2, qa);
+    const uint32_t tb = nearest_triangle(B, pb, ib, n, tol2, qb);
+    double v[3];
+    noct_sub3(qb, qa, v);
+    const double d = noct_norm3(v);
+    const double l1 = fabs(v[0]) + fabs(v[1]) + fabs(v[2]);
+    if (!(l1 > 0))
+        return false;
+    double s = 0, amax = -INFINITY, bmin = INFINITY;
+    for (size_t i = 0; i < A->n; ++i) {
+        amax = noct_max(amax, noct_dot3(v, &A->p[3 * i]));
+        s = noct_max(s, noct_max_abs3(&A->p[3 * i]));
+    }
+    for (size_t i = 0; i < B->n; ++i) {
+        bmin = noct_min(bmin, noct_dot3(v, &B->p[3 * i]));
+        s = noct_max(s, noct_max_abs3(&B->p[3 * i]));
+    }
+    /* each projection errs by at most 4 ulp of l1 s, as in proved_gap() */
+    const double gap = bmin - amax - 2 * (0x1p-50 * l1 * s);
+    if (!(gap > 0))
+        return false;
+    const double lower = gap / (noct_norm3(v) * (1 + 0x1p-48));
+    const double upper = d * (1 + 0x1p-50) + 2 * allow;
+    if (!(upper - lower <= 0x1p-41 * noct_max(mag_s, upper)))
+        return false;
+    memset(r, 0, sizeof *r);
+    if (lower > max_distance * scale) {
+        set_beyond(r, max_distance);
+        return true;
+    }
+    r->lower = lower / scale;
+    r->upper = upper / scale;
+    r->distance = noct_min(noct_max(d / scale, r->lower), r->upper);
+    for (int k = 0; k < 3; ++k) {
+        r->point_a[k] = qa[k] / scale;
+        r->point_b[k] = qb[k] / scale;
+        r->triangle_a[k] = A->m->tri[3 * ta + k];
+        r->triangle_b[k] = B->m->tri[3 * tb + k];
+    }
+    return true;
+}
+
+/* The convex path of noctDistance(): true if it answered. */
+static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[2],
+                        const noctTransform *x[2], double max_distance, noctDistanceResult *r,
+                        noctNarrowStats *stats)
+{
+    double stack_p[2][3 * CONVEX_STACK_VERTICES];
+    double *heap[2] = {NULL, NULL};
+    convex_set s[2];
+    bool ok = true;
+    double mag = 0;
+    for (int i = 0; i < 2 && ok; ++i) {
+        s[i].m = m[i];
+        s[i].n = m[i]->nv;
+        if (s[i].n <= CONVEX_STACK_VERTICES) {
+            s[i].p = stack_p[i];
+        } else {
+            s[i].p = heap[i] = malloc(3 * s[i].n * sizeof *heap[i]);
+            ok = heap[i] != NULL;
+            if (!ok)
+                break;
+        }
+        for (size_t j = 0; j < s[i].n; ++j) {
+            double *p = &s[i].p[3 * j];
+            if (turned[i])
+                noct_rotate(R[i], &m[i]->v[3 * j], p);
+            else
+                noct_copy3(&m[i]->v[3 * j], p);
+        }
+        ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
+        for (size_t j = 0; j < s[i].n && ok; ++j)
+            for (int k = 0; k < 3; ++k) {
+                s[i].p[3 * j + k] += x[i]->p[k];
+                mag = noct_max(mag, fabs(s[i].p[3 * j + k]));
+            }
+    }
+    bool answered = false;
+    if (ok) {
+        const double scale = search_scale(mag);
+        if (scale != 1)
+            for (int i = 0; i < 2; ++i)
+                for (size_t j = 0; j < 3 * s[i].n; ++j)
+                    s[i].p[j] *= scale;
+        const bool first = set_first(&s[0], &s[1]);
+        answered = convex_distance(&s[first ? 0 : 1], &s[first ? 1 : 0], scale, mag,
+                                   max_distance, r);
+        if (answered && !first)
+            mirror(r);
+        if (answered && stats)
+            ++stats->convex_tests;
+    }
+    free(heap[0]);
+    free(heap[1]);
+    return answered;
+}
+
+/* A view of m rotated by R, for the general path: m's fields, with its
+ * vertices fl(R v) and its hierarchy's boxes refitted to them (the same
+ * tree, children after their parents), the bounds theirs; *buf owns the
+ * arrays. DEGENERATE when a rotated triangle is near noctMeshCreate()'s
+ * tolerance (rotated_fine()), NOMEM. */
+static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *view, void **buf)
+{
+    *buf = NULL;
+    double *v = malloc(3 * m->nv * sizeof *v + m->nnodes * sizeof(bvh_node));
+    if (v == NULL)
+        return NOCT_ERR_NOMEM;
+    *buf = v;
+    bvh_node *nodes = (bvh_node *)(v + 3 * m->nv);
+    for (size_t i = 0; i < m->nv; ++i)
+        noct_rotate(R, &m->v[3 * i], &v[3 * i]);
+    if (!rotated_fine(m, v))
+        return NOCT_ERR_DEGENERATE;
+    for (size_t n = m->nnodes; n-- > 0;) {
+        const bvh_node *o = &m->nodes[n];
+        bvh_node *x = &nodes[n];
+        x->first = o->first;
+        x->count = o->count;
+        for (int k = 0; k < 3; ++k) {
+            x->lo[k] = INFINITY;
+            x->hi[k] = -INFINITY;
+        }
+        if (o->count > 0) {
+            for (uint32_t t = o->first; t < o->first + o->count; ++t)
+                for (int c = 0; c < 3; ++c) {
+                    const double *p = &v[3 * m->tri[3 * t + c]];
+                    for (int k = 0; k < 3; ++k) {
+                        x->lo[k] = noct_min(x->lo[k], p[k]);
+                        x->hi[k] = noct_max(x->hi[k], p[k]);
+                    }
+                }
+        } else {
+            for (int c = 0; c < 2; ++c)
+                for (int k = 0; k < 3; ++k) {
+                    x->lo[k] = noct_min(x->lo[k], nodes[o->first + (uint32_t)c].lo[k]);
+                    x->hi[k] = noct_max(x->hi[k], nodes[o->first + (uint32_t)c].hi[k]);
+                }
+        }
+    }
+    *view = *m;
+    view->v = v;
+    view->nodes = nodes;
+    for (int k = 0; k < 3; ++k) {
+        view->lo[k] = nodes[0].lo[k];
+        view->hi[k] = nodes[0].hi[k];
     }
     return NOCT_OK;
+}
+
+/* Is m worth the convex path: convex, a box form (a rotated box's rounded
+ * corners may bend it by an ulp), or every vertex a corner of its hull (a
+ * convex shape whose flat faces rounding bent; mesh.c runs qhull only on
+ * meshes of more than 32 vertices, and keeps every vertex of smaller
+ * ones)? The path's proof holds for any mesh; this only spares the
+ * others a GJK that would not prove their distance. */
+static bool convex_like(const noctMesh *m)
+{
+    return m->convex || m->has_box || (m->nv > 32 && m->nhull == m->nv);
 }
 
 noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
@@ -596,24 +1345,52 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     const noctTransform *x[2] = {xa, xb};
     const noctMesh *m[2] = {a, b};
     noctMesh *rotated[2] = {NULL, NULL};
+    double R[2][9];
+    bool turned[2] = {false, false};
     noctStatus st = NOCT_OK;
     for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
-        double R[9];
         st = noctTransformCheck(x[i], err);
         if (st == NOCT_OK)
-            st = noctQuatToMatrix(&x[i]->q, R, err);
-        if (st == NOCT_OK && !noct_is_identity(R)) {
-            st = noct_mesh_rotated(m[i], R, &rotated[i], err);
+            st = noctQuatToMatrix(&x[i]->q, R[i], err);
+        turned[i] = st == NOCT_OK && !noct_is_identity(R[i]);
+    }
+    if (st != NOCT_OK)
+        return st;
+    if (convex_like(a) && convex_like(b) &&
+        convex_path(m, R, turned, x, max_distance, result, stats))
+        return NOCT_OK;
+    /* The general path reads a rotated mesh's vertices, triangles and
+     * hierarchy only: a view of the mesh with its vertices rotated and its
+     * hierarchy's boxes refitted, not a new mesh (its checks, hull and
+     * hierarchy cost far more than the search). The exact test, when the
+     * search needs it, decides on the views (exact_of()). */
+    noctMesh view[2];
+    void *buf[2] = {NULL, NULL};
+    noct_dist_exact ex[2] = {{NULL}, {NULL}};
+    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
+        if (!turned[i])
+            continue;
+        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
+        if (st == NOCT_OK) {
+            ex[i].R = R[i];
+            m[i] = &view[i];
+        } else if (st == NOCT_ERR_DEGENERATE) {
+            /* near the tolerance: the rotated mesh says what it is */
+            st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
             if (st == NOCT_OK)
                 m[i] = rotated[i];
+        } else {
+            noct_fail(err, st, -1, 0, "out of memory");
         }
     }
     if (st == NOCT_OK) {
-        st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats);
+        st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats, ex);
         if (st != NOCT_OK)
             noct_fail(err, st, -1, 0, "distance: %s", noctStatusString(st));
     }
-    noctMeshDestroy(rotated[0]);
-    noctMeshDestroy(rotated[1]);
+    for (int i = 0; i < 2; ++i) {
+        free(buf[i]);
+        noctMeshDestroy(rotated[i]);
+    }
     return st;
 }

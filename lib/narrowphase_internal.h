@@ -208,10 +208,19 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
 
 /* ---- distances (narrowphase_distance.c) ----------------------------------- */
 
-/* noctDistance() of two meshes placed at translations (already rotated). */
+/* Is a mesh of a distance search a rotated view (R set: the rotation;
+ * only its vertices, triangles and hierarchy are valid), not a made mesh
+ * (R NULL)? */
+typedef struct noct_dist_exact {
+    const double *R;
+} noct_dist_exact;
+
+/* noctDistance() of two meshes placed at translations (already rotated,
+ * or rotated views, as ex says; NULL: both made meshes). */
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,
                                 const double tb[3], double max_distance,
-                                noctDistanceResult *result, noctNarrowStats *stats);
+                                noctDistanceResult *result, noctNarrowStats *stats,
+                                const noct_dist_exact ex[2]);
 
 /* ---- a point's distance (narrowphase_point.c) ------------------------------ */
 

@@ -23,7 +23,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-turning tests/check-turning-efficient \
 	tests/check-contacts tests/check-contacts-efficient \
 	tests/check-distance-world tests/check-distance-world-efficient \
-	tests/check-meshio tests/check-meshio-efficient
+	tests/check-meshio tests/check-meshio-efficient \
+	tests/check-distance-paths tests/check-distance-paths-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -269,6 +270,19 @@ tests_check_distance_world_efficient_SOURCES = tests/check_distance_world.c
 tests_check_distance_world_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_distance_world_efficient_CFLAGS = $(check_cflags)
 tests_check_distance_world_efficient_LDADD = $(efficient_ldadd)
+
+# check-distance-paths: noctDistance()'s fast paths: the convex path
+# (GJK, proved by its direction) against the general path on the same
+# solid, the general search against a brute force over every triangle
+# pair, at sizes 1e-100 to 1e98 and offsets to 2^40, swapped arguments bit
+# for bit, max_distance's beyond, and touching solids' exact 0.
+tests_check_distance_paths_SOURCES = tests/check_distance_paths.c
+tests_check_distance_paths_CFLAGS = $(check_cflags)
+tests_check_distance_paths_LDADD = $(check_ldadd)
+tests_check_distance_paths_efficient_SOURCES = tests/check_distance_paths.c
+tests_check_distance_paths_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_distance_paths_efficient_CFLAGS = $(check_cflags)
+tests_check_distance_paths_efficient_LDADD = $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh

@@ -71,13 +71,34 @@
  * FCL's dynamic AABB tree distance() with a distance callback, per query,
  * with how many answers agree (run_nearest()).
  *
- * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q] |
- *                    --nearest [Q]]
+ * With --distance [C] it times the distance between two solids, C calls
+ * (default 20000) of each library on each case, the same pairs in one
+ * run: two bumpy spheres of 960 triangles each (bench-narrowphase's
+ * non-convex "bumpy-960" mesh), turned at random, at gaps of about 1,
+ * 0.1 and 0.001 of their radius and overlapping; and two boxes (half-
+ * extents 0.5 0.4 0.3 and 0.35 0.45 0.25), turned, at the same gaps.
+ * libnoctree answers with noctDistance() (nearest points, a proved
+ * interval); FCL with fcl::distance() (nearest points; BVHModel<OBBRSS>
+ * for the meshes, fcl::Box for the boxes); Bullet with btGjkPairDetector
+ * (closest points of two btBoxShape, margin 0: the boxes themselves) on
+ * the boxes; Bullet has no distance between two concave meshes. The
+ * lines give microseconds a call, the ratio over libnoctree's, and the
+ * largest difference of each peer's distance from libnoctree's interval.
+ *
+ * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q]
+ *                    | --nearest [Q] | --distance [C]]
  *                    [--steps S] [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST]
  *                    [--csv FILE] [SCENE...]
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
 #include <btBulletCollisionCommon.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/distance.h>
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/sphere.h>
@@ -103,7 +124,10 @@
 #include <string>
 #include <vector>
 
+#include <noctree/mesh.h>
+#include <noctree/narrowphase.h>
 #include <noctree/scene.h>
+#include <noctree/transform.h>
 #include <noctree/version.h>
 #include <noctree/query.h>
 #include <noctree/world.h>
@@ -1138,9 +1162,9 @@ bool parse_int(const char *s, long lo, long hi, long *out)
 void usage(FILE *f)
 {
     std::fputs("usage: bench-peers [--quick] [--broadphase [--disputed] | --driven |\n"
-               "                   --queries [Q] | --nearest [Q]] [--steps S] [--repeats R]\n"
-               "                   [--N N|auto] [--budget SEC] [--libs LIST] [--csv FILE]\n"
-               "                   [SCENE...]\n"
+               "                   --queries [Q] | --nearest [Q] | --distance [C]] [--steps S]\n"
+               "                   [--repeats R] [--N N|auto] [--budget SEC] [--libs LIST]\n"
+               "                   [--csv FILE] [SCENE...]\n"
                "SCENE is planes:K or gas:N (default planes:10 planes:100 planes:300\n"
                "gas:10000 gas:100000); LIST is a comma-separated subset of\n"
                "libnoctree,noct-driven,fcl-dtree,ode-sap,ode-hash (default\n"
@@ -1169,7 +1193,11 @@ void usage(FILE *f)
                "--nearest [Q]: no steps; the nearest object to Q (default 1000) random\n"
                "points and boxes on each gas scene (default gas:100000), libnoctree's\n"
                "noctWorldQueryNearest() against FCL's distance(): microseconds a query,\n"
-               "their ratio, and how many answers agree.\n",
+               "their ratio, and how many answers agree.\n"
+               "--distance [C]: no scenes; C (default 20000) distance calls of each\n"
+               "library on each case: two 960-triangle bumpy spheres and two boxes,\n"
+               "turned, at gaps 1, 0.1, 0.001 and overlapping; microseconds a call,\n"
+               "ratios, and the largest disagreement with libnoctree's interval.\n",
                f);
 }
 
@@ -1423,6 +1451,277 @@ bool run_queries(const char *spec, long q, const Options &o)
     return bullet_ok;
 }
 
+
+// ---- distances (--distance) -----------------------------------------------------
+
+// bench-narrowphase's bumpy sphere: a UV sphere of n segments and m rings
+// (2 n (m - 1) triangles), its radius times 1 + bump (smooth noise).
+void bumpy_sphere(int n, int m, double bump, std::vector<double> &v, std::vector<uint32_t> &t)
+{
+    const double pi = 3.14159265358979323846, ph = 1.3, pk = 4.1;
+    v.clear();
+    t.clear();
+    for (int r = 0; r <= m; ++r) {
+        const double theta = pi * r / m;
+        for (int s = 0; s < (r == 0 || r == m ? 1 : n); ++s) {
+            const double phi = 2 * pi * s / n;
+            const double rad = 1 + bump * (0.5 * std::sin(3 * theta + ph) * std::cos(4 * phi + pk) +
+                                           0.5 * std::sin(5 * phi) * std::sin(2 * theta));
+            v.push_back(rad * std::sin(theta) * std::cos(phi));
+            v.push_back(rad * std::sin(theta) * std::sin(phi));
+            v.push_back(rad * std::cos(theta));
+        }
+    }
+    const uint32_t last = static_cast<uint32_t>(v.size() / 3 - 1);
+    for (int s = 0; s < n; ++s) {
+        const uint32_t a = 1 + s, b = 1 + (s + 1) % n;
+        t.insert(t.end(), {0, a, b});
+        const uint32_t base = 1 + (m - 2) * n;
+        t.insert(t.end(), {last, base + (s + 1) % n, base + s});
+    }
+    for (int r = 1; r + 1 < m; ++r)
+        for (int s = 0; s < n; ++s) {
+            const uint32_t a = 1 + (r - 1) * n + s, b = 1 + (r - 1) * n + (s + 1) % n;
+            t.insert(t.end(), {a, a + n, b});
+            t.insert(t.end(), {b, a + n, b + n});
+        }
+}
+
+struct DistPair {
+    noctTransform xa, xb;
+    double lower, upper; // libnoctree's interval
+    bool colliding;
+};
+
+fcl::Transform3d fcl_transform(const noctTransform &x)
+{
+    fcl::Transform3d T = fcl::Transform3d::Identity();
+    T.linear() = fcl::Quaterniond(x.q.w, x.q.x, x.q.y, x.q.z).toRotationMatrix();
+    T.translation() = fcl::Vector3d(x.p[0], x.p[1], x.p[2]);
+    return T;
+}
+
+btTransform bt_transform(const noctTransform &x)
+{
+    return btTransform(btQuaternion(x.q.x, x.q.y, x.q.z, x.q.w),
+                       btVector3(x.p[0], x.p[1], x.p[2]));
+}
+
+// Microseconds a call of f over the pairs, calls in all: the best of
+// three rounds.
+template <class F> double time_calls(const std::vector<DistPair> &pairs, long calls, F f)
+{
+    double best = INFINITY;
+    for (int round = 0; round < 3; ++round) {
+        const double t0 = now();
+        for (long c = 0; c < calls; ++c)
+            f(pairs[static_cast<size_t>(c) % pairs.size()]);
+        best = std::min(best, (now() - t0) / static_cast<double>(calls) * 1e6);
+    }
+    return best;
+}
+
+// Pairs of a and b at random turns and directions, B moved out (or in)
+// along the direction until libnoctree's distance is gap (bisection), or
+// overlapping (gap < 0: centres overlap_at apart).
+bool make_pairs(const noctMesh *a, const noctMesh *b, double gap, double overlap_at,
+                uint64_t &rng, std::vector<DistPair> &pairs)
+{
+    for (int i = 0; i < 16; ++i) {
+        DistPair p;
+        p.xa = noctIdentityTransform();
+        p.xb = noctIdentityTransform();
+        double q[4], n = 0;
+        do {
+            for (double &c : q)
+                c = 2 * draw(rng) - 1;
+            n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        } while (n < 0.1 || n > 1);
+        p.xa.q = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+        do {
+            for (double &c : q)
+                c = 2 * draw(rng) - 1;
+            n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        } while (n < 0.1 || n > 1);
+        p.xb.q = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+        double dir[3];
+        do {
+            for (double &c : dir)
+                c = 2 * draw(rng) - 1;
+            n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        } while (n < 0.1 || n > 1);
+        for (double &c : dir)
+            c /= n;
+        noctDistanceResult r;
+        auto at = [&](double s) {
+            for (int k = 0; k < 3; ++k)
+                p.xb.p[k] = dir[k] * s;
+            return noctDistance(a, &p.xa, b, &p.xb, INFINITY, &r, nullptr, nullptr) == NOCT_OK;
+        };
+        if (gap < 0) {
+            if (!at(overlap_at))
+                return false;
+        } else {
+            double lo = 0, hi = 8;
+            for (int it = 0; it < 60; ++it) {
+                const double mid = (lo + hi) / 2;
+                if (!at(mid))
+                    return false;
+                (r.colliding || r.distance < gap ? lo : hi) = mid;
+            }
+            if (!at(hi))
+                return false;
+        }
+        p.lower = r.lower;
+        p.upper = r.upper;
+        p.colliding = r.colliding;
+        pairs.push_back(p);
+    }
+    return true;
+}
+
+// A peer's distance d against libnoctree's interval: how far outside.
+double off_interval(const DistPair &p, double d)
+{
+    if (p.colliding)
+        return d > 0 ? d : 0; // peers give 0 or a negative depth
+    return d < p.lower ? p.lower - d : (d > p.upper ? d - p.upper : 0);
+}
+
+bool run_distance(long calls)
+{
+    std::printf("bench-peers --distance: libnoctree %s (efficient build) noctDistance() against "
+                "FCL %s\n(fcl::distance, nearest points) and Bullet %d.%02d "
+                "(btGjkPairDetector, boxes only); %ld calls\nof each on each case, 16 turned "
+                "pairs in turn, best of 3 rounds; one thread\n\n",
+                NOCT_VERSION_STRING, FCL_VERSION, BT_BULLET_VERSION / 100,
+                BT_BULLET_VERSION % 100, calls);
+    std::printf("%-14s %-10s %10s %8s %14s %12s\n", "case", "library", "us/call", "x",
+                "max off (abs)", "distance");
+    std::vector<double> v;
+    std::vector<uint32_t> t;
+    bumpy_sphere(32, 16, 0.3, v, t);
+    std::vector<uint32_t> sizes(t.size() / 3, 3);
+    noctMesh *ma = nullptr, *mb = nullptr, *ba = nullptr, *bb = nullptr;
+    noctError err;
+    if (noctMeshCreate(v.data(), v.size() / 3, sizes.data(), sizes.size(), t.data(), &ma,
+                       &err) != NOCT_OK ||
+        noctMeshCreate(v.data(), v.size() / 3, sizes.data(), sizes.size(), t.data(), &mb,
+                       &err) != NOCT_OK ||
+        noctMeshCreateBox(0.5, 0.4, 0.3, &ba, &err) != NOCT_OK ||
+        noctMeshCreateBox(0.35, 0.45, 0.25, &bb, &err) != NOCT_OK) {
+        std::fprintf(stderr, "bench-peers: --distance: %s\n", err.message);
+        return false;
+    }
+    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    {
+        std::vector<fcl::Vector3d> pts;
+        std::vector<fcl::Triangle> tris;
+        for (size_t i = 0; i < v.size(); i += 3)
+            pts.emplace_back(v[i], v[i + 1], v[i + 2]);
+        for (size_t i = 0; i < t.size(); i += 3)
+            tris.emplace_back(t[i], t[i + 1], t[i + 2]);
+        model->beginModel();
+        model->addSubModel(pts, tris);
+        model->endModel();
+    }
+    auto fbox_a = std::make_shared<fcl::Boxd>(1.0, 0.8, 0.6);
+    auto fbox_b = std::make_shared<fcl::Boxd>(0.7, 0.9, 0.5);
+    btBoxShape bt_a(btVector3(0.5, 0.4, 0.3)), bt_b(btVector3(0.35, 0.45, 0.25));
+    bt_a.setMargin(0);
+    bt_b.setMargin(0);
+    uint64_t rng = 2026;
+    const double gaps[4] = {1, 0.1, 0.001, -1};
+    const char *gap_names[4] = {"1", "0.1", "0.001", "overlap"};
+    bool ok = true;
+    for (int kind = 0; kind < 2 && ok; ++kind)
+        for (int g = 0; g < 4 && ok; ++g) {
+            const bool meshes = kind == 0;
+            const noctMesh *a = meshes ? ma : ba, *b = meshes ? mb : bb;
+            std::vector<DistPair> pairs;
+            if (!make_pairs(a, b, meshes ? gaps[g] : gaps[g] / 2, meshes ? 1.2 : 0.3, rng,
+                            pairs)) {
+                std::fprintf(stderr, "bench-peers: --distance: noctDistance failed\n");
+                ok = false;
+                break;
+            }
+            const std::string name = std::string(meshes ? "bumpy-960 " : "boxes ") +
+                                     (meshes ? gap_names[g] : (g == 3 ? "overlap" :
+                                      g == 0 ? "0.5" : g == 1 ? "0.05" : "0.0005"));
+            double sink = 0;
+            const double ours = time_calls(pairs, calls, [&](const DistPair &p) {
+                noctDistanceResult r;
+                noctDistance(a, &p.xa, b, &p.xb, INFINITY, &r, nullptr, nullptr);
+                sink += r.distance;
+            });
+            double mean = 0;
+            for (const DistPair &p : pairs)
+                mean += (p.lower + p.upper) / 2 / static_cast<double>(pairs.size());
+            std::printf("%-14s %-10s %10.3f %8s %14s %12.6g\n", name.c_str(), "libnoctree", ours,
+                        "1.00", "-", mean);
+            // FCL
+            std::shared_ptr<fcl::CollisionGeometryd> ga, gb;
+            if (meshes) {
+                ga = model;
+                gb = model;
+            } else {
+                ga = fbox_a;
+                gb = fbox_b;
+            }
+            fcl::CollisionObjectd oa(ga), ob(gb);
+            double off = 0;
+            for (const DistPair &p : pairs) {
+                oa.setTransform(fcl_transform(p.xa));
+                ob.setTransform(fcl_transform(p.xb));
+                fcl::DistanceRequestd req(true);
+                fcl::DistanceResultd res;
+                fcl::distance(&oa, &ob, req, res);
+                off = std::max(off, off_interval(p, res.min_distance));
+            }
+            const double tf = time_calls(pairs, calls, [&](const DistPair &p) {
+                oa.setTransform(fcl_transform(p.xa));
+                ob.setTransform(fcl_transform(p.xb));
+                fcl::DistanceRequestd req(true);
+                fcl::DistanceResultd res;
+                fcl::distance(&oa, &ob, req, res);
+                sink += res.min_distance;
+            });
+            std::printf("%-14s %-10s %10.3f %8.2f %14.3g\n", name.c_str(), "fcl", tf, tf / ours,
+                        off);
+            if (meshes) {
+                std::printf("%-14s %-10s %10s\n", name.c_str(), "bullet",
+                            "n/a (no concave-concave distance)");
+            } else {
+                btVoronoiSimplexSolver simplex;
+                btGjkEpaPenetrationDepthSolver epa;
+                off = 0;
+                auto bullet = [&](const DistPair &p) {
+                    btGjkPairDetector gjk(&bt_a, &bt_b, &simplex, &epa);
+                    btDiscreteCollisionDetectorInterface::ClosestPointInput in;
+                    in.m_transformA = bt_transform(p.xa);
+                    in.m_transformB = bt_transform(p.xb);
+                    btPointCollector out;
+                    gjk.getClosestPoints(in, out, nullptr);
+                    return out.m_hasResult ? static_cast<double>(out.m_distance) : 0.0;
+                };
+                for (const DistPair &p : pairs)
+                    off = std::max(off, off_interval(p, bullet(p)));
+                const double tb = time_calls(pairs, calls, [&](const DistPair &p) {
+                    sink += bullet(p);
+                });
+                std::printf("%-14s %-10s %10.3f %8.2f %14.3g\n", name.c_str(), "bullet", tb,
+                            tb / ours, off);
+            }
+            if (sink == 42.0)
+                std::printf(" ");
+        }
+    noctMeshDestroy(ma);
+    noctMeshDestroy(mb);
+    noctMeshDestroy(ba);
+    noctMeshDestroy(bb);
+    return ok;
+}
+
 // ---- the nearest object (--nearest) ------------------------------------------------
 
 // FCL's broadphase distance: each candidate pair through fcl::distance, the
@@ -1580,7 +1879,7 @@ int main(int argc, char **argv)
     std::vector<const char *> scenes;
     bool use[NLIBS] = {true, false, true, true, false};
     bool quick = false, driven = false, disputed = false;
-    long queries = 0, nearest = 0;
+    long queries = 0, nearest = 0, distance_calls = 0;
     const char *csv_path = nullptr;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
@@ -1598,6 +1897,12 @@ int main(int argc, char **argv)
             queries = 10000;
             if (has && parse_int(argv[i + 1], 1, 100000000, &v)) {
                 queries = v;
+                ++i;
+            }
+        } else if (std::strcmp(a, "--distance") == 0) {
+            distance_calls = 20000;
+            if (has && parse_int(argv[i + 1], 1, 100000000, &v)) {
+                distance_calls = v;
                 ++i;
             }
         } else if (std::strcmp(a, "--nearest") == 0) {
@@ -1671,6 +1976,8 @@ int main(int argc, char **argv)
             all = run_disputed(spec, o) && all;
         return all ? 0 : 1;
     }
+    if (distance_calls > 0)
+        return run_distance(distance_calls) ? 0 : 1;
     const std::string n_name = o.N == NOCT_AUTO ? std::string("auto") : std::to_string(o.N);
     if (nearest > 0) {
         if (scenes.empty())
