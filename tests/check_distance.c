@@ -1028,6 +1028,8 @@ static bool check_result(const ctx *c, bool meet, const mpq_t d2,
     const double M = corner_magnitude(c);
     CHECK(r->upper - r->lower <= ldexp(fmax(M, r->distance), -40),
           "upper - lower = %a exceeds 2^-40 max(%a, distance)", r->upper - r->lower, M);
+    for (int k = 0; k < 3; ++k)
+        CHECK(isfinite(r->point_a[k]) && isfinite(r->point_b[k]), "points not finite");
     CHECK(triangle_named(c->A, r->triangle_a), "triangle_a is not a triangle of a");
     CHECK(triangle_named(c->B, r->triangle_b), "triangle_b is not a triangle of b");
     /* the points on the named triangles; where the library's numbering
@@ -1078,9 +1080,11 @@ static bool check_call(const ctx *c, bool meet, const mpq_t d2, double maxd)
     r = &res;
     if (res.beyond) {
         CHECK(!meet, "beyond, though they meet");
+        CHECK(isfinite(maxd), "beyond without a limit");
         CHECK(cmp_sq(maxd, d2) < 0, "beyond, though the exact distance is not above %a", maxd);
         CHECK(same_bits(res.lower, maxd), "beyond with lower %a, not max_distance", res.lower);
-        CHECK(res.distance == (double)INFINITY && res.upper == (double)INFINITY, "beyond, not INFINITY");
+        CHECK(res.distance == (double)INFINITY && res.upper == (double)INFINITY,
+              "beyond, not INFINITY");
         CHECK(!res.colliding, "beyond and colliding");
         CHECK(no_triangle(res.triangle_a) && no_triangle(res.triangle_b), "beyond, triangles");
         for (int k = 0; k < 3; ++k)
