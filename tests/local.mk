@@ -24,7 +24,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-contacts tests/check-contacts-efficient \
 	tests/check-distance-world tests/check-distance-world-efficient \
 	tests/check-meshio tests/check-meshio-efficient \
-	tests/check-distance-paths tests/check-distance-paths-efficient
+	tests/check-distance-paths tests/check-distance-paths-efficient \
+	tests/check-distance tests/check-distance-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -93,6 +94,18 @@ tests_check_swept_efficient_SOURCES = tests/check_swept.c
 tests_check_swept_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_swept_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_swept_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
+
+# check-distance: noctDistance() (narrowphase.h) against the test's own
+# oracle in GMP rationals: the exact squared distance between every pair of
+# placed triangles (vertex-triangle and edge-edge, edges crossing
+# triangles), the exact level's verdict for meeting solids.
+tests_check_distance_SOURCES = tests/check_distance.c
+tests_check_distance_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_distance_LDADD = $(check_ldadd) $(GMP_LIBS)
+tests_check_distance_efficient_SOURCES = tests/check_distance.c
+tests_check_distance_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_distance_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_distance_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
 
 # check-predicates: the private exact predicates, through a test-only build
 # of lib/predicates.c, against integer and GMP arithmetic (no twin).
