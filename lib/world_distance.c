@@ -47,7 +47,34 @@ typedef struct dquery {
     double mag;             /* the largest magnitude of its corners */
     noct_box_slot slot;     /* its box form (a point's: a box of no size) */
     bool has_slot;
+    const noctMesh *mesh;   /* the query's own mesh (NULL: a box or a point) */
+    const noctTransform *x; /* and its transform */
 } dquery;
+
+/* Object s's transform. */
+static noctTransform object_transform(const noctWorld *w, uint32_t s)
+{
+    noctTransform x;
+    x.q = w->pose[s].q;
+    memcpy(x.p, w->pos[s], sizeof x.p);
+    return x;
+}
+
+/* The distance of two shapes: when both are meshes, by noctDistance() on
+ * the meshes and their transforms, so that the world's answers are the
+ * pairwise call's bit for bit (its searches read views of the rotated
+ * vertices, and convex meshes take its convex path); otherwise (a box
+ * primitive) on the placed shapes. ma and mb: the meshes (NULL for a box
+ * primitive); pa and pb: the shapes as placed, at ta and tb. */
+static noctStatus pair_distance(const noctMesh *ma, const noctTransform *xa, const noctMesh *pa,
+                                const double ta[3], const noctMesh *mb, const noctTransform *xb,
+                                const noctMesh *pb, const double tb[3], double max,
+                                noctDistanceResult *r)
+{
+    if (ma != NULL && mb != NULL)
+        return noctDistance(ma, xa, mb, xb, max, r, NULL, NULL);
+    return noct_distance_placed(pa, ta, pb, tb, max, r, NULL, NULL);
+}
 
 static noctStatus check_distance(double d, const char *what, noctError *err)
 {
@@ -77,6 +104,8 @@ static noctStatus dquery_make(dquery *d, const noctWorld *w, const noctMesh *mes
     d->w = w;
     d->q.rotated = NULL;
     d->point = mesh == NULL && half_extents == NULL;
+    d->mesh = mesh;
+    d->x = x;
     d->t = x->p;
     noctStatus st = d->point ? check_point(x->p, err)
                              : noct_query_shape_make(&d->q, mesh, half_extents, x, err);
@@ -106,9 +135,11 @@ static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
     noct_shape_view v;
     const noctWorld *w = d->w;
     const noctMesh *m = noct_world_shape(w, s, &v);
-    const noctStatus st = d->point ? noct_point_distance_placed(d->t, m, w->pos[s], max, r)
-                                   : noct_distance_placed(d->q.m, d->t, m, w->pos[s], max, r,
-                                                          NULL);
+    const noctTransform xs = object_transform(w, s);
+    const noctStatus st =
+        d->point ? noct_point_distance_placed(d->t, m, w->pos[s], max, r)
+                 : pair_distance(d->mesh, d->x, d->q.m, d->t, noct_world_shape_of(w, s), &xs,
+                                 m, w->pos[s], max, r);
     if (st != NOCT_OK)
         return noct_fail(err, st, (long)s, 0, "object %u: %s", s, noctStatusString(st));
     return NOCT_OK;
@@ -256,8 +287,10 @@ noctStatus noctWorldDistance(const noctWorld *w, noctObjectId a, noctObjectId b,
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, a.index, &va);
     const noctMesh *mb = noct_world_shape(w, b.index, &vb);
-    st = noct_distance_placed(ma, w->pos[a.index], mb, w->pos[b.index], max_distance, result,
-                              NULL);
+    const noctTransform xa = object_transform(w, a.index), xb = object_transform(w, b.index);
+    st = pair_distance(noct_world_shape_of(w, a.index), &xa, ma, w->pos[a.index],
+                       noct_world_shape_of(w, b.index), &xb, mb, w->pos[b.index], max_distance,
+                       result);
     if (st != NOCT_OK)
         return noct_fail(err, st, (long)a.index, 0, "distance of objects %u and %u: %s",
                          a.index, b.index, noctStatusString(st));
@@ -422,8 +455,12 @@ noctStatus noctWorldNearDistances(noctWorld *w, const noctDistanceResult **resul
             noct_shape_view va, vb;
             const noctMesh *ma = noct_world_shape(w, p->a.index, &va);
             const noctMesh *mb = noct_world_shape(w, p->b.index, &vb);
-            const noctStatus st = noct_distance_placed(ma, w->pos[p->a.index], mb,
-                                                       w->pos[p->b.index], INFINITY, r, NULL);
+            const noctTransform xa = object_transform(w, p->a.index);
+            const noctTransform xb = object_transform(w, p->b.index);
+            const noctStatus st =
+                pair_distance(noct_world_shape_of(w, p->a.index), &xa, ma, w->pos[p->a.index],
+                              noct_world_shape_of(w, p->b.index), &xb, mb, w->pos[p->b.index],
+                              INFINITY, r);
             if (st != NOCT_OK)
                 return noct_fail(err, st, (long)p->a.index, 0,
                                  "the near pairs' distances: objects %u and %u: %s",

@@ -365,10 +365,10 @@ NOCT_API noctStatus noctWorldCastShape(const noctWorld *world, const noctMesh *m
  * placed now, with their nearest points and a proved interval.
  *
  * What noctDistance() gives for the two objects' shapes (a mesh, or a box
- * primitive's box) at their transforms, the first object's first: placed
- * as the world places them (a rotated object's rotated copy of its mesh),
- * so the answer is bit for bit noctDistance()'s on the object's mesh and
- * transform. An object's distance to itself is 0.
+ * primitive's box) at their transforms, the first object's first: two
+ * mesh objects are given to noctDistance() itself, so the answer is bit for
+ * bit its answer on the objects' meshes and transforms; a box primitive is
+ * its placed corners' box. An object's distance to itself is 0.
  * @pre world != NULL && result != NULL
  * @post On #NOCT_OK, *result is as #noctDistanceResult says (beyond, or
  *       lower <= true distance <= upper); nothing else changed.
