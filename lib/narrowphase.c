@@ -739,14 +739,9 @@ noctStatus noctCollide(const noctMesh *a, const double ta[3], const noctMesh *b,
     return st;
 }
 
-noctStatus noctCollideTransformed(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
-                                  const noctTransform *xb, noctAccuracy accuracy,
-                                  bool *colliding, noctNarrowStats *stats, noctError *err)
+noctStatus noct_meshes_rotated(const noctMesh *m[2], const noctTransform *const x[2],
+                               noctMesh *rotated[2], noctError *err)
 {
-    NOCT_REQUIRE(a != NULL && xa != NULL && b != NULL && xb != NULL && colliding != NULL);
-    const noctTransform *x[2] = {xa, xb};
-    const noctMesh *m[2] = {a, b};
-    noctMesh *rotated[2] = {NULL, NULL};
     noctStatus st = NOCT_OK;
     for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
         double R[9];
@@ -759,6 +754,18 @@ noctStatus noctCollideTransformed(const noctMesh *a, const noctTransform *xa, co
                 m[i] = rotated[i];
         }
     }
+    return st;
+}
+
+noctStatus noctCollideTransformed(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
+                                  const noctTransform *xb, noctAccuracy accuracy,
+                                  bool *colliding, noctNarrowStats *stats, noctError *err)
+{
+    NOCT_REQUIRE(a != NULL && xa != NULL && b != NULL && xb != NULL && colliding != NULL);
+    const noctTransform *x[2] = {xa, xb};
+    const noctMesh *m[2] = {a, b};
+    noctMesh *rotated[2] = {NULL, NULL};
+    noctStatus st = noct_meshes_rotated(m, x, rotated, err);
     if (st == NOCT_OK) {
         st = noctCollide(m[0], xa->p, m[1], xb->p, accuracy, colliding, stats);
         if (st != NOCT_OK)

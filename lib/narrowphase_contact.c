@@ -732,18 +732,7 @@ noctStatus noctCollideContact(const noctMesh *a, const noctTransform *xa, const 
     const noctTransform *x[2] = {xa, xb};
     const noctMesh *m[2] = {a, b};
     noctMesh *rotated[2] = {NULL, NULL};
-    noctStatus st = NOCT_OK;
-    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
-        double R[9];
-        st = noctTransformCheck(x[i], err);
-        if (st == NOCT_OK)
-            st = noctQuatToMatrix(&x[i]->q, R, err);
-        if (st == NOCT_OK && !noct_is_identity(R)) {
-            st = noct_mesh_rotated(m[i], R, &rotated[i], err);
-            if (st == NOCT_OK)
-                m[i] = rotated[i];
-        }
-    }
+    noctStatus st = noct_meshes_rotated(m, x, rotated, err);
     if (st == NOCT_OK) {
         st = noctCollide(m[0], xa->p, m[1], xb->p, NOCT_ACCURACY_EXACT, colliding, NULL);
         if (st == NOCT_OK && *colliding)

@@ -1332,6 +1332,22 @@ static bool convex_like(const noctMesh *m)
     return m->convex || m->has_box || (m->nv > 32 && m->nhull == m->nv);
 }
 
+bool noct_distance_convex_placed(const noctMesh *a, bool a_convex, const double ta[3],
+                                 const noctMesh *b, bool b_convex, const double tb[3],
+                                 double max_distance, noctDistanceResult *r)
+{
+    if (!(a_convex || convex_like(a)) || !(b_convex || convex_like(b)))
+        return false;
+    const noctMesh *m[2] = {a, b};
+    double R[2][9] = {{0}};
+    const bool turned[2] = {false, false};
+    noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+    memcpy(xa.p, ta, sizeof xa.p);
+    memcpy(xb.p, tb, sizeof xb.p);
+    const noctTransform *x[2] = {&xa, &xb};
+    return convex_path(m, R, turned, x, max_distance, r, NULL);
+}
+
 noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
                         const noctTransform *xb, double max_distance,
                         noctDistanceResult *result, noctNarrowStats *stats, noctError *err)

@@ -206,6 +206,13 @@ static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double
 noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
                          bool *inside);
 
+/* Check two transforms and, for each that turns, make its mesh's rotated
+ * copy (noct_mesh_rotated()) into rotated[i] and m[i]; the caller destroys
+ * rotated[0] and rotated[1] (NULL where not turned), whatever the status
+ * (narrowphase.c). */
+noctStatus noct_meshes_rotated(const noctMesh *m[2], const noctTransform *const x[2],
+                               noctMesh *rotated[2], noctError *err);
+
 /* ---- distances (narrowphase_distance.c) ----------------------------------- */
 
 /* Is a mesh of a distance search a rotated view (R set: the rotation;
@@ -221,6 +228,15 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
                                 const double tb[3], double max_distance,
                                 noctDistanceResult *result, noctNarrowStats *stats,
                                 const noct_dist_exact ex[2]);
+
+/* noctDistance()'s convex path on two meshes placed at translations (views
+ * of box primitives' corners included): true if it answered, proved as
+ * there; false when a mesh is not convex-like (a_convex, b_convex: known
+ * convex, such as a box primitive) or the path could not prove its answer
+ * within the accuracy (then noct_distance_placed() answers). */
+bool noct_distance_convex_placed(const noctMesh *a, bool a_convex, const double ta[3],
+                                 const noctMesh *b, bool b_convex, const double tb[3],
+                                 double max_distance, noctDistanceResult *r);
 
 /* ---- a point's distance (narrowphase_point.c) ------------------------------ */
 

@@ -64,7 +64,8 @@ static noctTransform object_transform(const noctWorld *w, uint32_t s)
  * the meshes and their transforms, so that the world's answers are the
  * pairwise call's bit for bit (its searches read views of the rotated
  * vertices, and convex meshes take its convex path); otherwise (a box
- * primitive) on the placed shapes. ma and mb: the meshes (NULL for a box
+ * primitive) on the placed shapes, by the convex path when both are
+ * convex. ma and mb: the meshes (NULL for a box
  * primitive); pa and pb: the shapes as placed, at ta and tb. */
 static noctStatus pair_distance(const noctMesh *ma, const noctTransform *xa, const noctMesh *pa,
                                 const double ta[3], const noctMesh *mb, const noctTransform *xb,
@@ -73,6 +74,10 @@ static noctStatus pair_distance(const noctMesh *ma, const noctTransform *xa, con
 {
     if (ma != NULL && mb != NULL)
         return noctDistance(ma, xa, mb, xb, max, r, NULL, NULL);
+    /* a box primitive is convex: its placed corners take the convex path
+     * when the other shape is convex too */
+    if (noct_distance_convex_placed(pa, ma == NULL, ta, pb, mb == NULL, tb, max, r))
+        return NOCT_OK;
     return noct_distance_placed(pa, ta, pb, tb, max, r, NULL, NULL);
 }
 
