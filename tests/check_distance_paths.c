@@ -327,42 +327,53 @@ static double magnitude(const placed_mesh *p)
     return s;
 }
 
+/* A power of two that brings magnitude m near 1: the brute force works on
+ * coordinates so scaled (exactly), since its products of up to four
+ * coordinates would leave double's range at 1e-100 or 1e98, and long
+ * double is double under valgrind. */
+static ld unit_scale(double m)
+{
+    return m > 0 ? ldexpl(1, -ilogb(m)) : 1;
+}
+
 /* The least distance over all pairs of placed triangles, in long double. */
 static ld brute_distance(const placed_mesh *a, const placed_mesh *b)
 {
+    const ld sc = unit_scale(fmax(magnitude(a), magnitude(b)));
     ld best = INFINITY;
     for (size_t i = 0; i < a->nt; ++i) {
         ld x[3][3];
         for (int c = 0; c < 3; ++c)
             for (int k = 0; k < 3; ++k)
-                x[c][k] = a->v[3 * a->tri[3 * i + c] + k];
+                x[c][k] = a->v[3 * a->tri[3 * i + c] + k] * sc;
         for (size_t j = 0; j < b->nt; ++j) {
             ld y[3][3];
             for (int c = 0; c < 3; ++c)
                 for (int k = 0; k < 3; ++k)
-                    y[c][k] = b->v[3 * b->tri[3 * j + c] + k];
+                    y[c][k] = b->v[3 * b->tri[3 * j + c] + k] * sc;
             const ld d = tri_tri2(x, y);
             best = d < best ? d : best;
         }
     }
-    return sqrtl(best);
+    return sqrtl(best) / sc;
 }
 
 /* Distance from p to the placed triangle with these vertex indices. */
 static ld point_tri_distance(const placed_mesh *m, const uint32_t t[3], const double p[3])
 {
-    ld x[3][3], q[3] = {p[0], p[1], p[2]};
+    const ld sc = unit_scale(magnitude(m));
+    ld x[3][3], q[3] = {p[0] * sc, p[1] * sc, p[2] * sc};
     for (int c = 0; c < 3; ++c) {
         ck_assert_uint_lt(t[c], m->nv);
         for (int k = 0; k < 3; ++k)
-            x[c][k] = m->v[3 * t[c] + k];
+            x[c][k] = m->v[3 * t[c] + k] * sc;
     }
     ld best = point_face2(q, x[0], x[1], x[2]);
     for (int e = 0; e < 3; ++e) {
         const ld d = point_seg2(q, x[e], x[(e + 1) % 3]);
         best = d < best ? d : best;
     }
-    return sqrtl(best);
+    return sqrtl(best) / sc;
 }
 
 /* ---- the checks ----------------------------------------------------------------- */
