@@ -699,8 +699,56 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         noctMeshDestroy(m);
         return st;
     }
+    m->turn_fine = noct_mesh_turn_fine(m);
     *mesh = pack(m);
     return NOCT_OK;
+}
+
+/*
+ * noct_mesh_turn_fine(): rotated_fine() (narrowphase_distance.c) asks of
+ * each rotated triangle, with e1, e2 its edges from its first corner and
+ * d2 the largest squared edge, that |e1 x e2| > 4e-9 d2. A matrix of
+ * noctQuatToMatrix() is within 2^-44 (the snap) plus a few ulps of a
+ * rotation in each entry, so each rotated coordinate is within
+ * delta = 2^-41 A of the exact rotation's (A the mesh's largest
+ * coordinate magnitude), and each edge within 2 delta plus its own ulp:
+ * dd = 2 delta + 2^-50 L, L = sqrt(d2). The rotation keeps |e1 x e2| and
+ * d2; the errors change the cross product by at most 2 dd L + 2 dd L +
+ * dd^2 (taken twice over for rounding). So a triangle with
+ * |e1 x e2| >= 8e-9 d2 and 8 dd L + 4 dd^2 <= 2e-9 d2 keeps
+ * |e1 x e2| > 5.9e-9 d2 (less its own rounding, about 1e-15 d2) under
+ * every such rotation. Computed on each triangle scaled by a power of
+ * two to its size (as rotated_fine() does), A scaled alike.
+ */
+bool noct_mesh_turn_fine(const noctMesh *m)
+{
+    double A = 0;
+    for (size_t i = 0; i < 3 * m->nv; ++i)
+        A = noct_max(A, fabs(m->v[i]));
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t *v = &m->tri[3 * t];
+        double e1[3], e2[3], e3[3], n[3];
+        noct_sub3(&m->v[3 * v[1]], &m->v[3 * v[0]], e1);
+        noct_sub3(&m->v[3 * v[2]], &m->v[3 * v[0]], e2);
+        const double big = noct_max(noct_max_abs3(e1), noct_max_abs3(e2));
+        if (!(big > 0))
+            return false;
+        const int ex = -ilogb(big);
+        const double f = noct_pow2(ex < 1023 ? (ex > -1022 ? ex : -1022) : 1023);
+        for (int k = 0; k < 3; ++k) {
+            e1[k] *= f;
+            e2[k] *= f;
+        }
+        const double a = A * f; /* may be infinite: then not fine */
+        noct_sub3(e2, e1, e3);
+        noct_cross3(e1, e2, n);
+        const double d2 = noct_max(noct_dot3(e3, e3),
+                                   noct_max(noct_dot3(e1, e1), noct_dot3(e2, e2)));
+        const double L = sqrt(d2), dd = 0x1p-40 * a + 0x1p-50 * L;
+        if (!(noct_norm3(n) >= 8e-9 * d2) || !(8 * dd * L + 4 * dd * dd <= 2e-9 * d2))
+            return false;
+    }
+    return true;
 }
 
 /* ---- turning into a recycled copy ---------------------------------------------- */
@@ -790,6 +838,7 @@ bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, n
     memset(&m->box, 0, sizeof m->box);
     memset(&m->dual, 0, sizeof m->dual);
     noct_mesh_box_form(m);
+    m->turn_fine = false; /* not worked out again for a turned copy */
     /* compute_hull(): every vertex, unless qhull is run */
     if ((!m->convex && m->nv > HULL_MIN_VERTICES) || m->nhull != m->nv)
         return false;

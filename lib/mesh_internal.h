@@ -102,6 +102,9 @@ struct noctMesh {
     bool has_dual;      /* dual is valid (implies has_box) */
     bool convex;
     bool packed;        /* one allocation: the arrays follow the struct */
+    bool turn_fine;     /* every rotation keeps every triangle far from the
+                           degeneracy noctMeshCreate() rejects
+                           (noct_mesh_turn_fine()) */
     box_form box;
     box_dual dual;
     double lo[3], hi[3];
@@ -125,6 +128,14 @@ struct noctMesh {
     size_t nnodes;
     bvh_node *nodes;    /* nodes[0] is the root */
 };
+
+/* Does every rotation noctQuatToMatrix() can give (entries within
+ * NOCT_ROTATION_SNAP of a rotation's) keep each of m's triangles far from
+ * the degeneracy noctMeshCreate() rejects, by a bound on the rotated
+ * vertices' error, so that rotated views need not check them
+ * (narrowphase_distance.c, rotated_fine())? Conservative: false when
+ * unsure (a triangle tiny beside the mesh's distance from its origin). */
+bool noct_mesh_turn_fine(const noctMesh *m);
 
 /* The box form of 8 vertices v (and its dual, if every one of the nt
  * triangles tri lies on a face of the ideal box), given three unit edge

@@ -1283,7 +1283,7 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
     bvh_node *nodes = (bvh_node *)(v + 3 * m->nv);
     for (size_t i = 0; i < m->nv; ++i)
         noct_rotate(R, &m->v[3 * i], &v[3 * i]);
-    if (!rotated_fine(m, v))
+    if (!m->turn_fine && !rotated_fine(m, v))
         return NOCT_ERR_DEGENERATE;
     for (size_t n = m->nnodes; n-- > 0;) {
         const bvh_node *o = &m->nodes[n];
@@ -1403,6 +1403,44 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
         st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats, ex);
         if (st != NOCT_OK)
             noct_fail(err, st, -1, 0, "distance: %s", noctStatusString(st));
+    }
+    for (int i = 0; i < 2; ++i) {
+        free(buf[i]);
+        noctMeshDestroy(rotated[i]);
+    }
+    return st;
+}
+
+noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
+                                     const noctMesh *b, const noctTransform *xb,
+                                     double R[2][9], const bool turned[2],
+                                     bool *colliding, noctNarrowStats *stats, noctError *err)
+{
+    const noctMesh *m[2] = {a, b};
+    noctMesh view[2], *rotated[2] = {NULL, NULL};
+    void *buf[2] = {NULL, NULL};
+    noct_dist_exact ex[2] = {{NULL}, {NULL}};
+    noctStatus st = NOCT_OK;
+    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
+        if (!turned[i])
+            continue;
+        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
+        if (st == NOCT_OK) {
+            ex[i].R = R[i];
+            m[i] = &view[i];
+        } else if (st == NOCT_ERR_DEGENERATE) {
+            /* near the tolerance: the rotated mesh says what it is */
+            st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
+            if (st == NOCT_OK)
+                m[i] = rotated[i];
+        } else {
+            noct_fail(err, st, -1, 0, "out of memory");
+        }
+    }
+    if (st == NOCT_OK) {
+        st = exact_of(m[0], xa->p, m[1], xb->p, ex, colliding, stats);
+        if (st != NOCT_OK)
+            noct_fail(err, st, -1, 0, "collision test: %s", noctStatusString(st));
     }
     for (int i = 0; i < 2; ++i) {
         free(buf[i]);

@@ -222,6 +222,16 @@ typedef struct noct_dist_exact {
     const double *R;
 } noct_dist_exact;
 
+/* noctCollideTransformed() at the exact level with at least one mesh
+ * turned (R[i] its matrix where turned[i]): decided on rotated views of
+ * the meshes (their vertices rotated, their hierarchies refitted) rather
+ * than on rotated meshes made for the call; the same placed vertices, so
+ * the same answer. */
+noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
+                                     const noctMesh *b, const noctTransform *xb,
+                                     double R[2][9], const bool turned[2],
+                                     bool *colliding, noctNarrowStats *stats, noctError *err);
+
 /* noctDistance() of two meshes placed at translations (already rotated,
  * or rotated views, as ex says; NULL: both made meshes). */
 noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noctMesh *b,

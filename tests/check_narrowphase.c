@@ -714,6 +714,87 @@ START_TEST(random_star_meshes_against_cones)
 }
 END_TEST
 
+/* noctCollideTransformed() at the exact level decides turned meshes on
+ * rotated views (vertices rotated, hierarchy refitted), not on rotated
+ * meshes: its answers must be noctCollide()'s on meshes made of the
+ * vertices placed as transform.h says, fl(fl(R0 v0 + R1 v1) + R2 v2).
+ * The star meshes' triangles are large beside their coordinates; shifted
+ * by 2^20 (integers: exact) each triangle is tiny beside the mesh's
+ * distance from its origin, so the views check each rotated triangle. */
+static noctMesh *star_rotated(const star *s, const double R[9], double shift)
+{
+    poly_list l = {0};
+    for (int i = 0; i < 14; ++i) {
+        double v[3], r[3];
+        for (int k = 0; k < 3; ++k)
+            v[k] = (double)s->v[i][k] + shift;
+        for (int k = 0; k < 3; ++k)
+            r[k] = (R[3 * k] * v[0] + R[3 * k + 1] * v[1]) + R[3 * k + 2] * v[2];
+        pl_vertex(&l, r[0], r[1], r[2]);
+    }
+    for (int t = 0; t < 24; ++t) {
+        uint32_t c[3] = {(uint32_t)s->tri[t][0], (uint32_t)s->tri[t][1],
+                         (uint32_t)s->tri[t][2]};
+        pl_poly(&l, 3, c);
+    }
+    return pl_mesh(&l);
+}
+
+START_TEST(turned_views_match_rotated_meshes)
+{
+    uint64_t rng = 4242 + (uint64_t)_i;
+    const double shift = _i == 1 ? 0x1p20 : 0;
+    int hits = 0, misses = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        star a, b;
+        make_star(&a, &rng);
+        make_star(&b, &rng);
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        if (trial % 4 != 0) /* sometimes only one of them turned */
+            test_random_quat(&rng, &xb.q);
+        double Ra[9], Rb[9];
+        ck_assert_int_eq(noctQuatToMatrix(&xa.q, Ra, NULL), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&xb.q, Rb, NULL), NOCT_OK);
+        /* the shifted meshes' centres, rotated, brought back near 0 */
+        for (int k = 0; k < 3; ++k) {
+            xa.p[k] = -(Ra[3 * k] + Ra[3 * k + 1] + Ra[3 * k + 2]) * shift;
+            xb.p[k] = -(Rb[3 * k] + Rb[3 * k + 1] + Rb[3 * k + 2]) * shift +
+                      ((double)test_rand_below(&rng, 1u << 20) / 0x1p20 - 0.5) * 14;
+        }
+        noctMesh *ma = star_mesh(&a), *mb = star_mesh(&b);
+        noctMesh *shifted_a = NULL, *shifted_b = NULL;
+        if (shift != 0) {
+            const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+            shifted_a = star_rotated(&a, I, shift);
+            shifted_b = star_rotated(&b, I, shift);
+        }
+        noctMesh *ra = star_rotated(&a, Ra, shift), *rb = star_rotated(&b, Rb, shift);
+        bool got, want = collide(ra, xa.p, rb, xb.p, NOCT_ACCURACY_EXACT);
+        const noctMesh *A = shift != 0 ? shifted_a : ma, *B = shift != 0 ? shifted_b : mb;
+        ck_assert_int_eq(noctCollideTransformed(A, &xa, B, &xb, NOCT_ACCURACY_EXACT, &got, NULL,
+                                                NULL),
+                         NOCT_OK);
+        if (got != want)
+            ck_abort_msg("trial %d: transformed %d, rotated meshes %d", trial, got, want);
+        ck_assert_int_eq(noctCollideTransformed(B, &xb, A, &xa, NOCT_ACCURACY_EXACT, &got, NULL,
+                                                NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(got, want);
+        hits += want;
+        misses += !want;
+        noctMeshDestroy(ma);
+        noctMeshDestroy(mb);
+        noctMeshDestroy(ra);
+        noctMeshDestroy(rb);
+        noctMeshDestroy(shifted_a);
+        noctMeshDestroy(shifted_b);
+    }
+    ck_assert_int_gt(hits, 20);
+    ck_assert_int_gt(misses, 20);
+}
+END_TEST
+
 /* The convex level on hulls never misses a collision with real depth, and
  * on convex solids agrees with the exact level except within its
  * tolerance of touching. */
@@ -1756,6 +1837,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_loop_test(tc, random_tetrahedra_against_sat, 0, 4);
     tcase_add_loop_test(tc, random_coplanar_bases_against_sat, 0, 4);
     tcase_add_loop_test(tc, random_star_meshes_against_cones, 0, 4);
+    tcase_add_loop_test(tc, turned_views_match_rotated_meshes, 0, 2);
     tcase_add_test(tc, convex_level_one_sided);
 
     tc = test_case(s, "meshes and files", 0, NULL);
