@@ -64,7 +64,7 @@ tools_bench_peers_SOURCES = tools/bench-peers.cc
 tools_bench_peers_CPPFLAGS = $(AM_CPPFLAGS) -DNOCT_EFFICIENT \
 	-DNOCT_ODE_VERSION='"$(ODE_VERSION)"' $(PEERS_CFLAGS)
 tools_bench_peers_CXXFLAGS = $(NOCT_CXXFLAGS)
-tools_bench_peers_LDADD = $(tools_efficient_ldadd) $(PEERS_LIBS)
+tools_bench_peers_LDADD = $(tools_efficient_ldadd) $(PEERS_LIBS) -lgmpxx $(GMP_LIBS)
 
 bench: tools/bench-octree-defensive tools/bench-octree-efficient \
 		tools/bench-narrowphase tools/bench-world
