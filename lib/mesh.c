@@ -39,6 +39,7 @@ void noctMeshDestroy(noctMesh *mesh)
     free(mesh->v);
     free(mesh->tri);
     free(mesh->hull);
+    free(mesh->piece);
     free(mesh->nodes);
     free(mesh->plane);
     free(mesh);
@@ -359,7 +360,8 @@ static void convexity_walk(noctMesh *m, const double (*plane)[4], const dir_edge
      * directions, typically convex ones. */
     if (!sat || m->nv > 4 * NOCT_SAT_MAX) /* SAT_MAX_VERTICES in narrowphase.c */
         m->nsat_faces = m->nsat_edges = 0;
-    m->convex = convex;
+    /* a union of separate convex pieces is not convex */
+    m->convex = convex && m->npieces == 1;
 }
 
 /* The filter's axes (m->axis, room for them) from its directions, with
@@ -524,6 +526,7 @@ static noctMesh *pack(noctMesh *m)
     size_t o_tri = take(&at, 3 * m->nt, sizeof *m->tri, _Alignof(uint32_t));
     size_t o_nodes = take(&at, m->nnodes, sizeof *m->nodes, _Alignof(bvh_node));
     size_t o_hull = take(&at, m->nhull, sizeof *m->hull, _Alignof(uint32_t));
+    size_t o_piece = take(&at, m->npieces, sizeof *m->piece, _Alignof(uint32_t));
     /* Cache-line aligned, so that the box form's lines are the first. */
     char *block = aligned_alloc(64, (at + 63) / 64 * 64);
     if (block == NULL)
@@ -537,11 +540,72 @@ static noctMesh *pack(noctMesh *m)
     p->tri = memcpy(block + o_tri, m->tri, 3 * m->nt * sizeof *m->tri);
     p->nodes = memcpy(block + o_nodes, m->nodes, m->nnodes * sizeof *m->nodes);
     p->hull = memcpy(block + o_hull, m->hull, m->nhull * sizeof *m->hull);
+    p->piece = memcpy(block + o_piece, m->piece, m->npieces * sizeof *m->piece);
     noctMeshDestroy(m);
     return p;
 }
 
 /* ---- creation ------------------------------------------------------------- */
+
+static uint32_t piece_root(uint32_t *parent, uint32_t i)
+{
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]]; /* halving */
+        i = parent[i];
+    }
+    return i;
+}
+
+/* m's pieces (m->npieces, m->piece): union-find over the vertices through
+ * the triangles; a piece is named by the first vertex of its first
+ * triangle, in m's triangle order. */
+static noctStatus compute_pieces(noctMesh *m, noctError *err)
+{
+    uint32_t *parent = malloc(m->nv * sizeof *parent);
+    uint32_t *first = malloc(m->nv * sizeof *first);
+    if (parent == NULL || first == NULL) {
+        free(parent);
+        free(first);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (uint32_t i = 0; i < m->nv; ++i) {
+        parent[i] = i;
+        first[i] = UINT32_MAX;
+    }
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t *v = &m->tri[3 * t];
+        for (int c = 1; c < 3; ++c) {
+            const uint32_t a = piece_root(parent, v[0]), b = piece_root(parent, v[c]);
+            if (a != b)
+                parent[a < b ? b : a] = a < b ? a : b;
+        }
+    }
+    size_t n = 0;
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t r = piece_root(parent, m->tri[3 * t]);
+        if (first[r] == UINT32_MAX) {
+            first[r] = m->tri[3 * t];
+            ++n;
+        }
+    }
+    m->piece = malloc(n * sizeof *m->piece);
+    if (m->piece == NULL) {
+        free(parent);
+        free(first);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    m->npieces = 0;
+    for (size_t t = 0; t < m->nt; ++t) {
+        const uint32_t r = piece_root(parent, m->tri[3 * t]);
+        if (first[r] != UINT32_MAX) {
+            m->piece[m->npieces++] = first[r];
+            first[r] = UINT32_MAX;
+        }
+    }
+    free(parent);
+    free(first);
+    return NOCT_OK;
+}
 
 /* m's bounding box (m->lo, m->hi) from its vertices. */
 static void bounds_of(noctMesh *m)
@@ -689,6 +753,8 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         }
     if (st == NOCT_OK)
         st = noct_bvh_build(m, err);
+    if (st == NOCT_OK)
+        st = compute_pieces(m, err);
     if (st == NOCT_OK)
         st = compute_convexity(m, err);
     if (st == NOCT_OK)

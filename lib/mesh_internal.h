@@ -124,6 +124,13 @@ struct noctMesh {
     sat_axis *axis;
     size_t nhull;
     uint32_t *hull;     /* vertices of the convex hull */
+    /* The boundary's pieces (triangles connected through shared
+     * vertices): a vertex of each. With the boundaries apart, each piece
+     * lies wholly inside the other solid or wholly outside it, so the
+     * containment tests ask of one vertex per piece (one for most
+     * meshes; a mesh of two separate cubes has two). */
+    size_t npieces;
+    uint32_t *piece;
     double centre[3];   /* mean of the hull vertices */
     size_t nnodes;
     bvh_node *nodes;    /* nodes[0] is the root */

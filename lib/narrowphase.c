@@ -142,13 +142,28 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
     return NOCT_ERR_NUMERIC;
 }
 
-static bool box_inside(const placed *A, const placed *B)
+noctStatus noct_piece_inside(const placed *in, const placed *out, const exact_ctx *x,
+                             noctNarrowStats *stats, bool *inside)
 {
-    for (int k = 0; k < 3; ++k)
-        if (A->m->lo[k] + A->t[k] < B->m->lo[k] + B->t[k] ||
-            A->m->hi[k] + A->t[k] > B->m->hi[k] + B->t[k])
-            return false;
-    return true;
+    *inside = false;
+    if (!noct_may_hold_piece(in, out))
+        return NOCT_OK;
+    for (size_t i = 0; i < in->m->npieces; ++i) {
+        double p[3];
+        noct_place_vertex(in, in->m->piece[i], p);
+        bool in_box = true;
+        for (int k = 0; k < 3 && in->m->npieces > 1; ++k)
+            in_box = in_box && out->m->lo[k] + out->t[k] <= p[k] &&
+                     p[k] <= out->m->hi[k] + out->t[k];
+        if (!in_box)
+            continue;
+        if (stats)
+            ++stats->containment_tests;
+        const noctStatus st = noct_contains(out, p, x, inside);
+        if (st != NOCT_OK || *inside)
+            return st;
+    }
+    return NOCT_OK;
 }
 
 /* The filter serves meshes of at most this many vertices (mesh.c). */
@@ -558,15 +573,8 @@ static noctStatus exact_collide(const placed *A, const placed *B, bool decided, 
     }
     const placed *pair[2][2] = {{A, B}, {B, A}};
     for (int i = 0; i < 2; ++i) {
-        const placed *in = pair[i][0], *out = pair[i][1];
-        if (!box_inside(in, out))
-            continue;
-        double p[3];
-        noct_place_vertex(in, in->m->tri[0], p);
-        if (st)
-            ++st->containment_tests;
         bool inside;
-        noctStatus s = noct_contains(out, p, &x, &inside);
+        noctStatus s = noct_piece_inside(pair[i][0], pair[i][1], &x, st, &inside);
         if (s != NOCT_OK)
             return s;
         if (inside) {

@@ -660,24 +660,26 @@ static noctStatus contact_crossing(const placed *A, const placed *B, gather *g, 
                                    noctContact *c)
 {
     if (g->n == 0) {
-        /* No boundaries meet: one inside the other, or apart. */
+        /* No boundaries meet: a piece of one inside the other, or apart
+         * (each piece of a boundary lies wholly in or out). */
         const placed *outer[2] = {A, B}, *inner[2] = {B, A};
-        for (int s = 0; s < 2; ++s) {
-            double p[3];
-            bool in;
-            noct_place_vertex(inner[s], 0, p);
-            noctStatus st = noct_point_in_solid(outer[s]->m, outer[s]->t, p, &in);
-            if (st != NOCT_OK)
-                return st;
-            if (in) {
-                c->kind = NOCT_CONTACT_CONTAINED;
-                c->contained = true;
-                centres(A, B, c->normal);
-                c->count = 1;
-                memcpy(c->points[0], p, sizeof c->points[0]);
-                return NOCT_OK;
+        for (int s = 0; s < 2; ++s)
+            for (size_t i = 0; i < inner[s]->m->npieces; ++i) {
+                double p[3];
+                bool in;
+                noct_place_vertex(inner[s], inner[s]->m->piece[i], p);
+                noctStatus st = noct_point_in_solid(outer[s]->m, outer[s]->t, p, &in);
+                if (st != NOCT_OK)
+                    return st;
+                if (in) {
+                    c->kind = NOCT_CONTACT_CONTAINED;
+                    c->contained = true;
+                    centres(A, B, c->normal);
+                    c->count = 1;
+                    memcpy(c->points[0], p, sizeof c->points[0]);
+                    return NOCT_OK;
+                }
             }
-        }
         return NOCT_OK;
     }
     c->kind = NOCT_CONTACT_CROSSING;

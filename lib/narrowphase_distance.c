@@ -658,17 +658,6 @@ static void set_colliding(noctDistanceResult *r, const noctMesh *a, const double
     }
 }
 
-/* Is A's placed box inside B's (as the exact level's containment test
- * asks before it looks for a vertex of A in B)? */
-static bool placed_box_inside(const noctMesh *a, const double ta[3], const noctMesh *b,
-                              const double tb[3])
-{
-    for (int k = 0; k < 3; ++k)
-        if (a->lo[k] + ta[k] < b->lo[k] + tb[k] || a->hi[k] + ta[k] > b->hi[k] + tb[k])
-            return false;
-    return true;
-}
-
 /* Do the placed boxes overlap so deeply (one's centre in the other) that
  * the solids likely meet, and the exact test should come first? */
 static bool boxes_deep(const noctMesh *a, const double ta[3], const noctMesh *b,
@@ -735,15 +724,8 @@ static noctStatus exact_of(const noctMesh *a, const double ta[3], const noctMesh
     }
     const placed *pair[2][2] = {{&A, &B}, {&B, &A}};
     for (int i = 0; i < 2; ++i) {
-        const placed *in = pair[i][0], *out = pair[i][1];
-        if (!placed_box_inside(in->m, in->t, out->m, out->t))
-            continue;
-        double p[3];
-        noct_place_vertex(in, in->m->tri[0], p);
-        if (stats)
-            ++stats->containment_tests;
         bool inside;
-        const noctStatus st = noct_contains(out, p, &x, &inside);
+        const noctStatus st = noct_piece_inside(pair[i][0], pair[i][1], &x, stats, &inside);
         if (st != NOCT_OK)
             return st;
         if (inside) {
@@ -832,8 +814,9 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
     }
     if (!proved)
         w.lower = 0;
-    if (!decided && (!(w.lower > 0) || placed_box_inside(a, ta, b, tb) ||
-                     placed_box_inside(b, tb, a, ta))) {
+    const placed pa = {a, {ta[0], ta[1], ta[2]}}, pb = {b, {tb[0], tb[1], tb[2]}};
+    if (!decided && (!(w.lower > 0) || noct_may_hold_piece(&pa, &pb) ||
+                     noct_may_hold_piece(&pb, &pa))) {
         bool colliding = false;
         const noctStatus st = exact_of(a, ta, b, tb, ex, &colliding, stats);
         if (st != NOCT_OK)

@@ -206,6 +206,27 @@ static NOCT_ALWAYS_INLINE double box_offset(const noct_box_slot *a, const double
 noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
                          bool *inside);
 
+/* Can a piece of in's boundary (mesh_internal.h) lie inside out's solid,
+ * as placed? For one piece, only if in's box lies in out's; for several,
+ * only if the boxes overlap. */
+static inline bool noct_may_hold_piece(const placed *in, const placed *out)
+{
+    for (int k = 0; k < 3; ++k) {
+        const double ilo = in->m->lo[k] + in->t[k], ihi = in->m->hi[k] + in->t[k];
+        const double olo = out->m->lo[k] + out->t[k], ohi = out->m->hi[k] + out->t[k];
+        if (in->m->npieces == 1 ? ilo < olo || ihi > ohi : ihi < olo || ilo > ohi)
+            return false;
+    }
+    return true;
+}
+
+/* With the boundaries of in and out apart: does a piece of in's boundary
+ * lie inside out's solid? A vertex of each piece that noct_may_hold_piece()
+ * lets through (and, for several pieces, that lies in out's box) is tested
+ * by noct_contains(); containment_tests counts them (narrowphase.c). */
+noctStatus noct_piece_inside(const placed *in, const placed *out, const exact_ctx *x,
+                             noctNarrowStats *stats, bool *inside);
+
 /* Check two transforms and, for each that turns, make its mesh's rotated
  * copy (noct_mesh_rotated()) into rotated[i] and m[i]; the caller destroys
  * rotated[0] and rotated[1] (NULL where not turned), whatever the status

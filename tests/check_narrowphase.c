@@ -795,6 +795,106 @@ START_TEST(turned_views_match_rotated_meshes)
 }
 END_TEST
 
+/* A mesh of several pieces (separate cubes, each closed and outward) is
+ * one solid, their union: a box that holds one cube wholly, its
+ * boundary crossing none, meets it, whichever piece that is. The oracle:
+ * closed intervals of the axis-aligned cubes and box (integers, exact),
+ * then the same on a 90-degree turn about z (exact too). */
+START_TEST(pieces_inside_another_solid)
+{
+    uint64_t rng = 99 + (uint64_t)_i;
+    int hits = 0, contained = 0, misses = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const int n = 2 + (int)test_rand_below(&rng, 3);
+        poly_list l = {0};
+        double lo[4][3], hi[4][3];
+        for (int c = 0; c < n; ++c) {
+            for (int k = 0; k < 3; ++k) {
+                lo[c][k] = (double)(k == 0 ? 10 * c : 0);
+                hi[c][k] = lo[c][k] + 1 + (double)test_rand_below(&rng, 2);
+            }
+            poly_list cube = pl_box(lo[c], hi[c]);
+            const uint32_t base = (uint32_t)l.nv;
+            for (size_t v = 0; v < cube.nv; ++v)
+                pl_vertex(&l, cube.v[3 * v], cube.v[3 * v + 1], cube.v[3 * v + 2]);
+            for (size_t f = 0; f < cube.np; ++f) {
+                uint32_t q[4];
+                for (int e = 0; e < 4; ++e)
+                    q[e] = base + cube.idx[4 * f + (size_t)e];
+                pl_poly(&l, 4, q);
+            }
+        }
+        noctMesh *pieces = pl_mesh(&l);
+        /* a box around a random cube, or between two, or off to a side */
+        const int around = (int)test_rand_below(&rng, (size_t)n + 1);
+        double blo[3], bhi[3];
+        for (int k = 0; k < 3; ++k) {
+            const double c = around < n ? (lo[around][k] + hi[around][k]) / 2
+                                        : (k == 0 ? 5 : 0.5);
+            const double h = 2 + (double)test_rand_below(&rng, 3);
+            blo[k] = c - h;
+            bhi[k] = c + h;
+        }
+        if (around == n) /* between the first two cubes, touching neither */
+            blo[0] = hi[0][0] + 1, bhi[0] = 9;
+        poly_list bl = pl_box(blo, bhi);
+        noctMesh *box = pl_mesh(&bl);
+        bool want = false, crossed = false;
+        for (int c = 0; c < n; ++c) {
+            bool meet = true, inside = true;
+            for (int k = 0; k < 3; ++k) {
+                meet = meet && lo[c][k] <= bhi[k] && blo[k] <= hi[c][k];
+                inside = inside && blo[k] < lo[c][k] && hi[c][k] < bhi[k];
+            }
+            want = want || meet;
+            crossed = crossed || (meet && !inside);
+        }
+        const double zero[3] = {0, 0, 0};
+        for (int turn = 0; turn < 2; ++turn) {
+            noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+            if (turn == 1) { /* both turned by 90 degrees about z: exact */
+                const double z[3] = {0, 0, 1};
+                ck_assert_int_eq(noctQuatFromAxisAngle(z, 90, &xa.q), NOCT_OK);
+                xb.q = xa.q;
+            }
+            bool got;
+            if (turn == 0) {
+                EXPECT(collide(pieces, zero, box, zero, NOCT_ACCURACY_EXACT) == want);
+                EXPECT(collide(box, zero, pieces, zero, NOCT_ACCURACY_EXACT) == want);
+            }
+            ck_assert_int_eq(noctCollideTransformed(pieces, &xa, box, &xb,
+                                                    NOCT_ACCURACY_EXACT, &got, NULL, NULL),
+                             NOCT_OK);
+            ck_assert_msg(got == want, "trial %d turn %d: %d, want %d", trial, turn, got, want);
+            ck_assert_int_eq(noctCollideTransformed(box, &xb, pieces, &xa,
+                                                    NOCT_ACCURACY_EXACT, &got, NULL, NULL),
+                             NOCT_OK);
+            ck_assert_int_eq(got, want);
+            noctDistanceResult r;
+            ck_assert_int_eq(noctDistance(pieces, &xa, box, &xb, INFINITY, &r, NULL, NULL),
+                             NOCT_OK);
+            ck_assert_msg(r.colliding == want && (r.distance == 0) == want,
+                          "trial %d turn %d: distance %g colliding %d, want %d", trial, turn,
+                          r.distance, r.colliding, want);
+            noctContact ct;
+            ck_assert_int_eq(noctCollideContact(pieces, &xa, box, &xb, &got, &ct, NULL),
+                             NOCT_OK);
+            ck_assert_int_eq(got, want);
+            if (want && !crossed)
+                ck_assert_int_eq(ct.kind, NOCT_CONTACT_CONTAINED);
+        }
+        hits += want && crossed;
+        contained += want && !crossed;
+        misses += !want;
+        noctMeshDestroy(pieces);
+        noctMeshDestroy(box);
+    }
+    ck_assert_int_gt(contained, 5);
+    ck_assert_int_gt(misses, 5);
+    (void)hits;
+}
+END_TEST
+
 /* The convex level on hulls never misses a collision with real depth, and
  * on convex solids agrees with the exact level except within its
  * tolerance of touching. */
@@ -1838,6 +1938,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_loop_test(tc, random_coplanar_bases_against_sat, 0, 4);
     tcase_add_loop_test(tc, random_star_meshes_against_cones, 0, 4);
     tcase_add_loop_test(tc, turned_views_match_rotated_meshes, 0, 2);
+    tcase_add_loop_test(tc, pieces_inside_another_solid, 0, 2);
     tcase_add_test(tc, convex_level_one_sided);
 
     tc = test_case(s, "meshes and files", 0, NULL);

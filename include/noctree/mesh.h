@@ -55,6 +55,13 @@
  * double equal to the sum) is accepted or refused alike, with the same
  * convexity (noctMeshIsConvex()).
  *
+ * **Several pieces.** A mesh may be several closed surfaces that share
+ * no vertex (two separate cubes, or a shell with a cavity facing
+ * inwards): the solid is what they bound together, the points inside an
+ * odd number of them. Every test treats it as one solid: it meets
+ * another where any of its pieces does, a piece wholly inside the other
+ * solid included.
+ *
  * **The solid, exactly.** Each polygon is split into a fan of triangles
  * from its first vertex; the solid is the closed region those triangles
  * bound. (For a planar convex polygon that is the polygon itself; for a
@@ -570,9 +577,11 @@ NOCT_API void noctMeshBounds(const noctMesh *mesh, double lo[3], double hi[3]);
 /**
  * @brief Tell whether the solid is convex.
  *
- * Decided exactly at creation: the surface is convex at every edge (the
- * far vertex of each triangle lies on or below the plane of its neighbor
- * across the edge).
+ * Decided exactly at creation: the surface is one piece (its triangles
+ * connected through shared vertices) and convex at every edge (the far
+ * vertex of each triangle lies on or below the plane of its neighbor
+ * across the edge). A mesh of several separate pieces, each convex, is
+ * not.
  * @param[in] mesh A mesh.
  * @pre @p mesh is not NULL.
  * @return Whether the solid is convex.
