@@ -334,7 +334,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 if HAVE_PEERS
 TESTS += tests/peers.sh
 endif
-EXTRA_DIST += tests/peers.sh tests/manlint.sh
+EXTRA_DIST += tests/peers.sh tests/manlint.sh tests/valgrind-suite.sh
 
 AM_TESTS_ENVIRONMENT = \
 	CC='$(CC)'; NM='$(NM)'; srcdir='$(srcdir)/tests'; \
@@ -346,15 +346,15 @@ AM_TESTS_ENVIRONMENT = \
 # cases (whole benchmark scenes), which the other builds run. check-alloc
 # and check-zero-alloc replace malloc (testalloc.c), which valgrind does
 # too: they would only skip (exit 77).
+# The suites run side by side, VALGRIND_JOBS at a time (default: the
+# processors), each by tests/valgrind-suite.sh.
 VALGRIND = valgrind
+VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
 check-valgrind: $(check_PROGRAMS)
-	@set -e; for t in $(check_PROGRAMS); do \
-	  case $$t in tests/check-alloc*|tests/check-zero-alloc*) continue ;; esac; \
-	  echo "valgrind $$t"; \
-	  CK_FORK=no CK_EXCLUDE_TAGS='death slow' $(LIBTOOL) --mode=execute \
-	    $(VALGRIND) -q --error-exitcode=1 --leak-check=full \
-	    --errors-for-leak-kinds=definite,indirect ./$$t; \
-	done
+	@for t in $(check_PROGRAMS); do \
+	  case $$t in tests/check-alloc*|tests/check-zero-alloc*) ;; *) echo $$t ;; esac; \
+	done | xargs -P $(VALGRIND_JOBS) -n 1 \
+	  $(SHELL) $(srcdir)/tests/valgrind-suite.sh '$(LIBTOOL)' '$(VALGRIND)'
 .PHONY: check-valgrind
 
 # Run from make installcheck (and so from make distcheck) after make install:

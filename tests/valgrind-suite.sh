@@ -1,0 +1,19 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# Run one Check suite under valgrind (make check-valgrind runs several of
+# these side by side): in one process (no fork), without the death tests
+# (they abort by design) and the slow ones; its log is shown if it fails.
+# Usage: valgrind-suite.sh LIBTOOL VALGRIND SUITE
+set -u
+libtool=$1 valgrind=$2 suite=$3
+log=$suite.valgrind.log
+if CK_FORK=no CK_EXCLUDE_TAGS='death slow' $libtool --mode=execute \
+    $valgrind -q --error-exitcode=1 --leak-check=full \
+    --errors-for-leak-kinds=definite,indirect "./$suite" > "$log" 2>&1; then
+    printf 'valgrind %s: %s\n' "$suite" "$(grep -E '^[0-9]+%: Checks:' "$log")"
+    rm -f "$log"
+else
+    cat "$log"
+    printf 'valgrind %s: FAILED\n' "$suite"
+    exit 1
+fi
