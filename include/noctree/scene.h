@@ -155,6 +155,29 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
 NOCT_API noctStatus noctSceneBuild(const noctScene *scene, noctWorld **world,
                                    noctError *err);
 
+/**
+ * @brief Make the worlds built from the scene ignore, or not, the pairs
+ *        touching at the start (noctree-scene(5): `ignore initial`).
+ *
+ * With it, noctSceneBuild() calls noctWorldIgnoreTouching() on the world
+ * it built, after its objects, tracks and `ignore NAME NAME` lines: the
+ * steps report only the contacts that begin after the start.
+ * @param[in] scene  A scene.
+ * @param[in] ignore Whether to ignore them.
+ * @pre @p scene is not NULL.
+ * @post noctSceneIgnoresInitial(scene) == ignore, and noctSceneWrite()
+ *       writes the line when it is true.
+ */
+NOCT_API void noctSceneSetIgnoreInitial(noctScene *scene, bool ignore);
+
+/**
+ * @brief Does the scene ignore the pairs touching at the start?
+ * @param[in] scene A scene.
+ * @pre @p scene is not NULL.
+ * @return Whether it does (`ignore initial`, noctSceneSetIgnoreInitial()).
+ */
+NOCT_API bool noctSceneIgnoresInitial(const noctScene *scene);
+
 /** Longest object name, in bytes (noctree-scene(5), `name`). */
 #define NOCT_SCENE_NAME_MAX 64
 
