@@ -111,8 +111,9 @@ NOCT_API noctStatus noctSceneFamily(const char *spec, noctScene **scene,
  *       the steps, every mesh (a mesh read from a file by the path it was
  *       opened by), object, key and family, every number written so that
  *       it reads back bit for bit (rotations as the axis and degrees they
- *       were given by, so that they make the same quaternions), the
- *       objects' margins and names included.
+ *       were given by, so that they make the same quaternions; keys'
+ *       turns as turns), the objects' margins and names, the `ignore`
+ *       lines and `ignore initial` included.
  * @return #NOCT_OK, or #NOCT_ERR_IO if writing failed (the message says
  *         why).
  */
@@ -143,6 +144,12 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
 
 /**
  * @brief Build a world from the scene.
+ *
+ * The world gets the scene's objects and their tracks
+ * (noctWorldSetTrackTurns() for keys with turns), then the pairs of its
+ * `ignore NAME NAME` lines are ignored (noctWorldIgnorePair()), and last,
+ * with `ignore initial` (noctSceneSetIgnoreInitial()), the pairs touching
+ * (noctWorldIgnoreTouching()).
  * @param[in]  scene The scene; must outlive the world.
  * @param[out] world Receives the new world on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.

@@ -718,7 +718,9 @@ typedef struct noctKeyframe {
  *   b q_k+1` with `a = 1 - s, b = s` when d > 0.9995 (nearly the same
  *   rotation), else `a = sin((1 - s) t) / sin(t)`, `b = sin(s t) / sin(t)`
  *   for `t = acos(d)` (the C library's acos and sin), then divided by
- *   `fl(sqrt(((x x + y y) + z z) + w w))` of itself.
+ *   `fl(sqrt(((x x + y y) + z z) + w w))` of itself. The shorter arc
+ *   turns through half a turn at most; noctTrackAtTurns() turns through
+ *   the angle a keyframe gives (noctKeyTurn).
  *
  * So the same keyframes give the same poses on every run, in both builds;
  * across C libraries the rotations between keyframes may differ in their
