@@ -327,6 +327,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/stl.dict tests/fuzz/ply.dict \
 	tests/fuzz/corpus/scene/coincident.scene \
 	tests/fuzz/corpus/scene/every-statement.scene \
+	tests/fuzz/corpus/scene/turn-ignore.scene \
 	tests/fuzz/corpus/scene/two-cubes.scene \
 	tests/fuzz/corpus/scene/walls-late.scene \
 	tests/fuzz/corpus/off/cube.off tests/fuzz/corpus/off/dented.off \
