@@ -16,7 +16,10 @@
  * between steps (noctWorldSetTransform(), noctWorldSetVelocity(), ...);
  * the next step sees the new state, and the events follow every change:
  * a pair that a removal, a teleport, a filter or a sensor flag parted ends
- * at the next step, and one they brought together begins there. A world
+ * at the next step, and one they brought together begins there. Pairs
+ * that filters cannot single out can be ignored one by one
+ * (noctWorldIgnorePair(); noctWorldIgnoreTouching() for every pair in
+ * resting contact). A world
  * without the motion effect only detects: the program places its objects
  * and steps. noctWorldStep() runs one step:
  * 1. **motion** (effect #NOCT_EFFECT_MOTION): each moving object with a
@@ -811,8 +814,8 @@ NOCT_API noctStatus noctWorldSetTrackTurns(noctWorld *world, noctObjectId id,
  * @pre world != NULL && turns != NULL
  * @post *turns points at the world's copy of the turns, one per keyframe
  *       (valid as noctWorldGetTrack()'s keyframes are), or NULL when the
- *       object has no track, its track was set without turns, or the
- *       handle is stale.
+ *       object has no track, its track was set without turns (or with
+ *       none that gives an axis), or the handle is stale.
  * @param world the world.
  * @param id the object.
  * @param turns receives the turns.
