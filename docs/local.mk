@@ -19,7 +19,8 @@ docs_examples_driven_arm_LDADD = lib/libnoctree.la -lm
 # still what the families write), installed with the documentation.
 examplescenesdir = $(docdir)/examples/scenes
 dist_examplescenes_DATA = docs/examples/scenes/arms-3.scene \
-	docs/examples/scenes/keyframes-20.scene
+	docs/examples/scenes/keyframes-20.scene \
+	docs/examples/scenes/turntable.scene
 
 EXTRA_DIST += docs/Doxyfile.in docs/mainpage.md docs/results.md docs/families.md \
 	docs/doxygen-header.html $(docs_results)

@@ -56,7 +56,8 @@ noctree_sources = \
 	lib/world_query.c \
 	lib/world_step.c \
 	lib/world_sweep.c \
-	lib/world_track.c
+	lib/world_track.c \
+	lib/world_ignore.c
 noctree_deps_cflags = $(CCD_CFLAGS) $(QHULL_CFLAGS) $(GMP_CFLAGS) $(ASSIMP_CFLAGS)
 noctree_deps_libs = $(CCD_LIBS) $(QHULL_LIBS) $(GMP_LIBS) $(ASSIMP_LIBS) $(LIBS)
 

@@ -379,8 +379,8 @@ static noctStatus parse_object(parser *p, noctScene *s)
     return NOCT_OK;
 }
 
-/* 'key TICK X Y Z [rotate AX AY AZ DEGREES]': a keyframe of the last
- * object line's track. */
+/* 'key TICK X Y Z [rotate|turn AX AY AZ DEGREES]': a keyframe of the
+ * last object line's track. */
 static noctStatus parse_key(parser *p, noctScene *s)
 {
     if (s->nobjects == 0)
@@ -401,23 +401,43 @@ static noctStatus parse_key(parser *p, noctScene *s)
     kf->tick = (uint64_t)tick;
     kf->x.q = (noctQuat){0, 0, 0, 1};
     char *tok = next(p);
+    const bool by = tok != NULL && strcmp(tok, "turn") == 0;
+    double axis[4];
     if (tok != NULL) {
-        if (strcmp(tok, "rotate") != 0)
+        if (strcmp(tok, "rotate") != 0 && !by)
             return perr(p, NOCT_ERR_PARSE,
-                        "unexpected '%s'; expected 'key TICK X Y Z [rotate AX AY AZ DEGREES]'",
+                        "unexpected '%s'; expected 'key TICK X Y Z [rotate|turn AX AY AZ "
+                        "DEGREES]'",
                         tok);
-        double axis[4];
-        if ((st = numbers(p, "rotation axis and angle", axis, 4)) != NOCT_OK ||
+        if ((st = numbers(p, by ? "turn axis and angle" : "rotation axis and angle", axis,
+                          4)) != NOCT_OK ||
             (st = end_of_line(p)) != NOCT_OK)
             return st;
         if (noctQuatFromAxisAngle(axis, axis[3], &kf->x.q) != NOCT_OK)
-            return perr(p, NOCT_ERR_INVALID, "a rotation needs a non-zero axis");
+            return perr(p, NOCT_ERR_INVALID, "a %s needs a non-zero axis",
+                        by ? "turn" : "rotation");
         key.turn = (scene_turn){true, {axis[0], axis[1], axis[2]}, axis[3]};
+        key.by = by;
     }
     if (o->nkeys > 0 && !(kf->tick > s->keys[s->nkeys - 1].k.tick))
         return perr(p, NOCT_ERR_INVALID, "key tick %llu is not after the previous key's %llu",
                     (unsigned long long)kf->tick,
                     (unsigned long long)s->keys[s->nkeys - 1].k.tick);
+    if (by) {
+        /* from the previous key's rotation, through the angle given
+         * (noctWorldSetTrackTurns()) */
+        if (o->nkeys == 0)
+            return perr(p, NOCT_ERR_INVALID,
+                        "a key's turn needs a key before it on the object's track");
+        const noctKeyframe *prev = &s->keys[s->nkeys - 1].k;
+        const double ticks = (double)(kf->tick - prev->tick);
+        if (!(fabs(axis[3]) < 180 * ticks))
+            return perr(p, NOCT_ERR_INVALID,
+                        "a turn of %g degrees in %.0f ticks is half a turn a tick or more",
+                        axis[3], ticks);
+        const noctQuat r = kf->x.q;
+        kf->x.q = noctQuatCompose(&r, &prev->x.q);
+    }
     for (int c = 0; c < 3; ++c)
         if (fabs(kf->x.p[c]) > NOCT_MAX_COORDINATE)
             return perr(p, NOCT_ERR_TOO_LARGE, "key position beyond the coordinate limit");
@@ -431,6 +451,36 @@ static noctStatus parse_key(parser *p, noctScene *s)
     if (noct_scene_add_key(s, &key) != NOCT_OK)
         return perr(p, NOCT_ERR_NOMEM, "out of memory");
     s->def.effects |= NOCT_EFFECT_TRACK;
+    return NOCT_OK;
+}
+
+/* 'ignore initial', or 'ignore NAME NAME' for two objects named above. */
+static noctStatus parse_ignore(parser *p, noctScene *s)
+{
+    const char *a = next(p), *b = a != NULL ? next(p) : NULL;
+    if (a == NULL)
+        return perr(p, NOCT_ERR_PARSE, "expected 'ignore initial' or 'ignore NAME NAME'");
+    if (b == NULL) {
+        if (strcmp(a, "initial") != 0)
+            return perr(p, NOCT_ERR_PARSE,
+                        "expected 'ignore initial' or 'ignore NAME NAME', not 'ignore %.80s'",
+                        a);
+        s->ignore_initial = true;
+        return NOCT_OK;
+    }
+    noctStatus st = end_of_line(p);
+    if (st != NOCT_OK)
+        return st;
+    size_t pair[2];
+    const char *names[2] = {a, b};
+    for (int k = 0; k < 2; ++k)
+        if ((pair[k] = noct_scene_named(s, names[k])) == SIZE_MAX)
+            return perr(p, NOCT_ERR_INVALID, "ignore: no object named '%.80s' above this line",
+                        names[k]);
+    if (pair[0] == pair[1])
+        return perr(p, NOCT_ERR_INVALID, "ignore: '%s' is the same object twice", a);
+    if (noct_scene_add_ignore(s, pair) != NOCT_OK)
+        return perr(p, NOCT_ERR_NOMEM, "out of memory");
     return NOCT_OK;
 }
 
@@ -565,6 +615,8 @@ static noctStatus parse_line(parser *p, noctScene *s, char *kw)
         return parse_object(p, s);
     if (strcmp(kw, "key") == 0)
         return parse_key(p, s);
+    if (strcmp(kw, "ignore") == 0)
+        return parse_ignore(p, s);
     if (strcmp(kw, "family") == 0) {
         char *tok = next(p);
         if (s->nfamilies == sizeof s->families / sizeof *s->families)
@@ -680,6 +732,33 @@ noctStatus noctSceneFamily(const char *spec, noctScene **scene, noctError *err)
     return NOCT_OK;
 }
 
+/* An object's track from the scene's keys, with their turns if any. */
+static noctStatus build_track(noctWorld *w, noctObjectId id, const scene_key *keys, size_t n,
+                              noctError *err)
+{
+    bool by = false;
+    for (size_t j = 0; j < n; ++j)
+        by |= keys[j].by;
+    noctKeyframe *k = malloc(n * sizeof *k);
+    noctKeyTurn *t = by ? calloc(n, sizeof *t) : NULL;
+    if (k == NULL || (by && t == NULL)) {
+        free(k);
+        free(t);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
+    for (size_t j = 0; j < n; ++j) {
+        k[j] = keys[j].k;
+        if (keys[j].by) {
+            memcpy(t[j].axis, keys[j].turn.axis, sizeof t[j].axis);
+            t[j].degrees = keys[j].turn.degrees;
+        }
+    }
+    noctStatus st = noctWorldSetTrackTurns(w, id, k, t, n, err);
+    free(k);
+    free(t);
+    return st;
+}
+
 noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
 {
     NOCT_REQUIRE(s != NULL && world != NULL);
@@ -723,18 +802,19 @@ noctStatus noctSceneBuild(const noctScene *s, noctWorld **world, noctError *err)
         }
         noctObjectId id;
         st = noct_world_add_object(w, &d, speed, &id, err);
-        if (st == NOCT_OK && o->nkeys > 0) {
-            noctKeyframe *k = malloc(o->nkeys * sizeof *k);
-            if (k == NULL) {
-                st = noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
-                break;
-            }
-            for (size_t j = 0; j < o->nkeys; ++j)
-                k[j] = s->keys[o->first_key + j].k;
-            st = noctWorldSetTrack(w, id, k, o->nkeys, err);
-            free(k);
-        }
+        if (st == NOCT_OK && o->nkeys > 0)
+            st = build_track(w, id, s->keys + o->first_key, o->nkeys, err);
     }
+    /* the ignored pairs: the object lines' slots follow the families' */
+    const uint32_t first = (uint32_t)(noctWorldObjectCount(w) - s->nobjects);
+    for (size_t i = 0; i < s->nignores && st == NOCT_OK; ++i) {
+        noctObjectId a, b;
+        noctWorldObjectAt(w, first + (uint32_t)s->ignores[i][0], &a);
+        noctWorldObjectAt(w, first + (uint32_t)s->ignores[i][1], &b);
+        st = noctWorldIgnorePair(w, a, b, true, err);
+    }
+    if (st == NOCT_OK && s->ignore_initial)
+        st = noctWorldIgnoreTouching(w, NULL, err);
     if (st != NOCT_OK) {
         noctWorldDestroy(w);
         return st;

@@ -38,6 +38,8 @@ typedef struct scene_turn {
 typedef struct scene_key {
     noctKeyframe k;
     scene_turn turn;
+    bool by; /* 'turn' (from the previous key through turn's angle), not
+                'rotate' */
 } scene_key;
 
 typedef struct scene_object {
@@ -75,6 +77,9 @@ struct noctScene {
     size_t nobjects, capobjects;
     scene_key *keys;         /* the objects' tracks, each object's in a row */
     size_t nkeys, capkeys;
+    size_t (*ignores)[2];    /* 'ignore NAME NAME': indexes in objects */
+    size_t nignores, capignores;
+    bool ignore_initial;     /* 'ignore initial' */
     scene_family families[16];
     size_t nfamilies;
     /* the objects' names: an open-addressing table of 1 + the index in
@@ -102,6 +107,10 @@ noctStatus noct_scene_add_mesh(noctScene *s, const char *name, noctMesh *m, cons
  * checked by the caller). NOMEM. */
 noctStatus noct_scene_add_object(noctScene *s, const scene_object *o);
 noctStatus noct_scene_add_key(noctScene *s, const scene_key *k);
+
+/* Ignore the pair of object lines pair[0] and pair[1] (checked by the
+ * caller). NOMEM. */
+noctStatus noct_scene_add_ignore(noctScene *s, const size_t pair[2]);
 
 /* A scene_object with the defaults of an object line: not moving, not
  * turned, moving type, every filter bit, no margin, no name. */

@@ -34,6 +34,7 @@ void noctSceneDestroy(noctScene *s)
     free(s->objects);
     free(s->names);
     free(s->keys);
+    free(s->ignores);
     for (size_t i = 0; i < sizeof s->shared / sizeof *s->shared; ++i)
         noctMeshDestroy(s->shared[i]);
     free(s);
@@ -49,6 +50,18 @@ int noctSceneSteps(const noctScene *s)
 {
     NOCT_REQUIRE(s != NULL);
     return s->steps;
+}
+
+void noctSceneSetIgnoreInitial(noctScene *s, bool ignore)
+{
+    NOCT_REQUIRE(s != NULL);
+    s->ignore_initial = ignore;
+}
+
+bool noctSceneIgnoresInitial(const noctScene *s)
+{
+    NOCT_REQUIRE(s != NULL);
+    return s->ignore_initial;
 }
 
 noctScene *noct_scene_new(void)
@@ -120,6 +133,19 @@ noctStatus noct_scene_add_key(noctScene *s, const scene_key *k)
     s->keys[s->nkeys++] = *k;
     ++o->nkeys;
     o->type = NOCT_OBJECT_KINEMATIC;
+    return NOCT_OK;
+}
+
+typedef size_t index_pair[2];
+NOCT_DEFINE_GROW(grow_ignores, index_pair)
+
+noctStatus noct_scene_add_ignore(noctScene *s, const size_t pair[2])
+{
+    if (!grow_ignores(&s->ignores, &s->capignores, s->capignores > 0 ? s->nignores + 1 : 16))
+        return NOCT_ERR_NOMEM;
+    s->ignores[s->nignores][0] = pair[0];
+    s->ignores[s->nignores][1] = pair[1];
+    ++s->nignores;
     return NOCT_OK;
 }
 

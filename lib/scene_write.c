@@ -116,10 +116,15 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             const scene_key *k = &s->keys[o->first_key + j];
             fprintf(f, "key %" PRIu64, k->k.tick);
             nums(f, k->k.x.p, 3);
-            turn(f, "rotate", &k->turn);
+            turn(f, k->by ? "turn" : "rotate", &k->turn);
             fprintf(f, "\n");
         }
     }
+    for (size_t i = 0; i < s->nignores; ++i)
+        fprintf(f, "ignore %s %s\n", s->objects[s->ignores[i][0]].name,
+                s->objects[s->ignores[i][1]].name);
+    if (s->ignore_initial)
+        fprintf(f, "ignore initial\n");
     /* Last: the keys and walls lines above turn effects on, and this line
      * replaces them all with the scene's. */
     static const struct {

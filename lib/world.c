@@ -113,6 +113,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->placed);
     noct_world_free_sweeps(w);
     noct_world_free_tracks(w);
+    free(w->ignored.key);
     free(w->contacts);
     free(w);
 }

@@ -13,6 +13,7 @@
  *   world_events.c   the event records, sensors and the response
  *   world_near.c     the margin's near pairs
  *   world_track.c    keyframe tracks
+ *   world_ignore.c   the pairs the program ignores
  *   world_query.c    the queries (query.h)
  *   world_contact.c  the colliding pairs' contacts, on request
  *   world_distance.c the distance queries (query.h) and the near pairs'
@@ -172,6 +173,7 @@ typedef struct noct_sweeps {
 typedef struct noct_track {
     uint32_t slot;
     noctKeyframe *keys;
+    noctKeyTurn *turns; /* owned; NULL: the shorter arcs */
     size_t n;
 } noct_track;
 
@@ -184,6 +186,14 @@ typedef struct noct_tracks {
     uint32_t *of;          /* capof entries */
     uint32_t capof;
 } noct_tracks;
+
+/* The pairs the program ignores (noctWorldIgnorePair(); world_ignore.c):
+ * their keys (lower slot << 32 | higher slot), sorted, without repeats;
+ * NULL until the first. */
+typedef struct noct_ignored {
+    uint64_t *key;
+    size_t n, cap;
+} noct_ignored;
 
 /* What a stage that places objects before the motion (spin, tracks)
  * changed of one object, for a failed step to give back: its quaternion,
@@ -219,6 +229,7 @@ struct noctWorld {
     noct_spin spin;
     noct_margins margins;
     noct_tracks tracks;
+    noct_ignored ignored;
     noct_sweeps sweeps;
     noct_placed *placed;   /* this step's placements (spin, tracks) */
     uint32_t nplaced, capplaced;
@@ -371,6 +382,33 @@ bool noct_world_sweeps_enable(noctWorld *w);
 
 /* The continuous level on a pair over the step under way: its verdict. */
 noctStatus noct_world_sweep_pair(noctWorld *w, uint32_t a, uint32_t b, bool *colliding);
+
+/* ---- world_ignore.c -------------------------------------------------------------- */
+
+static inline uint64_t noct_ignored_key(uint32_t a, uint32_t b)
+{
+    return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+}
+
+/* Is the pair of slots a and b ignored? (A binary search: call it only
+ * when w->ignored.n > 0.) */
+static inline bool noct_world_ignored(const noctWorld *w, uint32_t a, uint32_t b)
+{
+    const uint64_t k = noct_ignored_key(a, b);
+    const uint64_t *key = w->ignored.key;
+    size_t lo = 0, hi = w->ignored.n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (key[mid] < k)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < w->ignored.n && key[lo] == k;
+}
+
+/* Object s is gone: the pairs of its slot are no longer ignored. */
+void noct_world_forget_ignored(noctWorld *w, uint32_t s);
 
 /* ---- world_track.c --------------------------------------------------------------- */
 

@@ -37,6 +37,7 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
     const bool exact = level == NOCT_ACCURACY_EXACT || level == NOCT_ACCURACY_CONTINUOUS;
     double(*start)[3] = w->sweeps.start; /* continuous: NULL otherwise */
     const bool sensors = w->nsensors > 1; /* two sensors never pair */
+    const bool ignoring = w->ignored.n > 0;
     for (size_t i = 0; i < n; ++i) {
         if (i + 16 < n)
             for (int s = 0; s < 2; ++s) {
@@ -57,6 +58,8 @@ noctStatus noct_world_narrow(noctWorld *w, const noct_pair_list *tested,
             }
         uint32_t ia = p[i].a.index, ib = p[i].b.index;
         if (sensors && obj[ia].sensor && obj[ib].sensor)
+            continue;
+        if (ignoring && noct_world_ignored(w, ia, ib))
             continue;
         bool hit;
         int d = 0;

@@ -310,7 +310,8 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         for (size_t k = 0; k < p.n; ++k) {
             const uint32_t j = p.s[k];
             const double d = m != NULL ? W + (mi + m[j]) : W;
-            if (w->obj[j].sensor || !near(w, i, j, d))
+            if (w->obj[j].sensor || (w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
+                !near(w, i, j, d))
                 continue;
             const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
             if (!noct_pairs_push(&e->now, pair)) {

@@ -70,6 +70,7 @@ void noct_world_drop_track(noctWorld *w, uint32_t s)
         return;
     const uint32_t i = t->of[s];
     free(t->list[i].keys);
+    free(t->list[i].turns);
     t->of[s] = UINT32_MAX;
     /* the last track takes its place */
     if (i != --t->n) {
@@ -537,6 +538,7 @@ noctStatus noctWorldRemove(noctWorld *w, noctObjectId id, noctError *err)
     noct_turn_free(w->turn[id.index]);
     w->turn[id.index] = NULL;
     noct_world_drop_track(w, id.index);
+    noct_world_forget_ignored(w, id.index);
     /* The lists stay: the colliding one holds its pairs, which the next
      * step's diff ends. */
     return NOCT_OK;

@@ -25,7 +25,23 @@ static double lerp(double a, double b, double s)
     return x + y;
 }
 
-void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransform *x)
+/* Does turn t give an axis? */
+static bool has_axis(const noctKeyTurn *t)
+{
+    return t->axis[0] != 0 || t->axis[1] != 0 || t->axis[2] != 0;
+}
+
+/* Keyframe k0's rotation turned about t's axis through the fraction s of
+ * its angle (noctTrackAtTurns()). */
+static noctQuat turned(const noctQuat *q0, const noctKeyTurn *t, double s)
+{
+    noctQuat r;
+    noctQuatFromAxisAngle(t->axis, s * t->degrees, &r); /* checked when set */
+    return noctQuatCompose(&r, q0);
+}
+
+void noctTrackAtTurns(const noctKeyframe *keys, const noctKeyTurn *turns, size_t n,
+                      uint64_t tick, noctTransform *x)
 {
     NOCT_REQUIRE(keys != NULL && n > 0 && x != NULL);
     if (tick <= keys[0].tick) {
@@ -53,7 +69,15 @@ void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransfor
     const double s = (double)(tick - k0->tick) / (double)(k1->tick - k0->tick);
     for (int c = 0; c < 3; ++c)
         x->p[c] = lerp(k0->x.p[c], k1->x.p[c], s);
-    x->q = noct_quat_slerp(&k0->x.q, &k1->x.q, s);
+    if (turns != NULL && has_axis(&turns[lo + 1]))
+        x->q = turned(&k0->x.q, &turns[lo + 1], s);
+    else
+        x->q = noct_quat_slerp(&k0->x.q, &k1->x.q, s);
+}
+
+void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransform *x)
+{
+    noctTrackAtTurns(keys, NULL, n, tick, x);
 }
 
 /* ---- the world's tracks ----------------------------------------------------------- */
@@ -90,15 +114,49 @@ static bool reserve_of(noctWorld *w)
 
 void noct_world_free_tracks(noctWorld *w)
 {
-    for (uint32_t i = 0; i < w->tracks.n; ++i)
+    for (uint32_t i = 0; i < w->tracks.n; ++i) {
         free(w->tracks.list[i].keys);
+        free(w->tracks.list[i].turns);
+    }
     free(w->tracks.list);
     free(w->tracks.of);
     memset(&w->tracks, 0, sizeof w->tracks);
 }
 
+/* Does turn t lead from keyframe a's rotation to b's, less than half a
+ * turn a tick? */
+static noctStatus check_turn(const noctKeyframe *a, const noctKeyframe *b, const noctKeyTurn *t,
+                             size_t k, noctError *err)
+{
+    for (int c = 0; c < 3; ++c)
+        if (!isfinite(t->axis[c]))
+            return noct_fail(err, NOCT_ERR_NONFINITE, (long)k, 0,
+                             "keyframe %zu: the turn's axis is not finite", k);
+    if (!isfinite(t->degrees))
+        return noct_fail(err, NOCT_ERR_NONFINITE, (long)k, 0,
+                         "keyframe %zu: the turn's angle is not finite", k);
+    const double ticks = (double)(b->tick - a->tick);
+    if (!(fabs(t->degrees) < 180 * ticks))
+        return noct_fail(err, NOCT_ERR_INVALID, (long)k, 0,
+                         "keyframe %zu: a turn of %g degrees in %.0f ticks is half a turn a "
+                         "tick or more", k, t->degrees, ticks);
+    const noctQuat q = turned(&a->x.q, t, 1);
+    const double d = q.x * b->x.q.x + q.y * b->x.q.y + q.z * b->x.q.z + q.w * b->x.q.w;
+    if (!(fabs(d) >= 1 - 0x1p-30))
+        return noct_fail(err, NOCT_ERR_INVALID, (long)k, 0,
+                         "keyframe %zu: turning keyframe %zu's rotation by %g degrees about "
+                         "the axis does not give its rotation", k, k - 1, t->degrees);
+    return NOCT_OK;
+}
+
 noctStatus noctWorldSetTrack(noctWorld *w, noctObjectId id, const noctKeyframe *keys, size_t n,
                              noctError *err)
+{
+    return noctWorldSetTrackTurns(w, id, keys, NULL, n, err);
+}
+
+noctStatus noctWorldSetTrackTurns(noctWorld *w, noctObjectId id, const noctKeyframe *keys,
+                                  const noctKeyTurn *turns, size_t n, noctError *err)
 {
     NOCT_REQUIRE(w != NULL && (keys != NULL || n == 0));
     if (!live(w, id))
@@ -123,26 +181,41 @@ noctStatus noctWorldSetTrack(noctWorld *w, noctObjectId id, const noctKeyframe *
             }
             return st;
         }
+        if (k > 0 && turns != NULL && has_axis(&turns[k]) &&
+            (st = check_turn(&keys[k - 1], &keys[k], &turns[k], k, err)) != NOCT_OK)
+            return st;
     }
+    /* turns that give no axis anywhere: none kept */
+    bool any = false;
+    for (size_t k = 1; turns != NULL && k < n && !any; ++k)
+        any = has_axis(&turns[k]);
     noct_tracks *t = &w->tracks;
     noctKeyframe *copy = malloc(n * sizeof *copy);
-    if (copy == NULL || !reserve_of(w)) {
+    noctKeyTurn *tcopy = any ? malloc(n * sizeof *tcopy) : NULL;
+    if (copy == NULL || (any && tcopy == NULL) || !reserve_of(w)) {
         free(copy);
+        free(tcopy);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     memcpy(copy, keys, n * sizeof *copy);
+    if (any) {
+        memcpy(tcopy, turns, n * sizeof *tcopy);
+        tcopy[0] = (noctKeyTurn){{0, 0, 0}, 0};
+    }
     uint32_t i = t->of[s];
     if (i == UINT32_MAX && !grow_tracks(&t->list, &t->cap, t->cap > 0 ? t->n + 1 : 8)) {
         free(copy);
+        free(tcopy);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
     /* Placed now, at the current tick: as a teleport, through the
      * set-transform path (which checks the pose against the shape). */
     noctTransform x;
-    noctTrackAt(copy, n, w->tick, &x);
+    noctTrackAtTurns(copy, tcopy, n, w->tick, &x);
     noctStatus st = noctWorldSetTransform(w, id, &x, err);
     if (st != NOCT_OK) {
         free(copy);
+        free(tcopy);
         return st;
     }
     if (i == UINT32_MAX) {
@@ -151,8 +224,10 @@ noctStatus noctWorldSetTrack(noctWorld *w, noctObjectId id, const noctKeyframe *
         t->list[i].slot = s;
     } else {
         free(t->list[i].keys);
+        free(t->list[i].turns);
     }
     t->list[i].keys = copy;
+    t->list[i].turns = tcopy;
     t->list[i].n = n;
     return NOCT_OK;
 }
@@ -169,6 +244,15 @@ size_t noctWorldGetTrack(const noctWorld *w, noctObjectId id, const noctKeyframe
     return tr->n;
 }
 
+size_t noctWorldGetTrackTurns(const noctWorld *w, noctObjectId id, const noctKeyTurn **turns)
+{
+    NOCT_REQUIRE(w != NULL && turns != NULL);
+    const noctKeyframe *keys;
+    const size_t n = noctWorldGetTrack(w, id, &keys);
+    *turns = n > 0 ? w->tracks.list[w->tracks.of[id.index]].turns : NULL;
+    return *turns != NULL ? n : 0;
+}
+
 uint64_t noctWorldTick(const noctWorld *w)
 {
     NOCT_REQUIRE(w != NULL);
@@ -183,7 +267,7 @@ noctStatus noct_world_stage_tracks(noctWorld *w, uint64_t tick, noctError *err)
         const noct_track *tr = &t->list[i];
         const uint32_t s = tr->slot;
         noctTransform x;
-        noctTrackAt(tr->keys, tr->n, tick, &x);
+        noctTrackAtTurns(tr->keys, tr->turns, tr->n, tick, &x);
         noctStatus st = noct_world_place(w, s, &x.q, x.p, err);
         if (st != NOCT_OK) {
             if (err != NULL) {

@@ -704,6 +704,12 @@ static void same_runs(const noctScene *a, const noctScene *b)
     ck_assert_int_eq(noctSceneBuild(b, &wb, &err), NOCT_OK);
     const size_t n = noctWorldObjectCount(wa);
     ck_assert_uint_eq(noctWorldObjectCount(wb), n);
+    /* the same pairs ignored (scene files' ignore lines) */
+    ck_assert(noctSceneIgnoresInitial(a) == noctSceneIgnoresInitial(b));
+    for (uint32_t i = 0; i < n && n <= 200; ++i)
+        for (uint32_t j = i + 1; j < n; ++j)
+            ck_assert(noctWorldPairIgnored(wa, (noctObjectId){i, 1}, (noctObjectId){j, 1}) ==
+                      noctWorldPairIgnored(wb, (noctObjectId){i, 1}, (noctObjectId){j, 1}));
     for (int step = 0; step < noctSceneSteps(a); ++step) {
         ck_assert_int_eq(noctWorldStep(wa, &err), NOCT_OK);
         ck_assert_int_eq(noctWorldStep(wb, &err), NOCT_OK);
@@ -724,7 +730,10 @@ static void same_runs(const noctScene *a, const noctScene *b)
                 double ma, mb;
                 ck_assert_int_eq(noctWorldGetMargin(wa, (noctObjectId){i, 1}, &ma), NOCT_OK);
                 ck_assert_int_eq(noctWorldGetMargin(wb, (noctObjectId){i, 1}, &mb), NOCT_OK);
-                ck_assert(memcmp(&ma, &mb, sizeof ma) == 0);
+                ck_assert(memcmp(&ma, &mb, sizeof ma) == 0);                const noctKeyTurn *ta, *tb;
+                const size_t nt = noctWorldGetTrackTurns(wa, (noctObjectId){i, 1}, &ta);
+                ck_assert_uint_eq(noctWorldGetTrackTurns(wb, (noctObjectId){i, 1}, &tb), nt);
+                ck_assert(nt == 0 || memcmp(ta, tb, nt * sizeof *ta) == 0);
             }
     }
     noctWorldDestroy(wa);
@@ -747,6 +756,8 @@ START_TEST(scenes_written_read_back)
              "object a 0 0 5 velocity 1e-3 0 0 type moving spin 0 0 1 7.5 margin 0.1\n"
              "object f 1 1 1 name _keyed-1 margin 1e-300\n"
              "key 0 1 1 1\nkey 7 2 1.5 1 rotate 0 1 0 33.3\nkey 20 -1 0 0\n"
+             "key 30 -1 0 0 turn 0 0 1 270\nkey 31 -1 0 0 turn 1 1 0 -179.5\n"
+             "ignore _keyed-1 the.sensor\nignore initial\n"
              "effects motion events response walls spin track\n",
              off);
     const char *path = write_text("all.scene", text);
@@ -789,7 +800,9 @@ START_TEST(scenes_written_read_back)
                 " spin 0 0 1 7.5 margin 0.1\n",
                 "object f 1 1 1 type kinematic margin 1e-300 name _keyed-1\n",
                 "key 7 2 1.5 1 rotate 0 1 0 33.3\n",
-                "key 20 -1 0 0\n", "effects motion events response walls spin track\n"};
+                "key 20 -1 0 0\n", "key 30 -1 0 0 turn 0 0 1 270\n",
+                "key 31 -1 0 0 turn 1 1 0 -179.5\n", "ignore _keyed-1 the.sensor\n",
+                "ignore initial\n", "effects motion events response walls spin track\n"};
             for (size_t k = 0; k < sizeof LINES / sizeof *LINES; ++k)
                 ck_assert_msg(strstr(t1, LINES[k]) != NULL, "'%s' not in:\n%s", LINES[k], t1);
         }

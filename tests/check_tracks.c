@@ -5,7 +5,9 @@
  * spherical interpolation); worlds whose objects follow tracks, their
  * poses after every step and their events against a brute force of the
  * narrowphase on every pair, the same in every maintenance mode; a failed
- * step that gives the placements back; removal; bad input; scene files.
+ * step that gives the placements back; removal; bad input; scene files;
+ * keyframes' turns (noctKeyTurn) against closed forms, in the track API
+ * and through scene files (key ... turn).
  */
 #define _POSIX_C_SOURCE 200809L /* mkstemp(3), fdopen(3) */
 #include <check.h>
@@ -538,6 +540,190 @@ START_TEST(scene_keys)
 }
 END_TEST
 
+/* ---- turns ------------------------------------------------------------------------------ */
+
+#define PI_L 3.141592653589793238462643383279502884L
+
+/* Does q turn (1, 0, 0) to (cos a, sin a, 0) and keep z, for a in
+ * degrees (the closed form of a turn about z)? */
+static void turned_by(const noctQuat *q, long double degrees, const char *where)
+{
+    double R[9];
+    ck_assert_int_eq(noctQuatToMatrix(q, R, NULL), NOCT_OK);
+    const long double a = degrees * PI_L / 180;
+    const double want[9] = {(double)cosl(a), (double)-sinl(a), 0, (double)sinl(a),
+                            (double)cosl(a), 0, 0, 0, 1};
+    for (int k = 0; k < 9; ++k)
+        ck_assert_msg(fabs(R[k] - want[k]) < 1e-12, "%s: entry %d is %.17g, want %.17g (%Lg "
+                      "degrees)", where, k, R[k], want[k], degrees);
+}
+
+/* A key of 270 degrees about z after one of 0: with a turn, the object
+ * turns through 270 (90 at a third of the time, 180 at two thirds, 67.5
+ * and 135 at a quarter and half); without, the shorter arc, -90. */
+START_TEST(turns_honour_the_angle)
+{
+    noctKeyframe k[3] = {{0, noctIdentityTransform()}, {300, noctIdentityTransform()},
+                         {308, noctIdentityTransform()}};
+    const double z[3] = {0, 0, 1};
+    ck_assert_int_eq(noctQuatFromAxisAngle(z, 270, &k[1].x.q), NOCT_OK);
+    k[2].x.q = k[1].x.q; /* then twice round in 8 ticks: back where it was */
+    const noctKeyTurn turns[3] = {{{0, 0, 0}, 0}, {{0, 0, 1}, 270}, {{0, 0, 2}, -720}};
+    static const struct { uint64_t tick; long double turn, shorter; } AT[] = {
+        {0, 0, 0},          {75, 67.5L, -22.5L}, {100, 90, -30},    {150, 135, -45},
+        {200, 180, -60},    {300, 270, -90},     {301, 180, -90},   {302, 90, -90},
+        {304, -90, -90},    {306, 90, -90},      {308, 270, -90},   {400, 270, -90}};
+    for (size_t i = 0; i < sizeof AT / sizeof *AT; ++i) {
+        noctTransform x;
+        char where[64];
+        noctTrackAtTurns(k, turns, 3, AT[i].tick, &x);
+        snprintf(where, sizeof where, "turn, tick %llu", (unsigned long long)AT[i].tick);
+        turned_by(&x.q, AT[i].turn, where);
+        noctTrackAt(k, 3, AT[i].tick, &x);
+        snprintf(where, sizeof where, "shorter arc, tick %llu", (unsigned long long)AT[i].tick);
+        turned_by(&x.q, AT[i].shorter, where);
+        /* no turns: noctTrackAt() bit for bit */
+        noctTransform y;
+        noctTrackAtTurns(k, NULL, 3, AT[i].tick, &y);
+        ck_assert(memcmp(&x, &y, sizeof x) == 0);
+    }
+    /* a world: the object's poses after each step, the same */
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_TRACK;
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = 1;
+    d.half_extents[1] = d.half_extents[2] = 0.1;
+    d.type = NOCT_OBJECT_KINEMATIC;
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, NULL), NOCT_OK);
+    noctError err;
+    ck_assert_msg(noctWorldSetTrackTurns(w, id, k, turns, 3, &err) == NOCT_OK, "%s",
+                  err.message);
+    const noctKeyTurn *kept;
+    ck_assert_uint_eq(noctWorldGetTrackTurns(w, id, &kept), 3);
+    ck_assert(memcmp(&kept[1], &turns[1], 2 * sizeof *kept) == 0);
+    for (uint64_t t = 1; t <= 310; ++t) {
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        noctTransform x, want;
+        ck_assert_int_eq(noctWorldGetTransform(w, id, &x), NOCT_OK);
+        noctTrackAtTurns(k, turns, 3, t, &want);
+        ck_assert(memcmp(&x.q, &want.q, sizeof x.q) == 0);
+        if (t == 100 || t == 200) {
+            char where[32];
+            snprintf(where, sizeof where, "world, step %llu", (unsigned long long)t);
+            turned_by(&x.q, t == 100 ? 90 : 180, where);
+        }
+    }
+    /* set again without turns: none kept */
+    ck_assert_int_eq(noctWorldSetTrack(w, id, k, 3, NULL), NOCT_OK);
+    ck_assert_uint_eq(noctWorldGetTrackTurns(w, id, &kept), 0);
+    ck_assert_ptr_null(kept);
+    noctWorldDestroy(w);
+}
+END_TEST
+
+START_TEST(bad_turns)
+{
+    tracked t;
+    build(&t, NOCT_MAINTAIN_INCREMENTAL, 3, NOCT_EFFECT_EVENTS | NOCT_EFFECT_TRACK);
+    const noctKeyframe *before;
+    const size_t nbefore = noctWorldGetTrack(t.w, t.id[0], &before);
+    noctKeyframe k[2] = {{0, noctIdentityTransform()}, {4, noctIdentityTransform()}};
+    const double z[3] = {0, 0, 1};
+    ck_assert_int_eq(noctQuatFromAxisAngle(z, 270, &k[1].x.q), NOCT_OK);
+    noctKeyTurn turns[2] = {{{0, 0, 0}, 0}, {{0, 0, 1}, 270}};
+    noctError err;
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[1], k, turns, 2, &err), NOCT_OK);
+    turns[1].axis[1] = NAN;
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err),
+                     NOCT_ERR_NONFINITE);
+    ck_assert_ptr_nonnull(strstr(err.message, "keyframe 1"));
+    turns[1] = (noctKeyTurn){{0, 0, 1}, INFINITY};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err),
+                     NOCT_ERR_NONFINITE);
+    /* 270 + 360 also ends at the key's rotation, but is 157.5 a tick; 720
+     * is 180 a tick, half a turn: too fast */
+    turns[1] = (noctKeyTurn){{0, 0, 1}, 630};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err), NOCT_OK);
+    turns[1] = (noctKeyTurn){{0, 0, 1}, 990};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_nonnull(strstr(err.message, "half a turn a tick"));
+    /* a turn that does not lead to the key's rotation */
+    turns[1] = (noctKeyTurn){{0, 0, 1}, 90};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err), NOCT_ERR_INVALID);
+    ck_assert_ptr_nonnull(strstr(err.message, "does not give its rotation"));
+    turns[1] = (noctKeyTurn){{1, 0, 0}, 270};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[0], k, turns, 2, &err), NOCT_ERR_INVALID);
+    /* turns[0] is not read */
+    turns[0] = (noctKeyTurn){{NAN, 0, 0}, NAN};
+    turns[1] = (noctKeyTurn){{0, 0, 1}, -90};
+    ck_assert_int_eq(noctWorldSetTrackTurns(t.w, t.id[2], k, turns, 2, &err), NOCT_OK);
+    /* the failures changed nothing: object 0 keeps its track, turns and all */
+    const noctKeyframe *after;
+    const noctKeyTurn *kept;
+    ck_assert_uint_eq(noctWorldGetTrack(t.w, t.id[0], &after), 2);
+    ck_assert_uint_eq(noctWorldGetTrackTurns(t.w, t.id[0], &kept), 2);
+    ck_assert(kept[1].degrees == 630);
+    (void)nbefore;
+    (void)before;
+    destroy(&t);
+}
+END_TEST
+
+/* The same 270 degrees through a scene file (key ... turn), and what
+ * turn lines may not do. */
+START_TEST(scene_turns)
+{
+    char *path = write_scene("steps 300\n"
+                             "mesh bar box 1 0.1 0.1\n"
+                             "object bar 0 0 0 name bar\n"
+                             "key 0 0 0 0\n"
+                             "key 300 0 0 0 turn 0 0 1 270  # three quarters round\n"
+                             "key 304 0 0 0 turn 0 0 1 -360\n");
+    noctScene *s;
+    noctError err;
+    ck_assert_msg(noctSceneRead(path, &s, &err) == NOCT_OK, "%s", err.message);
+    unlink(path);
+    noctWorld *w;
+    ck_assert_int_eq(noctSceneBuild(s, &w, &err), NOCT_OK);
+    noctObjectId bar = {0, 1};
+    const noctKeyframe *k;
+    ck_assert_uint_eq(noctWorldGetTrack(w, bar, &k), 3);
+    turned_by(&k[1].x.q, 270, "key 300");
+    turned_by(&k[2].x.q, -90, "key 304");
+    const noctKeyTurn *t;
+    ck_assert_uint_eq(noctWorldGetTrackTurns(w, bar, &t), 3);
+    ck_assert(t[1].degrees == 270 && t[2].degrees == -360);
+    for (int step = 1; step <= 304; ++step) {
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        noctTransform x;
+        ck_assert_int_eq(noctWorldGetTransform(w, bar, &x), NOCT_OK);
+        char where[32];
+        snprintf(where, sizeof where, "scene, step %d", step);
+        long double want = step <= 300 ? 270.0L * step / 300 : 270 - 90.0L * (step - 300);
+        if (step % 25 == 0 || step > 300)
+            turned_by(&x.q, want, where);
+    }
+    noctWorldDestroy(w);
+    noctSceneDestroy(s);
+
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0 turn 0 0 1 90\n",
+                NOCT_ERR_INVALID, ":3: a key's turn needs a key before it");
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0\nkey 2 0 0 0 turn 0 0 1 360\n",
+                NOCT_ERR_INVALID, ":4: a turn of 360 degrees in 2 ticks is half a turn a tick");
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0\nkey 2 0 0 0 turn 0 0 0 90\n",
+                NOCT_ERR_INVALID, ":4: a turn needs a non-zero axis");
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0\nkey 2 0 0 0 turn 0 0 1\n",
+                NOCT_ERR_PARSE, ":4: missing turn axis and angle");
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0\nkey 2 0 0 0 turn 0 0 1 inf\n",
+                NOCT_ERR_NONFINITE, ":4:");
+    scene_error("mesh c box 1 1 1\nobject c 0 0 0\nkey 0 0 0 0\nkey 2 0 0 0 turn 0 0 1 359\n",
+                NOCT_OK, NULL);
+}
+END_TEST
+
 static Suite *tracks_suite(void)
 {
     Suite *s = suite_create("tracks");
@@ -545,7 +731,8 @@ static Suite *tracks_suite(void)
     tcase_add_loop_test(tc, interpolation_against_the_formula, 0, 1);
     tcase_add_loop_test(tc, worlds_follow_their_tracks, 0, 1);
     add_tests(tc, without_the_effect_nothing_moves, a_failed_step_gives_the_placements_back,
-              removal_and_replacement, bad_tracks, scene_keys);
+              removal_and_replacement, bad_tracks, scene_keys, turns_honour_the_angle,
+              bad_turns, scene_turns);
     TCase *full = test_case(s, "tracks, full", 300, "slow");
     tcase_add_loop_test(full, interpolation_against_the_formula, 1, 2);
     tcase_add_loop_test(full, worlds_follow_their_tracks, 1, 2);

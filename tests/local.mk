@@ -15,6 +15,7 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-objects tests/check-objects-efficient \
 	tests/check-queries tests/check-queries-efficient \
 	tests/check-tracks tests/check-tracks-efficient \
+	tests/check-ignore tests/check-ignore-efficient \
 	tests/check-near tests/check-near-efficient \
 	tests/check-families tests/check-families-efficient \
 	tests/check-readers tests/check-readers-efficient \
@@ -164,6 +165,17 @@ tests_check_tracks_efficient_SOURCES = tests/check_tracks.c
 tests_check_tracks_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_tracks_efficient_CFLAGS = $(check_cflags)
 tests_check_tracks_efficient_LDADD = $(efficient_ldadd)
+
+# check-ignore: ignored pairs, and the pairs touching at the start against
+# a brute force of the narrowphase and of the boxes; scene files' ignore
+# lines.
+tests_check_ignore_SOURCES = tests/check_ignore.c
+tests_check_ignore_CFLAGS = $(check_cflags)
+tests_check_ignore_LDADD = $(check_ldadd)
+tests_check_ignore_efficient_SOURCES = tests/check_ignore.c
+tests_check_ignore_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_ignore_efficient_CFLAGS = $(check_cflags)
+tests_check_ignore_efficient_LDADD = $(efficient_ldadd)
 
 # check-near: the margin and the near queries against the test's own
 # distances between the ideal solids (testgeom).
@@ -315,6 +327,7 @@ EXTRA_DIST += tests/fuzz/README.md tests/fuzz/run.sh tests/fuzz/fuzz.h \
 	tests/fuzz/stl.dict tests/fuzz/ply.dict \
 	tests/fuzz/corpus/scene/coincident.scene \
 	tests/fuzz/corpus/scene/every-statement.scene \
+	tests/fuzz/corpus/scene/turn-ignore.scene \
 	tests/fuzz/corpus/scene/two-cubes.scene \
 	tests/fuzz/corpus/scene/walls-late.scene \
 	tests/fuzz/corpus/off/cube.off tests/fuzz/corpus/off/dented.off \

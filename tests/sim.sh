@@ -507,4 +507,65 @@ check "--contacts: the overlap's four corners at x = 0.375" \
 check "--contacts: one contact, for the one colliding pair" \
     [ "$(grep -c ' contact ' "$tmp/contact.out")" -eq 1 ]
 
+# --ignore-initial: arms-3.scene's arms touch from step 1 (above). Without
+# the pairs that touch at the start, --first gives the first contact
+# that begins later: as the plain run's events have it, the first begin
+# of a pair that did not begin at step 1.
+want=$(awk '$2 == "begin" && $1 == 1 { start[$3 " " $4] = 1 }
+            $2 == "begin" && $1 > 1 && !(($3 " " $4) in start) {
+                print "first collision at step " $1 ": objects " $3 " and " $4; exit }' \
+       "$tmp/file.events")
+check "arms-3: a contact begins after step 1" [ -n "$want" ]
+"$sim" --quiet --first --ignore-initial "$scenes/arms-3.scene" > "$tmp/ign.out" 2>&1
+check "--first --ignore-initial: arms-3's first new contact ($want)" \
+    grep -q "^$want, contact box " "$tmp/ign.out"
+"$sim" --quiet --events --ignore-initial "$scenes/arms-3.scene" > "$tmp/ign.events" 2>&1
+check "--ignore-initial: no event of the pairs touching at the start" \
+    sh -c "! grep -q ' 16 19\$' '$tmp/ign.events' && grep -q '^34 begin 0 16\$' '$tmp/ign.events'"
+"$sim" --ignore-initial --scene arms:1 --write-scene - > "$tmp/ign.scene" 2>&1
+check "--ignore-initial --write-scene: the scene says 'ignore initial'" \
+    grep -qx 'ignore initial' "$tmp/ign.scene"
+
+# turntable.scene: an arm (a bar 4 long, 0.2 wide) turns 270 degrees about
+# z through a key's turn, 1 degree a step, and meets an upright post (0.5
+# square, at x 0.75, y 1.3). The steps where they overlap, by the
+# separating axes of the two rectangles (the heights overlap throughout);
+# with 'rotate' for 'turn', the short way (-90) never meets the post.
+tt="$scenes/turntable.scene"
+awk 'BEGIN {
+    pi = atan2(0, -1); cx = 0.75; cy = 1.3; was = 0
+    for (s = 1; s <= 300; ++s) {
+        t = (s < 270 ? s : 270) * pi / 180
+        ux = cos(t); uy = sin(t); vx = -uy; vy = ux
+        hit = 1
+        for (k = 0; k < 4; ++k) {
+            if (k == 0) { ax = ux; ay = uy } else if (k == 1) { ax = vx; ay = vy }
+            else if (k == 2) { ax = 1; ay = 0 } else { ax = 0; ay = 1 }
+            d = cx * ax + cy * ay; if (d < 0) d = -d
+            rb = 2 * abs(ux * ax + uy * ay) + 0.1 * abs(vx * ax + vy * ay)
+            rp = 0.25 * (abs(ax) + abs(ay))
+            if (d > rb + rp) hit = 0
+        }
+        if (hit && !was) print s " begin post arm"
+        if (!hit && was) print s " end post arm"
+        was = hit
+    }
+}
+function abs(x) { return x < 0 ? -x : x }' > "$tmp/tt.want"
+"$sim" --quiet --events "$tt" > "$tmp/tt.events" 2>&1
+grep ' post arm$' "$tmp/tt.events" > "$tmp/tt.got"
+check "turntable: the arm meets the post at the steps the separating axes say" \
+    sh -c "[ -s '$tmp/tt.want' ] && cmp -s '$tmp/tt.want' '$tmp/tt.got'"
+check "turntable: the hub and the post stand on the floor; the hinge is ignored" \
+    sh -c "grep -q '^1 begin floor hub\$' '$tmp/tt.events' && ! grep -q 'hub arm' '$tmp/tt.events'"
+first=$(awk 'NR == 1 { print $1 }' "$tmp/tt.want")
+expect_run 0 '^first collision at step 1: objects floor and hub' --quiet --first "$tt"
+expect_run 0 "^first collision at step $first: objects post and arm" \
+    --quiet --first --ignore-initial "$tt"
+sed 's/turn 0 0 1 270/rotate 0 0 1 270/' "$tt" > "$tmp/short.scene"
+expect_run 0 '^no collision in 300 steps$' --quiet --first --ignore-initial "$tmp/short.scene"
+"$sim" --write-scene - "$tt" > "$tmp/tt.written" 2>&1
+check "turntable: written back with its turn and its ignore line" \
+    sh -c "grep -qx 'key 270 0 0 0.6 turn 0 0 1 270' '$tmp/tt.written' && grep -qx 'ignore arm hub' '$tmp/tt.written'"
+
 finish sim

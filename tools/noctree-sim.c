@@ -54,6 +54,9 @@ static const char usage[] =
     "  --output FILE         write the report to FILE, not standard output\n"
     "  --first               stop at the first step with a colliding pair and say\n"
     "                        which objects and their bounding boxes' intersection\n"
+    "  --ignore-initial      ignore the pairs colliding at the start (resting\n"
+    "                        contact): events, reports and --first see only the\n"
+    "                        contacts that begin later\n"
     "  --write-scene FILE    write the scene, with the options above applied, as a\n"
     "                        scene file (- for standard output) and run nothing\n"
     "  --quiet               no progress bar\n"
@@ -465,7 +468,7 @@ int main(int argc, char **argv)
                *opt_maint = NULL;
     long steps = 0;
     bool events = false, quiet = false, substep = false, first = false, contacts = false;
-    bool near_distances = false;
+    bool near_distances = false, ignore_initial = false;
     const char *dist_arg[2] = {NULL, NULL}; /* --distance A B */
     const char *write_scene = NULL;
     double margin = -1; /* --margin, if given */
@@ -486,6 +489,8 @@ int main(int argc, char **argv)
             substep = true;
         } else if (strcmp(a, "--first") == 0) {
             first = true;
+        } else if (strcmp(a, "--ignore-initial") == 0) {
+            ignore_initial = true;
         } else if (strcmp(a, "--near-distances") == 0) {
             near_distances = true;
         } else if (strcmp(a, "--distance") == 0 && i + 2 < argc) {
@@ -579,6 +584,8 @@ int main(int argc, char **argv)
     }
     if (substep)
         def->effects |= NOCT_EFFECT_SUBSTEP;
+    if (ignore_initial)
+        noctSceneSetIgnoreInitial(scene, true);
     if (margin >= 0)
         def->margin = margin;
     int nsteps = steps > 0 ? (int)steps : noctSceneSteps(scene);

@@ -111,8 +111,9 @@ NOCT_API noctStatus noctSceneFamily(const char *spec, noctScene **scene,
  *       the steps, every mesh (a mesh read from a file by the path it was
  *       opened by), object, key and family, every number written so that
  *       it reads back bit for bit (rotations as the axis and degrees they
- *       were given by, so that they make the same quaternions), the
- *       objects' margins and names included.
+ *       were given by, so that they make the same quaternions; keys'
+ *       turns as turns), the objects' margins and names, the `ignore`
+ *       lines and `ignore initial` included.
  * @return #NOCT_OK, or #NOCT_ERR_IO if writing failed (the message says
  *         why).
  */
@@ -143,6 +144,12 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
 
 /**
  * @brief Build a world from the scene.
+ *
+ * The world gets the scene's objects and their tracks
+ * (noctWorldSetTrackTurns() for keys with turns), then the pairs of its
+ * `ignore NAME NAME` lines are ignored (noctWorldIgnorePair()), and last,
+ * with `ignore initial` (noctSceneSetIgnoreInitial()), the pairs touching
+ * (noctWorldIgnoreTouching()).
  * @param[in]  scene The scene; must outlive the world.
  * @param[out] world Receives the new world on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.
@@ -154,6 +161,29 @@ NOCT_API int noctSceneSteps(const noctScene *scene);
  */
 NOCT_API noctStatus noctSceneBuild(const noctScene *scene, noctWorld **world,
                                    noctError *err);
+
+/**
+ * @brief Make the worlds built from the scene ignore, or not, the pairs
+ *        touching at the start (noctree-scene(5): `ignore initial`).
+ *
+ * With it, noctSceneBuild() calls noctWorldIgnoreTouching() on the world
+ * it built, after its objects, tracks and `ignore NAME NAME` lines: the
+ * steps report only the contacts that begin after the start.
+ * @param[in] scene  A scene.
+ * @param[in] ignore Whether to ignore them.
+ * @pre @p scene is not NULL.
+ * @post noctSceneIgnoresInitial(scene) == ignore, and noctSceneWrite()
+ *       writes the line when it is true.
+ */
+NOCT_API void noctSceneSetIgnoreInitial(noctScene *scene, bool ignore);
+
+/**
+ * @brief Does the scene ignore the pairs touching at the start?
+ * @param[in] scene A scene.
+ * @pre @p scene is not NULL.
+ * @return Whether it does (`ignore initial`, noctSceneSetIgnoreInitial()).
+ */
+NOCT_API bool noctSceneIgnoresInitial(const noctScene *scene);
 
 /** Longest object name, in bytes (noctree-scene(5), `name`). */
 #define NOCT_SCENE_NAME_MAX 64

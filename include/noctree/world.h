@@ -16,7 +16,10 @@
  * between steps (noctWorldSetTransform(), noctWorldSetVelocity(), ...);
  * the next step sees the new state, and the events follow every change:
  * a pair that a removal, a teleport, a filter or a sensor flag parted ends
- * at the next step, and one they brought together begins there. A world
+ * at the next step, and one they brought together begins there. Pairs
+ * that filters cannot single out can be ignored one by one
+ * (noctWorldIgnorePair(); noctWorldIgnoreTouching() for every pair in
+ * resting contact). A world
  * without the motion effect only detects: the program places its objects
  * and steps. noctWorldStep() runs one step:
  * 1. **motion** (effect #NOCT_EFFECT_MOTION): each moving object with a
@@ -718,7 +721,9 @@ typedef struct noctKeyframe {
  *   b q_k+1` with `a = 1 - s, b = s` when d > 0.9995 (nearly the same
  *   rotation), else `a = sin((1 - s) t) / sin(t)`, `b = sin(s t) / sin(t)`
  *   for `t = acos(d)` (the C library's acos and sin), then divided by
- *   `fl(sqrt(((x x + y y) + z z) + w w))` of itself.
+ *   `fl(sqrt(((x x + y y) + z z) + w w))` of itself. The shorter arc
+ *   turns through half a turn at most; noctTrackAtTurns() turns through
+ *   the angle a keyframe gives (noctKeyTurn).
  *
  * So the same keyframes give the same poses on every run, in both builds;
  * across C libraries the rotations between keyframes may differ in their
@@ -732,6 +737,92 @@ typedef struct noctKeyframe {
  * @param x receives the pose.
  */
 NOCT_API void noctTrackAt(const noctKeyframe *keys, size_t n, uint64_t tick, noctTransform *x);
+
+/**
+ * @brief How an object turns from one keyframe to the next when the
+ *        shorter arc is not what is meant (noctWorldSetTrackTurns()).
+ *
+ * The shorter arc, which noctTrackAt() takes, turns through at most half
+ * a turn: a key of 270 degrees after one of 0 turns by -90. A turn says
+ * the angle itself, any number of turns either way.
+ */
+typedef struct noctKeyTurn {
+    double axis[3]; /**< The axis, in the world's frame (its length does not
+                         matter); all zero: no turn given, the shorter
+                         arc. */
+    double degrees; /**< The angle the object turns through about it,
+                         counterclockwise seen from its tip (720: twice
+                         round). */
+} noctKeyTurn;
+
+/**
+ * @brief Where a track with turns puts an object at a tick.
+ *
+ * As noctTrackAt(), except between keyframes k - 1 and k when turns[k]
+ * has an axis: there the rotation is `noctQuatCompose(r, q_k-1)` for `r =
+ * noctQuatFromAxisAngle(axis, fl(s degrees))`, the rotation of keyframe
+ * k - 1 turned about the axis through the fraction s of the angle (at a
+ * keyframe's tick, still that keyframe's transform bit for bit). So the
+ * object turns at a steady rate through the whole angle, and arrives at
+ * keyframe k's rotation within the rounding that noctWorldSetTrackTurns()
+ * allows.
+ * @pre keys != NULL && n > 0 && x != NULL; the keyframes' ticks increase,
+ *      their quaternions are unit, and the turns' axes and angles finite
+ *      (as noctWorldSetTrackTurns() checks).
+ * @post *x is the pose at tick; with turns == NULL, noctTrackAt()'s.
+ * @param keys the keyframes, in order of tick.
+ * @param turns per keyframe, how the object turns from the one before it
+ *        (turns[0] is not read), or NULL for the shorter arc everywhere.
+ * @param n how many keyframes.
+ * @param tick the tick.
+ * @param x receives the pose.
+ */
+NOCT_API void noctTrackAtTurns(const noctKeyframe *keys, const noctKeyTurn *turns, size_t n,
+                               uint64_t tick, noctTransform *x);
+
+/**
+ * @brief Make an object follow a track whose keyframes say how it turns
+ *        (noctKeyTurn), or none.
+ *
+ * As noctWorldSetTrack(), with the poses of noctTrackAtTurns(). A turn
+ * must lead where its keyframe says: the rotation of keyframe k - 1,
+ * turned about turns[k]'s axis through its angle, is keyframe k's within
+ * rounding (their quaternions' dot product at least 1 - 2^-30 in
+ * magnitude: a few 1e-5 radians). And it must turn less than half a turn
+ * a tick (|degrees| < 180 (t_k - t_k-1)), so that each step's turn is the
+ * shorter arc between its poses, which continuous detection follows.
+ * @pre world != NULL && (keys != NULL || n == 0)
+ * @post As noctWorldSetTrack(); the world keeps a copy of the turns too.
+ * @param world the world.
+ * @param id the object.
+ * @param keys its keyframes, in strictly increasing order of tick.
+ * @param turns per keyframe, how the object turns from the one before it
+ *        (turns[0] is not read), or NULL: then as noctWorldSetTrack().
+ * @param n how many (0: no track).
+ * @param err receives the details of a failure; may be NULL.
+ * @return as noctWorldSetTrack(); #NOCT_ERR_NONFINITE for a turn's axis
+ *         or angle that is not finite, #NOCT_ERR_INVALID for a turn that
+ *         does not lead to its keyframe's rotation or turns half a turn a
+ *         tick or more (the message names the keyframe).
+ */
+NOCT_API noctStatus noctWorldSetTrackTurns(noctWorld *world, noctObjectId id,
+                                           const noctKeyframe *keys, const noctKeyTurn *turns,
+                                           size_t n, noctError *err);
+
+/**
+ * @brief An object's track's turns (noctWorldSetTrackTurns()).
+ * @pre world != NULL && turns != NULL
+ * @post *turns points at the world's copy of the turns, one per keyframe
+ *       (valid as noctWorldGetTrack()'s keyframes are), or NULL when the
+ *       object has no track, its track was set without turns (or with
+ *       none that gives an axis), or the handle is stale.
+ * @param world the world.
+ * @param id the object.
+ * @param turns receives the turns.
+ * @return how many (0 when *turns is NULL).
+ */
+NOCT_API size_t noctWorldGetTrackTurns(const noctWorld *world, noctObjectId id,
+                                       const noctKeyTurn **turns);
 
 /**
  * @brief Make an object follow a track (#NOCT_EFFECT_TRACK), or none.
@@ -1061,6 +1152,73 @@ NOCT_API noctStatus noctWorldSetFilter(noctWorld *world, noctObjectId id, uint64
  */
 NOCT_API noctStatus noctWorldGetFilter(const noctWorld *world, noctObjectId id,
                                        uint64_t *category, uint64_t *mask);
+
+/**
+ * @brief Ignore a pair of objects, or stop ignoring it.
+ *
+ * An ignored pair is never colliding, sensing or near, whatever its
+ * filters say: it is in none of the lists of noctWorldColliding(),
+ * noctWorldSensing(), noctWorldNear() and their events, and neither the
+ * response nor noctWorldContacts() sees it. It is a filter of these two
+ * objects only (Box2D's joint without collideConnected, Jolt's group
+ * filter), for pairs that categories and masks cannot single out: a
+ * robot's link and the floor it stands on, a hinge's two halves.
+ * Queries (query.h) search no pairs and report both objects as before.
+ * A pair colliding when it becomes ignored ends at the next step (its
+ * ended event); one no longer ignored begins there if it collides.
+ * Removing either object forgets the pair (a new object in its slot is
+ * not ignored).
+ *
+ * A step pays for ignored pairs only when there are some: a binary search
+ * among them for each pair whose boxes overlap.
+ * @param[in]  world  The world.
+ * @param[in]  a      One object.
+ * @param[in]  b      The other (in either order).
+ * @param[in]  ignore Whether to ignore the pair from now on.
+ * @param[out] err    Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK, noctWorldPairIgnored(world, a, b) == ignore;
+ *       ignoring a pair twice, or un-ignoring one that is not ignored,
+ *       changes nothing. On failure nothing changed.
+ * @return #NOCT_OK; #NOCT_ERR_INVALID for a stale handle or a == b (the
+ *         same object twice); #NOCT_ERR_NOMEM.
+ */
+NOCT_API noctStatus noctWorldIgnorePair(noctWorld *world, noctObjectId a, noctObjectId b,
+                                        bool ignore, noctError *err);
+
+/**
+ * @brief Is a pair of objects ignored (noctWorldIgnorePair())?
+ * @param[in] world The world.
+ * @param[in] a     One object.
+ * @param[in] b     The other (in either order).
+ * @pre @p world is not NULL.
+ * @return Whether the pair is ignored; false for a stale handle or a == b.
+ */
+NOCT_API bool noctWorldPairIgnored(const noctWorld *world, noctObjectId a, noctObjectId b);
+
+/**
+ * @brief Ignore every pair of objects that collide now, where they are:
+ *        resting contact, so that the steps report only new contacts.
+ *
+ * The pairs are decided as a step's pair search and narrowphase decide
+ * them (the world's accuracy, filters, no two sensors, ignored pairs
+ * left out), on the objects' poses as they are: a world just built, or
+ * as the last step or the program left them. Nothing moves and no event
+ * is made; the pairs that the last step found colliding and are now
+ * ignored end at the next step. Call it before the first step to ignore
+ * the contacts a scene starts with (noctree-sim(1) `--ignore-initial`,
+ * noctree-scene(5) `ignore initial`).
+ * @param[in]  world The world.
+ * @param[out] count Receives how many pairs became ignored (not counting
+ *                   those ignored already), or NULL.
+ * @param[out] err   Receives the details of a failure, or NULL.
+ * @pre @p world is not NULL.
+ * @post On #NOCT_OK, each pair of objects that collide at their current
+ *       poses is ignored. On failure no pair became ignored.
+ * @return #NOCT_OK; #NOCT_ERR_NOMEM; a narrowphase status
+ *         (#NOCT_ERR_NUMERIC, never seen).
+ */
+NOCT_API noctStatus noctWorldIgnoreTouching(noctWorld *world, size_t *count, noctError *err);
 
 /**
  * @brief Make an object a sensor, or not (see noctObjectDef::sensor).
