@@ -106,7 +106,7 @@ noctStatus noct_mesh_of_box(const double half[3], const double R[9], noctMesh **
 
 void noct_box_view(const double v[24], noctMesh *view, bvh_node *leaf)
 {
-    static const uint32_t HULL[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+    static const uint32_t HULL[8] = {0, 1, 2, 3, 4, 5, 6, 7}, PIECE[1] = {0};
     memset(view, 0, sizeof *view);
     memset(leaf, 0, sizeof *leaf);
     view->nv = 8;
@@ -115,6 +115,8 @@ void noct_box_view(const double v[24], noctMesh *view, bvh_node *leaf)
     view->tri = (uint32_t *)BOX_TRIANGLES; /* the same */
     view->nhull = 8;
     view->hull = (uint32_t *)HULL;
+    view->npieces = 1; /* one piece: its vertex 0 */
+    view->piece = (uint32_t *)PIECE;
     for (int k = 0; k < 3; ++k) {
         view->lo[k] = view->hi[k] = v[k];
         double sum = 0;

@@ -146,6 +146,7 @@ noctStatus noct_piece_inside(const placed *in, const placed *out, const exact_ct
                              noctNarrowStats *stats, bool *inside)
 {
     *inside = false;
+    NOCT_INVARIANT(in->m->npieces > 0); /* every mesh, view or not, names its pieces */
     if (!noct_may_hold_piece(in, out))
         return NOCT_OK;
     for (size_t i = 0; i < in->m->npieces; ++i) {
