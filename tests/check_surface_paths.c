@@ -20,6 +20,8 @@
  *   closed-form time of a cube inside a closed surface hitting its wall;
  *   noctCollideSweptTransformed() conservative on the same samples;
  * - noctCollideContact() on surfaces; ray hits on surfaces;
+ * - scene files: `mesh NAME file PATH surface` (and `solid`), written back
+ *   as read;
  * - errors: bad surfaces refused with the solid's statuses and messages,
  *   and the hint of a solid asked of an open mesh; noctMeshReadSurface().
  */
@@ -971,6 +973,86 @@ START_TEST(errors)
 }
 END_TEST
 
+/* ---- scene files ----------------------------------------------------------------------- */
+
+static char *write_file(const char *name, const char *text)
+{
+    static char path[8][96];
+    static int next;
+    char *p = path[next++ % 8];
+    snprintf(p, sizeof path[0], "/tmp/check-surface-%ld-%s", (long)getpid(), name);
+    FILE *f = fopen(p, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(text, f);
+    fclose(f);
+    return p;
+}
+
+/* How many objects of the built world hold point p. */
+static int objects_at(const noctScene *sc, const double p[3])
+{
+    noctWorld *w = NULL;
+    noctError err = {0};
+    ck_assert_msg(noctSceneBuild(sc, &w, &err) == NOCT_OK, "%s", err.message);
+    ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+    int n = 0;
+    ck_assert_int_eq(noctWorldQueryPoint(w, p, (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
+                                         NULL), NOCT_OK);
+    noctWorldDestroy(w);
+    return n;
+}
+
+START_TEST(scene_files)
+{
+    const char *off = "OFF\n8 6 0\n0 0 0\n0 0 4\n0 4 0\n0 4 4\n4 0 0\n4 0 4\n4 4 0\n4 4 4\n"
+                      "4 0 1 3 2\n4 4 6 7 5\n4 0 4 5 1\n4 2 3 7 6\n4 0 2 6 4\n4 1 5 7 3\n";
+    char *box = write_file("bay.off", off);
+    char text[512];
+    const double centre[3] = {2, 2, 2}, wall[3] = {4, 2, 2};
+    const char *shapes[3] = {" surface", " solid", ""};
+    for (int i = 0; i < 3; ++i) {
+        snprintf(text, sizeof text, "mesh bay file %s%s\nobject bay 0 0 0 type static\n", box,
+                 shapes[i]);
+        noctScene *sc = NULL;
+        noctError err = {0};
+        ck_assert_msg(noctSceneRead(write_file("bay.scene", text), &sc, &err) == NOCT_OK, "%s",
+                      err.message);
+        /* a surface holds its walls, not its inside; a solid both */
+        ck_assert_int_eq(objects_at(sc, centre), i == 0 ? 0 : 1);
+        ck_assert_int_eq(objects_at(sc, wall), 1);
+        /* written back, it says what it is, and reads back the same */
+        char *out = write_file("out.scene", "");
+        FILE *f = fopen(out, "w");
+        ck_assert_ptr_nonnull(f);
+        ck_assert_int_eq(noctSceneWrite(sc, f, NULL), NOCT_OK);
+        fclose(f);
+        noctSceneDestroy(sc);
+        f = fopen(out, "r");
+        char line[256];
+        bool said = false;
+        while (fgets(line, sizeof line, f))
+            said = said || (strstr(line, "mesh bay file") && strstr(line, " surface"));
+        fclose(f);
+        ck_assert(said == (i == 0));
+        ck_assert_int_eq(noctSceneRead(out, &sc, NULL), NOCT_OK);
+        ck_assert_int_eq(objects_at(sc, centre), i == 0 ? 0 : 1);
+        noctSceneDestroy(sc);
+        unlink(out);
+    }
+    /* an unknown shape: an error at its line */
+    snprintf(text, sizeof text, "mesh bay file %s hollow\nobject bay 0 0 0\n", box);
+    const char *bad = write_file("bad.scene", text);
+    noctScene *sc = NULL;
+    noctError err = {0};
+    ck_assert_int_eq(noctSceneRead(bad, &sc, &err), NOCT_ERR_PARSE);
+    ck_assert_msg(strstr(err.message, ":1: unknown mesh shape 'hollow'") != NULL, "%s",
+                  err.message);
+    unlink(bad);
+    unlink(box);
+    unlink(write_file("bay.scene", ""));
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("surface_paths");
@@ -984,6 +1066,7 @@ int main(void)
     tcase_add_test(tc, swept_against_samples);
     tcase_add_test(tc, contacts_and_rays);
     tcase_add_test(tc, errors);
+    tcase_add_test(tc, scene_files);
     suite_add_tcase(s, tc);
     return run_suite(s);
 }
