@@ -22,7 +22,8 @@
  * - noctCollideSwept() against exact tests at sampled times, and the
  *   closed-form time of a cube inside a closed surface hitting its wall;
  *   noctCollideSweptTransformed() conservative on the same samples;
- * - noctCollideContact() on surfaces; ray hits on surfaces;
+ * - noctCollideContact() on surfaces; ray hits, shape queries and shape
+ *   casts on surfaces;
  * - scene files: `mesh NAME file PATH surface` (and `solid`), written back
  *   as read;
  * - errors: bad surfaces refused with the solid's statuses and messages,
@@ -1003,6 +1004,32 @@ START_TEST(contacts_and_rays)
     ck_assert_int_eq(noctWorldQueryPoint(w, wall, (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
                                          NULL), NOCT_OK);
     ck_assert_int_eq(n, 1);
+    /* shape queries: a cube inside the bay does not meet it, nor a
+     * cube beside it; one across its wall does; a surface cube in it
+     * neither. Cast along x, the cube inside reaches the wall x = 4 at
+     * 1/4 of a translation of 4 (from [1, 3]) */
+    noctTransform q = noctIdentityTransform();
+    const noctMesh *shapes[2] = {small_solid, small_surface};
+    for (int i = 0; i < 2; ++i) {
+        q.p[0] = 0;
+        n = 0;
+        ck_assert_int_eq(noctWorldQueryShape(w, shapes[i], NULL, &q,
+                                             (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
+                                             NULL), NOCT_OK);
+        ck_assert_int_eq(n, 0);
+        q.p[0] = 1.5;
+        ck_assert_int_eq(noctWorldQueryShape(w, shapes[i], NULL, &q,
+                                             (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
+                                             NULL), NOCT_OK);
+        ck_assert_int_eq(n, 1);
+        q.p[0] = 0;
+        noctShapeHit sh;
+        const double along[3] = {4, 0, 0};
+        ck_assert_int_eq(noctWorldCastShape(w, shapes[i], NULL, &q, along,
+                                            (noctQueryFilter){~0ull, ~0ull}, &sh, &hit, NULL),
+                         NOCT_OK);
+        ck_assert(hit && sh.sweep.time == 0.25);
+    }
     noctWorldDestroy(w);
     noctMeshDestroy(big_closed);
     noctMeshDestroy(small_solid);
