@@ -105,6 +105,10 @@ struct noctMesh {
     bool turn_fine;     /* every rotation keeps every triangle far from the
                            degeneracy noctMeshCreate() rejects
                            (noct_mesh_turn_fine()) */
+    /* A surface (noctMeshCreateSurface()): any triangles, enclosing
+     * nothing. Never convex, no box form, dual, filter or planes; no
+     * containment test is made into it (noct_contains() says no). */
+    bool surface;
     box_form box;
     box_dual dual;
     double lo[3], hi[3];
