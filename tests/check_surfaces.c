@@ -871,6 +871,15 @@ static bool check_pair(const char *label, const shape *sa, const noctMesh *ma,
                          want ? "meet" : "apart", got ? "meet" : "apart");
         }
     }
+    {
+        bool got = false;
+        noctContact contact;
+        noctStatus st = noctCollideContact(ma, xa, mb, xb, &got, &contact, &err);
+        if (st != NOCT_OK || got != want || (contact.kind == NOCT_CONTACT_NONE) == want)
+            disagree("%s (%s vs %s): noctCollideContact status %d, %s, kind %d; oracle %s",
+                     label, sa->name, sb->name, (int)st, got ? "meet" : "apart",
+                     (int)contact.kind, want ? "meet" : "apart");
+    }
     if (distance) {
         tally.distances++;
         noctDistanceResult r;
