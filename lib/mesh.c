@@ -69,6 +69,12 @@ bool noctMeshIsConvex(const noctMesh *mesh)
     return mesh->convex;
 }
 
+bool noctMeshIsSurface(const noctMesh *mesh)
+{
+    NOCT_REQUIRE(mesh != NULL);
+    return mesh->surface;
+}
+
 /* ---- scaling (vec3.h) --------------------------------------------------- */
 
 /* The unit normal (p1 - p0) x (p2 - p0) / |...|, or 0 if the triangle has
@@ -240,12 +246,14 @@ static noctStatus check_closed(const uint32_t *sizes, size_t npoly,
         if (j - i != 2)
             st = noct_fail(err, NOCT_ERR_OPEN, (long)he[i].poly, 0,
                            "edge %u-%u is used by %zu polygon%s (polygon %u "
-                           "among them), not 2", he[i].lo, he[i].hi, j - i,
+                           "among them), not 2 (not a solid: noctMeshCreateSurface() "
+                           "takes it as a surface)", he[i].lo, he[i].hi, j - i,
                            j - i == 1 ? "" : "s", he[i].poly);
         else if (he[i].forward == he[i + 1].forward)
             st = noct_fail(err, NOCT_ERR_ORIENTATION, (long)he[i + 1].poly, 0,
                            "polygons %u and %u both run along edge %u-%u in "
-                           "the same direction", he[i].poly, he[i + 1].poly,
+                           "the same direction (not a solid: noctMeshCreateSurface() "
+                           "takes it as a surface)", he[i].poly, he[i + 1].poly,
                            he[i].lo, he[i].hi);
         i = j;
     }
@@ -598,16 +606,23 @@ static bool volume_of(const noctMesh *m, double *volume)
     return fabs(vol) > VOLUME_TOLERANCE * box && fabs(vol) > rounding;
 }
 
-noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
-                          const uint32_t *sizes, size_t npolygons,
-                          const uint32_t *indices, noctMesh **mesh,
-                          noctError *err)
+/* noctMeshCreate() (surface false) and noctMeshCreateSurface(): the
+ * same checks of the input and of each polygon; a surface skips the
+ * closedness, orientation and volume, and gets no convexity, filter or
+ * box form (mesh_internal.h). */
+static noctStatus mesh_create(const double *vertices, size_t nvertices, const uint32_t *sizes,
+                              size_t npolygons, const uint32_t *indices, bool surface,
+                              noctMesh **mesh, noctError *err)
 {
     NOCT_REQUIRE(mesh != NULL);
     NOCT_REQUIRE(nvertices == 0 || vertices != NULL);
     NOCT_REQUIRE(npolygons == 0 || sizes != NULL);
     *mesh = NULL;
-    if (nvertices < 4 || npolygons < 4)
+    if (surface && (nvertices < 3 || npolygons < 1))
+        return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
+                         "a surface needs at least 3 vertices and 1 polygon "
+                         "(got %zu and %zu)", nvertices, npolygons);
+    if (!surface && (nvertices < 4 || npolygons < 4))
         return noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
                          "a closed mesh needs at least 4 vertices and 4 "
                          "polygons (got %zu and %zu)", nvertices, npolygons);
@@ -651,7 +666,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         if (st != NOCT_OK)
             return st;
     }
-    noctStatus st = check_closed(sizes, npolygons, indices, nidx, err);
+    noctStatus st = surface ? NOCT_OK : check_closed(sizes, npolygons, indices, nidx, err);
     if (st != NOCT_OK)
         return st;
 
@@ -666,6 +681,7 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         noctMeshDestroy(m);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
+    m->surface = surface;
     memcpy(m->v, vertices, 3 * nvertices * sizeof *m->v);
     bounds_of(m);
     for (size_t p = 0, base = 0, t = 0; p < npolygons; base += sizes[p], ++p)
@@ -675,11 +691,12 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
             tri[1] = indices[base + c];
             tri[2] = indices[base + c + 1];
         }
-    double volume;
-    if (!volume_of(m, &volume))
+    double volume = 0;
+    if (!surface && !volume_of(m, &volume))
         st = noct_fail(err, NOCT_ERR_DEGENERATE, -1, 0,
                        "the mesh encloses no volume (none over %.2g of its "
-                       "bounding box's, or within its rounding)",
+                       "bounding box's, or within its rounding; "
+                       "noctMeshCreateSurface() takes it as a surface)",
                        VOLUME_TOLERANCE / 6);
     if (st == NOCT_OK && volume < 0) /* inside out: flip every triangle */
         for (size_t i = 0; i < ntri; ++i) {
@@ -689,9 +706,10 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
         }
     if (st == NOCT_OK)
         st = noct_bvh_build(m, err);
-    if (st == NOCT_OK)
+    /* a surface: not convex, no filter, planes or box form (calloc) */
+    if (st == NOCT_OK && !surface)
         st = compute_convexity(m, err);
-    if (st == NOCT_OK)
+    if (st == NOCT_OK && !surface)
         noct_mesh_box_form(m);
     if (st == NOCT_OK)
         st = compute_hull(m, err);
@@ -701,6 +719,20 @@ noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
     }
     *mesh = pack(m);
     return NOCT_OK;
+}
+
+noctStatus noctMeshCreate(const double *vertices, size_t nvertices, const uint32_t *sizes,
+                          size_t npolygons, const uint32_t *indices, noctMesh **mesh,
+                          noctError *err)
+{
+    return mesh_create(vertices, nvertices, sizes, npolygons, indices, false, mesh, err);
+}
+
+noctStatus noctMeshCreateSurface(const double *vertices, size_t nvertices,
+                                 const uint32_t *sizes, size_t npolygons,
+                                 const uint32_t *indices, noctMesh **mesh, noctError *err)
+{
+    return mesh_create(vertices, nvertices, sizes, npolygons, indices, true, mesh, err);
 }
 
 /* ---- turning into a recycled copy ---------------------------------------------- */
@@ -772,12 +804,23 @@ bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, n
     memcpy(m->tri, src->tri, 3 * m->nt * sizeof *m->tri);
     bounds_of(m);
     double volume;
-    if (!volume_of(m, &volume) || volume < 0)
+    if (!src->surface && (!volume_of(m, &volume) || volume < 0))
         return false;
     noct_bvh_build_with(m, t->order, t->centroid, t->tri);
     memcpy(m->tri, t->tri, 3 * m->nt * sizeof *m->tri);
     for (uint32_t i = 0; i < m->nt; ++i)
         t->pos[t->order[i]] = i;
+    /* as a new mesh has them (calloc) where the box form sets nothing */
+    memset(&m->box, 0, sizeof m->box);
+    memset(&m->dual, 0, sizeof m->dual);
+    if (src->surface) { /* no convexity, filter, planes or box form */
+        if (m->nv > HULL_MIN_VERTICES || m->nhull != m->nv)
+            return false;
+        for (size_t i = 0; i < m->nv; ++i)
+            m->hull[i] = (uint32_t)i;
+        centre_of(m);
+        return true;
+    }
     planes_of(m, t->plane);
     double sat_face[NOCT_SAT_MAX][3], sat_edge[NOCT_SAT_MAX][3];
     convexity_walk(m, (const double (*)[4])t->plane, t->edges, t->pos, sat_face, sat_edge);
@@ -786,9 +829,6 @@ bool noct_mesh_turn_into(const noctMesh *src, const double R[9], noct_turn *t, n
     if (planes)
         memcpy(m->plane, t->plane, m->nt * sizeof *m->plane);
     fill_axes(m, (const double (*)[3])sat_face, (const double (*)[3])sat_edge);
-    /* as a new mesh has them (calloc) where the box form sets nothing */
-    memset(&m->box, 0, sizeof m->box);
-    memset(&m->dual, 0, sizeof m->dual);
     noct_mesh_box_form(m);
     /* compute_hull(): every vertex, unless qhull is run */
     if ((!m->convex && m->nv > HULL_MIN_VERTICES) || m->nhull != m->nv)
@@ -803,7 +843,8 @@ bool noct_mesh_same(const noctMesh *a, const noctMesh *b)
 {
     if (a->nv != b->nv || a->nt != b->nt || a->nnodes != b->nnodes || a->nhull != b->nhull ||
         a->nsat_faces != b->nsat_faces || a->nsat_edges != b->nsat_edges ||
-        a->convex != b->convex || a->has_box != b->has_box || a->has_dual != b->has_dual ||
+        a->convex != b->convex || a->surface != b->surface || a->has_box != b->has_box ||
+        a->has_dual != b->has_dual ||
         (a->plane == NULL) != (b->plane == NULL))
         return false;
     const size_t naxes = a->nsat_faces + a->nsat_edges;

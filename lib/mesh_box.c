@@ -264,7 +264,8 @@ noctStatus noct_mesh_rotated(const noctMesh *m, const double R[9], noctMesh **ou
         noct_rotate(R, &m->v[3 * i], &v[3 * i]);
     for (size_t i = 0; i < m->nt; ++i)
         sizes[i] = 3;
-    noctStatus st = noctMeshCreate(v, m->nv, sizes, m->nt, m->tri, out, err);
+    noctStatus st = (m->surface ? noctMeshCreateSurface : noctMeshCreate)(v, m->nv, sizes, m->nt,
+                                                                         m->tri, out, err);
     free(v);
     free(sizes);
     return st;

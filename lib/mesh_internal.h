@@ -102,6 +102,10 @@ struct noctMesh {
     bool has_dual;      /* dual is valid (implies has_box) */
     bool convex;
     bool packed;        /* one allocation: the arrays follow the struct */
+    /* A surface (noctMeshCreateSurface()): any triangles, enclosing
+     * nothing. Never convex, no box form, dual, filter or planes; no
+     * containment test is made into it (noct_contains() says no). */
+    bool surface;
     box_form box;
     box_dual dual;
     double lo[3], hi[3];

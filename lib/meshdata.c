@@ -885,12 +885,17 @@ noctStatus noctMeshDataWriteOff(const noctMeshData *data, const char *path, noct
     return NOCT_OK;
 }
 
-noctStatus noctMeshCreateFromData(const noctMeshData *data, noctMesh **mesh, noctError *err)
+/* noctMeshCreateFromData() (surface false) and
+ * noctMeshCreateSurfaceFromData(). */
+static noctStatus create_from_data(const noctMeshData *data, bool surface, noctMesh **mesh,
+                                   noctError *err)
 {
     NOCT_REQUIRE(data != NULL && mesh != NULL);
     const noctMeshData *d = data;
     noctError inner = {0};
-    noctStatus st = noctMeshCreate(d->v, d->nv, d->sizes, d->np, d->idx, mesh, &inner);
+    noctStatus st = (surface ? noctMeshCreateSurface : noctMeshCreate)(d->v, d->nv, d->sizes,
+                                                                     d->np, d->idx, mesh,
+                                                                     &inner);
     if (st == NOCT_OK)
         return st;
     /* Name the line (or record) of the vertex or polygon at fault. */
@@ -911,4 +916,15 @@ noctStatus noctMeshCreateFromData(const noctMeshData *data, noctMesh **mesh, noc
         return noct_fail(err, st, inner.index, 0, "%s: %s %ld: %s", d->path, d->record, at,
                          inner.message);
     return noct_fail(err, st, inner.index, 0, "%s: %s", d->path, inner.message);
+}
+
+noctStatus noctMeshCreateFromData(const noctMeshData *data, noctMesh **mesh, noctError *err)
+{
+    return create_from_data(data, false, mesh, err);
+}
+
+noctStatus noctMeshCreateSurfaceFromData(const noctMeshData *data, noctMesh **mesh,
+                                         noctError *err)
+{
+    return create_from_data(data, true, mesh, err);
 }

@@ -893,7 +893,8 @@ noctStatus noctMeshDataRead(const char *path, noctMeshData **data, noctError *er
     return NOCT_OK;
 }
 
-noctStatus noctMeshRead(const char *path, noctMesh **mesh, noctError *err)
+/* noctMeshRead() (surface false) and noctMeshReadSurface(). */
+static noctStatus mesh_read(const char *path, bool surface, noctMesh **mesh, noctError *err)
 {
     NOCT_REQUIRE(path != NULL && mesh != NULL);
     *mesh = NULL;
@@ -903,18 +904,29 @@ noctStatus noctMeshRead(const char *path, noctMesh **mesh, noctError *err)
         return st;
     st = noctMeshDataWeld(d, 0, NULL, err);
     if (st == NOCT_OK)
-        st = noctMeshCreateFromData(d, mesh, err);
-    if (st == NOCT_ERR_OPEN || st == NOCT_ERR_ORIENTATION) {
+        st = (surface ? noctMeshCreateSurfaceFromData : noctMeshCreateFromData)(d, mesh, err);
+    if (!surface && (st == NOCT_ERR_OPEN || st == NOCT_ERR_ORIENTATION)) {
         noctMeshReport rep;
         noctStatus ist = noctMeshDataInspect(d, &rep, err);
         if (ist != NOCT_OK)
             st = ist;
         else if (rep.reason[0] != '\0')
             noct_fail(err, st, -1, 0, "%s: not a closed, consistently oriented solid: %s "
-                      "(noctree-mesh(1) inspects and repairs mesh files)", path, rep.reason);
+                      "(noctMeshReadSurface() reads it as a surface; noctree-mesh(1) "
+                      "inspects and repairs mesh files)", path, rep.reason);
     }
     if (st == NOCT_ERR_NOMEM)
         noct_fail(err, st, -1, 0, "%s: out of memory", path);
     noctMeshDataDestroy(d);
     return st;
+}
+
+noctStatus noctMeshRead(const char *path, noctMesh **mesh, noctError *err)
+{
+    return mesh_read(path, false, mesh, err);
+}
+
+noctStatus noctMeshReadSurface(const char *path, noctMesh **mesh, noctError *err)
+{
+    return mesh_read(path, true, mesh, err);
 }

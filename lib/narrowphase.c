@@ -78,6 +78,10 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
                          bool *inside)
 {
     const noctMesh *m = B->m;
+    if (m->surface) { /* encloses nothing: p, not on it, is off it */
+        *inside = false;
+        return NOCT_OK;
+    }
     double lo[3], hi[3];
     for (int k = 0; k < 3; ++k) {
         lo[k] = m->lo[k] + B->t[k];
@@ -652,6 +656,13 @@ static noctStatus convex_collide(const placed *A, const placed *B, bool *hit,
     if (r != 0 && r != 1)
         return NOCT_ERR_NUMERIC;
     *hit = r == 1;
+    /* A surface's hull may be flat, where GJK can miss an overlap, and
+     * its tolerance a touching pair: GJK's "apart" stands for a surface
+     * only when the boundaries are proved apart (a surface inside a
+     * solid is inside its hull, which GJK, on a hull with a volume,
+     * finds). So the level never misses a pair with a surface. */
+    if (!*hit && (A->m->surface || B->m->surface))
+        *hit = noct_solids_within(A->m, A->t, B->m, B->t, 0);
     return NOCT_OK;
 }
 

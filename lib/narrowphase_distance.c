@@ -1329,7 +1329,7 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
  * others a GJK that would not prove their distance. */
 static bool convex_like(const noctMesh *m)
 {
-    return m->convex || m->has_box || (m->nv > 32 && m->nhull == m->nv);
+    return m->convex || m->has_box || (!m->surface && m->nv > 32 && m->nhull == m->nv);
 }
 
 bool noct_distance_convex_placed(const noctMesh *a, bool a_convex, const double ta[3],

@@ -110,6 +110,7 @@ typedef struct segment_entry {
     uint32_t triangle;
     double *normal;
     bool flat;            /* that triangle has no area as placed */
+    bool surface;         /* a surface's: the normal faces the segment's start */
 } segment_entry;
 
 static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], double c[3])
@@ -144,7 +145,9 @@ static bool segment_meets(void *context, uint32_t i, double a[3], double b[3], d
         e->triangle = i;
         e->flat = !area;
         if (area) {
-            memcpy(e->normal, nn, sizeof nn);
+            const bool away = e->surface && nn[0] * d[0] + nn[1] * d[1] + nn[2] * d[2] > 0;
+            for (int k = 0; k < 3; ++k)
+                e->normal[k] = away ? -nn[k] : nn[k];
         } else { /* against the segment: a normal a program can use */
             const double back[3] = {-d[0], -d[1], -d[2]};
             noct_unit3(back, e->normal);
@@ -180,7 +183,7 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
         *fraction = 0;
         return NOCT_OK;
     }
-    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal, false};
+    segment_entry e = {p, q, x, INFINITY, UINT32_MAX, normal, false, m->surface};
     noct_bvh_box_walk(&B, slo, shi, segment_meets, &e);
     *triangle = e.triangle;
     *flat = e.flat;

@@ -164,12 +164,17 @@ static noctStatus parse_mesh(parser *p, noctScene *s)
         char *file = next(p);
         if (file == NULL)
             return perr(p, NOCT_ERR_PARSE, "missing the mesh file name");
+        /* the shape's kind: solid (the default) or surface */
+        char *shape = next(p);
+        const bool surface = shape != NULL && strcmp(shape, "surface") == 0;
+        if (shape != NULL && !surface && strcmp(shape, "solid") != 0)
+            return perr(p, NOCT_ERR_PARSE, "unknown mesh shape '%s' (solid or surface)", shape);
         if ((st = end_of_line(p)) != NOCT_OK)
             return st;
         full = relative_path(p->path, file);
         if (full == NULL)
             return perr(p, NOCT_ERR_NOMEM, "out of memory");
-        st = noctMeshRead(full, &m, &inner);
+        st = (surface ? noctMeshReadSurface : noctMeshRead)(full, &m, &inner);
     } else {
         return perr(p, NOCT_ERR_PARSE, "unknown mesh kind '%s' (box or file)", kind);
     }

@@ -81,7 +81,8 @@ noctStatus noctSceneWrite(const noctScene *s, FILE *f, noctError *err)
             nums(f, m->half, 3);
             fprintf(f, "\n");
         } else
-            fprintf(f, "mesh %s file %s\n", m->name, m->file);
+            fprintf(f, "mesh %s file %s%s\n", m->name, m->file,
+                    noctMeshIsSurface(m->mesh) ? " surface" : "");
     }
     for (size_t i = 0; i < s->nfamilies; ++i)
         fprintf(f, "family %s %ld\n", s->families[i].family->name, s->families[i].size);

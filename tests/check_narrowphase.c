@@ -954,7 +954,8 @@ START_TEST(read_off_files)
     strcpy(five, CUBE_OFF);
     memcpy(strstr(five, "8 6 12"), "8 5 12", 6);
     expect_read("open2.off", five, NOCT_ERR_OPEN, ": not a closed, consistently oriented "
-                "solid: 4 boundary edges, first 1-3, 1-5, 3-7 (noctree-mesh(1)");
+                "solid: 4 boundary edges, first 1-3, 1-5, 3-7 (noctMeshReadSurface() "
+                "reads it as a surface; noctree-mesh(1)");
     expect_read("count.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 1\n",
                 NOCT_ERR_PARSE, ":7: expected a face's corner count");
 }

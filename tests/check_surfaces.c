@@ -71,15 +71,6 @@
 
 #include "testutil.h"
 
-/* The surfaces API (mesh.h on branch surfaces), declared here until it
- * lands. */
-noctStatus noctMeshCreateSurface(const double *vertices, size_t nvertices,
-                                 const uint32_t *sizes, size_t npolygons,
-                                 const uint32_t *indices, noctMesh **mesh, noctError *err);
-noctStatus noctMeshCreateSurfaceFromData(const noctMeshData *data, noctMesh **mesh,
-                                         noctError *err);
-noctStatus noctMeshReadSurface(const char *path, noctMesh **mesh, noctError *err);
-bool noctMeshIsSurface(const noctMesh *mesh);
 
 /* ---- disagreements: printed, counted, failed at the end of a test --------------- */
 

@@ -26,6 +26,7 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-meshio tests/check-meshio-efficient \
 	tests/check-distance-paths tests/check-distance-paths-efficient \
 	tests/check-distance tests/check-distance-efficient \
+	tests/check-surface-paths tests/check-surface-paths-efficient \
 	tests/check-surfaces tests/check-surfaces-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
@@ -309,6 +310,20 @@ tests_check_distance_paths_efficient_SOURCES = tests/check_distance_paths.c
 tests_check_distance_paths_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_distance_paths_efficient_CFLAGS = $(check_cflags)
 tests_check_distance_paths_efficient_LDADD = $(efficient_ldadd)
+
+# check-surface-paths: surfaces (noctMeshCreateSurface()) through every
+# path: open and closed-surface boxes against solids (containment), random
+# soups at dyadic coordinates against the test's own integer
+# separating-axis decision, the levels conservative, a world against the
+# pairwise call, distances against a brute force, sweeps against sampled
+# exact tests, contacts, rays, point queries, and the errors.
+tests_check_surface_paths_SOURCES = tests/check_surface_paths.c
+tests_check_surface_paths_CFLAGS = $(check_cflags)
+tests_check_surface_paths_LDADD = $(check_ldadd)
+tests_check_surface_paths_efficient_SOURCES = tests/check_surface_paths.c
+tests_check_surface_paths_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_surface_paths_efficient_CFLAGS = $(check_cflags)
+tests_check_surface_paths_efficient_LDADD = $(efficient_ldadd)
 
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
 	tests/examples.sh

@@ -45,6 +45,50 @@ SCENE
 expect_run 0 '^contact begins 1$' --quiet "$tmp/two.scene"
 expect_run 0 '^objects 3$' --quiet "$tmp/two.scene"
 
+# Surfaces: the closed box [0, 4]^3 as a surface holds two cubes without
+# touching them; one moving along x reaches the wall x = 4 (2.5 + 0.05 s =
+# 4, step 30 or 31 as the steps' sums round): one contact. As a solid it holds both cubes: two contacts
+# from the first step. The box without its top is no solid: read as one,
+# the scene fails and says how to read it as a surface.
+cat > "$tmp/bay.off" <<'END_OFF'
+OFF
+8 6 0
+0 0 0
+0 0 4
+0 4 0
+0 4 4
+4 0 0
+4 0 4
+4 4 0
+4 4 4
+4 0 1 3 2
+4 4 6 7 5
+4 0 4 5 1
+4 2 3 7 6
+4 0 2 6 4
+4 1 5 7 3
+END_OFF
+head -n 15 "$tmp/bay.off" | sed 's/^8 6 0$/8 5 0/' > "$tmp/open.off"
+for shape in surface solid; do
+    cat > "$tmp/bay-$shape.scene" <<SCENE
+steps 40
+mesh bay file bay.off $shape
+mesh cube box 0.5 0.5 0.5
+object bay 0 0 0 type static
+object cube 1 1 1 type static
+object cube 2 2 2.5 velocity 0.05 0 0
+SCENE
+done
+expect_run 0 '^contact begins 1$' --quiet "$tmp/bay-surface.scene"
+expect_run 0 '^contact begins 2$' --quiet "$tmp/bay-solid.scene"
+"$sim" --events --quiet "$tmp/bay-surface.scene" > "$tmp/ev" 2>&1
+grep -q '^3[01] begin 0 2$' "$tmp/ev" && ok || fail "bay surface: want the wall met at step 30"
+sed 's/bay.off surface/open.off surface/' "$tmp/bay-surface.scene" > "$tmp/open-surface.scene"
+expect_run 0 '^contact begins 1$' --quiet "$tmp/open-surface.scene"
+sed 's/bay.off solid/open.off/' "$tmp/bay-solid.scene" > "$tmp/open-solid.scene"
+expect_run 2 "mesh 'bay': .*open.off: not a closed.*noctMeshReadSurface()" --quiet \
+    "$tmp/open-solid.scene"
+
 # A cube passing through a sensor: its faces meet the sensor's at step 40
 # (0.5 + 0.05 s = 2.5) and part after step 80 (0.05 s - 0.5 = 3.5).
 cat > "$tmp/sensor.scene" <<'SCENE'
@@ -119,6 +163,8 @@ object a 0 0 0 1 0 0 -1'
 bad_scene nofile.scene ":1: mesh 'a': .*cannot open" 'mesh a file missing.off'
 printf 'OFF\n4 4 6\n0 0 0\n' > "$tmp/short.off"
 bad_scene badoff.scene ":1: mesh 'a': .*short.off.*file ends" 'mesh a file short.off'
+bad_scene shape.scene ":1: unknown mesh shape 'hollow' (solid or surface)" \
+    'mesh a file bay.off hollow'
 bad_scene empty.scene ": the scene has no objects" '# nothing'
 expect_run 2 "cannot open" "$tmp/does-not-exist.scene"
 

@@ -288,6 +288,10 @@ head -n 71 "$tmp/cube.stl" > "$tmp/open.stl"
 echo "endsolid cube" >> "$tmp/open.stl"
 expect_prog "$mesh" 1 '^boundary edges: 4 (first' "$tmp/open.stl"
 expect_prog "$mesh" 1 '^solid: no: 4 boundary edges' "$tmp/cube.stl" "$tmp/open.stl"
+# It loads as a surface, and says so; the closed cube too.
+expect_prog "$mesh" 1 '^surface: yes: it loads as a surface (noctMeshReadSurface()' \
+    "$tmp/open.stl"
+expect_prog "$mesh" 0 '^surface: yes$' "$tmp/cube.stl"
 # Inside out (every facet's corners reversed): a solid; --repair turns it.
 awk '/vertex/ { v[++n] = $0; if (n == 3) { print v[1]; print v[3]; print v[2]; n = 0 }; next }
      { print }' "$tmp/cube.stl" > "$tmp/inside.stl"

@@ -18,7 +18,8 @@ static const char usage[] =
     "usage: noctree-mesh [OPTIONS] FILE...\n"
     "Read each mesh file, weld its vertices (exactly, or within --weld-tolerance),\n"
     "and print what it is: counts, edges, components, orientation, volume, and\n"
-    "whether it is a closed solid noctree reads (noctMeshRead), or why not.\n"
+    "whether it is a closed solid noctree reads (noctMeshRead), or why not, and\n"
+    "whether it loads as a surface (noctMeshReadSurface).\n"
     "\n"
     "  --weld-tolerance EPS  merge vertices within distance EPS (default 0: only\n"
     "                        vertices with equal coordinates)\n"
@@ -65,6 +66,18 @@ static int one_file(const char *path, double eps, bool repair, const char *outpu
         st = noctMeshDataInspect(d, &r, &err);
     if (st == NOCT_OK && output != NULL)
         st = noctMeshDataWriteOff(d, output, &err);
+    /* whether it loads as a surface (noctMeshReadSurface()), and if not why */
+    noctError serr = {0};
+    noctMesh *surface = NULL;
+    noctStatus sst = NOCT_OK;
+    if (st == NOCT_OK) {
+        sst = noctMeshCreateSurfaceFromData(d, &surface, &serr);
+        noctMeshDestroy(surface);
+        if (sst == NOCT_ERR_NOMEM) {
+            st = sst;
+            err = serr;
+        }
+    }
     noctMeshDataDestroy(d);
     if (st != NOCT_OK) {
         tool_error("%s: %s", path, err.message);
@@ -100,6 +113,13 @@ static int one_file(const char *path, double eps, bool repair, const char *outpu
         printf("solid: yes\n");
     else
         printf("solid: no: %s\n", r.reason);
+    if (sst != NOCT_OK)
+        printf("surface: no: %s\n", serr.message);
+    else if (r.solid)
+        printf("surface: yes\n");
+    else
+        printf("surface: yes: it loads as a surface (noctMeshReadSurface(), or 'surface' "
+               "after a scene file's mesh)\n");
     return r.solid ? 0 : 1;
 }
 

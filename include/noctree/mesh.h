@@ -1,19 +1,31 @@
 /* SPDX-License-Identifier: MIT */
 /**
  * @file noctree/mesh.h
- * @brief Polyhedral solids given as closed polygon meshes.
+ * @brief Polyhedral solids given as closed polygon meshes, and surfaces
+ *        given as any set of polygons.
  *
  * @defgroup noctree_mesh Meshes
- * @brief Closed polygon meshes: creation, validation, built-in boxes, and
- * mesh files (OFF, OBJ, STL, PLY and, through assimp, glTF and others):
- * reading, welding, inspection and repair.
+ * @brief Polygon meshes, solids and surfaces: creation, validation,
+ * built-in boxes, and mesh files (OFF, OBJ, STL, PLY and, through assimp,
+ * glTF and others): reading, welding, inspection and repair.
  *
- * A #noctMesh is an immutable solid: the closed region bounded by a closed,
- * consistently oriented surface of planar convex polygons, in its own
- * frame. It is placed by a transform: a rotation and a translation
+ * A #noctMesh is an immutable shape of one of two kinds, in its own frame:
+ * - a **solid** (noctMeshCreate(), noctMeshRead(), the boxes): the closed
+ *   region bounded by a closed, consistently oriented surface of planar
+ *   convex polygons, its inside included;
+ * - a **surface** (noctMeshCreateSurface(), noctMeshReadSurface()): the
+ *   union of the closed triangles of its polygons' fans, and nothing
+ *   else. Any set of polygons makes one: open, non-manifold, in several
+ *   pieces, inconsistently oriented or closed; a surface encloses nothing,
+ *   even a closed one (the inside of a closed surface is not part of it).
+ *   noctMeshIsSurface() tells the kinds apart.
+ *
+ * It is placed by a transform: a rotation and a translation
  * (noctCollideTransformed(), a world object's noctTransform; noctCollide()
  * takes translations alone). A mesh may be shared by any number of objects
- * and threads once created.
+ * and threads once created. Every function that takes a mesh takes either
+ * kind; where they differ, the function says how (two shapes meet when
+ * their point sets share a point: narrowphase.h).
  *
  * **Validation.** Every constructor checks its input and, on failure,
  * returns a status and fills a #noctError naming the vertex, polygon or
@@ -44,6 +56,17 @@
  * A mesh whose polygons all face inwards (negative volume) is accepted and
  * turned outside in: the solid is the same set of points.
  *
+ * **Surfaces** are validated like solids up to the topology: at least 3
+ * vertices and 1 polygon, the same limits, finite and bounded
+ * coordinates, indices in range, and each polygon's area, planarity and
+ * convexity by the same tests, with the same statuses and messages naming
+ * the polygon. The edges' use, the orientation and the volume are not
+ * checked. Polygons may repeat, cross or overlap each other. A solid asked
+ * of a mesh that is not one fails with #NOCT_ERR_OPEN,
+ * #NOCT_ERR_ORIENTATION or #NOCT_ERR_DEGENERATE (no volume) and a message
+ * naming the edge or polygons and saying that noctMeshCreateSurface()
+ * (noctMeshReadSurface() for files) takes it as a surface.
+ *
  * **Any size, any place.** The tests are computed on differences: between
  * a polygon's corners and its first corner, and for the volume between the
  * vertices and the bounding box's least corner, scaled by a power of two
@@ -59,7 +82,8 @@
  * from its first vertex; the solid is the closed region those triangles
  * bound. (For a planar convex polygon that is the polygon itself; for a
  * polygon that is planar only within the tolerance it is the nearest thing
- * to it.) The exact collision test decides on those triangles.
+ * to it.) The exact collision test decides on those triangles. A
+ * surface is the union of the same fans' closed triangles.
  * @{
  */
 #ifndef NOCTREE_MESH_H
@@ -76,7 +100,7 @@
 extern "C" {
 #endif
 
-/** @brief An immutable polyhedral solid; opaque. */
+/** @brief An immutable polyhedral solid or surface; opaque. */
 typedef struct noctMesh noctMesh;
 
 /** Largest number of vertices a mesh may have. */
@@ -112,6 +136,40 @@ NOCT_API noctStatus noctMeshCreate(const double *vertices, size_t nvertices,
                                    const uint32_t *sizes, size_t npolygons,
                                    const uint32_t *indices, noctMesh **mesh,
                                    noctError *err);
+
+/**
+ * @brief Create a surface from vertices and polygons: any set of them.
+ *
+ * The arguments are those of noctMeshCreate(). The surface is the union
+ * of the closed triangles of the polygons' fans (see the module text): it
+ * may be open, non-manifold, in several pieces, inconsistently oriented
+ * or closed, and encloses nothing. The polygons' orientation is kept but
+ * means nothing to the collision tests.
+ * @param[in]  vertices   `3 * nvertices` coordinates, x y z per vertex.
+ * @param[in]  nvertices  Number of vertices (at least 3).
+ * @param[in]  sizes      Number of corners of each polygon.
+ * @param[in]  npolygons  Number of polygons (at least 1).
+ * @param[in]  indices    Vertex indices of the polygons' corners, polygon
+ *                        after polygon; `sum(sizes)` entries.
+ * @param[out] mesh       Receives the new surface on success, NULL
+ *                        otherwise.
+ * @param[out] err        Receives the details of a failure, or NULL.
+ * @pre @p mesh is not NULL; @p vertices, @p sizes and @p indices are not
+ *      NULL where their counts are non-zero.
+ * @post On #NOCT_OK, @p *mesh is a surface (noctMeshIsSurface() true, and
+ *       noctMeshIsConvex() false) owned by the caller (free it with
+ *       noctMeshDestroy()). The arrays are copied, not kept.
+ * @return #NOCT_OK, or the first problem found: #NOCT_ERR_TOO_LARGE,
+ *         #NOCT_ERR_NONFINITE, #NOCT_ERR_INDEX, #NOCT_ERR_DEGENERATE
+ *         (fewer than 3 vertices or no polygon, or a polygon with a vertex
+ *         twice or without area), #NOCT_ERR_NONPLANAR, #NOCT_ERR_NONCONVEX
+ *         or #NOCT_ERR_NOMEM; never #NOCT_ERR_OPEN or
+ *         #NOCT_ERR_ORIENTATION.
+ */
+NOCT_API noctStatus noctMeshCreateSurface(const double *vertices, size_t nvertices,
+                                          const uint32_t *sizes, size_t npolygons,
+                                          const uint32_t *indices, noctMesh **mesh,
+                                          noctError *err);
 
 /**
  * @brief Create an axis-aligned box centred on the origin.
@@ -195,6 +253,27 @@ NOCT_API noctStatus noctMeshCreateOrientedBox(const double half[3],
  */
 NOCT_API noctStatus noctMeshRead(const char *path, noctMesh **mesh,
                                  noctError *err);
+
+/**
+ * @brief Read a surface from a mesh file: noctMeshDataRead(), the exact
+ *        weld of noctMeshRead() and noctMeshCreateSurfaceFromData().
+ *
+ * Every format of noctMeshDataRead() is read and welded exactly as
+ * noctMeshRead() does; the result is made a surface (see the module
+ * text), whatever its topology: a triangle soup, an open or non-manifold
+ * mesh, several pieces, or a closed solid's boundary (which is then a
+ * surface, enclosing nothing).
+ * @param[in]  path Path of the file.
+ * @param[out] mesh Receives the new surface on success, NULL otherwise.
+ * @param[out] err  Receives the details of a failure, or NULL, as for
+ *                  noctMeshRead().
+ * @pre @p path and @p mesh are not NULL.
+ * @post On #NOCT_OK, @p *mesh is the file's surface (noctMeshIsSurface()
+ *       true). Nothing is kept from a file that fails.
+ * @return #NOCT_OK; any status of noctMeshDataRead(); any status of
+ *         noctMeshCreateSurface().
+ */
+NOCT_API noctStatus noctMeshReadSurface(const char *path, noctMesh **mesh, noctError *err);
 
 /**
  * @name Mesh data: what a mesh file holds, before it is a solid
@@ -485,6 +564,21 @@ NOCT_API noctStatus noctMeshCreateFromData(const noctMeshData *data, noctMesh **
                                            noctError *err);
 
 /**
+ * @brief Make a surface of the data, as noctMeshCreateSurface() does of its
+ *        arrays.
+ * @param[in]  data Mesh data.
+ * @param[out] mesh Receives the new surface, or NULL on failure.
+ * @param[out] err  Receives the details of a failure, or NULL; for data
+ *                  read from a file, the message names the file and the
+ *                  line (or triangle) of the vertex or polygon at fault.
+ * @pre @p data and @p mesh are not NULL.
+ * @post On #NOCT_OK, @p *mesh is a surface owned by the caller.
+ * @return Any status of noctMeshCreateSurface().
+ */
+NOCT_API noctStatus noctMeshCreateSurfaceFromData(const noctMeshData *data, noctMesh **mesh,
+                                                  noctError *err);
+
+/**
  * @brief Destroy mesh data.
  * @param[in] data Mesh data, or NULL (then nothing happens).
  */
@@ -572,12 +666,23 @@ NOCT_API void noctMeshBounds(const noctMesh *mesh, double lo[3], double hi[3]);
  *
  * Decided exactly at creation: the surface is convex at every edge (the
  * far vertex of each triangle lies on or below the plane of its neighbor
- * across the edge).
+ * across the edge). A surface (noctMeshIsSurface()) is never convex: it
+ * encloses nothing.
  * @param[in] mesh A mesh.
  * @pre @p mesh is not NULL.
- * @return Whether the solid is convex.
+ * @return Whether the mesh is a convex solid.
  */
 NOCT_API bool noctMeshIsConvex(const noctMesh *mesh);
+
+/**
+ * @brief Tell whether the mesh is a surface (noctMeshCreateSurface(),
+ *        noctMeshCreateSurfaceFromData(), noctMeshReadSurface()) rather
+ *        than a solid.
+ * @param[in] mesh A mesh.
+ * @pre @p mesh is not NULL.
+ * @return true for a surface; false for a solid, boxes included.
+ */
+NOCT_API bool noctMeshIsSurface(const noctMesh *mesh);
 
 #ifdef __cplusplus
 }
