@@ -553,6 +553,24 @@ static bool oracle_meet(const oobj *a, const oobj *b)
     return false;
 }
 
+/* The point p (mpq) lies on the placed object: on one of its closed
+ * triangles, or, for a solid, in it. */
+static bool oracle_point(const oobj *o, mpq_srcptr p)
+{
+    if (o->s->solid)
+        return in_solid(o, p);
+    for (size_t i = 0; i < o->nt; ++i) {
+        mpq_srcptr a = ov(o, o->t[i][0]), b = ov(o, o->t[i][1]), c = ov(o, o->t[i][2]);
+        if (orient3d(a, b, c, p) != 0)
+            continue;
+        int x, y;
+        tri_axes(a, b, c, &x, &y);
+        if (point_in_tri_2d(p, a, b, c, x, y))
+            return true;
+    }
+    return false;
+}
+
 /* ---- exact squared distances ------------------------------------------------------ */
 
 static void q_dot(mpq_t r, mpq_t *u, mpq_t *v, mpq_t tmp)
@@ -1580,7 +1598,247 @@ START_TEST(touching_and_one_ulp)
 }
 END_TEST
 
+/* General rotations with exact touching: A, a dyadic soup, turned by a
+ * random rotation and placed; B a triangle with a corner at a placed
+ * corner of A (or one ulp off it), and either a second corner at the
+ * placed other end of A's edge or its other corners away from A. Whether they touch
+ * depends on the last bit of A's placement: the library must place A by
+ * the documented rule. */
+START_TEST(touching_after_rotation)
+{
+    memset(&tally, 0, sizeof tally);
+    nfail = 0;
+    uint64_t rng = 0x70770 + (uint64_t)_i;
+    for (int it = 0; it < 60; ++it) {
+        shape *a = random_soup(&rng, 3, 0.25, "turned soup");
+        noctMesh *ma = lib_mesh(a);
+        noctTransform xa = at(0, 0, 0);
+        test_random_quat(&rng, &xa.q);
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = test_uniform(&rng) * 4 - 2;
+        oobj *oa = oobj_make(a, &xa);
+        for (int j = 0; j < 6; ++j) {
+            const uint32_t *t = oa->t[test_rand_below(&rng, oa->nt)];
+            double c[3], ctr[3] = {0, 0, 0};
+            for (size_t v = 0; v < oa->nv; ++v)
+                for (int k = 0; k < 3; ++k)
+                    ctr[k] += oa->p[3 * v + k] / (double)oa->nv;
+            for (int k = 0; k < 3; ++k)
+                c[k] = oa->p[3 * t[0] + k];
+            if (j >= 4) /* one ulp off, along a random axis */
+                c[j % 3] = nextafter(c[j % 3], j == 4 ? INFINITY : -INFINITY);
+            /* The other corners: away from the centre, spread sideways. */
+            double d[3], q1[3], q2[3];
+            for (int k = 0; k < 3; ++k)
+                d[k] = c[k] - ctr[k];
+            double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + 1e-3;
+            for (int k = 0; k < 3; ++k) {
+                /* even j: B's second corner is A's placed second corner, so
+                 * B runs along A's edge (exactly, when not moved off) */
+                q1[k] = j % 2 ? c[k] + 2 * d[k] / len + (k == 0 ? 0.5 : 0)
+                              : oa->p[3 * t[1] + k];
+                q2[k] = c[k] + 2 * d[k] / len + (k == 1 ? 0.5 : 0);
+            }
+            shape *b = sh_new("triangle at a placed corner or edge", false);
+            sh_soup_tri(b, c, q1, q2);
+            noctMesh *mb = lib_mesh(b);
+            noctTransform x0 = at(0, 0, 0);
+            bool want = check_pair("touching after a rotation", a, ma, &xa, b, mb, &x0, j < 2);
+            if (j < 4)
+                ck_assert_msg(want, "oracle: a placed corner or edge point must touch");
+            noctMeshDestroy(mb);
+            free(b);
+        }
+        oobj_free(oa);
+        noctMeshDestroy(ma);
+        free(a);
+    }
+    report_tally("touching after rotation");
+    EXPECT_NO_DISAGREEMENT();
+}
+END_TEST
+
+/* Flat soups: every triangle in the plane z = 0 (or x = y), so that nearly
+ * every pair is coplanar: overlapping, touching at edges and corners, or
+ * apart; and the same scaled by 2^-300 and 2^290 (exactly). */
+START_TEST(flat_and_scaled_soups)
+{
+    memset(&tally, 0, sizeof tally);
+    nfail = 0;
+    uint64_t rng = 0xf1a7 + (uint64_t)_i;
+    static const double scales[3] = {1, 0x1p-300, 0x1p290};
+    for (int it = 0; it < 90; ++it) {
+        shape *sh[2];
+        double scale = scales[it % 3];
+        for (int i = 0; i < 2; ++i) {
+            sh[i] = random_soup(&rng, 1 + (int)test_rand_below(&rng, 4), 0.25, "flat soup");
+            for (size_t v = 0; v < sh[i]->nv; ++v) {
+                double *p = &sh[i]->v[3 * v];
+                if (it % 2)
+                    p[2] = 0;
+                else
+                    p[1] = p[0];
+                for (int k = 0; k < 3; ++k)
+                    p[k] *= scale;
+            }
+            /* Drop triangles the flattening made degenerate (exactly). */
+            shape *t = sh_new(it % 2 ? "flat soup z" : "flat soup x=y", false);
+            for (size_t f = 0; f < sh[i]->np; ++f) {
+                const double *p0 = &sh[i]->v[3 * sh[i]->ix[3 * f]];
+                const double *p1 = &sh[i]->v[3 * sh[i]->ix[3 * f + 1]];
+                const double *p2 = &sh[i]->v[3 * sh[i]->ix[3 * f + 2]];
+                double u[3], w[3];
+                for (int k = 0; k < 3; ++k) {
+                    u[k] = (p1[k] - p0[k]) / scale;
+                    w[k] = (p2[k] - p0[k]) / scale;
+                }
+                double cz = u[0] * w[1] - u[1] * w[0], cx = u[1] * w[2] - u[2] * w[1],
+                       cy = u[2] * w[0] - u[0] * w[2];
+                double area2 = cx * cx + cy * cy + cz * cz, d2 = 0;
+                for (int k = 0; k < 3; ++k)
+                    d2 = fmax(d2, fmax(u[k] * u[k], w[k] * w[k]));
+                if (area2 > 1e-4 * d2 * d2)
+                    sh_soup_tri(t, p0, p1, p2);
+            }
+            free(sh[i]);
+            sh[i] = t;
+        }
+        if (sh[0]->np == 0 || sh[1]->np == 0) {
+            free(sh[0]);
+            free(sh[1]);
+            continue;
+        }
+        noctMesh *m0 = lib_mesh(sh[0]), *m1 = lib_mesh(sh[1]);
+        for (int p = 0; p < 4; ++p) {
+            noctTransform x0 = at(0, 0, 0), x1 = at(0, 0, 0);
+            /* slide within the plane: along x (and y for z = 0, z for x = y) */
+            x1.p[0] = ((double)test_rand_below(&rng, 9) - 4) * 0.25 * scale;
+            if (it % 2)
+                x1.p[1] = ((double)test_rand_below(&rng, 9) - 4) * 0.25 * scale;
+            else
+                x1.p[1] = x1.p[0];
+            if (p == 3)
+                x0.q = x1.q = quarter((int)test_rand_below(&rng, 3), 1);
+            check_pair("flat soups", sh[0], m0, &x0, sh[1], m1, &x1, p == 0 && scale == 1);
+        }
+        noctMeshDestroy(m0);
+        noctMeshDestroy(m1);
+        free(sh[0]);
+        free(sh[1]);
+    }
+    report_tally("flat and scaled soups");
+    ck_assert_uint_gt(tally.meet, tally.cases / 5);
+    ck_assert_uint_gt(tally.apart, tally.cases / 10);
+    EXPECT_NO_DISAGREEMENT();
+}
+END_TEST
+
 /* ---- the world ---------------------------------------------------------------------- */
+
+static int object_of(const noctObjectId *ids, int n, noctObjectId id)
+{
+    for (int k = 0; k < n; ++k)
+        if (ids[k].index == id.index && ids[k].generation == id.generation)
+            return k;
+    ck_abort_msg("unknown object reported");
+    return -1;
+}
+
+/* Compare a query's objects with the oracle's list (want[k] for object k). */
+static void compare_found(const char *what, int step, const noctObjectBuffer *buf,
+                          const noctObjectId *ids, const bool *want, int n)
+{
+    bool *got = calloc((size_t)n, sizeof *got);
+    ck_assert(buf->count <= buf->capacity);
+    for (size_t k = 0; k < buf->count; ++k)
+        got[object_of(ids, n, buf->ids[k])] = true;
+    for (int k = 0; k < n; ++k)
+        if (got[k] != want[k])
+            disagree("world step %d, %s: object #%d reported %d, oracle %d", step, what, k,
+                     (int)got[k], (int)want[k]);
+    free(got);
+}
+
+/* The world's queries against the oracle: a shape query with each shape
+ * (surfaces and solids) at a dyadic place and quarter turn; box queries;
+ * point queries at the objects' vertices, their edges' midpoints
+ * (exact: on the surface) and grid points. */
+static void world_queries(noctWorld *w, const noctObjectId *ids, oobj *const *o, int n,
+                          shape *const *shapes, noctMesh *const *m, int nshape, uint64_t *rng,
+                          int step)
+{
+    noctObjectId found[64];
+    noctObjectBuffer buf = {found, 64, 0};
+    bool want[64];
+    ck_assert(n <= 64);
+    noctQueryFilter all = noctDefaultQueryFilter();
+    for (int q = 0; q < nshape; ++q) {
+        noctTransform x = at(0, 0, 0);
+        for (int k = 0; k < 3; ++k)
+            x.p[k] = (double)test_rand_below(rng, 17) * 0.25;
+        x.q = quarter((int)test_rand_below(rng, 3), (int)test_rand_below(rng, 4));
+        oobj *qo = oobj_make(shapes[q], &x);
+        for (int k = 0; k < n; ++k)
+            want[k] = oracle_meet(qo, o[k]);
+        buf.count = 0;
+        noctError err;
+        ck_assert_msg(noctWorldQueryShape(w, m[q], NULL, &x, all, noctCollectObjects, &buf,
+                                          &err) == NOCT_OK,
+                      "%s", err.message);
+        char what[80];
+        snprintf(what, sizeof what, "shape query %s", shapes[q]->name);
+        compare_found(what, step, &buf, ids, want, n);
+        oobj_free(qo);
+    }
+    for (int q = 0; q < 4; ++q) {
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = (double)test_rand_below(rng, 16) * 0.25;
+            hi[k] = lo[k] + (double)(1 + test_rand_below(rng, 4)) * 0.125;
+        }
+        shape *bs = sh_new("query box", true);
+        sh_box_into(bs, lo, hi, 63);
+        noctTransform x0 = at(0, 0, 0);
+        oobj *bo = oobj_make(bs, &x0);
+        for (int k = 0; k < n; ++k)
+            want[k] = oracle_meet(bo, o[k]);
+        buf.count = 0;
+        ck_assert_int_eq(noctWorldQueryBox(w, lo, hi, all, noctCollectObjects, &buf, NULL),
+                         NOCT_OK);
+        compare_found("box query", step, &buf, ids, want, n);
+        oobj_free(bo);
+        free(bs);
+    }
+    mpq_t pq[3];
+    for (int k = 0; k < 3; ++k)
+        mpq_init(pq[k]);
+    for (int q = 0; q < 24; ++q) {
+        double p[3];
+        const oobj *src = o[test_rand_below(rng, (size_t)n)];
+        uint32_t tri = (uint32_t)test_rand_below(rng, src->nt);
+        const uint32_t *t = src->t[tri];
+        int kind = q % 3;
+        for (int k = 0; k < 3; ++k) {
+            if (kind == 0)
+                p[k] = src->p[3 * t[0] + k];
+            else if (kind == 1)
+                p[k] = (src->p[3 * t[0] + k] + src->p[3 * t[1] + k]) / 2; /* exact here */
+            else
+                p[k] = (double)test_rand_below(rng, 33) * 0.125;
+            mpq_set_d(pq[k], p[k]);
+        }
+        for (int k = 0; k < n; ++k)
+            want[k] = oracle_point(o[k], pq[0]);
+        buf.count = 0;
+        ck_assert_int_eq(noctWorldQueryPoint(w, p, all, noctCollectObjects, &buf, NULL),
+                         NOCT_OK);
+        char what[80];
+        snprintf(what, sizeof what, "point query (%g %g %g)", p[0], p[1], p[2]);
+        compare_found(what, step, &buf, ids, want, n);
+    }
+    for (int k = 0; k < 3; ++k)
+        mpq_clear(pq[k]);
+}
 
 /* A world of surfaces and solids, at dyadic places and quarter turns:
  * after each step its colliding pairs are the oracle's, over all pairs;
@@ -1687,6 +1945,7 @@ START_TEST(world_against_brute_force)
             disagree("world step %d: %zu began, %zu ended; oracle %zu, %zu", s, nb, ne, wb, we);
         free(seen);
         memcpy(prev, cur, NOBJ * NOBJ * sizeof *cur);
+        world_queries(w, ids, o, NOBJ, shapes, m, NSHAPE, &rng, s);
         for (int i = 0; i < NOBJ; ++i)
             oobj_free(o[i]);
     }
@@ -1997,6 +2256,8 @@ static Suite *surfaces_suite(void)
     tc = test_case(s, "soups", 120, NULL);
     tcase_add_loop_test(tc, random_dyadic_soups, 0, 2);
     tcase_add_loop_test(tc, random_double_soups, 0, 2);
+    tcase_add_loop_test(tc, touching_after_rotation, 0, 2);
+    tcase_add_loop_test(tc, flat_and_scaled_soups, 0, 2);
     tc = test_case(s, "shapes", 120, NULL);
     add_tests(tc, open_box_against_small_boxes, containment, touching_and_one_ulp);
     tcase_add_loop_test(tc, odd_surfaces, 0, 2);
@@ -2004,6 +2265,14 @@ static Suite *surfaces_suite(void)
     tcase_add_loop_test(tc, world_against_brute_force, 0, 3);
     tcase_add_loop_test(tc, read_soups, 0, 2);
     add_tests(tc, read_nonmanifold_stl);
+    /* More seeds of the random cases, left out under valgrind. */
+    tc = test_case(s, "more seeds", 600, "slow");
+    tcase_add_loop_test(tc, random_dyadic_soups, 2, 12);
+    tcase_add_loop_test(tc, random_double_soups, 2, 8);
+    tcase_add_loop_test(tc, odd_surfaces, 2, 8);
+    tcase_add_loop_test(tc, touching_after_rotation, 2, 10);
+    tcase_add_loop_test(tc, flat_and_scaled_soups, 2, 10);
+    tcase_add_loop_test(tc, world_against_brute_force, 3, 9);
     return s;
 }
 
