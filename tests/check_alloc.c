@@ -9,7 +9,8 @@
  * live block is remembered with its caller until it is freed.
  *
  * Each part of the workload (the octree ADT with neighbor finding, meshes
- * by every constructor, the OFF/OBJ readers, scene files and families, a
+ * by every constructor, the OFF/OBJ readers, surfaces (made, read and from
+ * data, collided and their distances), scene files and families, a
  * world stepped, changed and emptied at every accuracy and in every
  * maintenance mode, the object model (definitions, the setters that
  * allocate, tracks, spinners, the margin, queries, the scene writer),
@@ -633,6 +634,65 @@ static void part_readers(outcome *o)
     collide_all(o, m, 3);
 out:
     for (int i = 0; i < 3; ++i)
+        noctMeshDestroy(m[i]);
+}
+
+/* Surfaces: the star made a surface from arrays, read from its file as a
+ * surface, and from its data, collided with each other and with the
+ * solid star at every level, and their distances. */
+static void part_surfaces(outcome *o)
+{
+    noctMesh *m[4] = {NULL, NULL, NULL, NULL};
+    noctMeshData *d = NULL;
+    noctError err = fresh_err();
+    noctStatus st;
+    star_mesh sm;
+    star_make(&sm, 1.0);
+    phase("noctMeshCreateSurface star");
+    st = noctMeshCreateSurface(sm.v, STAR_NV, sm.sizes, STAR_NP, sm.idx, &m[0], &err);
+    if (!judge(o, "noctMeshCreateSurface", st, NOCT_OK, &err, true))
+        goto out;
+    phase("noctMeshReadSurface star.off");
+    err = fresh_err();
+    st = noctMeshReadSurface(path_star_off, &m[1], &err);
+    if (st != NOCT_OK && m[1] != NULL)
+        record(o, K_STATUS, "noctMeshReadSurface failed but left a mesh");
+    if (!judge(o, "noctMeshReadSurface", st, NOCT_OK, &err, true))
+        goto out;
+    phase("noctMeshDataRead star.obj");
+    err = fresh_err();
+    st = noctMeshDataRead(path_star_obj, &d, &err);
+    if (!judge(o, "noctMeshDataRead", st, NOCT_OK, &err, true))
+        goto out;
+    phase("noctMeshCreateSurfaceFromData star.obj");
+    err = fresh_err();
+    st = noctMeshCreateSurfaceFromData(d, &m[2], &err);
+    if (!judge(o, "noctMeshCreateSurfaceFromData", st, NOCT_OK, &err, true))
+        goto out;
+    phase("noctMeshCreate star 0.75");
+    err = fresh_err();
+    st = star_create(0.75, &m[3], &err);
+    if (!judge(o, "noctMeshCreate", st, NOCT_OK, &err, true))
+        goto out;
+    for (int i = 0; i < 4; ++i) {
+        mix_mesh(o, m[i]);
+        mix(o, noctMeshIsSurface(m[i]));
+    }
+    collide_all(o, m, 4);
+    for (int i = 0; i < 4; ++i) {
+        phase("noctDistance surface %d", i);
+        noctTransform x = noctIdentityTransform(), y = noctIdentityTransform();
+        y.p[0] = 0.5;
+        noctDistanceResult r;
+        err = fresh_err();
+        st = noctDistance(m[i], &x, m[(i + 1) % 4], &y, INFINITY, &r, NULL, &err);
+        if (!judge(o, "noctDistance", st, NOCT_OK, &err, true))
+            goto out;
+        mix(o, r.colliding);
+    }
+out:
+    noctMeshDataDestroy(d);
+    for (int i = 0; i < 4; ++i)
         noctMeshDestroy(m[i]);
 }
 
@@ -1852,6 +1912,12 @@ START_TEST(readers)
 }
 END_TEST
 
+START_TEST(surfaces)
+{
+    check_part("surfaces", part_surfaces, false, true, ALL);
+}
+END_TEST
+
 START_TEST(scene)
 {
     check_part("scene", part_scene, false, true, ALL);
@@ -1905,6 +1971,7 @@ int main(void)
     tcase_add_test(part_case(s, "octree"), octree);
     tcase_add_test(part_case(s, "meshes"), meshes);
     tcase_add_test(part_case(s, "readers"), readers);
+    tcase_add_test(part_case(s, "surfaces"), surfaces);
     tcase_add_test(part_case(s, "scene"), scene);
     tcase_add_test(part_case(s, "world"), world);
     tcase_add_test(part_case(s, "world-levels"), world_levels);

@@ -14,12 +14,16 @@
  *   against the exact one;
  * - a world of surfaces and solid boxes against the pairwise call and the
  *   integer decision, and its point queries (on a surface) against them;
+ *   turned soups in a world with a margin against noctCollideTransformed()
+ *   and noctDistance(), turned again (the world's recycled copies); a
+ *   continuous world catching a fast cube on a closed surface's wall;
  * - noctDistance() on surfaces against a brute force over every triangle
  *   pair in long double, and 0 / the gap for containment;
  * - noctCollideSwept() against exact tests at sampled times, and the
  *   closed-form time of a cube inside a closed surface hitting its wall;
  *   noctCollideSweptTransformed() conservative on the same samples;
- * - noctCollideContact() on surfaces; ray hits on surfaces;
+ * - noctCollideContact() on surfaces; ray hits, shape queries and shape
+ *   casts on surfaces;
  * - scene files: `mesh NAME file PATH surface` (and `solid`), written back
  *   as read;
  * - errors: bad surfaces refused with the solid's statuses and messages,
@@ -564,6 +568,125 @@ START_TEST(world_against_pairs)
 }
 END_TEST
 
+/* A random soup of nt triangles near c, of size about s (real coordinates). */
+static noctMesh *real_soup(size_t nt, const double c[3], double s, double *v);
+
+/* Turned soups and boxes in a world with a margin: its colliding pairs
+ * are noctCollideTransformed()'s, its near pairs those noctDistance()
+ * proves within the margin; turned again (the world's recycled turned
+ * copies), the same. */
+START_TEST(world_turned_and_near)
+{
+    enum { N = 16 };
+    const double margin = 0.25;
+    noctWorldDef wd = noctDefaultWorldDef();
+    wd.effects = NOCT_EFFECT_EVENTS;
+    wd.margin = margin;
+    noctWorld *w = NULL;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+    noctMesh *mesh[N];
+    noctTransform x[N];
+    noctObjectId id[N];
+    double v[72];
+    for (int i = 0; i < N; ++i) {
+        const double o[3] = {0, 0, 0};
+        if (i % 4 == 3)
+            ck_assert_int_eq(noctMeshCreateBox(0.3, 0.5, 0.4, &mesh[i], NULL), NOCT_OK);
+        else
+            mesh[i] = real_soup(1 + test_rand_below(&rng, 8), o, 1.5, v);
+        x[i] = noctIdentityTransform();
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = mesh[i];
+        d.type = NOCT_OBJECT_KINEMATIC;
+        d.transform = x[i];
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+    }
+    int colliding = 0, near = 0, apart = 0;
+    for (int round = 0; round < 4; ++round) {
+        for (int i = 0; i < N; ++i) {
+            test_random_quat(&rng, &x[i].q);
+            for (int k = 0; k < 3; ++k)
+                x[i].p[k] = 3 * test_uniform(&rng);
+            ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x[i], NULL), NOCT_OK);
+        }
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        const noctPair *got, *gnear;
+        const size_t ngot = noctWorldColliding(w, &got), nnear = noctWorldNear(w, &gnear);
+        size_t want = 0, want_near = 0, gi = 0, ni = 0;
+        for (int i = 0; i < N; ++i)
+            for (int j = i + 1; j < N; ++j) {
+                bool hit;
+                ck_assert_int_eq(noctCollideTransformed(mesh[i], &x[i], mesh[j], &x[j],
+                                                        NOCT_ACCURACY_EXACT, &hit, NULL, NULL),
+                                 NOCT_OK);
+                noctDistanceResult r;
+                ck_assert_int_eq(noctDistance(mesh[i], &x[i], mesh[j], &x[j], INFINITY, &r, NULL,
+                                              NULL), NOCT_OK);
+                ck_assert(r.colliding == hit);
+                const bool in_list = gi < ngot && got[gi].a.index == (uint32_t)i &&
+                                     got[gi].b.index == (uint32_t)j;
+                ck_assert_msg(in_list == hit, "round %d pair %d %d: world %d, pairwise %d",
+                              round, i, j, in_list, hit);
+                gi += in_list;
+                want += hit;
+                const bool is_near = ni < nnear && gnear[ni].a.index == (uint32_t)i &&
+                                     gnear[ni].b.index == (uint32_t)j;
+                ni += is_near;
+                /* the margin's verdict is sure away from its edge */
+                if (r.upper < margin * (1 - 1e-9))
+                    ck_assert_msg(is_near, "pair %d %d at %g not near", i, j, r.upper);
+                else if (r.lower > margin * (1 + 1e-9))
+                    ck_assert_msg(!is_near, "pair %d %d at %g near", i, j, r.lower);
+                want_near += is_near;
+                colliding += hit;
+                near += is_near && !hit;
+                apart += !is_near;
+            }
+        ck_assert_uint_eq(ngot, want);
+        ck_assert_uint_eq(nnear, want_near);
+    }
+    ck_assert_int_gt(colliding, 10);
+    ck_assert_int_gt(near, 3);
+    ck_assert_int_gt(apart, 10);
+    noctWorldDestroy(w);
+    for (int i = 0; i < N; ++i)
+        noctMeshDestroy(mesh[i]);
+}
+END_TEST
+
+/* A continuous world: a cube inside a closed surface, moving fast enough
+ * to pass its wall within one step, is caught on the wall; one that moves
+ * inside never touches it (no containment into a surface at the start). */
+START_TEST(continuous_world)
+{
+    noctMesh *bay = cube(0, 4, true, false);
+    noctMesh *small = cube(-0.5, 1, false, false);
+    for (int fast = 0; fast < 2; ++fast) {
+        noctWorldDef wd = noctDefaultWorldDef();
+        wd.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
+        wd.accuracy = NOCT_ACCURACY_CONTINUOUS;
+        noctWorld *w = NULL;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectDef d = noctDefaultObjectDef();
+        d.mesh = bay;
+        d.type = NOCT_OBJECT_STATIC;
+        noctObjectId a, b;
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &a, NULL), NOCT_OK);
+        d.mesh = small;
+        d.type = NOCT_OBJECT_MOVING;
+        d.transform.p[0] = d.transform.p[1] = d.transform.p[2] = 2;
+        d.velocity[0] = fast ? 8 : 0.5; /* from [1.5, 2.5]: past x = 4 in one step */
+        ck_assert_int_eq(noctWorldCreateObject(w, &d, &b, NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        const noctPair *p;
+        ck_assert_uint_eq(noctWorldBegan(w, &p), fast ? 1 : 0);
+        noctWorldDestroy(w);
+    }
+    noctMeshDestroy(bay);
+    noctMeshDestroy(small);
+}
+END_TEST
+
 /* ---- distances ------------------------------------------------------------------------ */
 
 typedef long double ld;
@@ -881,6 +1004,32 @@ START_TEST(contacts_and_rays)
     ck_assert_int_eq(noctWorldQueryPoint(w, wall, (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
                                          NULL), NOCT_OK);
     ck_assert_int_eq(n, 1);
+    /* shape queries: a cube inside the bay does not meet it, nor a
+     * cube beside it; one across its wall does; a surface cube in it
+     * neither. Cast along x, the cube inside reaches the wall x = 4 at
+     * 1/4 of a translation of 4 (from [1, 3]) */
+    noctTransform q = noctIdentityTransform();
+    const noctMesh *shapes[2] = {small_solid, small_surface};
+    for (int i = 0; i < 2; ++i) {
+        q.p[0] = 0;
+        n = 0;
+        ck_assert_int_eq(noctWorldQueryShape(w, shapes[i], NULL, &q,
+                                             (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
+                                             NULL), NOCT_OK);
+        ck_assert_int_eq(n, 0);
+        q.p[0] = 1.5;
+        ck_assert_int_eq(noctWorldQueryShape(w, shapes[i], NULL, &q,
+                                             (noctQueryFilter){~0ull, ~0ull}, count_hit, &n,
+                                             NULL), NOCT_OK);
+        ck_assert_int_eq(n, 1);
+        q.p[0] = 0;
+        noctShapeHit sh;
+        const double along[3] = {4, 0, 0};
+        ck_assert_int_eq(noctWorldCastShape(w, shapes[i], NULL, &q, along,
+                                            (noctQueryFilter){~0ull, ~0ull}, &sh, &hit, NULL),
+                         NOCT_OK);
+        ck_assert(hit && sh.sweep.time == 0.25);
+    }
     noctWorldDestroy(w);
     noctMeshDestroy(big_closed);
     noctMeshDestroy(small_solid);
@@ -1062,6 +1211,8 @@ int main(void)
     tcase_add_test(tc, soups_against_integers);
     tcase_add_test(tc, soups_against_solid_boxes);
     tcase_add_test(tc, world_against_pairs);
+    tcase_add_test(tc, world_turned_and_near);
+    tcase_add_test(tc, continuous_world);
     tcase_add_test(tc, distance_against_brute_force);
     tcase_add_test(tc, swept_against_samples);
     tcase_add_test(tc, contacts_and_rays);

@@ -17,6 +17,32 @@
  * an integer offset of a mesh with dyadic coordinates) moves the solid
  * exactly.
  *
+ * **Surfaces** (mesh.h, noctMeshCreateSurface()) are point sets too: the
+ * union of their placed closed triangles, enclosing nothing. So, with
+ * the same definition:
+ * - a surface and a surface collide iff a triangle of one meets a
+ *   triangle of the other (closed triangles: touching counts, and so do
+ *   coplanar triangles that overlap or touch);
+ * - a surface and a solid collide iff a triangle of the surface meets
+ *   the closed solid: it crosses or touches the solid's boundary, or lies
+ *   wholly inside it;
+ * - a solid inside a closed surface does not collide with it (the
+ *   surface's inside is not part of it); two solids: as above.
+ *
+ * At the exact level this is the same walk of triangle pairs (whose test
+ * is complete for closed triangles in any position, coplanar ones
+ * included), with no containment test into a surface: only a surface's
+ * vertex inside a solid is looked for. The separating-axis filter, the
+ * box forms and the witnesses, which reason about solids, are not used
+ * for a surface. The box level is conservative as for solids (a surface
+ * lies in its box). At the convex level a surface is never convex
+ * (noctMeshIsConvex() is false); GJK tests the hull of its vertices, and
+ * where GJK finds a pair with a surface apart the level asks a proof that
+ * their triangles are apart too (the margin's distance bound, narrowphase_distance.c):
+ * the level never misses a pair with a surface, not even a touching one
+ * or one whose hull is flat (a planar surface). Every other function
+ * treats surfaces by the same definition (it says so where it matters).
+ *
  * **Accuracy levels**, cheapest first. Each runs the cheaper sound tests
  * first, so a pair a cheaper stage rejects is never handed to a costlier
  * one:
@@ -264,6 +290,14 @@ typedef struct noctSweepHit {
  *
  * The motion must be a translation: for meshes that also turn, see the
  * world's continuous level (world.h).
+ *
+ * With a surface (mesh.h) the definition is the module's: the sets share a
+ * point at some time. The argument above holds for surfaces as it does
+ * for solids (the first contact of two translating sets of closed
+ * triangles is a vertex reaching a triangle or an edge an edge), and the
+ * start is decided by the exact level, with no containment into a
+ * surface: a solid that starts inside a closed surface and stays inside
+ * never collides with it; one that reaches its wall does, at that time.
  * @param[in]  a         The first mesh.
  * @param[in]  ta0,ta1   Its start and end translations.
  * @param[in]  b         The second mesh (may be @p a).
@@ -324,7 +358,8 @@ NOCT_API noctStatus noctCollideSwept(const noctMesh *a, const double ta0[3],
  *   that near. It tests at most about 25 000 placements, each rotating a
  *   copy of the mesh (O(V log V) time and memory), so it is slow for
  *   large meshes that pass near each other; most pairs end at the first
- *   test.
+ *   test. With a surface the distance is the one of noctDistance() (its
+ *   triangles'), so the level stays conservative.
  * @param[in]  a        The first mesh.
  * @param[in]  xa0,xa1  Its start and end transforms.
  * @param[in]  b        The second mesh (may be @p a).
@@ -361,6 +396,14 @@ NOCT_API noctStatus noctCollideSweptTransformed(const noctMesh *a, const noctTra
  * is a real number that doubles seldom hold; the result brackets it:
  * `lower <= distance(true) <= upper`, both proved in floating point, and
  * `distance` is a value in [lower, upper].
+ *
+ * A surface (mesh.h) is the union of its triangles: the distance of a
+ * surface and another shape is the least distance between their point
+ * sets, 0 when they meet as the narrowphase's module text says (a surface
+ * inside a solid meets it; a solid inside a closed surface is as far
+ * from it as from its walls), else the distance between the surface's
+ * triangles and the other's boundary; the points lie on the named
+ * triangles as for solids.
  */
 typedef struct noctDistanceResult {
     double distance;      /**< The distance, in [lower, upper]: the
@@ -419,7 +462,8 @@ typedef struct noctDistanceResult {
  * rotated vertices with the mesh's own hierarchy refitted to them.
  *
  * Two paths. **Convex:** when both meshes are convex (noctMeshIsConvex(),
- * a box primitive, or a mesh of more than 32 vertices all on its hull),
+ * a box primitive, or a solid of more than 32 vertices all on its hull;
+ * never a surface),
  * GJK finds the nearest points of the hulls of the placed vertices; each
  * is moved onto the nearest triangle of its mesh, and the direction
  * between them proves the lower bound (every solid lies in the hull of
@@ -573,6 +617,14 @@ typedef enum noctContactKind {
  * opposite of B's are at the contact. @c depth and @c point_depth are 0:
  * not computed (no minimum translation is computed for non-convex
  * solids).
+ *
+ * **Surfaces** (mesh.h) are never convex: a pair with a surface has a
+ * #NOCT_CONTACT_CROSSING contact where its triangles meet the other's
+ * (n_A and n_B are then the triangles' normals as their corners run: a
+ * surface's orientation is its polygons', perhaps inconsistent, so the
+ * normal is only as meaningful as that orientation), or, for a surface
+ * that lies wholly inside a solid, #NOCT_CONTACT_CONTAINED as below (the
+ * surface is the inner shape; a solid is never inside a surface).
  *
  * **Containment.** Of convex shapes: as above (the points are then the
  * inner solid's vertices, each mid-way along its chord through the inner

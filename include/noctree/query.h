@@ -34,6 +34,18 @@
  *   floating point. A segment that starts in a solid hits it at fraction
  *   0, with no triangle and a zero normal.
  *
+ * **Surfaces.** An object whose mesh is a surface (mesh.h,
+ * noctMeshCreateSurface()) is the union of its triangles, enclosing
+ * nothing, and every query treats it as that point set: a point query
+ * reports it when the point lies on one of its triangles; box and shape
+ * queries when they meet one of its triangles (a box or shape that lies
+ * inside a closed surface does not meet it; a surface inside a query
+ * shape does); a segment hits it where it first meets a triangle (a
+ * segment that starts on it hits it at fraction 0), and the normal
+ * given is the triangle's, turned to face the segment's start; distances
+ * are between the point sets (noctDistance()). A query shape may be a
+ * surface too, with the same meaning.
+ *
  * **Filters.** Every query takes a noctQueryFilter (broadphase.h): an
  * object is reported when `(object category & filter.mask) != 0 &&
  * (filter.category & object mask) != 0`; noctDefaultQueryFilter() lets
@@ -100,7 +112,9 @@ typedef struct noctRayHit {
     double point[3];    /**< origin + fraction * translation. */
     double normal[3];   /**< The unit outward normal of the triangle it
                              enters through, at any size the shapes may
-                             have; 0 when it starts inside; see flat. */
+                             have (for a surface, the triangle's unit
+                             normal on the side the segment comes from);
+                             0 when it starts inside; see flat. */
     uint32_t triangle[3]; /**< That triangle's corners, counter-clockwise
                              seen from outside: for a mesh shape, indices
                              of its vertices as given to noctMeshCreate()
@@ -131,7 +145,8 @@ typedef struct noctRayHit {
 typedef bool noctRayHitFcn(void *context, const noctRayHit *hit);
 
 /**
- * @brief Visit the objects whose closed solids contain point p, exactly.
+ * @brief Visit the objects whose closed solids contain point p, exactly
+ *        (a surface's: p lies on one of its triangles).
  * @pre world != NULL && p != NULL && fcn != NULL; fcn does not change the
  *      world.
  * @post fcn was called for each object the filter lets through whose

@@ -323,8 +323,15 @@ typedef struct noctObjectDef {
     const noctMesh *mesh;    /**< Its shape, borrowed: it must outlive the
                                   object; any number of objects may share
                                   it. A convex mesh is a convex polytope:
-                                  the narrowphase uses its convexity. NULL
-                                  for a box primitive (half_extents). */
+                                  the narrowphase uses its convexity. A
+                                  surface (noctMeshCreateSurface()) is the
+                                  union of its triangles, enclosing
+                                  nothing: the object's pairs, events,
+                                  sensors, margins, distances, contacts,
+                                  continuous detection and queries all
+                                  take it as that point set
+                                  (narrowphase.h). NULL for a box
+                                  primitive (half_extents). */
     double half_extents[3];  /**< With no mesh, the object is a box
                                   primitive with these half-extents,
                                   centred on its position: a few dozen
