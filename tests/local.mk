@@ -27,7 +27,8 @@ suites = tests/check-octree tests/check-octree-efficient \
 	tests/check-meshio tests/check-meshio-efficient \
 	tests/check-distance-paths tests/check-distance-paths-efficient \
 	tests/check-distance tests/check-distance-efficient \
-	tests/check-surface-paths tests/check-surface-paths-efficient
+	tests/check-surface-paths tests/check-surface-paths-efficient \
+	tests/check-surfaces tests/check-surfaces-efficient
 
 # The suites' kit, built once per flavour: the RNG, the tree validation
 # walk and mirror model, the L mesh (testutil), the ideal geometry of
@@ -96,6 +97,18 @@ tests_check_swept_efficient_SOURCES = tests/check_swept.c
 tests_check_swept_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_swept_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_swept_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
+
+# check-surfaces: surfaces (noctMeshCreateSurface(), mesh.h) in every
+# collision level, noctDistance(), the world and the readers, against the
+# test's own exact triangle-triangle and point-in-solid oracle in GMP
+# rationals on soups, open boxes, Moebius strips, fans and touching cases.
+tests_check_surfaces_SOURCES = tests/check_surfaces.c
+tests_check_surfaces_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_surfaces_LDADD = $(check_ldadd) $(GMP_LIBS)
+tests_check_surfaces_efficient_SOURCES = tests/check_surfaces.c
+tests_check_surfaces_efficient_CPPFLAGS = $(efficient_cppflags)
+tests_check_surfaces_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_surfaces_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
 
 # check-distance: noctDistance() (narrowphase.h) against the test's own
 # oracle in GMP rationals: the exact squared distance between every pair of
