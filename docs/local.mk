@@ -14,6 +14,28 @@ noinst_PROGRAMS += docs/examples/driven-arm
 docs_examples_driven_arm_SOURCES = docs/examples/driven-arm.c
 docs_examples_driven_arm_LDADD = lib/libnoctree.la -lm
 
+noinst_PROGRAMS += docs/examples/arm-monitor
+docs_examples_arm_monitor_SOURCES = docs/examples/arm-monitor.c
+docs_examples_arm_monitor_LDADD = lib/libnoctree.la -lm
+
+noinst_PROGRAMS += docs/examples/keyframe-check
+docs_examples_keyframe_check_SOURCES = docs/examples/keyframe-check.c
+docs_examples_keyframe_check_LDADD = lib/libnoctree.la
+
+noinst_PROGRAMS += docs/examples/queries
+docs_examples_queries_SOURCES = docs/examples/queries.c
+docs_examples_queries_LDADD = lib/libnoctree.la
+
+# The examples, installed with a Makefile that builds them against the
+# installed library with pkg-config (the Debian package libnoctree-dev has
+# them in /usr/share/doc/libnoctree-dev/examples); tests/examples.sh checks
+# what each prints, here and (make installcheck) built from that folder.
+examplesdir = $(docdir)/examples
+dist_examples_DATA = docs/examples/Makefile docs/examples/octree-demo.c \
+	docs/examples/broadphase-demo.c docs/examples/driven-arm.c \
+	docs/examples/arm-monitor.c docs/examples/keyframe-check.c \
+	docs/examples/animation.scene docs/examples/queries.c
+
 # The scene files of the arms:K and keyframes:N families (noctree-sim
 # --scene arms:3 --write-scene ...; tests/sim.sh checks that they are
 # still what the families write), installed with the documentation.
