@@ -297,10 +297,13 @@ tests_check_distance_paths_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_distance_paths_efficient_CFLAGS = $(check_cflags)
 tests_check_distance_paths_efficient_LDADD = $(efficient_ldadd)
 
+# tests/manpages.sh: the man-page lint (tests/manlint.sh) on pages made
+# to fail it and on the pages, references between pages, and the
+# installed examples the pages name.
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
-	tests/examples.sh
+	tests/examples.sh tests/manpages.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
-	tests/examples.sh \
+	tests/examples.sh tests/manpages.sh \
 	tests/lib.sh \
 	tests/inline-client.c
 
