@@ -17,7 +17,7 @@
  *
  * **The tree.** Each proxy is in every leaf its box overlaps. A leaf
  * splits when more than N of its proxies are at most half its size on
- * every axis (world.h, "The overlap rule"), below the maximum depth; when
+ * every axis (noctree_world(3), "The overlap rule"), below the maximum depth; when
  * the eight leaves under a node hold N or fewer distinct proxies they
  * merge back. The root never loses a proxy: a box that would leave it
  * makes the tree be rebuilt around a root twice as large. The first
