@@ -6,6 +6,7 @@
 # and a word after an argument that ends a clause, quoted or not);
 # and Doxygen headings that landed inside a Returns section (an @post
 # inside @return). Usage: manlint.sh PAGE...; exit 1 if any page is off.
+# PAGE may be gzipped, as installed.
 status=0
 for f in "$@"; do
     # from the section's parent, where a page's .so requests resolve
@@ -16,6 +17,9 @@ for f in "$@"; do
         printf '%s: %s\n' "$f" "$w"
         status=1
     fi
+    # an installed page may be compressed
+    src=$f
+    case $f in *.gz) src=$(mktemp) && gzip -dc "$f" > "$src" ;; esac
     awk -v f="$f" '
         # split a request line into arguments, minding double quotes:
         # arg[i] without its quotes, quoted[i] whether it had them
@@ -52,6 +56,7 @@ for f in "$@"; do
         ret && /^\.RE/ { ret = 0 }
         ret && /\\fB(Postcondition|Precondition|Note|See also)\\fP/ {
             print f ": " FNR ": a heading inside Returns"; bad = 1 }
-        END { exit bad }' "$f" || status=1
+        END { exit bad }' "$src" || status=1
+    [ "$src" = "$f" ] || rm -f "$src"
 done
 exit $status
