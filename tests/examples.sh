@@ -118,7 +118,8 @@ A - B: 3.5, nearest points (0.5, -0.5, -0.5) and (4, -0.5, -0.5)"
 "$ex/keyframe-check" "$scenes/animation.scene" > "$tmp/first" 2>&1
 check "keyframe-check: exit 0" [ $? -eq 0 ]
 check_output "keyframe-check: the ball meets the post after step 88, where" "$tmp/first" \
-    "first collision at step 88: objects post and ball, contact box (1.5, 0.47, -0.25) (1.77, 0.5, 0.25)"
+    "first collision at step 88: objects post and ball, contact box \
+(1.5, 0.47, -0.25) (1.77, 0.5, 0.25)"
 # a scene with an error: the file and line, exit 1
 printf 'mesh cube box 1 1 1\nobject cube 0 0 0 name 7up\n' > "$tmp/bad.scene"
 expect_prog "$ex/keyframe-check" 1 "bad.scene:2:" "$tmp/bad.scene"
