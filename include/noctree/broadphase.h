@@ -229,7 +229,8 @@ NOCT_API void noctBroadphaseDestroy(noctBroadphase *bp);
  * @param bp the broadphase.
  * @param lo, hi the box, closed.
  * @param user_data returned with the proxy by queries and callbacks.
- * @param category the proxy's category bits.
+ * @param category the proxy's category bits; 0 is allowed and parks it, as
+ *        for noctBroadphaseSetFilter().
  * @param mask the categories it may pair with.
  * @param id receives the handle; {0, 0} on failure.
  * @param err optional error details.
