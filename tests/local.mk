@@ -364,7 +364,9 @@ check-valgrind: $(check_PROGRAMS)
 # build the installed examples with their own Makefile against the
 # installed copy through pkg-config, in both flavours, run them and check
 # their output (tests/examples.sh, keyframe-check against the installed
-# noctree-sim), and check the installed libraries' exports.
+# noctree-sim), that every installed section 3 page that points at
+# another (.so) points at one installed, and the installed libraries'
+# exports.
 installcheck-local:
 	@set -e; pcdir='$(DESTDIR)$(pkgconfigdir)'; \
 	tmp=`mktemp -d`; trap 'rm -rf "$$tmp"' EXIT; \
@@ -380,5 +382,13 @@ installcheck-local:
 	    top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
 	    $(SHELL) $(srcdir)/tests/examples.sh; \
 	done; \
+	if test -d '$(DESTDIR)$(mandir)/man3'; then \
+	  cd '$(DESTDIR)$(mandir)/man3' && for f in *.3; do \
+	    test -f "$$f" || continue; \
+	    t=`sed -n '1s|^\.so man3/||p' "$$f"`; \
+	    if test -n "$$t" && test ! -f "$$t"; then \
+	      echo "installed $$f points at $$t, not installed"; exit 1; fi; \
+	  done; cd '$(abs_builddir)'; \
+	fi; \
 	NM='$(NM)' top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
 	  $(SHELL) $(srcdir)/tests/exports.sh '$(DESTDIR)$(libdir)'

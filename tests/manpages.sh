@@ -53,11 +53,13 @@ check "manlint: the pages" sh "$lint" "$@"
 # and 7 in docs/man, section 3 among the generated pages (when made)
 for f in "$src"/docs/man/*.[157]; do
     sed 's/\\-/-/g' "$f" |
-        sed -n 's/^\.[BI]*R* *(\{0,1\} *\([A-Za-z_][A-Za-z0-9_-]*\) (\([1357]\)).*/\1 \2/p' |
+        sed -n 's/^\.[BI]*R* *(\{0,1\} *\([A-Za-z_][A-Za-z0-9_.-]*\) (\([1357]\)).*/\1 \2/p' |
         grep -E '^(noct|oct|NOCT_|OCT_)' | sort -u |
         while read -r name sec; do
             if [ "$sec" = 3 ]; then
                 [ -d "$man3" ] || continue
+                # a header's page is installed as noctree_world.h (world.h here)
+                case $name in noctree_*.h) name=${name#noctree_} ;; esac
                 [ -f "$man3/$name.3" ] || echo "${f##*/}: $name($sec): no such page"
             else
                 [ -f "$src/docs/man/$name.$sec" ] || echo "${f##*/}: $name($sec): no such page"
