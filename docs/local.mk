@@ -14,6 +14,28 @@ noinst_PROGRAMS += docs/examples/driven-arm
 docs_examples_driven_arm_SOURCES = docs/examples/driven-arm.c
 docs_examples_driven_arm_LDADD = lib/libnoctree.la -lm
 
+noinst_PROGRAMS += docs/examples/arm-monitor
+docs_examples_arm_monitor_SOURCES = docs/examples/arm-monitor.c
+docs_examples_arm_monitor_LDADD = lib/libnoctree.la -lm
+
+noinst_PROGRAMS += docs/examples/keyframe-check
+docs_examples_keyframe_check_SOURCES = docs/examples/keyframe-check.c
+docs_examples_keyframe_check_LDADD = lib/libnoctree.la
+
+noinst_PROGRAMS += docs/examples/queries
+docs_examples_queries_SOURCES = docs/examples/queries.c
+docs_examples_queries_LDADD = lib/libnoctree.la
+
+# The examples, installed with a Makefile that builds them against the
+# installed library with pkg-config (the Debian package libnoctree-dev has
+# them in /usr/share/doc/libnoctree-dev/examples); tests/examples.sh checks
+# what each prints, here and (make installcheck) built from that folder.
+examplesdir = $(docdir)/examples
+dist_examples_DATA = docs/examples/Makefile docs/examples/octree-demo.c \
+	docs/examples/broadphase-demo.c docs/examples/driven-arm.c \
+	docs/examples/arm-monitor.c docs/examples/keyframe-check.c \
+	docs/examples/animation.scene docs/examples/queries.c
+
 # The scene files of the arms:K and keyframes:N families (noctree-sim
 # --scene arms:3 --write-scene ...; tests/sim.sh checks that they are
 # still what the families write), installed with the documentation.
@@ -54,11 +76,21 @@ CLEANFILES += docs/families.txt
 # make install puts the section 3 pages of the public names (oct*, noct*,
 # OCT_*, NOCT_*: not the pages Doxygen makes for struct fields, whose
 # names would clash) in man3dir, and the HTML (no scripts) in htmldir.
+# The headers' own pages (world.h.3: what a header holds outside its
+# module, such as the noctWorld type) go in as noctree_world.h.3 and so
+# on (noctree.h.3 as it is), and the pages that point at them (.so
+# man3/world.h.3) are pointed at those names.
 man3dir = $(mandir)/man3
 install-data-local: docs/html/index.html
 	$(MKDIR_P) '$(DESTDIR)$(man3dir)' '$(DESTDIR)$(htmldir)/html'
 	cd docs/man/man3 && for f in oct*.3 noct*.3 OCT_*.3 NOCT_*.3; do \
-	  $(INSTALL_DATA) "$$f" '$(DESTDIR)$(man3dir)' || exit 1; done
+	  case $$f in noctree.h.3) ;; *.h.3) continue ;; esac; \
+	  if head -n 1 "$$f" | grep -q '^\.so man3/[a-z_]*\.h\.3$$'; then \
+	    sed 's|^\.so man3/\([a-z_]*\.h\.3\)$$|.so man3/noctree_\1|' "$$f" > "$$f.tmp" && \
+	    $(INSTALL_DATA) "$$f.tmp" '$(DESTDIR)$(man3dir)/'"$$f" && rm -f "$$f.tmp" || exit 1; \
+	  else $(INSTALL_DATA) "$$f" '$(DESTDIR)$(man3dir)' || exit 1; fi; done; \
+	for f in *.h.3; do case $$f in noctree.h.3) continue ;; esac; \
+	  $(INSTALL_DATA) "$$f" '$(DESTDIR)$(man3dir)/noctree_'"$$f" || exit 1; done
 	cd docs/html && for f in *.html *.css *.png *.svg; do \
 	  $(INSTALL_DATA) "$$f" '$(DESTDIR)$(htmldir)/html' || exit 1; done
 uninstall-local:

@@ -1241,6 +1241,82 @@ START_TEST(world_broadphase_is_the_objects)
 END_TEST
 
 /*
+ * Category 0: the broadphase takes it (noctBroadphaseAdd() and
+ * noctBroadphaseSetFilter()) and the proxy is parked: it pairs with
+ * nothing, whatever the other's mask, and no query finds it, whatever its
+ * filter; a category again brings its pairs and queries back. The world
+ * refuses 0 (an object that can never pair is a mistake there), at
+ * creation and in noctWorldSetFilter(), and changes nothing.
+ */
+static void count_finds(const noctBroadphase *bp, int want)
+{
+    const noctQueryFilter every = {NOCT_FILTER_ALL, NOCT_FILTER_ALL};
+    const double lo[3] = {-5, -5, -5}, hi[3] = {5, 5, 5}, p[3] = {0.5, 0.5, 0.5};
+    const double origin[3] = {-5, 0.5, 0.5}, along[3] = {10, 0, 0};
+    static seen s;
+    memset(&s, 0, sizeof s);
+    s.stop_after = -1;
+    ck_assert_int_eq(noctBroadphaseQueryBox(bp, lo, hi, every, on_proxy, &s), NOCT_OK);
+    ck_assert_int_eq(s.calls, want);
+    s.calls = 0;
+    ck_assert_int_eq(noctBroadphaseQueryPoint(bp, p, every, on_proxy, &s), NOCT_OK);
+    ck_assert_int_eq(s.calls, want);
+    s.calls = 0;
+    ck_assert_int_eq(noctBroadphaseRayCast(bp, origin, along, every, on_ray, &s), NOCT_OK);
+    ck_assert_int_eq(s.calls, want);
+    for (int i = 0; i < s.calls; ++i)
+        ck_assert_uint_eq(s.idx[i], (uint32_t)i);
+}
+
+START_TEST(category_zero_parks_a_proxy)
+{
+    noctBroadphaseDef def = noctDefaultBroadphaseDef();
+    noctBroadphase *bp;
+    noctError err;
+    ck_assert_int_eq(noctBroadphaseCreate(&def, &bp, &err), NOCT_OK);
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    noctProxyId a, b;
+    ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, 1, NOCT_FILTER_ALL, &a, &err),
+                     NOCT_OK);
+    ck_assert_int_eq(noctBroadphaseAdd(bp, lo, hi, NULL, 0, NOCT_FILTER_ALL, &b, &err),
+                     NOCT_OK);
+    const noctProxyPair *pairs;
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &pairs), 0);
+    count_finds(bp, 1);
+    ck_assert_int_eq(noctBroadphaseSetFilter(bp, b, 1, NOCT_FILTER_ALL), NOCT_OK);
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &pairs), 1);
+    count_finds(bp, 2);
+    ck_assert_int_eq(noctBroadphaseSetFilter(bp, b, 0, NOCT_FILTER_ALL), NOCT_OK);
+    uint64_t cat = 1, mask = 0;
+    ck_assert_int_eq(noctBroadphaseProxy(bp, b, NULL, NULL, NULL, &cat, &mask), NOCT_OK);
+    ck_assert(cat == 0 && mask == NOCT_FILTER_ALL);
+    ck_assert_int_eq(noctBroadphaseUpdatePairs(bp, &err), NOCT_OK);
+    ck_assert_uint_eq(noctBroadphasePairs(bp, &pairs), 0);
+    count_finds(bp, 1);
+    ck_assert_int_eq(noctBroadphaseValidate(bp, &err), NOCT_OK);
+    noctBroadphaseDestroy(bp);
+
+    noctWorldDef wd = noctDefaultWorldDef();
+    noctWorld *w;
+    ck_assert_int_eq(noctWorldCreate(&wd, &w, &err), NOCT_OK);
+    noctObjectDef d = noctDefaultObjectDef();
+    d.half_extents[0] = d.half_extents[1] = d.half_extents[2] = 0.5;
+    d.category = 0;
+    noctObjectId id;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, &err), NOCT_ERR_INVALID);
+    ck_assert_uint_eq(noctWorldObjectCount(w), 0);
+    d.category = 1;
+    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, &err), NOCT_OK);
+    ck_assert_int_eq(noctWorldSetFilter(w, id, 0, NOCT_FILTER_ALL, &err), NOCT_ERR_INVALID);
+    ck_assert_int_eq(noctWorldGetFilter(w, id, &cat, &mask), NOCT_OK);
+    ck_assert(cat == 1 && mask == NOCT_FILTER_ALL);
+    noctWorldDestroy(w);
+}
+END_TEST
+
+/*
  * Far from the origin, cells must stay wider than the coordinates'
  * rounding: coincident points and boxes of a few ulps, at offsets from 10
  * to 1e99, moved by a few ulps at a time, give exactly the brute force's
@@ -1322,5 +1398,6 @@ int main(void)
                         3 * (int)(sizeof FAR_OFFSETS / sizeof *FAR_OFFSETS));
     tc = test_case(s, "bad input", 0, NULL);
     tcase_add_test(tc, bad_input_changes_nothing);
+    tcase_add_test(tc, category_zero_parks_a_proxy);
     return run_suite(s);
 }

@@ -337,10 +337,13 @@ tests_check_surface_paths_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_surface_paths_efficient_CFLAGS = $(check_cflags)
 tests_check_surface_paths_efficient_LDADD = $(efficient_ldadd)
 
+# tests/manpages.sh: the man-page lint (tests/manlint.sh) on pages made
+# to fail it and on the pages, references between pages, and the
+# installed examples the pages name.
 TESTS += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
-	tests/examples.sh
+	tests/examples.sh tests/manpages.sh
 EXTRA_DIST += tests/exports.sh tests/inline.sh tests/headers.sh tests/sim.sh tests/tools.sh \
-	tests/examples.sh \
+	tests/examples.sh tests/manpages.sh \
 	tests/lib.sh \
 	tests/inline-client.c
 
@@ -399,30 +402,34 @@ check-valgrind: $(check_PROGRAMS)
 .PHONY: check-valgrind
 
 # Run from make installcheck (and so from make distcheck) after make install:
-# build the example against the installed copy through pkg-config, in both
-# flavours, run it, and check the installed libraries' exports.
+# build the installed examples with their own Makefile against the
+# installed copy through pkg-config, in both flavours, run them and check
+# their output (tests/examples.sh, keyframe-check against the installed
+# noctree-sim), that every installed section 3 page that points at
+# another (.so) points at one installed, and the installed libraries'
+# exports.
 installcheck-local:
 	@set -e; pcdir='$(DESTDIR)$(pkgconfigdir)'; \
 	tmp=`mktemp -d`; trap 'rm -rf "$$tmp"' EXIT; \
 	for mod in noctree noctree-efficient; do \
-	  flags=`PKG_CONFIG_PATH="$$pcdir" PKG_CONFIG_SYSROOT_DIR='$(DESTDIR)' \
-	    $(PKG_CONFIG) --cflags --libs $$mod`; \
-	  echo "cc octree-demo.c $$flags"; \
-	  $(CC) -std=c11 $(srcdir)/docs/examples/octree-demo.c $$flags \
-	    -o "$$tmp/demo-$$mod"; \
-	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/demo-$$mod" > "$$tmp/out"; \
-	  grep -q 'OMEGA 0' "$$tmp/out"; \
-	  echo "cc broadphase-demo.c $$flags"; \
-	  $(CC) -std=c11 $(srcdir)/docs/examples/broadphase-demo.c $$flags \
-	    -o "$$tmp/bp-$$mod"; \
-	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/bp-$$mod" > "$$tmp/out"; \
-	  grep -q '^pairs total 31$$' "$$tmp/out"; \
-	  grep -q '^ray: first crate A$$' "$$tmp/out"; \
-	  echo "cc driven-arm.c $$flags -lm"; \
-	  $(CC) -std=c11 $(srcdir)/docs/examples/driven-arm.c $$flags -lm \
-	    -o "$$tmp/arm-$$mod"; \
-	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' "$$tmp/arm-$$mod" > "$$tmp/out"; \
-	  grep -q '^frame  4: contact forearm - crate$$' "$$tmp/out"; \
+	  echo "make -C examples PKG=$$mod (installed: $(examplesdir))"; \
+	  rm -rf "$$tmp/$$mod" && cp -R '$(DESTDIR)$(examplesdir)' "$$tmp/$$mod"; \
+	  PKG_CONFIG_PATH="$$pcdir" PKG_CONFIG_SYSROOT_DIR='$(DESTDIR)' \
+	    $(MAKE) -s -C "$$tmp/$$mod" CC='$(CC)' PKG=$$mod \
+	      CFLAGS='-std=c11 -O2 -Wall -Wextra -Werror'; \
+	  LD_LIBRARY_PATH='$(DESTDIR)$(libdir)' EXAMPLES="$$tmp/$$mod" \
+	    EXAMPLE_SCENES="$$tmp/$$mod" TOOL_SCENES='$(DESTDIR)$(examplescenesdir)' \
+	    NOCTREE_SIM='$(DESTDIR)$(bindir)/noctree-sim' srcdir='$(srcdir)/tests' \
+	    top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
+	    $(SHELL) $(srcdir)/tests/examples.sh; \
 	done; \
+	if test -d '$(DESTDIR)$(mandir)/man3'; then \
+	  cd '$(DESTDIR)$(mandir)/man3' && for f in *.3; do \
+	    test -f "$$f" || continue; \
+	    t=`sed -n '1s|^\.so man3/||p' "$$f"`; \
+	    if test -n "$$t" && test ! -f "$$t"; then \
+	      echo "installed $$f points at $$t, not installed"; exit 1; fi; \
+	  done; cd '$(abs_builddir)'; \
+	fi; \
 	NM='$(NM)' top_srcdir='$(top_srcdir)' top_builddir='$(top_builddir)' \
 	  $(SHELL) $(srcdir)/tests/exports.sh '$(DESTDIR)$(libdir)'

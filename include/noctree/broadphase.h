@@ -17,7 +17,7 @@
  *
  * **The tree.** Each proxy is in every leaf its box overlaps. A leaf
  * splits when more than N of its proxies are at most half its size on
- * every axis (world.h, "The overlap rule"), below the maximum depth; when
+ * every axis (noctree_world(3), "The overlap rule"), below the maximum depth; when
  * the eight leaves under a node hold N or fewer distinct proxies they
  * merge back. The root never loses a proxy: a box that would leave it
  * makes the tree be rebuilt around a root twice as large. The first
@@ -229,7 +229,8 @@ NOCT_API void noctBroadphaseDestroy(noctBroadphase *bp);
  * @param bp the broadphase.
  * @param lo, hi the box, closed.
  * @param user_data returned with the proxy by queries and callbacks.
- * @param category the proxy's category bits.
+ * @param category the proxy's category bits; 0 is allowed and parks it, as
+ *        for noctBroadphaseSetFilter().
  * @param mask the categories it may pair with.
  * @param id receives the handle; {0, 0} on failure.
  * @param err optional error details.

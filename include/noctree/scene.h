@@ -47,8 +47,9 @@ typedef struct noctScene noctScene;
  * @post On #NOCT_OK, noctSceneBuild() fails for no reason in the file:
  *       only for want of memory, for parameters changed through
  *       noctSceneDef(), or (so unlikely that no case is known) for a
- *       rotation whose rounded vertices make a mesh degenerate. A direction is any finite vector other than zero,
- *       however large or small its components (the world normalizes it).
+ *       rotation whose rounded vertices make a mesh degenerate. A
+ *       direction is any finite vector other than zero, however large or
+ *       small its components (the world normalizes it).
  * @return #NOCT_OK; #NOCT_ERR_IO if the file cannot be opened or read;
  *         #NOCT_ERR_NOMEM if memory runs out, opening and reading lines
  *         included (never a scene read short); #NOCT_ERR_PARSE for a
@@ -66,8 +67,8 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
 
 /**
  * @brief Make a built-in scene family: `planes:K` (t_K), `gas:N`,
- *        `mixed:N`, `clusters:N`, `static:N`, `escape:N`, `arms:K` or
- *        `keyframes:N`.
+ *        `mixed:N`, `clusters:N`, `static:N`, `escape:N`, `bullets:N`,
+ *        `notch:N`, `arms:K` or `keyframes:N`.
  *
  * - `planes:K` (K 0 to 1000) and `gas:N` (N 1 to 10^7): the report's
  *   test sets and a gas of oriented boxes, 200 steps with the default
@@ -75,6 +76,10 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
  * - `mixed:N`, `clusters:N`, `static:N` and `escape:N` (N 1 to 10^7):
  *   kinds of gas with boxes of sizes over a factor of 8, in dense
  *   clusters, nine in ten static, and escaping outward without walls.
+ * - `bullets:N` (N 1 to 10^7): N objects of which one in ten is a thin
+ *   plate flying fast enough to pass through others between two steps;
+ *   `notch:N` (N 1 to 10^6): N non-convex prisms, each with a cube moving
+ *   in its notch, near contact all the time.
  * - `arms:K` (K 1 to 8): two robot arms of K links each (box primitives,
  *   length 2) swinging at revolute joints in a bay of six static walls,
  *   with static boxes loose on its floor; every link follows a track with
@@ -87,7 +92,7 @@ NOCT_API noctStatus noctSceneRead(const char *path, noctScene **scene,
  *   each other along tracks of 5 random keyframes (ticks 0, 50, ..., 200),
  *   200 steps, effects events and track.
  *
- * noctree-sim(1) gives the exact definition of every family.
+ * noctree-families(7) defines every family exactly.
  * @param[in]  spec  The family and its size.
  * @param[out] scene Receives the scene on success, NULL otherwise.
  * @param[out] err   Receives the details of a failure, or NULL.

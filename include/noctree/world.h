@@ -66,7 +66,7 @@
  * **N and the maximum depth** are the world's unless a program gives
  * them (noctWorldDef, #NOCT_AUTO by default): its broadphase chooses them
  * whenever it builds the tree, and builds it again when the number of
- * objects has changed by a factor of 4 since (broadphase.h, "Settings":
+ * objects has changed by a factor of 4 since (noctree_broadphase(3), "Settings":
  * N is 128; the depth follows the objects' sizes against the root's). The
  * choice changes neither the pairs nor the events, only the time and
  * memory a step takes; noctBroadphaseGetSettings() on
@@ -256,7 +256,7 @@ typedef enum noctMaintenance {
 typedef struct noctWorldDef {
     int N;                  /**< Most objects per leaf that a split could
                                  separate (1 or more; see "The octree"
-                                 in world.h's overview), #NOCT_N_EXHAUSTIVE,
+                                 in noctree_world(3)), #NOCT_N_EXHAUSTIVE,
                                  or #NOCT_AUTO:
                                  chosen by the world's broadphase from
                                  what it holds (broadphase.h, Settings).
@@ -299,7 +299,7 @@ typedef enum noctObjectType {
  * @brief How an object's motion is tested: at the world's accuracy, or
  *        continuously whatever the world's (noctObjectDef::quality).
  *
- * Continuous detection costs where objects move (world.h, "Continuous
+ * Continuous detection costs where objects move (noctree_world(3), "Continuous
  * detection"); a program can give it to the few objects that need it
  * (a thrown tool, a fast arm link: Box2D's bullets, Jolt's linear-cast
  * motion quality) in a discrete world, or take it from objects that
@@ -545,7 +545,7 @@ NOCT_API noctObjectDef noctDefaultObjectDef(void);
  * @brief Add an object made from a definition.
  *
  * With a rotation other than the identity the world keeps a copy of the
- * mesh with its vertices rotated (transform.h, "Placement") while that
+ * mesh with its vertices rotated (noctree_transform(3), "Placement") while that
  * rotation lasts: memory and time of a mesh creation, once per rotation
  * set, none per step.
  * @param[in]  world The world.
