@@ -874,6 +874,7 @@ typedef struct convex_set {
     const noctMesh *m;
     double *p;      /* 3 m->nv */
     size_t n;
+    double lo[3], hi[3]; /* the placed box (unscaled) */
 } convex_set;
 
 static size_t support(const convex_set *s, const double d[3])
@@ -898,7 +899,13 @@ static unsigned simplex_nearest(double w[4][3], int n, double lam[4], double out
 {
     double best = INFINITY;
     unsigned mask = 1;
-    for (unsigned sub = 1; sub < (1u << n); ++sub) {
+    /* the nearest point of the new simplex lies on a face with the new
+     * point w[n - 1] (else the support would not have found it): only
+     * those faces */
+    const unsigned must = 1u << (n - 1);
+    for (unsigned sub = must; sub < (1u << n); ++sub) {
+        if (!(sub & must))
+            continue;
         int idx[4], k = 0;
         for (int i = 0; i < n; ++i)
             if (sub & (1u << i))
@@ -1090,6 +1097,8 @@ static uint32_t nearest_triangle(const convex_set *s, const double p[3], const s
                 best = d2;
                 bt = t;
                 noct_copy3(c, q);
+                if (pass == 0 && best <= tol2)
+                    break; /* one that holds p (within the tolerance) will do */
             }
         }
         if (best <= tol2)
@@ -1338,12 +1347,8 @@ static int sets_overlap(const convex_set s[2])
 {
     bool a_in_b = true, b_in_a = true;
     for (int k = 0; k < 3; ++k) {
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        for (int i = 0; i < 2; ++i)
-            for (size_t j = 0; j < s[i].n; ++j) {
-                lo[i] = noct_min(lo[i], s[i].p[3 * j + k]);
-                hi[i] = noct_max(hi[i], s[i].p[3 * j + k]);
-            }
+        const double *lo = (const double[2]){s[0].lo[k], s[1].lo[k]};
+        const double *hi = (const double[2]){s[0].hi[k], s[1].hi[k]};
         if (lo[0] > hi[1] || lo[1] > hi[0])
             return 0;
         const double ca = lo[0] + (hi[0] - lo[0]) / 2, cb = lo[1] + (hi[1] - lo[1]) / 2;
@@ -1364,13 +1369,8 @@ static void set_colliding_sets(noctDistanceResult *r, const convex_set s[2])
     no_triangle(r->triangle_b);
     r->colliding = true;
     for (int k = 0; k < 3; ++k) {
-        double l[2] = {INFINITY, INFINITY}, h[2] = {-INFINITY, -INFINITY};
-        for (int i = 0; i < 2; ++i)
-            for (size_t j = 0; j < s[i].n; ++j) {
-                l[i] = noct_min(l[i], s[i].p[3 * j + k]);
-                h[i] = noct_max(h[i], s[i].p[3 * j + k]);
-            }
-        const double lo = noct_max(l[0], l[1]), hi = noct_min(h[0], h[1]);
+        const double lo = noct_max(s[0].lo[k], s[1].lo[k]);
+        const double hi = noct_min(s[0].hi[k], s[1].hi[k]);
         r->point_a[k] = r->point_b[k] = lo + (hi - lo) / 2;
     }
 }
@@ -1404,11 +1404,18 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
                 noct_copy3(&m[i]->v[3 * j], p);
         }
         ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
+        for (int k = 0; k < 3; ++k) {
+            s[i].lo[k] = INFINITY;
+            s[i].hi[k] = -INFINITY;
+        }
         for (size_t j = 0; j < s[i].n && ok; ++j)
             for (int k = 0; k < 3; ++k) {
-                s[i].p[3 * j + k] += x[i]->p[k];
-                mag = noct_max(mag, fabs(s[i].p[3 * j + k]));
+                const double c = s[i].p[3 * j + k] += x[i]->p[k];
+                s[i].lo[k] = noct_min(s[i].lo[k], c);
+                s[i].hi[k] = noct_max(s[i].hi[k], c);
             }
+        for (int k = 0; k < 3 && ok; ++k)
+            mag = noct_max(mag, noct_max(fabs(s[i].lo[k]), fabs(s[i].hi[k])));
     }
     bool answered = false;
     /* Two boxes whose placed boxes overlap deeply likely meet: the
@@ -1441,10 +1448,6 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
          * exact; scaling down may round, and the general path decides) */
         if (!answered && overlap == 1 && scale >= 1 && boxes_proved_meeting(s, R, turned)) {
             set_colliding_sets(r, s);
-            for (int k = 0; k < 3; ++k) {
-                r->point_a[k] /= scale;
-                r->point_b[k] /= scale;
-            }
             answered = true;
             if (stats)
                 ++stats->witnesses;
