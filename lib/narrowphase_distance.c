@@ -857,6 +857,7 @@ typedef struct convex_set {
     const noctMesh *m;
     double *p;      /* 3 m->nv */
     size_t n;
+    double lo[3], hi[3]; /* the placed box (unscaled) */
 } convex_set;
 
 static size_t support(const convex_set *s, const double d[3])
@@ -881,7 +882,13 @@ static unsigned simplex_nearest(double w[4][3], int n, double lam[4], double out
 {
     double best = INFINITY;
     unsigned mask = 1;
-    for (unsigned sub = 1; sub < (1u << n); ++sub) {
+    /* the nearest point of the new simplex lies on a face with the new
+     * point w[n - 1] (else the support would not have found it): only
+     * those faces */
+    const unsigned must = 1u << (n - 1);
+    for (unsigned sub = must; sub < (1u << n); ++sub) {
+        if (!(sub & must))
+            continue;
         int idx[4], k = 0;
         for (int i = 0; i < n; ++i)
             if (sub & (1u << i))
@@ -1024,21 +1031,45 @@ static double point_on_tri(const double p[3], double x[3][3], double out[3])
     return best;
 }
 
+/* The distinct vertices among idx[0, n) into out; returns how many. */
+static int distinct(const size_t *idx, int n, size_t out[4])
+{
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        bool seen = false;
+        for (int j = 0; j < m; ++j)
+            seen = seen || out[j] == idx[i];
+        if (!seen)
+            out[m++] = idx[i];
+    }
+    return m;
+}
+
 /* The triangle of s's mesh nearest p and its point nearest p: first among
- * the triangles at the vertices GJK used (near[0, n)), which hold p unless
- * a face is triangulated away from them; else among all. */
+ * the triangles that hold every vertex GJK used (near[0, n), repeats
+ * included), which hold p when GJK's face is a triangle's, its edge or
+ * its corner; then among the triangles at any of them, which hold p
+ * unless a face is triangulated away from them; else among all. */
 static uint32_t nearest_triangle(const convex_set *s, const double p[3], const size_t *near,
                                  int n, double tol2, double q[3])
 {
     const noctMesh *m = s->m;
+    size_t dv[4];
+    const int nd = distinct(near, n, dv);
     double best = INFINITY;
     uint32_t bt = 0;
-    for (int pass = 0; pass < 2; ++pass) {
+    for (int pass = nd <= 3 ? 0 : 1; pass < 3; ++pass) {
         for (uint32_t t = 0; t < m->nt; ++t) {
             const uint32_t *v = &m->tri[3 * t];
-            bool at = pass == 1;
-            for (int i = 0; i < n && !at; ++i)
-                at = v[0] == near[i] || v[1] == near[i] || v[2] == near[i];
+            bool at = pass == 2;
+            if (pass == 0) {
+                at = true;
+                for (int i = 0; i < nd && at; ++i)
+                    at = v[0] == dv[i] || v[1] == dv[i] || v[2] == dv[i];
+            } else {
+                for (int i = 0; i < nd && !at; ++i)
+                    at = v[0] == dv[i] || v[1] == dv[i] || v[2] == dv[i];
+            }
             if (!at)
                 continue;
             double x[3][3], c[3];
@@ -1049,6 +1080,8 @@ static uint32_t nearest_triangle(const convex_set *s, const double p[3], const s
                 best = d2;
                 bt = t;
                 noct_copy3(c, q);
+                if (pass == 0 && best <= tol2)
+                    break; /* one that holds p (within the tolerance) will do */
             }
         }
         if (best <= tol2)
@@ -1127,6 +1160,59 @@ static bool set_first(const convex_set *a, const convex_set *b)
     return true;
 }
 
+/* The gap between the placed vertex sets A and B along u, proved: (the
+ * least of B's projections - the greatest of A's, less twice their
+ * rounding) over |u|, or 0; s bounds every coordinate. Every closed solid
+ * lies in the hull of its vertices, so it bounds their distance. */
+static double sets_gap(const double u[3], const convex_set *A, const convex_set *B, double s)
+{
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    if (!(l1 > 0))
+        return 0;
+    double amax = -INFINITY, bmin = INFINITY;
+    for (size_t i = 0; i < A->n; ++i)
+        amax = noct_max(amax, noct_dot3(u, &A->p[3 * i]));
+    for (size_t i = 0; i < B->n; ++i)
+        bmin = noct_min(bmin, noct_dot3(u, &B->p[3 * i]));
+    /* each projection errs by at most 4 ulp of l1 s, as in proved_gap() */
+    const double gap = bmin - amax - 2 * (0x1p-50 * l1 * s);
+    if (!(gap > 0))
+        return 0;
+    return gap / (noct_norm3(u) * (1 + 0x1p-48));
+}
+
+/* The axes of the features GJK ended on, turned towards v: the normal of
+ * a side's three vertices (a face), the cross product of the two sides'
+ * edges (two vertices each). Returns how many (at most 3). */
+static int feature_axes(const convex_set *A, const size_t *ia, const convex_set *B,
+                        const size_t *ib, int n, const double v[3], double axes[3][3])
+{
+    size_t da[4], db[4];
+    const int na = distinct(ia, n, da), nb = distinct(ib, n, db);
+    int k = 0;
+    double e1[3], e2[3];
+    if (na == 3) {
+        noct_sub3(&A->p[3 * da[1]], &A->p[3 * da[0]], e1);
+        noct_sub3(&A->p[3 * da[2]], &A->p[3 * da[0]], e2);
+        noct_cross3(e1, e2, axes[k++]);
+    }
+    if (nb == 3) {
+        noct_sub3(&B->p[3 * db[1]], &B->p[3 * db[0]], e1);
+        noct_sub3(&B->p[3 * db[2]], &B->p[3 * db[0]], e2);
+        noct_cross3(e1, e2, axes[k++]);
+    }
+    if (na == 2 && nb == 2) {
+        noct_sub3(&A->p[3 * da[1]], &A->p[3 * da[0]], e1);
+        noct_sub3(&B->p[3 * db[1]], &B->p[3 * db[0]], e2);
+        noct_cross3(e1, e2, axes[k++]);
+    }
+    for (int i = 0; i < k; ++i)
+        if (noct_dot3(axes[i], v) < 0)
+            for (int c = 0; c < 3; ++c)
+                axes[i][c] = -axes[i][c];
+    return k;
+}
+
 /*
  * The distance of two convex meshes' placed vertex sets (scaled by
  * scale; mag their unscaled magnitude): GJK gives the nearest points of
@@ -1162,22 +1248,24 @@ static bool convex_distance(const convex_set *A, const convex_set *B, double sca
     const double l1 = fabs(v[0]) + fabs(v[1]) + fabs(v[2]);
     if (!(l1 > 0))
         return false;
-    double s = 0, amax = -INFINITY, bmin = INFINITY;
-    for (size_t i = 0; i < A->n; ++i) {
-        amax = noct_max(amax, noct_dot3(v, &A->p[3 * i]));
+    double s = 0;
+    for (size_t i = 0; i < A->n; ++i)
         s = noct_max(s, noct_max_abs3(&A->p[3 * i]));
-    }
-    for (size_t i = 0; i < B->n; ++i) {
-        bmin = noct_min(bmin, noct_dot3(v, &B->p[3 * i]));
+    for (size_t i = 0; i < B->n; ++i)
         s = noct_max(s, noct_max_abs3(&B->p[3 * i]));
-    }
-    /* each projection errs by at most 4 ulp of l1 s, as in proved_gap() */
-    const double gap = bmin - amax - 2 * (0x1p-50 * l1 * s);
-    if (!(gap > 0))
-        return false;
-    const double lower = gap / (noct_norm3(v) * (1 + 0x1p-48));
     const double upper = d * (1 + 0x1p-50) + 2 * allow;
-    if (!(upper - lower <= 0x1p-41 * noct_max(mag_s, upper)))
+    const double width = 0x1p-41 * noct_max(mag_s, upper);
+    double lower = sets_gap(v, A, B, s);
+    if (!(upper - lower <= width)) {
+        /* the direction between two near points errs by about the
+         * points' rounding over their distance: the axes of GJK's own
+         * features, made of the vertices, are as sharp at any distance */
+        double axes[3][3];
+        const int na = feature_axes(A, ia, B, ib, n, v, axes);
+        for (int i = 0; i < na; ++i)
+            lower = noct_max(lower, sets_gap(axes[i], A, B, s));
+    }
+    if (!(lower > 0) || !(upper - lower <= width))
         return false;
     memset(r, 0, sizeof *r);
     if (lower > max_distance * scale) {
@@ -1194,6 +1282,80 @@ static bool convex_distance(const convex_set *A, const convex_set *B, double sca
         r->triangle_b[k] = B->m->tri[3 * tb + k];
     }
     return true;
+}
+
+/* Two box-form meshes (both with a dual) whose placed vertices' boxes
+ * overlap: does the separating-axis proof on their placed box forms show
+ * that the solids share a point (noct_box_decide())? The forms are made
+ * of the placed vertices themselves (fl(fl(R v) + t), as every path
+ * places them), their directions the mesh's box edges turned, so the
+ * proof is about these solids; then the answer is the colliding one, as
+ * the exact test would give it. */
+static bool boxes_proved_meeting(const convex_set s[2], double R[2][9], const bool turned[2])
+{
+    noct_box_slot slot[2];
+    for (int i = 0; i < 2; ++i) {
+        const noctMesh *m = s[i].m;
+        double u[3][3];
+        for (int j = 0; j < 3; ++j) {
+            double e[3];
+            if (turned[i])
+                noct_rotate(R[i], m->box.e[j], e);
+            else
+                noct_copy3(m->box.e[j], e);
+            noct_unit3(e, u[j]);
+        }
+        const double *const d[3] = {u[0], u[1], u[2]};
+        box_form b;
+        box_dual x;
+        bool has_box, has_dual;
+        noct_box_form_of(s[i].p, d, m->tri, m->nt, &b, &has_box, &x, &has_dual);
+        if (!has_dual)
+            return false;
+        memcpy(slot[i].c, b.c, sizeof slot[i].c);
+        memcpy(slot[i].e, b.e, sizeof slot[i].e);
+        slot[i].size = b.size;
+        memcpy(slot[i].own, b.own, sizeof slot[i].own);
+        slot[i].dev = b.dev;
+        slot[i].shrink = x.shrink;
+        slot[i].has_box = 1;
+    }
+    static const double zero[3] = {0, 0, 0};
+    return noct_box_decide(&slot[0], zero, &slot[1], zero) > 0;
+}
+
+/* Do the placed boxes of two vertex sets overlap: 0 no, 1 yes, 2 so
+ * deeply that the centre of one lies in the other (as boxes_deep()). */
+static int sets_overlap(const convex_set s[2])
+{
+    bool a_in_b = true, b_in_a = true;
+    for (int k = 0; k < 3; ++k) {
+        const double *lo = (const double[2]){s[0].lo[k], s[1].lo[k]};
+        const double *hi = (const double[2]){s[0].hi[k], s[1].hi[k]};
+        if (lo[0] > hi[1] || lo[1] > hi[0])
+            return 0;
+        const double ca = lo[0] + (hi[0] - lo[0]) / 2, cb = lo[1] + (hi[1] - lo[1]) / 2;
+        a_in_b = a_in_b && ca >= lo[1] && ca <= hi[1];
+        b_in_a = b_in_a && cb >= lo[0] && cb <= hi[0];
+    }
+    return a_in_b || b_in_a ? 2 : 1;
+}
+
+/* The answer for solids that meet, from their placed vertices: as
+ * set_colliding() gives it from their placed boxes (the least and
+ * greatest of the placed vertices are the placed box's corners, as
+ * rounding is monotonic). */
+static void set_colliding_sets(noctDistanceResult *r, const convex_set s[2])
+{
+    memset(r, 0, sizeof *r);
+    no_triangle(r->triangle_a);
+    no_triangle(r->triangle_b);
+    r->colliding = true;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = noct_max(s[0].lo[k], s[1].lo[k]);
+        const double hi = noct_min(s[0].hi[k], s[1].hi[k]);
+        r->point_a[k] = r->point_b[k] = lo + (hi - lo) / 2;
+    }
 }
 
 /* The convex path of noctDistance(): true if it answered. */
@@ -1225,13 +1387,33 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
                 noct_copy3(&m[i]->v[3 * j], p);
         }
         ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
+        for (int k = 0; k < 3; ++k) {
+            s[i].lo[k] = INFINITY;
+            s[i].hi[k] = -INFINITY;
+        }
         for (size_t j = 0; j < s[i].n && ok; ++j)
             for (int k = 0; k < 3; ++k) {
-                s[i].p[3 * j + k] += x[i]->p[k];
-                mag = noct_max(mag, fabs(s[i].p[3 * j + k]));
+                const double c = s[i].p[3 * j + k] += x[i]->p[k];
+                s[i].lo[k] = noct_min(s[i].lo[k], c);
+                s[i].hi[k] = noct_max(s[i].hi[k], c);
             }
+        for (int k = 0; k < 3 && ok; ++k)
+            mag = noct_max(mag, noct_max(fabs(s[i].lo[k]), fabs(s[i].hi[k])));
     }
     bool answered = false;
+    /* Two boxes whose placed boxes overlap deeply likely meet: the
+     * separating-axis proof on their box forms first; else only when GJK
+     * could not answer and the placed boxes overlap. */
+    const int overlap = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8
+                            ? sets_overlap(s) : 0;
+    if (overlap == 2 && boxes_proved_meeting(s, R, turned)) {
+        set_colliding_sets(r, s);
+        if (stats)
+            ++stats->witnesses;
+        free(heap[0]);
+        free(heap[1]);
+        return true;
+    }
     if (ok) {
         const double scale = search_scale(mag);
         if (scale != 1)
@@ -1245,6 +1427,14 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             mirror(r);
         if (answered && stats)
             ++stats->convex_tests;
+        /* (on the scaled vertices: scaling up, for small meshes, is
+         * exact; scaling down may round, and the general path decides) */
+        if (!answered && overlap == 1 && scale >= 1 && boxes_proved_meeting(s, R, turned)) {
+            set_colliding_sets(r, s);
+            answered = true;
+            if (stats)
+                ++stats->witnesses;
+        }
     }
     free(heap[0]);
     free(heap[1]);

@@ -133,6 +133,37 @@ static noctStatus dquery_make(dquery *d, const noctWorld *w, const noctMesh *mes
     return NOCT_OK;
 }
 
+/* Do a box primitive query (or object) and object s (or a box primitive
+ * query) meet, as the separating-axis proof on their box forms shows it
+ * (noct_box_decide(), both with a dual)? Then r is the answer for solids
+ * that meet, as the narrowphase gives it: the centre of the overlap of
+ * their placed boxes, m the object's shape as placed at its position. A
+ * pair of two meshes goes to noctDistance(), which asks its own forms. */
+static bool boxes_meet(const dquery *d, uint32_t s, const noctMesh *m, noctDistanceResult *r)
+{
+    const noctWorld *w = d->w;
+    const noct_box_slot *os = &w->slot[s];
+    if (d->point || (d->mesh != NULL && noct_world_shape_of(w, s) != NULL) || !d->has_slot ||
+        !(d->slot.shrink < 1) || !os->has_box || !(os->shrink < 1))
+        return false;
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = noct_max(d->lo[k], m->lo[k] + w->pos[s][k]);
+        hi[k] = noct_min(d->hi[k], m->hi[k] + w->pos[s][k]);
+        if (lo[k] > hi[k])
+            return false;
+    }
+    if (noct_box_decide(&d->slot, d->t, os, w->pos[s]) <= 0)
+        return false;
+    memset(r, 0, sizeof *r);
+    for (int k = 0; k < 3; ++k) {
+        r->triangle_a[k] = r->triangle_b[k] = NOCT_NO_TRIANGLE;
+        r->point_a[k] = r->point_b[k] = lo[k] + (hi[k] - lo[k]) / 2;
+    }
+    r->colliding = true;
+    return true;
+}
+
 /* The distance from the query to object s, searched up to max. */
 static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
                                   noctDistanceResult *r, noctError *err)
@@ -140,6 +171,8 @@ static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
     noct_shape_view v;
     const noctWorld *w = d->w;
     const noctMesh *m = noct_world_shape(w, s, &v);
+    if (boxes_meet(d, s, m, r))
+        return NOCT_OK;
     const noctTransform xs = object_transform(w, s);
     const noctStatus st =
         d->point ? noct_point_distance_placed(d->t, m, w->pos[s], max, r)
