@@ -96,7 +96,10 @@
  * two differ is checked by the bench's own exact test in GMP rationals on
  * the vertices placed as transform.h says (triangle against triangle,
  * then a point of each inside the other by ray parity); the tool fails if
- * libnoctree's verdict is not the exact one.
+ * libnoctree's verdict is not the exact one. A third case makes the large
+ * one an open surface (noctMeshCreateSurfaceFromData(): the triangles with
+ * a corner above a cap left out), whose meaning is FCL's: the triangles
+ * meet; the verdicts must then all agree.
  *
  * Usage: bench-peers [--quick] [--broadphase [--disputed] | --driven | --queries [Q]
  *                    | --nearest [Q] | --distance [C] | --soups [P]]
@@ -1896,18 +1899,31 @@ bool run_nearest(const char *spec, long q, const Options &o)
 // FCL's BVHModel<OBBRSS> of the same welded triangles.
 struct Soup {
     std::string name;
+    bool surface = false; // made by noctMeshCreateSurfaceFromData()
     noctMesh *mesh = nullptr;
     std::vector<double> v;  // welded vertices
     std::vector<uint32_t> t; // triangles
     std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl;
 };
 
-bool make_soup(const char *name, int n, int m, double scale, Soup &s)
+// With cap > 0: an open surface, the triangles with a corner above z = cap
+// (before scaling) left out.
+bool make_soup(const char *name, int n, int m, double scale, Soup &s, double cap = 0)
 {
     std::vector<double> v;
     std::vector<uint32_t> t;
     bumpy_sphere(n, m, 0.3, v, t);
     std::vector<double> soup;
+    std::vector<uint32_t> kept;
+    for (size_t i = 0; i < t.size(); i += 3) {
+        bool above = false;
+        for (int c = 0; c < 3; ++c)
+            above = above || v[3 * t[i + c] + 2] > cap;
+        if (cap <= 0 || !above)
+            kept.insert(kept.end(), {t[i], t[i + 1], t[i + 2]});
+    }
+    t = kept;
+    s.surface = cap > 0;
     for (uint32_t i : t)
         for (int k = 0; k < 3; ++k)
             soup.push_back(v[3 * i + k] * scale);
@@ -1921,7 +1937,8 @@ bool make_soup(const char *name, int n, int m, double scale, Soup &s)
     if (noctMeshDataCreate(soup.data(), soup.size() / 3, sizes.data(), sizes.size(), idx.data(),
                            &data, &err) != NOCT_OK ||
         noctMeshDataWeld(data, 0, &weld, &err) != NOCT_OK ||
-        noctMeshCreateFromData(data, &s.mesh, &err) != NOCT_OK) {
+        (s.surface ? noctMeshCreateSurfaceFromData(data, &s.mesh, &err)
+                   : noctMeshCreateFromData(data, &s.mesh, &err)) != NOCT_OK) {
         std::fprintf(stderr, "bench-peers: --soups: %s: %s\n", name, err.message);
         noctMeshDataDestroy(data);
         return false;
@@ -1931,7 +1948,7 @@ bool make_soup(const char *name, int n, int m, double scale, Soup &s)
     s.v.assign(wv, wv + 3 * noctMeshDataVertexCount(data));
     s.t.assign(wi, wi + 3 * noctMeshDataPolygonCount(data));
     noctMeshDataDestroy(data);
-    if (s.v.size() != v.size()) {
+    if (!s.surface && s.v.size() != v.size()) {
         std::fprintf(stderr, "bench-peers: --soups: %s: welded to %zu vertices, not %zu\n", name,
                      s.v.size() / 3, v.size() / 3);
         return false;
@@ -2196,8 +2213,10 @@ bool run_soup_case(const Soup &a, const Soup &b, double spread, long poses, uint
         Placed pa, pb;
         if (!place(a, pose[i].xa, pa) || !place(b, pose[i].xb, pb))
             return false;
+        // a surface encloses nothing: only a solid can hold the other
         const bool meet = surfaces_meet(pa, pb);
-        const bool contained = !meet && (inside(pa.v[0], pb, rng) || inside(pb.v[0], pa, rng));
+        const bool contained = !meet && ((!b.surface && inside(pa.v[0], pb, rng)) ||
+                                         (!a.surface && inside(pb.v[0], pa, rng)));
         const bool exact = meet || contained;
         if (static_cast<bool>(ours[i]) != exact)
             ++ours_wrong;
@@ -2225,18 +2244,20 @@ bool run_soups(long poses)
                 "each, best of 3 rounds; one thread.\nEvery verdict that differs is checked "
                 "exactly (GMP) on the vertices as libnoctree places them.\n\n",
                 NOCT_VERSION_STRING, FCL_VERSION, poses);
-    Soup link, link_small, bay;
+    Soup link, link_small, bay, open_bay;
     bool ok = make_soup("bumpy-960", 32, 16, 1, link) &&
               make_soup("bumpy-960 x0.5", 32, 16, 0.5, link_small) &&
-              make_soup("bumpy-4992 x3", 64, 40, 3, bay);
+              make_soup("bumpy-4992 x3", 64, 40, 3, bay) &&
+              make_soup("open-4992 x3", 64, 40, 3, open_bay, 0.6);
     if (ok) {
         std::printf("%-26s %6s %6s %10s %10s %8s %7s %9s %7s %7s\n", "case", "poses", "meet",
                     "ours us", "fcl us", "x", "differ", "fcl:inside", "other", "ours bad");
         uint64_t rng = 2027;
         ok = run_soup_case(link, link, 2.6, poses, rng) &&
-             run_soup_case(bay, link_small, 4.5, poses, rng);
+             run_soup_case(bay, link_small, 4.5, poses, rng) &&
+             run_soup_case(open_bay, link_small, 4.5, poses, rng);
     }
-    for (Soup *s : {&link, &link_small, &bay})
+    for (Soup *s : {&link, &link_small, &bay, &open_bay})
         noctMeshDestroy(s->mesh);
     return ok;
 }
