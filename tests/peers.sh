@@ -81,6 +81,21 @@ check "bench-peers --queries: libnoctree and FCL find the same objects in boxes"
     "$tmp/qq.txt"
 expect_prog "$peers" 1 'runs on gas scenes only' --queries 10 planes:1
 
+# Triangle soups (--soups): the tool fails if libnoctree's verdict differs
+# from its exact check; the solids differ from FCL only where one is
+# inside the other, the open surface not at all.
+"$peers" --soups 300 > "$tmp/so.txt" 2> "$tmp/so.err"
+check "bench-peers --soups exits 0" [ $? -eq 0 ]
+check "bench-peers --soups: nothing on stderr" [ ! -s "$tmp/so.err" ]
+check "bench-peers --soups: 3 cases of 300 poses, some meeting, libnoctree never wrong" \
+    awk 'NF > 8 && $(NF - 8) == 300 { r++; if ($(NF - 7) + 0 <= 0 || $NF != 0) bad = 1 }
+        END { exit bad || r != 3 }' "$tmp/so.txt"
+check "bench-peers --soups: every difference is a solid inside the other" \
+    awk 'NF > 8 && $(NF - 8) == 300 && $(NF - 3) != $(NF - 2) { bad = 1 } END { exit bad }' "$tmp/so.txt"
+check "bench-peers --soups: the open surface agrees with FCL everywhere" \
+    awk 'NF > 8 && $1 ~ /^open/ && $(NF - 8) == 300 { f = 1; if ($(NF - 3) != 0) bad = 1 }
+        END { exit bad || !f }' "$tmp/so.txt"
+
 expect_prog "$peers" 0 '^usage' --help
 expect_prog "$peers" 2 'no noct-driven' --broadphase --driven planes:1
 expect_prog "$peers" 2 "'planes:x': a scene is planes:K" planes:x
