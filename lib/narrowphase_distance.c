@@ -1521,6 +1521,34 @@ bool noct_distance_convex_placed(const noctMesh *a, bool a_convex, const double 
     return convex_path(m, R, turned, x, max_distance, r, NULL);
 }
 
+/* The turned meshes of m as rotated views (view[i], owning buf[i]; ex[i]
+ * says so), or, near the degeneracy tolerance, as rotated meshes
+ * (rotated[i]); m[i] then names what to read. The caller frees buf and
+ * destroys rotated, whatever the status. */
+static noctStatus turned_views(const noctMesh *m[2], double R[2][9], const bool turned[2],
+                               noctMesh view[2], void *buf[2], noctMesh *rotated[2],
+                               noct_dist_exact ex[2], noctError *err)
+{
+    noctStatus st = NOCT_OK;
+    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
+        if (!turned[i])
+            continue;
+        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
+        if (st == NOCT_OK) {
+            ex[i].R = R[i];
+            m[i] = &view[i];
+        } else if (st == NOCT_ERR_DEGENERATE) {
+            /* near the tolerance: the rotated mesh says what it is */
+            st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
+            if (st == NOCT_OK)
+                m[i] = rotated[i];
+        } else {
+            noct_fail(err, st, -1, 0, "out of memory");
+        }
+    }
+    return st;
+}
+
 noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMesh *b,
                         const noctTransform *xb, double max_distance,
                         noctDistanceResult *result, noctNarrowStats *stats, noctError *err)
@@ -1556,22 +1584,7 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     noctMesh view[2];
     void *buf[2] = {NULL, NULL};
     noct_dist_exact ex[2] = {{NULL}, {NULL}};
-    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
-        if (!turned[i])
-            continue;
-        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
-        if (st == NOCT_OK) {
-            ex[i].R = R[i];
-            m[i] = &view[i];
-        } else if (st == NOCT_ERR_DEGENERATE) {
-            /* near the tolerance: the rotated mesh says what it is */
-            st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
-            if (st == NOCT_OK)
-                m[i] = rotated[i];
-        } else {
-            noct_fail(err, st, -1, 0, "out of memory");
-        }
-    }
+    st = turned_views(m, R, turned, view, buf, rotated, ex, err);
     if (st == NOCT_OK) {
         st = noct_distance_placed(m[0], xa->p, m[1], xb->p, max_distance, result, stats, ex);
         if (st != NOCT_OK)
@@ -1593,23 +1606,7 @@ noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
     noctMesh view[2], *rotated[2] = {NULL, NULL};
     void *buf[2] = {NULL, NULL};
     noct_dist_exact ex[2] = {{NULL}, {NULL}};
-    noctStatus st = NOCT_OK;
-    for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
-        if (!turned[i])
-            continue;
-        st = rotated_view(m[i], R[i], &view[i], &buf[i]);
-        if (st == NOCT_OK) {
-            ex[i].R = R[i];
-            m[i] = &view[i];
-        } else if (st == NOCT_ERR_DEGENERATE) {
-            /* near the tolerance: the rotated mesh says what it is */
-            st = noct_mesh_rotated(m[i], R[i], &rotated[i], err);
-            if (st == NOCT_OK)
-                m[i] = rotated[i];
-        } else {
-            noct_fail(err, st, -1, 0, "out of memory");
-        }
-    }
+    noctStatus st = turned_views(m, R, turned, view, buf, rotated, ex, err);
     if (st == NOCT_OK) {
         st = exact_of(m[0], xa->p, m[1], xb->p, ex, colliding, stats);
         if (st != NOCT_OK)
