@@ -84,13 +84,17 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
  * (box_offset()) of the exact ones per coordinate (the sum c + t, three
  * products and three additions), their difference and its length add a
  * few more; 256 half-ulps of M and a relative 2^-48 cover them. 1: the
- * pair is near. 0: the last points' direction proves the solids farther
- * apart than noct_solids_within() answers true for (below). -1: the pair
- * needs the triangles (no dual, or neither proof after a few rounds:
- * within a hair of the margin, or skewed edges that alternating
- * projections approach slowly).
+ * pair is near. 0: the points' direction, tried every WITNESS_CHECK
+ * rounds, proves the solids farther apart than noct_solids_within()
+ * answers true for (witness_apart()). -1: the pair needs the triangles
+ * (no dual, or neither proof after WITNESS_ROUNDS rounds: within a hair
+ * of the margin, or faces so nearly parallel that alternating projections
+ * approach their closest points slowly; six rounds left a pair in 200 to
+ * the triangles on keyframes:2000, 64 one in 25 000, each round a few
+ * dozen operations where the triangles take some 300 000).
  */
-#define WITNESS_ROUNDS 6
+#define WITNESS_ROUNDS 64
+#define WITNESS_CHECK 8
 
 /* The coefficients of the point of shrunk box s (centre at C, factor f)
  * nearest x, if its edges are orthogonal, clamped to it; and the point. */
@@ -111,6 +115,28 @@ static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double 
     }
 }
 
+/* The gap test: do the points' direction v (q - p) prove the solids
+ * farther apart than noct_solids_within() answers true for? Their gap
+ * along it, with noct_box_apart_by()'s allowances (each solid lies within
+ * dev of its ideal box on every coordinate), bounds the distance from
+ * below; beyond d and twice the slack of noct_solids_within() (2^-40 of
+ * the coordinates, which M bounds), that test answers false. */
+static bool witness_apart(const noct_box_slot *a, const noct_box_slot *b, const double T[3],
+                          double M, double unit, double d, const double v[3])
+{
+    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0 && isfinite(n)))
+        return false;
+    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    const double dev = (double)a->dev + (double)b->dev;
+    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
+                       box_radius(b->e, u) - l1 * dev - unit * l1;
+    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
+    return gap > beyond * un * (1 + 0x1p-40);
+}
+
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                         const double tb[3], double d)
 {
@@ -126,31 +152,20 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
     double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
-    for (int round = 0; round < WITNESS_ROUNDS; ++round) {
+    for (int round = 1; round <= WITNESS_ROUNDS; ++round) {
         project_box(a, CA, fa, q, p);
         project_box(b, CB, fb, p, q);
         for (int k = 0; k < 3; ++k)
             v[k] = q[k] - p[k];
         if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
             return 1;
+        /* Not near, it seems: the points' direction is close to the one
+         * along which the box forms are farthest apart (now and then, as
+         * the projections approach the closest pair) */
+        if ((round & (WITNESS_CHECK - 1)) == 0 && witness_apart(a, b, T, M, unit, d, v))
+            return 0;
     }
-    /* Not near, it seems: the points' direction is close to the one
-     * along which the box forms are farthest apart. Their gap along it,
-     * with noct_box_apart_by()'s allowances (each solid lies within dev
-     * of its ideal box on every coordinate), bounds the distance from
-     * below; beyond d and twice the slack of noct_solids_within() (2^-40
-     * of the coordinates, which M bounds), that test answers false. */
-    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(n > 0 && isfinite(n)))
-        return -1;
-    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    const double dev = (double)a->dev + (double)b->dev;
-    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
-                       box_radius(b->e, u) - l1 * dev - unit * l1;
-    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
-    return gap > beyond * un * (1 + 0x1p-40) ? 0 : -1;
+    return -1;
 }
 
 /* Are objects i and j near, at the world's level? */
