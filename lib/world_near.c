@@ -2,15 +2,20 @@
 /*
  * The margin (noctWorldDef::margin): after a step's pairs, the pairs of
  * objects within the margin of each other ("near": the arm is about to
- * collide), and the pairs that became near or stopped being near. Each
- * object looks for its partners of higher index in the broadphase, its
- * box grown by the margin (in its leaves' lists when the grown box stays
- * in them, else by a query); a pair that collides is near, a pair of box
- * forms that a separating axis proves farther apart is not, a pair of box
- * forms with two points of its solids proved within the margin is, and
- * one proved beyond it on the axis through those points is not
- * (near_witness(): the answers noct_solids_within() would give), and
- * else the distance of their triangles decides (noct_solids_within()).
+ * collide), and the pairs that became near or stopped being near. The
+ * candidates are the pairs (i, j), i < j, whose boxes come within i's
+ * box grown by the margin: each leaf of the broadphase sweeps once the
+ * boxes that may have a candidate it owns (near_candidates(); with no
+ * exact tree, or when the leaves would gather far more boxes than there
+ * are objects, each object scans its leaves' lists or queries the tree
+ * with its grown box instead, as noct_world_stage_near() does: the same
+ * candidates). A pair that collides is near; boxes farther apart than
+ * the margin and the triangles' slack are not; a pair of box forms that a
+ * separating axis proves farther apart is not, a pair of box forms with
+ * two points of its solids proved within the margin is, and one proved
+ * beyond it on the axis through those points is not (near_witness(): the
+ * answers noct_solids_within() would give), and else the distance of
+ * their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
@@ -309,7 +314,7 @@ static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], co
  * read again for each of their objects), every leaf sweeps once the boxes
  * that may have a near pair it owns, and hands each candidate pair over
  * once. A pair (i, j), i < j, is a candidate exactly when j's box meets
- * i's grown as object_partners' query grows it (the same rounded box, the
+ * i's grown as the per-object search below grows it (the same rounded box, the
  * same closed test, the same filters), so the pairs tested, and the near
  * pairs, are those of the scan or query, bit for bit.
  *
@@ -325,13 +330,13 @@ static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], co
  * box (from the leaves that overlap it below its upper faces: an object
  * meeting it meets one of them), sorts them on one axis and sweeps them
  * with G and the same room as reach; the sweep passes over only pairs
- * whose larger lo is beyond the other's hi by more than the reach, which
- * are no candidates. Empty leaves own pairs too (P need not be in either
+ * whose larger lo is beyond the other's hi by more than the reach on some
+ * axis, which are no candidates. Empty leaves own pairs too (P need not be in either
  * box), so every leaf sweeps.
  */
 typedef struct near_box {
     double lo[3], hi[3];
-    double grow; /* object_partners' grow for this object */
+    double grow; /* the per-object search's grow for this object */
     uint32_t id;
 } near_box;
 
@@ -353,7 +358,7 @@ typedef struct near_sweep {
 
 NOCT_DEFINE_GROW(grow_near_box, near_box)
 
-/* object_partners' grow of object i with box b. */
+/* The per-object search's grow of object i with box b. */
 static NOCT_ALWAYS_INLINE double grow_of(const near_sweep *s, uint32_t i, const noct_aabb *b)
 {
     const double reach = s->m != NULL ? (s->W + s->m[i]) + s->M : s->W;
@@ -561,9 +566,8 @@ static bool sweep_node(near_sweep *s, const octNode *n)
  * more than the objects' own scans: then nothing is made); -1 without
  * memory.
  */
-static int near_candidates(near_sweep *s, noctError *err)
+static int near_candidates(near_sweep *s)
 {
-    (void)err;
     noctWorld *w = s->w;
     noctBroadphase *bp = &w->bp;
     if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
@@ -631,7 +635,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* (no margin left: the pairs the last one kept end) */
     const bool any = W > 0 || m != NULL;
     near_sweep s = {.w = w, .m = m, .W = W, .M = M};
-    const int by_leaves = any ? near_candidates(&s, err) : 0;
+    const int by_leaves = any ? near_candidates(&s) : 0;
     if (by_leaves < 0)
         st = NOCT_ERR_NOMEM;
     /* the step's colliding pairs, sorted as the candidates are, walked
@@ -648,7 +652,8 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         const double d = m != NULL ? W + (m[i] + m[j]) : W;
         if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) || !near(w, i, j, d, colliding))
             continue;
-        const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
+        const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
+                               {j, noct_bp_generation(&w->bp, j)}};
         if (!noct_pairs_push(&e->now, pair)) {
             st = NOCT_ERR_NOMEM;
             break;
