@@ -2,15 +2,20 @@
 /*
  * The margin (noctWorldDef::margin): after a step's pairs, the pairs of
  * objects within the margin of each other ("near": the arm is about to
- * collide), and the pairs that became near or stopped being near. Each
- * object looks for its partners of higher index in the broadphase, its
- * box grown by the margin (in its leaves' lists when the grown box stays
- * in them, else by a query); a pair that collides is near, a pair of box
- * forms that a separating axis proves farther apart is not, a pair of box
- * forms with two points of its solids proved within the margin is, and
- * one proved beyond it on the axis through those points is not
- * (near_witness(): the answers noct_solids_within() would give), and
- * else the distance of their triangles decides (noct_solids_within()).
+ * collide), and the pairs that became near or stopped being near. The
+ * candidates are the pairs (i, j), i < j, whose boxes come within i's
+ * box grown by the margin: each leaf of the broadphase sweeps once the
+ * boxes that may have a candidate it owns (near_candidates(); with no
+ * exact tree, or when the leaves would gather far more boxes than there
+ * are objects, each object scans its leaves' lists or queries the tree
+ * with its grown box instead, as noct_world_stage_near() does: the same
+ * candidates). A pair that collides is near; boxes farther apart than
+ * the margin and the triangles' slack are not; a pair of box forms that a
+ * separating axis proves farther apart is not, a pair of box forms with
+ * two points of its solids proved within the margin is, and one proved
+ * beyond it on the axis through those points is not (near_witness(): the
+ * answers noct_solids_within() would give), and else the distance of
+ * their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
@@ -84,13 +89,17 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
  * (box_offset()) of the exact ones per coordinate (the sum c + t, three
  * products and three additions), their difference and its length add a
  * few more; 256 half-ulps of M and a relative 2^-48 cover them. 1: the
- * pair is near. 0: the last points' direction proves the solids farther
- * apart than noct_solids_within() answers true for (below). -1: the pair
- * needs the triangles (no dual, or neither proof after a few rounds:
- * within a hair of the margin, or skewed edges that alternating
- * projections approach slowly).
+ * pair is near. 0: the points' direction, tried every WITNESS_CHECK
+ * rounds, proves the solids farther apart than noct_solids_within()
+ * answers true for (witness_apart()). -1: the pair needs the triangles
+ * (no dual, or neither proof after WITNESS_ROUNDS rounds: within a hair
+ * of the margin, or faces so nearly parallel that alternating projections
+ * approach their closest points slowly; six rounds left a pair in 200 to
+ * the triangles on keyframes:2000, 64 one in 25 000, each round a few
+ * dozen operations where the triangles take some 300 000).
  */
-#define WITNESS_ROUNDS 6
+#define WITNESS_ROUNDS 64
+#define WITNESS_CHECK 8
 
 /* The coefficients of the point of shrunk box s (centre at C, factor f)
  * nearest x, if its edges are orthogonal, clamped to it; and the point. */
@@ -111,6 +120,28 @@ static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double 
     }
 }
 
+/* The gap test: do the points' direction v (q - p) prove the solids
+ * farther apart than noct_solids_within() answers true for? Their gap
+ * along it, with noct_box_apart_by()'s allowances (each solid lies within
+ * dev of its ideal box on every coordinate), bounds the distance from
+ * below; beyond d and twice the slack of noct_solids_within() (2^-40 of
+ * the coordinates, which M bounds), that test answers false. */
+static bool witness_apart(const noct_box_slot *a, const noct_box_slot *b, const double T[3],
+                          double M, double unit, double d, const double v[3])
+{
+    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0 && isfinite(n)))
+        return false;
+    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    const double dev = (double)a->dev + (double)b->dev;
+    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
+                       box_radius(b->e, u) - l1 * dev - unit * l1;
+    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
+    return gap > beyond * un * (1 + 0x1p-40);
+}
+
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                         const double tb[3], double d)
 {
@@ -126,38 +157,49 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
     double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
-    for (int round = 0; round < WITNESS_ROUNDS; ++round) {
+    for (int round = 1; round <= WITNESS_ROUNDS; ++round) {
         project_box(a, CA, fa, q, p);
         project_box(b, CB, fb, p, q);
         for (int k = 0; k < 3; ++k)
             v[k] = q[k] - p[k];
         if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
             return 1;
+        /* Not near, it seems: the points' direction is close to the one
+         * along which the box forms are farthest apart (now and then, as
+         * the projections approach the closest pair) */
+        if ((round & (WITNESS_CHECK - 1)) == 0 && witness_apart(a, b, T, M, unit, d, v))
+            return 0;
     }
-    /* Not near, it seems: the points' direction is close to the one
-     * along which the box forms are farthest apart. Their gap along it,
-     * with noct_box_apart_by()'s allowances (each solid lies within dev
-     * of its ideal box on every coordinate), bounds the distance from
-     * below; beyond d and twice the slack of noct_solids_within() (2^-40
-     * of the coordinates, which M bounds), that test answers false. */
-    const double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(n > 0 && isfinite(n)))
-        return -1;
-    const double u[3] = {v[0] / n, v[1] / n, v[2] / n};
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    const double dev = (double)a->dev + (double)b->dev;
-    const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - box_radius(a->e, u) -
-                       box_radius(b->e, u) - l1 * dev - unit * l1;
-    const double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    const double beyond = d + 2 * 0x1p-40 * noct_max(d, M);
-    return gap > beyond * un * (1 + 0x1p-40) ? 0 : -1;
+    return -1;
 }
 
-/* Are objects i and j near, at the world's level? */
-static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d)
+/* Are objects i and j near, at the world's level, if they collide or
+ * not (colliding: listed in the step's contacts)? */
+static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding)
 {
-    if (listed(&w->events.contact.now, i, j))
+    if (colliding)
         return true;
+    if (w->def.accuracy != NOCT_ACCURACY_BOX) {
+        /* Boxes farther apart than d and 2^-37 of their coordinates: each
+         * solid lies in its box (up to the roundings of its placed
+         * vertices, a few ulps of those coordinates), so the solids are
+         * farther apart than d and twice noct_solids_within()'s slack
+         * (2^-40 of the same coordinates, or of d), where it answers
+         * false; the box forms' proofs below never answer true there
+         * (their points lie in the solids). A few dozen operations, where
+         * the separating-axis test takes hundreds. */
+        const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
+        double s = 0, scale = d;
+        for (int k = 0; k < 3; ++k) {
+            const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
+            s += g * g;
+            scale = noct_max(scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
+                                             noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+        }
+        const double beyond = d + 0x1p-37 * scale;
+        if (s > beyond * beyond)
+            return false;
+    }
     if (w->def.accuracy == NOCT_ACCURACY_BOX) {
         const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
         double s = 0, scale = d;
@@ -264,6 +306,319 @@ static bool leaf_partners(const noctWorld *w, uint32_t i, const double lo[3], co
     return true;
 }
 
+/* ---- the near pairs by leaves --------------------------------------------------- */
+
+/*
+ * Rather than look for each object's partners in its own grown box (a
+ * query or a scan of its leaves per object, every box of those leaves
+ * read again for each of their objects), every leaf sweeps once the boxes
+ * that may have a near pair it owns, and hands each candidate pair over
+ * once. A pair (i, j), i < j, is a candidate exactly when j's box meets
+ * i's grown as the per-object search below grows it (the same rounded box, the
+ * same closed test, the same filters), so the pairs tested, and the near
+ * pairs, are those of the scan or query, bit for bit.
+ *
+ * Ownership: the candidate pair's point P = max(lo_i, lo_j) per axis (the
+ * lower corner of the overlap of the grown boxes, taken at the boxes'
+ * own corners, so exact) lies in the root when every box does, and one
+ * leaf owns it ([lo, lo + size), closed at the root's upper faces, as the
+ * pair search's rule). On each axis the box with the larger lo meets the
+ * leaf's cell; the other reaches within its grow of P (the candidate
+ * test, up to its roundings): so both meet the leaf's cell extended
+ * downwards by the largest grow G, with room for those roundings (the
+ * gather box [qlo, lo + size]). The leaf gathers the boxes that meet that
+ * box (from the leaves that overlap it below its upper faces: an object
+ * meeting it meets one of them), sorts them on one axis and sweeps them
+ * with G and the same room as reach; the sweep passes over only pairs
+ * whose larger lo is beyond the other's hi by more than the reach on some
+ * axis, which are no candidates. Empty leaves own pairs too (P need not be in either
+ * box), so every leaf sweeps.
+ */
+typedef struct near_box {
+    double lo[3], hi[3];
+    double grow; /* the per-object search's grow for this object */
+    uint32_t id;
+} near_box;
+
+typedef struct near_sweep {
+    noctWorld *w;
+    const double *m; /* objects' own margins, or NULL */
+    double W, M;     /* world's margin, largest own margin */
+    double G;        /* every object's grow at most, with room */
+    const noct_cell *root;
+    near_box *g;     /* the gathered boxes, and as many for the sort */
+    size_t capg, ng;
+    uint32_t epoch;
+    double qlo[3], qhi[3];
+    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j */
+    size_t gathered;      /* boxes gathered in all (the budget below) */
+    size_t budget;
+    bool over;            /* the budget is spent: the old way is cheaper */
+} near_sweep;
+
+NOCT_DEFINE_GROW(grow_near_box, near_box)
+
+/* The per-object search's grow of object i with box b. */
+static NOCT_ALWAYS_INLINE double grow_of(const near_sweep *s, uint32_t i, const noct_aabb *b)
+{
+    const double reach = s->m != NULL ? (s->W + s->m[i]) + s->M : s->W;
+    double scale = reach;
+    for (int k = 0; k < 3; ++k)
+        scale = noct_max(scale, noct_max(fabs(b->lo[k]), fabs(b->hi[k])));
+    return reach + 0x1p-38 * scale;
+}
+
+/* Gather, from the leaves under n, the boxes (not sensors) that meet the
+ * gather box, once each (marks). A node is visited when its cell meets the
+ * gather box below its upper faces: a box meeting the gather box meets it
+ * at a lowest point y, which lies in a leaf whose cell is closed at y and
+ * starts below the gather box's upper faces (y less any tiny step
+ * downwards on the axes where y is on them), and that leaf lists the box. */
+static bool gather_node(near_sweep *s, const octNode *n)
+{
+    const noct_cell *c = noct_cell_of(n);
+    for (int k = 0; k < 3; ++k)
+        if (!(c->lo[k] < s->qhi[k] && c->lo[k] + c->size >= s->qlo[k]))
+            return true;
+    if (NOCT_NODE_IS_SPLIT(n)) {
+        for (int i = 0; i < 8; ++i)
+            if (!gather_node(s, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i))))
+                return false;
+        return true;
+    }
+    noctWorld *w = s->w;
+    uint32_t *mark = noct_bp_marks(&w->bp);
+    if (!grow_near_box(&s->g, &s->capg, 2 * (s->ng + c->count)))
+        return false;
+    for (uint32_t t = 0; t < c->count; ++t) {
+        const uint32_t id = c->objs[t];
+        if (mark[id] == s->epoch)
+            continue;
+        mark[id] = s->epoch;
+        const noct_aabb *b = noct_bp_box(&w->bp, id);
+        if ((b->hi[0] < s->qlo[0]) | (b->hi[1] < s->qlo[1]) | (b->hi[2] < s->qlo[2]) |
+            (b->lo[0] > s->qhi[0]) | (b->lo[1] > s->qhi[1]) | (b->lo[2] > s->qhi[2]) ||
+            w->obj[id].sensor)
+            continue;
+        near_box *e = &s->g[s->ng++];
+        memcpy(e->lo, b->lo, sizeof e->lo);
+        memcpy(e->hi, b->hi, sizeof e->hi);
+        e->grow = grow_of(s, id, b);
+        e->id = id;
+    }
+    return true;
+}
+
+/* Insertion sort by lower corner on axis k (the leaf's own boxes come in
+ * its pair search's order, nearly sorted), a merge sort into tmp and back
+ * for many boxes. */
+static void sort_near_boxes(near_box *g, size_t n, int k, near_box *tmp)
+{
+    if (n > 64) {
+        near_box *src = g, *dst = tmp;
+        for (size_t width = 1; width < n; width *= 2) {
+            for (size_t lo = 0; lo < n; lo += 2 * width) {
+                const size_t mid = lo + width < n ? lo + width : n;
+                const size_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+                size_t i = lo, j = mid, o = lo;
+                while (i < mid && j < hi)
+                    dst[o++] = src[j].lo[k] < src[i].lo[k] ? src[j++] : src[i++];
+                while (i < mid)
+                    dst[o++] = src[i++];
+                while (j < hi)
+                    dst[o++] = src[j++];
+            }
+            near_box *t = src;
+            src = dst;
+            dst = t;
+        }
+        if (src != g)
+            memcpy(g, src, n * sizeof *g);
+        return;
+    }
+    for (size_t i = 1; i < n; ++i) {
+        const near_box t = g[i];
+        size_t j = i;
+        for (; j > 0 && g[j - 1].lo[k] > t.lo[k]; --j)
+            g[j] = g[j - 1];
+        g[j] = t;
+    }
+}
+
+/* The axis along which the gathered boxes are spread farthest for their
+ * size (the pair search's choice). */
+static int near_axis(const near_box *g, size_t n)
+{
+    double lo[3], hi[3], ext[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+        lo[k] = hi[k] = g[0].lo[k];
+    for (size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = noct_min(lo[k], g[i].lo[k]);
+            hi[k] = noct_max(hi[k], g[i].lo[k]);
+            ext[k] += g[i].hi[k] - g[i].lo[k];
+        }
+    int best = 0;
+    double best_ratio = -1;
+    for (int k = 0; k < 3; ++k) {
+        const double r = (hi[k] - lo[k]) / (ext[k] > 0 ? ext[k] : 1);
+        if (r > best_ratio) {
+            best_ratio = r;
+            best = k;
+        }
+    }
+    return best;
+}
+
+/* Does leaf c own point p: [lo, lo + size) per axis, closed at the root's
+ * upper faces? */
+static NOCT_ALWAYS_INLINE bool owns_point(const noct_cell *c, const noct_cell *root,
+                                          const double p[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        const double hi = c->lo[k] + c->size;
+        if (p[k] < c->lo[k] || p[k] > hi)
+            return false;
+        if (p[k] == hi && hi != root->lo[k] + root->size)
+            return false;
+    }
+    return true;
+}
+
+/* Leaf c's candidate pairs, into s->cand. */
+static bool sweep_leaf(near_sweep *s, const noct_cell *c)
+{
+    noctWorld *w = s->w;
+    for (int k = 0; k < 3; ++k) {
+        /* down by G and more than the roundings (see above) */
+        s->qlo[k] = (c->lo[k] - s->G) - 0x1p-48 * fabs(c->lo[k]);
+        s->qhi[k] = c->lo[k] + c->size;
+    }
+    s->ng = 0;
+    s->epoch = noct_bp_new_epoch(&w->bp);
+    if (!gather_node(s, noct_bp_root(&w->bp)))
+        return false;
+    const size_t n = s->ng;
+    s->gathered += n;
+    if (s->gathered > s->budget) {
+        s->over = true;
+        return true;
+    }
+    if (n < 2)
+        return true;
+    near_box *g = s->g;
+    const int ax = near_axis(g, n);
+    sort_near_boxes(g, n, ax, g + n);
+    const double G = s->G;
+    const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
+    for (size_t a = 0; a < n; ++a) {
+        const near_box *A = &g[a];
+        /* A's box grown by the reach: G and more than the candidate
+         * test's roundings, whichever object grows (a box beyond it on
+         * an axis is no candidate) */
+        double up[3], dn[3];
+        for (int k = 0; k < 3; ++k) {
+            up[k] = A->hi[k] + (G + 0x1p-48 * fabs(A->hi[k]));
+            dn[k] = A->lo[k] - (G + 0x1p-48 * fabs(A->lo[k]));
+        }
+        const double limit = up[ax];
+        for (size_t bi = a + 1; bi < n; ++bi) {
+            const near_box *B = &g[bi];
+            if (B->lo[ax] > limit)
+                break;
+            if ((B->lo[k1] > up[k1]) | (B->hi[k1] < dn[k1]) | (B->lo[k2] > up[k2]) |
+                (B->hi[k2] < dn[k2]))
+                continue;
+            const near_box *I = A->id < B->id ? A : B, *J = A->id < B->id ? B : A;
+            const double gr = I->grow;
+            if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
+                (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |
+                (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))
+                continue;
+            const double P[3] = {noct_max(A->lo[0], B->lo[0]), noct_max(A->lo[1], B->lo[1]),
+                                 noct_max(A->lo[2], B->lo[2])};
+            if (!owns_point(c, s->root, P))
+                continue;
+            if (!noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
+                continue;
+            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+                return false;
+        }
+    }
+    return true;
+}
+
+static bool sweep_node(near_sweep *s, const octNode *n)
+{
+    if (NOCT_NODE_IS_SPLIT(n)) {
+        for (int i = 0; i < 8 && !s->over; ++i)
+            if (!sweep_node(s, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + i))))
+                return false;
+        return true;
+    }
+    return sweep_leaf(s, noct_cell_of(n));
+}
+
+/*
+ * The candidate pairs of every object that is no sensor, sorted, into
+ * s->cand, by the leaves' sweeps: 1; 0 when they cannot be had that way
+ * (no exact tree, a box outside the root, or the gathering would cost
+ * more than the objects' own scans: then nothing is made); -1 without
+ * memory.
+ */
+static int near_candidates(near_sweep *s)
+{
+    noctWorld *w = s->w;
+    noctBroadphase *bp = &w->bp;
+    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
+        return 0;
+    const noct_aabb root = noct_bp_root_box(bp);
+    const uint32_t slots = noct_bp_slots(bp);
+    double G = 0;
+    size_t live = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        if (!noct_box_within(b, &root))
+            return 0;
+        G = noct_max(G, grow_of(s, i, b));
+        ++live;
+    }
+    if (!isfinite(G))
+        return 0;
+    s->G = G * (1 + 0x1p-30);
+    s->root = noct_cell_of(noct_bp_root(bp));
+    s->budget = 16 * live + 4096;
+    if (!sweep_node(s, noct_bp_root(bp)))
+        return -1;
+    if (s->over)
+        return 0;
+    /* by first object (counting), then by second */
+    noct_pair_list *l = &s->cand;
+    if (l->n > 1) {
+        uint32_t *count = calloc((size_t)slots + 1, sizeof *count);
+        noctPair *to = malloc(l->n * sizeof *to);
+        if (count == NULL || to == NULL) {
+            free(count);
+            free(to);
+            return -1;
+        }
+        for (size_t k = 0; k < l->n; ++k)
+            ++count[l->p[k].a.index + 1];
+        for (uint32_t i = 0; i < slots; ++i)
+            count[i + 1] += count[i];
+        for (size_t k = 0; k < l->n; ++k)
+            to[count[l->p[k].a.index]++] = l->p[k];
+        free(count);
+        free(l->p);
+        l->p = to;
+        l->cap = l->n;
+        noct_pairs_sort_partners(l);
+    }
+    return 1;
+}
+
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
 {
     noct_event_record *e = &w->events.near;
@@ -278,7 +633,36 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     partners p = {0, NULL, 0, 0, false};
     noctStatus st = NOCT_OK;
     /* (no margin left: the pairs the last one kept end) */
-    const uint32_t slots = W > 0 || m != NULL ? noct_bp_slots(&w->bp) : 0;
+    const bool any = W > 0 || m != NULL;
+    near_sweep s = {.w = w, .m = m, .W = W, .M = M};
+    const int by_leaves = any ? near_candidates(&s) : 0;
+    if (by_leaves < 0)
+        st = NOCT_ERR_NOMEM;
+    /* the step's colliding pairs, sorted as the candidates are, walked
+     * beside them */
+    const noct_pair_list *col = &w->events.contact.now;
+    size_t at = 0;
+    for (size_t k = 0; by_leaves > 0 && k < s.cand.n; ++k) {
+        const uint32_t i = s.cand.p[k].a.index, j = s.cand.p[k].b.index;
+        while (at < col->n && (col->p[at].a.index < i ||
+                               (col->p[at].a.index == i && col->p[at].b.index < j)))
+            ++at;
+        const bool colliding =
+            at < col->n && col->p[at].a.index == i && col->p[at].b.index == j;
+        const double d = m != NULL ? W + (m[i] + m[j]) : W;
+        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) || !near(w, i, j, d, colliding))
+            continue;
+        const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
+                               {j, noct_bp_generation(&w->bp, j)}};
+        if (!noct_pairs_push(&e->now, pair)) {
+            st = NOCT_ERR_NOMEM;
+            break;
+        }
+    }
+    free(s.g);
+    free(s.cand.p);
+    /* else each object by a scan of its leaves or a query */
+    const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;
     for (uint32_t i = 0; i < slots && st == NOCT_OK; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
             continue;
@@ -311,7 +695,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             const uint32_t j = p.s[k];
             const double d = m != NULL ? W + (mi + m[j]) : W;
             if (w->obj[j].sensor || (w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
-                !near(w, i, j, d))
+                !near(w, i, j, d, listed(&w->events.contact.now, i, j)))
                 continue;
             const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
             if (!noct_pairs_push(&e->now, pair)) {

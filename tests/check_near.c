@@ -678,6 +678,95 @@ START_TEST(object_margin_setters_and_errors)
 }
 END_TEST
 
+/*
+ * The world's near pairs come from its leaves (each leaf sweeps the boxes
+ * that may have a near pair whose lower corner it owns): on worlds of
+ * small leaves (N = 1 to 3), whose objects drift a little every step
+ * across the leaves' faces (leaves split and merge), with objects' own
+ * margins set and changed as they go and objects removed and made again,
+ * the near pairs and their events are those of a twin world of a single
+ * leaf (N big), where every pair meets in the one sweep, step by step.
+ */
+START_TEST(near_pairs_across_leaves)
+{
+    int near_seen = 0, margins_set = 0;
+    const int rounds = _i ? 12 : 3;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = round % 3 == 2 ? 0 : 0.02 + 0.4 * uniform();
+        scene s;
+        random_scene(&s, 20 + (int)(20 * uniform()), 1 + round % 3, NOCT_ACCURACY_EXACT, ell);
+        noctWorld *twin = new_world(NOCT_N_EXHAUSTIVE, NOCT_ACCURACY_EXACT);
+        world_margin = 0;
+        noctObjectDef defs[MAXO];
+        for (int i = 0; i < s.n; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            d.transform = s.x[i];
+            if (s.kind[i] == 2) {
+                d.mesh = ell;
+            } else {
+                const double h[3] = {(double)s.g[i].pc[0].h[0], (double)s.g[i].pc[0].h[1],
+                                     (double)s.g[i].pc[0].h[2]};
+                if (s.kind[i] == 0)
+                    memcpy(d.half_extents, h, sizeof h);
+                else
+                    d.mesh = s.mesh[i];
+            }
+            d.category = s.cat[i];
+            d.mask = s.mask[i];
+            d.sensor = s.sensor[i];
+            defs[i] = d;
+            noctObjectId id;
+            ck_assert_int_eq(noctWorldCreateObject(twin, &d, &id, NULL), NOCT_OK);
+            ck_assert_uint_eq(id.index, s.id[i].index);
+        }
+        noctObjectId tid[MAXO];
+        for (int i = 0; i < s.n; ++i)
+            tid[i] = (noctObjectId){s.id[i].index, s.id[i].generation};
+        for (int step = 0; step < 16; ++step) {
+            for (int i = 0; i < s.n; ++i) {
+                for (int k = 0; k < 3; ++k)
+                    s.x[i].p[k] = fmin(6, fmax(0, s.x[i].p[k] + 0.3 * (uniform() - 0.5)));
+                ck_assert_int_eq(noctWorldSetTransform(s.w, s.id[i], &s.x[i], NULL), NOCT_OK);
+                ck_assert_int_eq(noctWorldSetTransform(twin, tid[i], &s.x[i], NULL), NOCT_OK);
+                if (uniform() < 0.08) { /* a margin of its own, or none again */
+                    const double m = uniform() < 0.3 ? 0 : 0.3 * uniform();
+                    ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], m, NULL), NOCT_OK);
+                    ck_assert_int_eq(noctWorldSetMargin(twin, tid[i], m, NULL), NOCT_OK);
+                    ++margins_set;
+                }
+            }
+            if (step % 5 == 4) { /* one object goes and comes back */
+                const int i = (int)(s.n * uniform());
+                ck_assert_int_eq(noctWorldRemove(s.w, s.id[i], NULL), NOCT_OK);
+                ck_assert_int_eq(noctWorldRemove(twin, tid[i], NULL), NOCT_OK);
+                defs[i].transform = s.x[i];
+                defs[i].user_data = &s.id[i];
+                ck_assert_int_eq(noctWorldCreateObject(s.w, &defs[i], &s.id[i], NULL), NOCT_OK);
+                defs[i].user_data = NULL;
+                ck_assert_int_eq(noctWorldCreateObject(twin, &defs[i], &tid[i], NULL), NOCT_OK);
+                ck_assert_uint_eq(tid[i].index, s.id[i].index);
+            }
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            ck_assert_int_eq(noctWorldStep(twin, NULL), NOCT_OK);
+            const noctPair *p, *q;
+            const size_t np = noctWorldNear(s.w, &p), nq = noctWorldNear(twin, &q);
+            ck_assert_uint_eq(np, nq);
+            for (size_t k = 0; k < np; ++k)
+                ck_assert_msg(p[k].a.index == q[k].a.index && p[k].b.index == q[k].b.index,
+                              "step %d: near pair %zu is (%u, %u), in the twin (%u, %u)", step,
+                              k, p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
+            near_seen += (int)np;
+            ck_assert_uint_eq(noctWorldNearBegan(s.w, &p), noctWorldNearBegan(twin, &q));
+            ck_assert_uint_eq(noctWorldNearEnded(s.w, &p), noctWorldNearEnded(twin, &q));
+        }
+        noctWorldDestroy(twin);
+        free_scene(&s);
+    }
+    ck_assert_int_gt(near_seen, _i ? 2000 : 400);
+    ck_assert_int_gt(margins_set, _i ? 200 : 40);
+}
+END_TEST
+
 static Suite *near_suite(void)
 {
     Suite *s = suite_create("near");
@@ -692,6 +781,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, object_margins_against_distance, 0, 1);
     tcase_add_loop_test(tc, query_near_with_object_margins, 0, 1);
     tcase_add_test(tc, object_margin_setters_and_errors);
+    tcase_add_loop_test(tc, near_pairs_across_leaves, 0, 1);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
@@ -700,6 +790,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, near_pairs_against_the_query, 1, 2);
     tcase_add_loop_test(full, object_margins_against_distance, 1, 2);
     tcase_add_loop_test(full, query_near_with_object_margins, 1, 2);
+    tcase_add_loop_test(full, near_pairs_across_leaves, 1, 2);
     return s;
 }
 
