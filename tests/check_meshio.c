@@ -920,6 +920,44 @@ static const char *write_gltf(const char *name, const double matrix[16])
     return write_text(name, text);
 }
 
+/* A COLLADA document of the unit cube (Y up, so that assimp turns
+ * nothing), under a node translated by (dx, 0, 0) (COLLADA's matrices
+ * are row after row). */
+static const char *write_dae(const char *name, double dx)
+{
+    tmesh *m = box_mesh(1, 1, 1);
+    char pos[512] = "", tri[512] = "", text[4096];
+    for (size_t i = 0; i < m->nv; ++i)
+        snprintf(pos + strlen(pos), sizeof pos - strlen(pos), "%g %g %g ", m->v[i][0],
+                 m->v[i][1], m->v[i][2]);
+    for (size_t t = 0; t < m->nt; ++t)
+        snprintf(tri + strlen(tri), sizeof tri - strlen(tri), "%u %u %u ", m->t[t][0],
+                 m->t[t][1], m->t[t][2]);
+    snprintf(text, sizeof text,
+             "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+             "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" "
+             "version=\"1.4.1\">\n"
+             "<asset><unit name=\"meter\" meter=\"1\"/><up_axis>Y_UP</up_axis></asset>\n"
+             "<library_geometries><geometry id=\"cube\"><mesh>\n"
+             "<source id=\"cube-pos\"><float_array id=\"cube-pos-array\" count=\"%zu\">"
+             "%s</float_array>\n<technique_common><accessor source=\"#cube-pos-array\" "
+             "count=\"%zu\" stride=\"3\"><param name=\"X\" type=\"float\"/>"
+             "<param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/>"
+             "</accessor></technique_common></source>\n"
+             "<vertices id=\"cube-vtx\"><input semantic=\"POSITION\" source=\"#cube-pos\"/>"
+             "</vertices>\n<triangles count=\"%zu\"><input semantic=\"VERTEX\" "
+             "source=\"#cube-vtx\" offset=\"0\"/><p>%s</p></triangles>\n"
+             "</mesh></geometry></library_geometries>\n"
+             "<library_visual_scenes><visual_scene id=\"scene\"><node id=\"n\">"
+             "<matrix>1 0 0 %g 0 1 0 0 0 0 1 0 0 0 0 1</matrix>"
+             "<instance_geometry url=\"#cube\"/></node></visual_scene>"
+             "</library_visual_scenes>\n"
+             "<scene><instance_visual_scene url=\"#scene\"/></scene>\n</COLLADA>\n",
+             3 * m->nv, pos, m->nv, m->nt, tri, dx);
+    free(m);
+    return write_text(name, text);
+}
+
 START_TEST(assimp_files)
 {
     const char *empty = write_text("empty.gltf", "{\"asset\":{\"version\":\"2.0\"},"
@@ -949,8 +987,24 @@ START_TEST(assimp_files)
         ck_assert(r.volume == (i ? 2 : 1)); /* outward: positive */
         noctMeshDataDestroy(d);
     }
+    /* COLLADA, the format robot descriptions point to */
+    {
+        const char *path = write_dae("cube.dae", 4);
+        noctMesh *solid;
+        noctError err;
+        ck_assert_msg(noctMeshRead(path, &solid, &err) == NOCT_OK, "%s", err.message);
+        double lo[3], hi[3];
+        noctMeshBounds(solid, lo, hi);
+        ck_assert(lo[0] == 4 && hi[0] == 5 && lo[1] == 0 && hi[1] == 1 && lo[2] == 0 &&
+                  hi[2] == 1);
+        ck_assert_int_eq(noctMeshTriangleCount(solid), 12);
+        noctMeshDestroy(solid);
+        expect_error(write_text("junk.dae", "<COLLADA><library_geometries>"), NOCT_ERR_PARSE,
+                     "junk.dae");
+    }
 #else
     expect_error(empty, NOCT_ERR_INVALID, "lacks");
+    expect_error(write_dae("cube.dae", 4), NOCT_ERR_INVALID, "lacks");
     (void)write_gltf;
 #endif
     expect_error(write_text("x.unknownformat", "x"), NOCT_ERR_INVALID, "unknown mesh format");
