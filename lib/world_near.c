@@ -173,6 +173,23 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     return -1;
 }
 
+/* The squared gap between objects i's and j's boxes, in floating point,
+ * and in *scale the larger of d and their coordinates' magnitudes. */
+static inline double box_gap2(const noctWorld *w, uint32_t i, uint32_t j, double d,
+                              double *scale)
+{
+    const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
+    double s = 0;
+    *scale = d;
+    for (int k = 0; k < 3; ++k) {
+        const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
+        s += g * g;
+        *scale = noct_max(*scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
+                                           noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+    }
+    return s;
+}
+
 /* Are objects i and j near, at the world's level, if they collide or
  * not (colliding: listed in the step's contacts)? */
 static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding)
@@ -188,27 +205,15 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool coll
          * false; the box forms' proofs below never answer true there
          * (their points lie in the solids). A few dozen operations, where
          * the separating-axis test takes hundreds. */
-        const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
-        double s = 0, scale = d;
-        for (int k = 0; k < 3; ++k) {
-            const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
-            s += g * g;
-            scale = noct_max(scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
-                                             noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
-        }
+        double scale;
+        const double s = box_gap2(w, i, j, d, &scale);
         const double beyond = d + 0x1p-37 * scale;
         if (s > beyond * beyond)
             return false;
     }
     if (w->def.accuracy == NOCT_ACCURACY_BOX) {
-        const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
-        double s = 0, scale = d;
-        for (int k = 0; k < 3; ++k) {
-            const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
-            s += g * g;
-            scale = noct_max(scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
-                                             noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
-        }
+        double scale;
+        const double s = box_gap2(w, i, j, d, &scale);
         const double reach = d + 0x1p-40 * scale;
         return s <= reach * reach;
     }
