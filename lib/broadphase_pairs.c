@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "box_sweep.h"
 #include "broadphase_internal.h"
 
 /* ---- pair search, events, response ------------------------------------------- */
@@ -77,69 +78,7 @@ static bool owns(const noct_cell *c, const noct_cell *root, const double p[3])
     return true;
 }
 
-/* Insertion sort by lower corner on axis k for the leaves of up to a few
- * dozen objects that N makes common, a merge of runs for the crowded ones
- * at the maximum depth. */
-static void sort_by_lower(noct_leaf_box *g, uint32_t n, int k, noct_leaf_box *tmp)
-{
-    if (n > 64) {
-        /* bottom-up merge sort into tmp and back */
-        noct_leaf_box *src = g, *dst = tmp;
-        for (uint32_t width = 1; width < n; width *= 2) {
-            for (uint32_t lo = 0; lo < n; lo += 2 * width) {
-                uint32_t mid = lo + width < n ? lo + width : n;
-                uint32_t hi = lo + 2 * width < n ? lo + 2 * width : n;
-                uint32_t i = lo, j = mid, o = lo;
-                while (i < mid && j < hi)
-                    dst[o++] = src[j].lo[k] < src[i].lo[k] ? src[j++] : src[i++];
-                while (i < mid)
-                    dst[o++] = src[i++];
-                while (j < hi)
-                    dst[o++] = src[j++];
-            }
-            noct_leaf_box *t = src;
-            src = dst;
-            dst = t;
-        }
-        if (src != g)
-            memcpy(g, src, n * sizeof *g);
-        return;
-    }
-    for (uint32_t i = 1; i < n; ++i) {
-        noct_leaf_box t = g[i];
-        uint32_t j = i;
-        for (; j > 0 && g[j - 1].lo[k] > t.lo[k]; --j)
-            g[j] = g[j - 1];
-        g[j] = t;
-    }
-}
-
-/* The sweep's axis: the one along which the boxes are spread farthest for
- * their size, so that the fewest pairs overlap on it (cubes in a plane all
- * share their x, a gas is spread on every axis). */
-static int sweep_axis(const noct_leaf_box *g, uint32_t n)
-{
-    double lo[3], hi[3], ext[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k)
-        lo[k] = hi[k] = g[0].lo[k];
-    for (uint32_t i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = noct_min(lo[k], g[i].lo[k]);
-            hi[k] = noct_max(hi[k], g[i].lo[k]);
-            ext[k] += g[i].hi[k] - g[i].lo[k];
-        }
-    int best = 0;
-    double best_ratio = -1;
-    for (int k = 0; k < 3; ++k) {
-        /* spread over total extent */
-        double r = (hi[k] - lo[k]) / (ext[k] > 0 ? ext[k] : 1);
-        if (r > best_ratio) {
-            best_ratio = r;
-            best = k;
-        }
-    }
-    return best;
-}
+NOCT_DEFINE_BOX_SWEEP(leaf_boxes, noct_leaf_box, uint32_t)
 
 /* The pair (a, b) of leaf c, whose boxes overlap, for the narrowphase if
  * c owns the lower corner of their overlap. */
@@ -265,8 +204,8 @@ static noctStatus search_leaf(noctBroadphase *bp, noct_cell *c)
     /* The exhaustive mode keeps the report's test of every pair. */
     int axis = 0;
     if (sweep) {
-        axis = sweep_axis(g, c->count);
-        sort_by_lower(g, c->count, axis, g + c->count);
+        axis = leaf_boxes_axis(g, c->count);
+        leaf_boxes_sort(g, c->count, axis, g + c->count);
         /* The leaf keeps this order: objects move little in a step, so
          * the next sweep's insertion sort finds them nearly sorted, and
          * near pairs are positions in it. */

@@ -14,6 +14,7 @@ noctree_sources = \
 	lib/broadphase_pairs.c \
 	lib/broadphase_query.c \
 	lib/box_form.c \
+	lib/box_sweep.h \
 	lib/broadphase_tree.c \
 	lib/bvh.c lib/bvh.h \
 	lib/clock.c \

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "box_sweep.h"
 #include "narrowphase_internal.h"
 #include "world_internal.h"
 
@@ -414,66 +415,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
     return true;
 }
 
-/* Insertion sort by lower corner on axis k (the leaf's own boxes come in
- * its pair search's order, nearly sorted), a merge sort into tmp and back
- * for many boxes. */
-static void sort_near_boxes(near_box *g, size_t n, int k, near_box *tmp)
-{
-    if (n > 64) {
-        near_box *src = g, *dst = tmp;
-        for (size_t width = 1; width < n; width *= 2) {
-            for (size_t lo = 0; lo < n; lo += 2 * width) {
-                const size_t mid = lo + width < n ? lo + width : n;
-                const size_t hi = lo + 2 * width < n ? lo + 2 * width : n;
-                size_t i = lo, j = mid, o = lo;
-                while (i < mid && j < hi)
-                    dst[o++] = src[j].lo[k] < src[i].lo[k] ? src[j++] : src[i++];
-                while (i < mid)
-                    dst[o++] = src[i++];
-                while (j < hi)
-                    dst[o++] = src[j++];
-            }
-            near_box *t = src;
-            src = dst;
-            dst = t;
-        }
-        if (src != g)
-            memcpy(g, src, n * sizeof *g);
-        return;
-    }
-    for (size_t i = 1; i < n; ++i) {
-        const near_box t = g[i];
-        size_t j = i;
-        for (; j > 0 && g[j - 1].lo[k] > t.lo[k]; --j)
-            g[j] = g[j - 1];
-        g[j] = t;
-    }
-}
-
-/* The axis along which the gathered boxes are spread farthest for their
- * size (the pair search's choice). */
-static int near_axis(const near_box *g, size_t n)
-{
-    double lo[3], hi[3], ext[3] = {0, 0, 0};
-    for (int k = 0; k < 3; ++k)
-        lo[k] = hi[k] = g[0].lo[k];
-    for (size_t i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = noct_min(lo[k], g[i].lo[k]);
-            hi[k] = noct_max(hi[k], g[i].lo[k]);
-            ext[k] += g[i].hi[k] - g[i].lo[k];
-        }
-    int best = 0;
-    double best_ratio = -1;
-    for (int k = 0; k < 3; ++k) {
-        const double r = (hi[k] - lo[k]) / (ext[k] > 0 ? ext[k] : 1);
-        if (r > best_ratio) {
-            best_ratio = r;
-            best = k;
-        }
-    }
-    return best;
-}
+NOCT_DEFINE_BOX_SWEEP(near_boxes, near_box, size_t)
 
 /* Does leaf c own point p: [lo, lo + size) per axis, closed at the root's
  * upper faces? */
@@ -512,8 +454,8 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     if (n < 2)
         return true;
     near_box *g = s->g;
-    const int ax = near_axis(g, n);
-    sort_near_boxes(g, n, ax, g + n);
+    const int ax = near_boxes_axis(g, n);
+    near_boxes_sort(g, n, ax, g + n);
     const double G = s->G;
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
     for (size_t a = 0; a < n; ++a) {
