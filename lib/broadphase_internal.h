@@ -69,6 +69,23 @@ typedef struct noct_cell {
     uint32_t nnear, capnear;
 } noct_cell;
 
+/* Does leaf c own point p: [lo, lo + size) per axis, closed at the root's
+ * upper faces? (The ownership rule: the pair search, the queries and the
+ * margin's candidates hand a pair or a box to the one leaf owning a
+ * point of it.) */
+static inline bool noct_cell_owns(const noct_cell *c, const noct_cell *root,
+                                  const double p[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        const double hi = c->lo[k] + c->size;
+        if (p[k] < c->lo[k] || p[k] > hi)
+            return false;
+        if (p[k] == hi && hi != root->lo[k] + root->size)
+            return false;
+    }
+    return true;
+}
+
 /* An axis-aligned box, closed. */
 typedef struct noct_aabb {
     double lo[3], hi[3];

@@ -65,7 +65,10 @@ int noct_pair_cmp(const void *x, const void *y)
 }
 
 /* Does the leaf own point p: [lo, lo + size) per axis, closed at the
- * root's upper faces? */
+ * root's upper faces? noct_cell_owns() (broadphase_internal.h), which the
+ * queries and the margin's candidates call, spelled out again here: with
+ * the shared one, GCC 12 compiles search_leaf() into 0.8 % more
+ * instructions (planes:10, callgrind), for the same code. */
 static bool owns(const noct_cell *c, const noct_cell *root, const double p[3])
 {
     for (int k = 0; k < 3; ++k) {

@@ -21,20 +21,6 @@ static bool passes(const noct_proxy *o, noctQueryFilter f)
     return (o->category & f.mask) != 0 && (f.category & o->mask) != 0;
 }
 
-/* Does the leaf own point p: [lo, lo + size) per axis, closed at the
- * root's upper faces? */
-static bool owns_point(const noct_cell *c, const noct_cell *root, const double p[3])
-{
-    for (int k = 0; k < 3; ++k) {
-        const double hi = c->lo[k] + c->size;
-        if (p[k] < c->lo[k] || p[k] > hi)
-            return false;
-        if (p[k] == hi && hi != root->lo[k] + root->size)
-            return false;
-    }
-    return true;
-}
-
 typedef struct box_query {
     const noctBroadphase *bp;
     noct_aabb q;
@@ -66,7 +52,7 @@ static bool query_node(const box_query *bq, const octNode *n)
             apart = apart || b->hi[k] < bq->q.lo[k] || bq->q.hi[k] < b->lo[k];
             corner[k] = noct_max(b->lo[k], bq->q.lo[k]);
         }
-        if (apart || !owns_point(c, rc, corner) || !passes(&bp->proxy[id], bq->filter))
+        if (apart || !noct_cell_owns(c, rc, corner) || !passes(&bp->proxy[id], bq->filter))
             continue;
         if (!bq->fcn(bq->context, (noctProxyId){id, bp->gen[id]}, bp->proxy[id].user))
             return false;

@@ -417,21 +417,6 @@ static bool gather_node(near_sweep *s, const octNode *n)
 
 NOCT_DEFINE_BOX_SWEEP(near_boxes, near_box, size_t)
 
-/* Does leaf c own point p: [lo, lo + size) per axis, closed at the root's
- * upper faces? */
-static NOCT_ALWAYS_INLINE bool owns_point(const noct_cell *c, const noct_cell *root,
-                                          const double p[3])
-{
-    for (int k = 0; k < 3; ++k) {
-        const double hi = c->lo[k] + c->size;
-        if (p[k] < c->lo[k] || p[k] > hi)
-            return false;
-        if (p[k] == hi && hi != root->lo[k] + root->size)
-            return false;
-    }
-    return true;
-}
-
 /* Leaf c's candidate pairs, into s->cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
 {
@@ -484,7 +469,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                 continue;
             const double P[3] = {noct_max(A->lo[0], B->lo[0]), noct_max(A->lo[1], B->lo[1]),
                                  noct_max(A->lo[2], B->lo[2])};
-            if (!owns_point(c, s->root, P))
+            if (!noct_cell_owns(c, s->root, P))
                 continue;
             if (!noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
                 continue;
