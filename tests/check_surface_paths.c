@@ -691,109 +691,6 @@ END_TEST
 
 typedef long double ld;
 
-static ld dot(const ld a[3], const ld b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static ld point_seg2(const ld p[3], const ld a[3], const ld b[3])
-{
-    ld d[3], w[3];
-    for (int k = 0; k < 3; ++k) {
-        d[k] = b[k] - a[k];
-        w[k] = p[k] - a[k];
-    }
-    const ld dd = dot(d, d);
-    ld t = dd > 0 ? dot(w, d) / dd : 0;
-    t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    ld g[3];
-    for (int k = 0; k < 3; ++k)
-        g[k] = w[k] - t * d[k];
-    return dot(g, g);
-}
-
-static ld seg_seg2(const ld p[3], const ld q[3], const ld a[3], const ld b[3])
-{
-    ld best = point_seg2(p, a, b), x;
-    x = point_seg2(q, a, b);
-    best = x < best ? x : best;
-    x = point_seg2(a, p, q);
-    best = x < best ? x : best;
-    x = point_seg2(b, p, q);
-    best = x < best ? x : best;
-    ld d1[3], d2[3], r[3];
-    for (int k = 0; k < 3; ++k) {
-        d1[k] = q[k] - p[k];
-        d2[k] = b[k] - a[k];
-        r[k] = p[k] - a[k];
-    }
-    const ld A = dot(d1, d1), B = dot(d1, d2), C = dot(d2, d2), D = dot(d1, r), E = dot(d2, r);
-    const ld den = A * C - B * B;
-    if (den > 1e-30L * A * C) {
-        const ld s = (B * E - C * D) / den, t = (A * E - B * D) / den;
-        if (s > 0 && s < 1 && t > 0 && t < 1) {
-            ld g[3];
-            for (int k = 0; k < 3; ++k)
-                g[k] = r[k] + s * d1[k] - t * d2[k];
-            x = dot(g, g);
-            best = x < best ? x : best;
-        }
-    }
-    return best;
-}
-
-static ld point_face2(const ld p[3], const ld a[3], const ld b[3], const ld c[3])
-{
-    ld e1[3], e2[3], n[3], w[3];
-    for (int k = 0; k < 3; ++k) {
-        e1[k] = b[k] - a[k];
-        e2[k] = c[k] - a[k];
-        w[k] = p[k] - a[k];
-    }
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    const ld nn = dot(n, n);
-    if (!(nn > 0))
-        return INFINITY;
-    const ld h = dot(w, n) / nn;
-    ld x[3];
-    for (int k = 0; k < 3; ++k)
-        x[k] = p[k] - h * n[k];
-    const ld *v[3] = {a, b, c};
-    for (int i = 0; i < 3; ++i) {
-        ld f[3], g[3], cr[3];
-        for (int k = 0; k < 3; ++k) {
-            f[k] = v[(i + 1) % 3][k] - v[i][k];
-            g[k] = x[k] - v[i][k];
-        }
-        cr[0] = f[1] * g[2] - f[2] * g[1];
-        cr[1] = f[2] * g[0] - f[0] * g[2];
-        cr[2] = f[0] * g[1] - f[1] * g[0];
-        if (dot(cr, n) < 0)
-            return INFINITY;
-    }
-    return h * h * nn;
-}
-
-/* Squared distance between two disjoint triangles. */
-static ld tri_tri2(ld x[3][3], ld y[3][3])
-{
-    ld best = INFINITY;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            const ld d = seg_seg2(x[i], x[(i + 1) % 3], y[j], y[(j + 1) % 3]);
-            best = d < best ? d : best;
-        }
-    for (int i = 0; i < 3; ++i) {
-        ld d = point_face2(x[i], y[0], y[1], y[2]);
-        best = d < best ? d : best;
-        d = point_face2(y[i], x[0], x[1], x[2]);
-        best = d < best ? d : best;
-    }
-    return best;
-}
-
 /* A random soup of nt triangles near c, of size about s (real coordinates). */
 static noctMesh *real_soup(size_t nt, const double c[3], double s, double *v)
 {
@@ -832,7 +729,7 @@ START_TEST(distance_against_brute_force)
                         x[c][k] = va[9 * i + 3 * c + k];
                         y[c][k] = vb[9 * j + 3 * c + k];
                     }
-                const ld d = tri_tri2(x, y);
+                const ld d = test_tri_tri2(x, y);
                 best = d < best ? d : best;
             }
         const ld ref = sqrtl(best);

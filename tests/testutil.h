@@ -101,4 +101,17 @@ void item_print(FILE *strm, const void *data);
 void kill_log_reset(void);
 size_t kill_log_sorted(const int **tags);
 
+/* Distances in long double for the distance suites' brute forces
+ * (testgeom.c). Squared distance from p to segment ab. */
+long double test_point_seg2(const long double p[3], const long double a[3],
+                            const long double b[3]);
+/* Squared distance from p to the plane of triangle abc if its projection
+ * falls inside the triangle, else infinity (the edges then decide). */
+long double test_point_face2(const long double p[3], const long double a[3],
+                             const long double b[3], const long double c[3]);
+/* Squared distance between two disjoint closed triangles x and y, by
+ * brute force over their vertices' projections and edge pairs, in long
+ * double; the caller scales coordinates near 1. */
+long double test_tri_tri2(long double x[3][3], long double y[3][3]);
+
 #endif /* NOCT_TESTS_TESTUTIL_H */
