@@ -179,14 +179,127 @@ static void uf_union(uint32_t *parent, uint32_t a, uint32_t b)
         parent[a] = b;
 }
 
-/* The first key of keys[0, n) not less than (cell, index 0). */
-static size_t lower_bound(const weld_key *keys, size_t n, const double cell[3])
+/* |a - b| <= eps exactly (a, b finite, eps > 0 finite). The rounded
+ * difference s = fl(a - b) decides unless |s| == eps: rounding is monotone
+ * and eps is a double, so |a - b| <= eps implies |s| <= eps and |a - b| > eps
+ * implies |s| >= eps. When |s| == eps, the exact difference is s + t with
+ * t from Knuth's TwoSum (exact: no overflow, since |s| is finite), and
+ * |s + t| <= eps iff t is 0 or of the other sign than s. An overflowing
+ * difference is infinite, more than eps. */
+static bool coord_close(double a, double b, double eps)
+{
+    double s = a - b;
+    if (fabs(s) != eps)
+        return fabs(s) < eps;
+    double bv = s - a;
+    double t = (a - (s - bv)) + (-b - bv);
+    return t == 0 || (t < 0) != (s < 0);
+}
+
+/* floor(v / eps) exactly, for |v| / eps < 2^53 (so that the cells and
+ * their neighbours' numbers, at most 2^53 in magnitude, are exact
+ * doubles). The rounded quotient's
+ * floor is off by at most one; fma(q, eps, -v) rounds q eps - v once, and
+ * the exact value is a multiple of 2^-1074 (q is an integer), so its sign
+ * survives the rounding: q eps <= v < (q + 1) eps is checked exactly. */
+static double cell_of(double v, double eps)
+{
+    double q = floor(v / eps);
+    while (fma(q, eps, -v) > 0)
+        q -= 1;
+    while (fma(q + 1, eps, -v) <= 0)
+        q += 1;
+    return q + 0.0;
+}
+
+/* A cell's points sorted by one coordinate. */
+typedef struct axis_item {
+    double x;
+    uint32_t i;
+} axis_item;
+
+static int cmp_axis_item(const void *x, const void *y)
+{
+    const axis_item *a = x, *b = y;
+    if (a->x != b->x)
+        return a->x < b->x ? -1 : 1;
+    return (a->i > b->i) - (a->i < b->i);
+}
+
+/* The tolerance weld's state: the keys sorted by cell, the cells (runs of
+ * keys), each cell's bounds, its points sorted along each axis (made when
+ * first needed) and scratch space for the cell pairs' decisions. */
+typedef struct weld_grid {
+    const double *v;
+    double eps;
+    const weld_key *keys;
+    size_t ncell;
+    size_t *start;          /* cell c is keys[start[c], start[c + 1]) */
+    double *lo, *hi;        /* 3 per cell: the bounds of its points */
+    axis_item *axis[3];     /* axis[k][start[c] ...]: cell c sorted along k */
+    uint8_t *sorted;        /* 3 per cell: whether axis[k] is made */
+    uint32_t *best;         /* scratch: prefix bests, a Fenwick tree */
+    uint32_t *place;        /* scratch, by vertex: its place along an axis */
+    axis_item *order;       /* scratch: the points of B in sweep order */
+    size_t *table;          /* the cells by hash: open addressing, SIZE_MAX empty */
+    size_t mask;            /* the table's size less 1 (a power of 2) */
+} weld_grid;
+
+/* A cell's hash: its numbers are integers below 2^53 in magnitude. */
+static size_t cell_hash(const double cell[3])
+{
+    uint64_t h = 0;
+    for (int k = 0; k < 3; ++k) {
+        h ^= (uint64_t)(int64_t)cell[k] + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
+        h *= 0xff51afd7ed558ccdu;
+    }
+    return (size_t)(h ^ h >> 29);
+}
+
+/* The number of the cell `cell`, or SIZE_MAX if no point lies in it. */
+static size_t cell_lookup(const weld_grid *g, const double cell[3])
+{
+    for (size_t h = cell_hash(cell) & g->mask;; h = (h + 1) & g->mask) {
+        size_t c = g->table[h];
+        if (c == SIZE_MAX || memcmp(g->keys[g->start[c]].k, cell, 3 * sizeof *cell) == 0)
+            return c;
+    }
+}
+
+static const axis_item *cell_axis(weld_grid *g, size_t c, int k)
+{
+    axis_item *a = g->axis[k] + g->start[c];
+    size_t n = g->start[c + 1] - g->start[c];
+    if (!g->sorted[3 * c + (size_t)k]) {
+        for (size_t j = 0; j < n; ++j) {
+            uint32_t i = g->keys[g->start[c] + j].i;
+            a[j] = (axis_item){g->v[3 * i + (size_t)k], i};
+        }
+        qsort(a, n, sizeof *a, cmp_axis_item);
+        g->sorted[3 * c + (size_t)k] = 1;
+    }
+    return a;
+}
+
+/* The j-th point of cell A's list along axis k, best first: the largest
+ * coordinate first if B lies above A on that axis (s = 1), the smallest
+ * first if below (s = -1). */
+static uint32_t nth_best(const axis_item *list, size_t n, int s, size_t j)
+{
+    return s > 0 ? list[n - 1 - j].i : list[j].i;
+}
+
+/* How many of cell A's points, in that best-first order along axis k, are
+ * within eps of coordinate y on axis k: a prefix, since coordinates of A
+ * are below (s = 1) or above (s = -1) every coordinate of B on that axis,
+ * and the exact |x - y| <= eps is monotone in x then. */
+static size_t prefix_close(const weld_grid *g, const axis_item *list, size_t n, int s, int k,
+                           double y)
 {
     size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        weld_key probe = {{cell[0], cell[1], cell[2]}, 0};
-        if (cmp_weld_key(&keys[mid], &probe) < 0)
+        if (coord_close(g->v[3 * nth_best(list, n, s, mid) + (size_t)k], y, g->eps))
             lo = mid + 1;
         else
             hi = mid;
@@ -194,74 +307,225 @@ static size_t lower_bound(const weld_key *keys, size_t n, const double cell[3])
     return lo;
 }
 
-/* |p - q| <= eps, the distance computed in double: directly when the
- * squares cannot overflow (every difference within eps <= 1e150), else
- * scaled by eps. */
-static bool within(const double *p, const double *q, double eps)
+/* The better of points i and j on axis k for direction s. */
+static uint32_t better(const double *v, int k, int s, uint32_t i, uint32_t j)
 {
-    double e[3];
-    for (int k = 0; k < 3; ++k) {
-        e[k] = p[k] - q[k];
-        if (!(fabs(e[k]) <= eps))
-            return false;
-    }
-    if (eps <= 1e150)
-        return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) <= eps;
-    for (int k = 0; k < 3; ++k)
-        e[k] /= eps;
-    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) <= 1;
+    double a = v[3 * i + (size_t)k], b = v[3 * j + (size_t)k];
+    return (s > 0 ? a >= b : a <= b) ? i : j;
 }
 
-/* The classes of the weld, as each vertex's least-index representative in
- * parent[]. Exact: equal keys (with -0 as +0, by adding +0.0). Tolerance:
- * cells of side 2 eps, so that two vertices within eps are in the same or
- * adjacent cells despite the rounding of the division (its error is at
- * most 2^-12 of a cell below 2^40 cells); each vertex is compared with
- * the vertices of the 27 cells around its own. */
-static void weld_classes(const noctMeshData *d, double eps, weld_key *keys, uint32_t *parent)
+/* Whether some point of cell a and some point of cell b (b's cell is a's
+ * plus d, d in {-1, 0, 1}^3, not 0) are within eps on every axis. On an
+ * axis where d is 0 both lie in one cell of side eps: within eps. On the
+ * others, B's coordinates are all above A's (d = 1) or below (d = -1), and
+ * the decision is a dominance question on those m axes: m = 1 by the
+ * cells' bounds, m = 2 by A's prefix bests along one axis and a binary
+ * search per point of B, m = 3 by a sweep over B in the order of its
+ * prefixes along the first axis, with a Fenwick tree of A's bests on the
+ * third axis indexed by rank along the second. O((|A| + |B|) log |A|). */
+static bool cells_meet(weld_grid *g, size_t a, size_t b, const int d[3])
+{
+    int ax[3], m = 0;
+    for (int k = 0; k < 3; ++k)
+        if (d[k] != 0)
+            ax[m++] = k;
+    const double eps = g->eps;
+    /* bounds first: the best pair per axis, the worst pair per axis */
+    bool all = true;
+    for (int j = 0; j < m; ++j) {
+        int k = ax[j];
+        double abest = d[k] > 0 ? g->hi[3 * a + (size_t)k] : g->lo[3 * a + (size_t)k];
+        double bbest = d[k] > 0 ? g->lo[3 * b + (size_t)k] : g->hi[3 * b + (size_t)k];
+        if (!coord_close(abest, bbest, eps))
+            return false;
+        double aworst = d[k] > 0 ? g->lo[3 * a + (size_t)k] : g->hi[3 * a + (size_t)k];
+        double bworst = d[k] > 0 ? g->hi[3 * b + (size_t)k] : g->lo[3 * b + (size_t)k];
+        all = all && coord_close(aworst, bworst, eps);
+    }
+    if (all || m == 1)
+        return true;
+    size_t na = g->start[a + 1] - g->start[a], nb = g->start[b + 1] - g->start[b];
+    const double *v = g->v;
+    int k0 = ax[0], k1 = ax[1], s0 = d[k0], s1 = d[k1];
+    const axis_item *a0 = cell_axis(g, a, k0);
+    if (m == 2) {
+        /* best[j]: the best on axis k1 of A's first j + 1 along k0 */
+        for (size_t j = 0; j < na; ++j) {
+            uint32_t p = nth_best(a0, na, s0, j);
+            g->best[j] = j == 0 ? p : better(v, k1, s1, g->best[j - 1], p);
+        }
+        for (size_t j = 0; j < nb; ++j) {
+            const double *q = &v[3 * g->keys[g->start[b] + j].i];
+            size_t len = prefix_close(g, a0, na, s0, k0, q[k0]);
+            if (len > 0 && coord_close(v[3 * g->best[len - 1] + (size_t)k1], q[k1], eps))
+                return true;
+        }
+        return false;
+    }
+    int k2 = ax[2], s2 = d[k2];
+    const axis_item *a1 = cell_axis(g, a, k1);
+    /* place[p]: point p's place along k1, best first; the Fenwick tree
+     * best[] over those places holds the best point on k2 */
+    for (size_t j = 0; j < na; ++j) {
+        g->place[nth_best(a1, na, s1, j)] = (uint32_t)j;
+        g->best[j] = UINT32_MAX;
+    }
+    /* B's points in the order of their prefixes along k0 */
+    axis_item *ord = g->order;
+    for (size_t j = 0; j < nb; ++j) {
+        uint32_t q = g->keys[g->start[b] + j].i;
+        ord[j] = (axis_item){(double)prefix_close(g, a0, na, s0, k0, v[3 * q + (size_t)k0]), q};
+    }
+    qsort(ord, nb, sizeof *ord, cmp_axis_item);
+    size_t inserted = 0;
+    for (size_t j = 0; j < nb; ++j) {
+        size_t len0 = (size_t)ord[j].x;
+        const double *q = &v[3 * ord[j].i];
+        for (; inserted < len0; ++inserted) {
+            uint32_t p = nth_best(a0, na, s0, inserted);
+            for (size_t r = (size_t)g->place[p] + 1; r <= na; r += r & (~r + 1))
+                g->best[r - 1] = g->best[r - 1] == UINT32_MAX
+                                     ? p
+                                     : better(v, k2, s2, g->best[r - 1], p);
+        }
+        size_t len1 = prefix_close(g, a1, na, s1, k1, q[k1]);
+        uint32_t p = UINT32_MAX;
+        for (size_t r = len1; r > 0; r -= r & (~r + 1))
+            if (g->best[r - 1] != UINT32_MAX)
+                p = p == UINT32_MAX ? g->best[r - 1] : better(v, k2, s2, p, g->best[r - 1]);
+        if (p != UINT32_MAX && coord_close(v[3 * p + (size_t)k2], q[k2], eps))
+            return true;
+    }
+    return false;
+}
+
+/* The classes of the tolerance weld (see weld_classes()): cells of side
+ * eps, exactly (cell_of()), so that two points of one cell are within eps
+ * on every axis and two points within eps lie in the same or adjacent
+ * cells. A cell's points are one class at once; each pair of adjacent
+ * cells is decided once (the 13 neighbours after it in lexicographic
+ * order, found by hash) by cells_meet(), unless its cells are of one
+ * class already.
+ * O(n log n) whatever the points: each cell meets at most 26 others, at a
+ * cost of O(size log size) each. False if memory runs out. */
+static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *keys,
+                                   uint32_t *parent)
 {
     size_t n = d->nv;
     for (size_t i = 0; i < n; ++i) {
         parent[i] = (uint32_t)i;
         keys[i].i = (uint32_t)i;
         for (int k = 0; k < 3; ++k)
-            keys[i].k[k] = eps > 0 ? floor(d->v[3 * i + k] / (2 * eps)) : d->v[3 * i + k] + 0.0;
+            keys[i].k[k] = cell_of(d->v[3 * i + (size_t)k], eps);
+    }
+    if (n == 0)
+        return true;
+    qsort(keys, n, sizeof *keys, cmp_weld_key);
+    size_t ncell = 1;
+    for (size_t j = 1; j < n; ++j)
+        ncell += memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) != 0;
+    weld_grid g = {.v = d->v, .eps = eps, .keys = keys, .ncell = ncell};
+    g.start = malloc((ncell + 1) * sizeof *g.start);
+    g.lo = malloc(3 * ncell * sizeof *g.lo);
+    g.hi = malloc(3 * ncell * sizeof *g.hi);
+    g.sorted = calloc(3 * ncell, 1);
+    g.best = malloc(n * sizeof *g.best);
+    g.place = malloc(n * sizeof *g.place);
+    g.order = malloc(n * sizeof *g.order);
+    size_t tsize = 16;
+    while (tsize < 2 * ncell)
+        tsize *= 2;
+    g.mask = tsize - 1;
+    g.table = malloc(tsize * sizeof *g.table);
+    bool ok = g.start && g.lo && g.hi && g.sorted && g.best && g.place && g.order && g.table;
+    for (int k = 0; k < 3; ++k) {
+        g.axis[k] = ok ? malloc(n * sizeof *g.axis[k]) : NULL;
+        ok = ok && g.axis[k] != NULL;
+    }
+    if (ok) {
+        /* the cells, their bounds; a cell's points are one class (its
+         * first key has the least vertex number) */
+        size_t c = 0;
+        for (size_t j = 0; j < n; ++j) {
+            const double *p = &d->v[3 * keys[j].i];
+            if (j == 0 || memcmp(keys[j].k, keys[j - 1].k, sizeof keys[j].k) != 0) {
+                g.start[c++] = j;
+                for (int k = 0; k < 3; ++k)
+                    g.lo[3 * (c - 1) + (size_t)k] = g.hi[3 * (c - 1) + (size_t)k] = p[k];
+            } else {
+                parent[keys[j].i] = keys[g.start[c - 1]].i;
+                for (int k = 0; k < 3; ++k) {
+                    double *lo = &g.lo[3 * (c - 1) + (size_t)k];
+                    double *hi = &g.hi[3 * (c - 1) + (size_t)k];
+                    *lo = p[k] < *lo ? p[k] : *lo;
+                    *hi = p[k] > *hi ? p[k] : *hi;
+                }
+            }
+        }
+        g.start[ncell] = n;
+        for (size_t h = 0; h < tsize; ++h)
+            g.table[h] = SIZE_MAX;
+        for (size_t a = 0; a < ncell; ++a) {
+            size_t h = cell_hash(keys[g.start[a]].k) & g.mask;
+            while (g.table[h] != SIZE_MAX)
+                h = (h + 1) & g.mask;
+            g.table[h] = a;
+        }
+        for (size_t a = 0; a < ncell; ++a) {
+            const double *ca = keys[g.start[a]].k;
+            for (int dx = 0; dx <= 1; ++dx)
+                for (int dy = dx ? -1 : 0; dy <= 1; ++dy)
+                    for (int dz = dx || dy ? -1 : 1; dz <= 1; ++dz) {
+                        const int dd[3] = {dx, dy, dz};
+                        double cell[3] = {ca[0] + dx, ca[1] + dy, ca[2] + dz};
+                        size_t b = cell_lookup(&g, cell);
+                        if (b == SIZE_MAX)
+                            continue;
+                        uint32_t ra = uf_find(parent, keys[g.start[a]].i);
+                        uint32_t rb = uf_find(parent, keys[g.start[b]].i);
+                        if (ra != rb && cells_meet(&g, a, b, dd))
+                            uf_union(parent, ra, rb);
+                    }
+        }
+        for (size_t i = 0; i < n; ++i)
+            parent[i] = uf_find(parent, (uint32_t)i);
+    }
+    free(g.start);
+    free(g.lo);
+    free(g.hi);
+    free(g.sorted);
+    free(g.best);
+    free(g.place);
+    free(g.order);
+    free(g.table);
+    for (int k = 0; k < 3; ++k)
+        free(g.axis[k]);
+    return ok;
+}
+
+/* The classes of the exact weld, as each vertex's least-index
+ * representative in parent[]: equal coordinates (with -0 as +0, by adding
+ * +0.0). */
+static void weld_classes(const noctMeshData *d, weld_key *keys, uint32_t *parent)
+{
+    size_t n = d->nv;
+    for (size_t i = 0; i < n; ++i) {
+        parent[i] = (uint32_t)i;
+        keys[i].i = (uint32_t)i;
+        for (int k = 0; k < 3; ++k)
+            keys[i].k[k] = d->v[3 * i + (size_t)k] + 0.0;
     }
     if (n > 0)
         qsort(keys, n, sizeof *keys, cmp_weld_key);
-    if (eps == 0) {
-        for (size_t a = 0; a < n;) {
-            size_t b = a + 1;
-            while (b < n && memcmp(keys[b].k, keys[a].k, sizeof keys[a].k) == 0 &&
-                   keys[b].k[0] == keys[a].k[0])
-                ++b;
-            /* memcmp after +0.0: equal doubles, -0 folded; NaN never here */
-            for (size_t j = a + 1; j < b; ++j)
-                parent[keys[j].i] = keys[a].i;
-            a = b;
-        }
-        return;
+    for (size_t a = 0; a < n;) {
+        size_t b = a + 1;
+        /* memcmp after +0.0: equal doubles, -0 folded; NaN never here */
+        while (b < n && memcmp(keys[b].k, keys[a].k, sizeof keys[a].k) == 0)
+            ++b;
+        for (size_t j = a + 1; j < b; ++j)
+            parent[keys[j].i] = keys[a].i;
+        a = b;
     }
-    for (size_t a = 0; a < n; ++a) {
-        const double *p = &d->v[3 * keys[a].i];
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
-                    double cell[3] = {keys[a].k[0] + dx, keys[a].k[1] + dy, keys[a].k[2] + dz};
-                    for (size_t b = lower_bound(keys, n, cell);
-                         b < n && keys[b].k[0] == cell[0] && keys[b].k[1] == cell[1] &&
-                         keys[b].k[2] == cell[2];
-                         ++b) {
-                        if (keys[b].i <= keys[a].i)
-                            continue;
-                        const double *q = &d->v[3 * keys[b].i];
-                        if (within(p, q, eps))
-                            uf_union(parent, keys[a].i, keys[b].i);
-                    }
-                }
-    }
-    for (size_t i = 0; i < n; ++i)
-        parent[i] = uf_find(parent, (uint32_t)i);
 }
 
 /* Whether corners c[0, n) repeat a vertex. */
@@ -286,10 +550,10 @@ noctStatus noctMeshDataWeld(noctMeshData *data, double tolerance,
                          "the weld tolerance %g is not a finite number >= 0", tolerance);
     if (tolerance > 0)
         for (size_t i = 0; i < 3 * d->nv; ++i)
-            if (fabs(d->v[i]) / tolerance > 0x1p40)
+            if (fabs(d->v[i]) / tolerance >= 0x1p53) /* rounded up or exact: < 2^53 if not */
                 return noct_fail(err, NOCT_ERR_INVALID, (long)(i / 3), 0,
                                  "the weld tolerance %g is too small for vertex %zu's "
-                                 "coordinate %g (more than 2^40 tolerances from 0)",
+                                 "coordinate %g (2^53 tolerances or more from 0)",
                                  tolerance, i / 3, d->v[i]);
     size_t n = d->nv;
     weld_key *keys = malloc((n > 0 ? n : 1) * sizeof *keys);
@@ -305,8 +569,17 @@ noctStatus noctMeshDataWeld(noctMeshData *data, double tolerance,
         free(corners);
         return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
     }
-    weld_classes(d, tolerance, keys, parent);
+    bool classes = true;
+    if (tolerance > 0)
+        classes = weld_tolerance_classes(d, tolerance, keys, parent);
+    else
+        weld_classes(d, keys, parent);
     free(keys);
+    if (!classes) {
+        free(parent);
+        free(corners);
+        return noct_fail(err, NOCT_ERR_NOMEM, -1, 0, "out of memory");
+    }
     /* From here on nothing allocates: the data changes in place. New
      * numbers: the representatives in order; the others their
      * representative's (a smaller index, numbered already). */
@@ -671,7 +944,7 @@ noctStatus noctMeshDataInspect(const noctMeshData *data, noctMeshReport *report,
     }
     for (size_t i = 0; i < d->ni; ++i)
         used[d->idx[i]] = 1;
-    weld_classes(d, 0, keys, parent);
+    weld_classes(d, keys, parent);
     for (size_t i = 0; i < d->nv; ++i) {
         r->unused_vertices += !used[i];
         r->coincident_vertices += parent[i] != i;

@@ -261,16 +261,17 @@ tests_check_readers_efficient_LDADD = tests/libtestalloc.la $(efficient_ldadd)
 # malformed files, inspection and repair on counted cases; glTF through
 # assimp in builds with it.
 if HAVE_ASSIMP
-meshio_cppflags = -DNOCT_TEST_ASSIMP=1
+meshio_cppflags = -DNOCT_TEST_ASSIMP=1 $(ASSIMP_CFLAGS)
+meshio_libs = $(ASSIMP_LIBS)
 endif
 tests_check_meshio_SOURCES = tests/check_meshio.c
 tests_check_meshio_CPPFLAGS = $(AM_CPPFLAGS) $(meshio_cppflags)
-tests_check_meshio_CFLAGS = $(check_cflags)
-tests_check_meshio_LDADD = $(check_ldadd)
+tests_check_meshio_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_meshio_LDADD = $(check_ldadd) $(GMP_LIBS) $(meshio_libs)
 tests_check_meshio_efficient_SOURCES = tests/check_meshio.c
 tests_check_meshio_efficient_CPPFLAGS = $(efficient_cppflags) $(meshio_cppflags)
-tests_check_meshio_efficient_CFLAGS = $(check_cflags)
-tests_check_meshio_efficient_LDADD = $(efficient_ldadd)
+tests_check_meshio_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
+tests_check_meshio_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS) $(meshio_libs)
 
 # check-continuous: the world's continuous level against the all-pairs
 # brute force of noctCollideSwept() on random worlds (fast movers,

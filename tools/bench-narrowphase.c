@@ -9,7 +9,12 @@
  * (about 100 triangles); non-convex "bumpy spheres" of 100, 960 and 10 000
  * triangles. Prints a table and writes bench-narrowphase.csv.
  *
- * Usage: bench-narrowphase [--quick]
+ * --surfaces: the same closed meshes as solids and as surfaces, at the
+ * exact level on the same poses (what a surface costs).
+ * --weld N: the tolerance weld (noctMeshDataWeld) on about N points of
+ * five kinds, three of which took the quadratic weld n^2 / 2 pair tests.
+ *
+ * Usage: bench-narrowphase [--quick] [--surfaces | --weld N]
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -42,7 +47,7 @@ static void die(const char *what, noctStatus st, const noctError *err)
  * in direction (theta, phi) scaled by (sx, sy, sz) and multiplied by
  * 1 + bump * (smooth noise), so bump > 0 makes it non-convex.
  */
-static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump)
+static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump, bool surface)
 {
     size_t nv = 2 + (size_t)n * (size_t)(m - 1), nt = 2 * (size_t)n * (size_t)(m - 1);
     double *v = malloc(3 * nv * sizeof *v);
@@ -89,7 +94,8 @@ static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump)
         sizes[i] = 3;
     noctMesh *mesh;
     noctError err;
-    noctStatus st = noctMeshCreate(v, nv, sizes, nt, idx, &mesh, &err);
+    noctStatus st = (surface ? noctMeshCreateSurface : noctMeshCreate)(v, nv, sizes, nt, idx,
+                                                                       &mesh, &err);
     if (st != NOCT_OK)
         die("sphere mesh", st, &err);
     free(v);
@@ -113,13 +119,215 @@ static double bound_radius(const noctMesh *m)
     return sqrt(r);
 }
 
+/* ---- --weld N: the tolerance weld's time ------------------------------------------ */
+
+/* Input `kind` of the weld benchmark, about n points, into v (3 n doubles;
+ * returns the count) and its tolerance into *eps:
+ * 0 "soup": a UV sphere's triangles each with its own three corners, every
+ *   corner moved by up to 10^-9 (a CAD export's rounding), eps 10^-7;
+ * 1 "cloud": uniform in the unit cube, eps half the mean spacing;
+ * 2 "cluster": all within eps of each other;
+ * 3 "chain": each 3/4 eps from the next along x;
+ * 4 "anti-diagonal": two clusters in diagonally adjacent cells whose every
+ *   pair is within eps on two axes and apart on the third (check-meshio's
+ *   anti_diagonal()). The three last took the quadratic weld n^2 / 2 pair
+ *   tests. */
+static size_t weld_input(int kind, size_t n, double *v, double *eps)
+{
+    if (kind == 0) {
+        int segs = (int)sqrt((double)n / 3); /* segs x segs/2 quads, 6 corners each */
+        int rings = segs / 2;
+        const double pi = 3.14159265358979323846;
+        size_t c = 0;
+        for (int r = 0; r < rings; ++r)
+            for (int s = 0; s < segs; ++s) {
+                double q[4][3];
+                for (int k = 0; k < 4; ++k) {
+                    double th = pi * (r + (k >> 1)) / rings, ph = 2 * pi * (s + (k & 1)) / segs;
+                    q[k][0] = sin(th) * cos(ph);
+                    q[k][1] = sin(th) * sin(ph);
+                    q[k][2] = cos(th);
+                }
+                static const int tri[6] = {0, 1, 3, 0, 3, 2};
+                for (int t = 0; t < 6; ++t, ++c)
+                    for (int k = 0; k < 3; ++k)
+                        v[3 * c + (size_t)k] = q[tri[t]][k] + (urand() - 0.5) * 2e-9;
+            }
+        *eps = 1e-7;
+        return c;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        double *p = &v[3 * i];
+        if (kind == 1) {
+            for (int k = 0; k < 3; ++k)
+                p[k] = urand();
+            *eps = 0.5 / cbrt((double)n);
+        } else if (kind == 2) {
+            for (int k = 0; k < 3; ++k)
+                p[k] = 5 + urand() * 0.5;
+            *eps = 1;
+        } else if (kind == 3) {
+            p[0] = (double)i * 0.75;
+            p[1] = urand() * 0.1;
+            p[2] = urand() * 0.1;
+            *eps = 1;
+        } else {
+            double s = (double)(i / 2) * 0x1p-19;
+            if (i % 2 == 0) {
+                p[0] = 0.5 + s;
+                p[1] = 0.5 - s;
+                p[2] = 0.5 + s;
+            } else {
+                p[0] = 1.5 + s + 0x1p-20;
+                p[1] = 1.5 - s - 0x1p-20;
+                p[2] = 1.25;
+            }
+            *eps = 1;
+        }
+    }
+    return n;
+}
+
+static int bench_weld(size_t n, int repeats)
+{
+    static const char *const names[] = {"soup", "cloud", "cluster", "chain", "anti-diagonal"};
+    double *v = malloc(3 * n * sizeof *v);
+    if (v == NULL)
+        die("weld", NOCT_ERR_NOMEM, NULL);
+    printf("the tolerance weld (noctMeshDataWeld), about %zu points (median of %d)\n", n,
+           repeats);
+    printf("%-14s %8s %10s %9s %10s\n", "input", "points", "eps", "kept", "ms");
+    for (int kind = 0; kind < 5; ++kind) {
+        double eps = 1;
+        size_t np = weld_input(kind, n, v, &eps);
+        double times[9];
+        size_t kept = 0;
+        for (int r = 0; r < repeats; ++r) {
+            noctMeshData *d;
+            noctError err;
+            noctStatus st = noctMeshDataCreate(v, np, NULL, 0, NULL, &d, &err);
+            if (st != NOCT_OK)
+                die("noctMeshDataCreate", st, &err);
+            double t0 = tool_now();
+            st = noctMeshDataWeld(d, eps, NULL, &err);
+            times[r] = 1e3 * (tool_now() - t0);
+            if (st != NOCT_OK)
+                die("noctMeshDataWeld", st, &err);
+            kept = noctMeshDataVertexCount(d);
+            noctMeshDataDestroy(d);
+        }
+        tool_sort(times, (size_t)repeats);
+        printf("%-14s %8zu %10.3g %9zu %10.1f\n", names[kind], np, eps, kept,
+               tool_rank(times, (size_t)repeats, 1, 2));
+        fflush(stdout);
+    }
+    free(v);
+    return EXIT_SUCCESS;
+}
+
+/* ---- --surfaces: what a surface costs ---------------------------------------------- */
+
+/* The same closed bumpy spheres as solids and as surfaces (noctMeshCreate
+ * and noctMeshCreateSurface of the same triangles), at the exact level on
+ * the same near-contact poses: nanoseconds per pair test and the hits.
+ * The verdicts differ only where one lies wholly inside the other: a
+ * solid contains it, a surface encloses nothing. */
+static int bench_surfaces(bool quick)
+{
+    static const struct {
+        const char *name;
+        int n, m;
+    } shapes[] = {{"bumpy-100", 10, 6}, {"bumpy-960", 32, 16}, {"bumpy-10000", 100, 51}};
+    const double one[3] = {1, 1, 1};
+    const int repeats = quick ? 1 : 5;
+    printf("solids against surfaces: the same closed meshes, exact level, the same "
+           "near-contact poses (median of %d)\n", repeats);
+    printf("%-12s %6s %-17s %10s %7s %7s %6s\n", "scene", "tris", "kinds", "ns/pair", "hits",
+           "pairs", "ratio");
+    for (size_t s = 0; s < sizeof shapes / sizeof *shapes; ++s) {
+        /* the same random spheres: the generator restarted per shape */
+        rng_state = 2026 + s;
+        noctMesh *sa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false);
+        noctMesh *sb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false);
+        rng_state = 2026 + s;
+        noctMesh *fa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true);
+        noctMesh *fb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true);
+        size_t tris = noctMeshTriangleCount(sa);
+        size_t npairs = quick ? 200 : tris > 5000 ? 2000 : 20000;
+        double reach = bound_radius(sa) + bound_radius(sb);
+        double (*tb)[3] = malloc(npairs * sizeof *tb);
+        if (tb == NULL)
+            die("sample", NOCT_ERR_NOMEM, NULL);
+        for (size_t i = 0; i < npairs; ++i) {
+            /* from 0 (concentric: one inside the other for solids) to just
+             * beyond touching */
+            double z = 2 * urand() - 1, phi = 2 * 3.14159265358979 * urand();
+            double d = reach * 1.05 * urand();
+            tb[i][0] = d * sqrt(1 - z * z) * cos(phi);
+            tb[i][1] = d * sqrt(1 - z * z) * sin(phi);
+            tb[i][2] = d * z;
+        }
+        const double ta[3] = {0, 0, 0};
+        const struct {
+            const char *kinds;
+            noctMesh *a, *b;
+        } combos[] = {{"solid-solid", sa, sb}, {"surface-surface", fa, fb},
+                      {"solid-surface", sa, fb}};
+        double base = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            double times[5];
+            size_t hits = 0;
+            for (int r = 0; r < repeats; ++r) {
+                double t0 = tool_now();
+                for (size_t i = 0; i < npairs; ++i) {
+                    bool hit;
+                    noctStatus st = noctCollide(combos[c].a, ta, combos[c].b, tb[i],
+                                                NOCT_ACCURACY_EXACT, &hit, NULL);
+                    if (st != NOCT_OK)
+                        die("noctCollide", st, NULL);
+                    hits += r == 0 && hit;
+                }
+                times[r] = 1e9 * (tool_now() - t0) / (double)npairs;
+            }
+            tool_sort(times, (size_t)repeats);
+            double ns = tool_rank(times, (size_t)repeats, 1, 2);
+            if (c == 0)
+                base = ns;
+            printf("%-12s %6zu %-17s %10.0f %7zu %7zu %6.2f\n", shapes[s].name, tris,
+                   combos[c].kinds, ns, hits, npairs, ns / base);
+            fflush(stdout);
+        }
+        free(tb);
+        noctMeshDestroy(sa);
+        noctMeshDestroy(sb);
+        noctMeshDestroy(fa);
+        noctMeshDestroy(fb);
+    }
+    return EXIT_SUCCESS;
+}
+
 int main(int argc, char **argv)
 {
-    bool quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
-    if (argc > 1 && !quick) {
-        fputs("usage: bench-narrowphase [--quick]\n", stderr);
-        return 2;
+    bool quick = false, weld = false, surfaces = false;
+    size_t weld_n = 200000;
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--quick") == 0) {
+            quick = true;
+        } else if (strcmp(argv[i], "--surfaces") == 0) {
+            surfaces = true;
+        } else if (strcmp(argv[i], "--weld") == 0 && i + 1 < argc &&
+                   strtoul(argv[i + 1], NULL, 10) >= 100) {
+            weld = true;
+            weld_n = strtoul(argv[++i], NULL, 10);
+        } else {
+            fputs("usage: bench-narrowphase [--quick] [--surfaces | --weld N]\n", stderr);
+            return 2;
+        }
     }
+    if (weld)
+        return bench_weld(weld_n, quick ? 1 : 3);
+    if (surfaces)
+        return bench_surfaces(quick);
     noctMesh *box;
     noctError err;
     noctStatus st = noctMeshCreateBox(0.5, 0.5, 0.5, &box, &err);
@@ -128,10 +336,12 @@ int main(int argc, char **argv)
     const double ell1[3] = {1, 0.6, 0.4}, ell2[3] = {0.5, 1, 0.7}, one[3] = {1, 1, 1};
     scene scenes[] = {
         {"box-box", box, box, 0},
-        {"convex-100", uv_sphere(10, 6, ell1, 0), uv_sphere(10, 6, ell2, 0), 0},
-        {"bumpy-100", uv_sphere(10, 6, one, 0.3), uv_sphere(10, 6, one, 0.3), 0},
-        {"bumpy-960", uv_sphere(32, 16, one, 0.3), uv_sphere(32, 16, one, 0.3), 0},
-        {"bumpy-10000", uv_sphere(100, 51, one, 0.3), uv_sphere(100, 51, one, 0.3), 0},
+        {"convex-100", uv_sphere(10, 6, ell1, 0, false), uv_sphere(10, 6, ell2, 0, false), 0},
+        {"bumpy-100", uv_sphere(10, 6, one, 0.3, false), uv_sphere(10, 6, one, 0.3, false), 0},
+        {"bumpy-960", uv_sphere(32, 16, one, 0.3, false), uv_sphere(32, 16, one, 0.3, false),
+         0},
+        {"bumpy-10000", uv_sphere(100, 51, one, 0.3, false),
+         uv_sphere(100, 51, one, 0.3, false), 0},
     };
     const size_t nscenes = sizeof scenes / sizeof *scenes;
     const int repeats = quick ? 1 : 5;

@@ -297,13 +297,21 @@ NOCT_API noctStatus noctMeshReadSurface(const char *path, noctMesh **mesh, noctE
  * one vertex, except that -0.0 and +0.0 count as equal. Coordinates that
  * differ by one unit in the last place are not welded.
  *
- * **Tolerance weld** (a tolerance eps > 0): two vertices whose Euclidean
- * distance, computed in double, is at most eps are merged, and so,
- * transitively, are chains of them: a chain of vertices each within eps
- * of the next becomes one vertex even if its ends are farther apart. The
- * classes are found by union-find over a grid of cells of side 2 eps, so
- * the result depends on the vertices alone, not on their order in a grid
- * walk.
+ * **Tolerance weld** (a tolerance eps > 0): two vertices each of whose
+ * three coordinates differ by at most eps, exactly (|x_k - y_k| <= eps
+ * as real numbers, no rounding: the max-norm distance), are merged, and
+ * so, transitively, are chains of them: a chain of vertices each within
+ * eps of the next becomes one vertex even if its ends are farther apart.
+ * The classes depend on the vertices alone, not on their order, and a
+ * tolerance of 0 would give the exact weld's. They are found in
+ * O(n log n) time for any n vertices: by cells of side eps (two vertices
+ * of one cell are within eps; two within eps lie in the same or adjacent
+ * cells), each pair of adjacent cells decided by a sort and a dominance
+ * sweep, never by comparing every pair. (A Euclidean distance would
+ * admit no such bound: deciding whether two dense clusters have a pair
+ * within eps is then a bichromatic closest-pair problem, for which no
+ * O(n log n) algorithm is known in three dimensions. The box of side
+ * 2 eps around a vertex holds its ball of radius eps.)
  *
  * Either way the welded vertex of a class is the class's first vertex (the
  * lowest index), with its coordinates (not an average); the kept vertices
@@ -492,7 +500,7 @@ NOCT_API noctStatus noctMeshDataRead(const char *path, noctMeshData **data,
  *       welded vertices and dropped polygons (#noctMeshReport) grow by the
  *       report's. On failure the data is unchanged.
  * @return #NOCT_OK; #NOCT_ERR_INVALID if @p tolerance is negative, not
- *         finite, or so small that some coordinate is more than 2^40
+ *         finite, or so small that some coordinate is 2^53 or more
  *         tolerances from 0; #NOCT_ERR_NOMEM.
  */
 NOCT_API noctStatus noctMeshDataWeld(noctMeshData *data, double tolerance,
