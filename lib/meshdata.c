@@ -241,30 +241,7 @@ typedef struct weld_grid {
     uint32_t *best;         /* scratch: prefix bests, a Fenwick tree */
     uint32_t *place;        /* scratch, by vertex: its place along an axis */
     axis_item *order;       /* scratch: the points of B in sweep order */
-    size_t *table;          /* the cells by hash: open addressing, SIZE_MAX empty */
-    size_t mask;            /* the table's size less 1 (a power of 2) */
 } weld_grid;
-
-/* A cell's hash: its numbers are integers below 2^53 in magnitude. */
-static size_t cell_hash(const double cell[3])
-{
-    uint64_t h = 0;
-    for (int k = 0; k < 3; ++k) {
-        h ^= (uint64_t)(int64_t)cell[k] + 0x9e3779b97f4a7c15u + (h << 6) + (h >> 2);
-        h *= 0xff51afd7ed558ccdu;
-    }
-    return (size_t)(h ^ h >> 29);
-}
-
-/* The number of the cell `cell`, or SIZE_MAX if no point lies in it. */
-static size_t cell_lookup(const weld_grid *g, const double cell[3])
-{
-    for (size_t h = cell_hash(cell) & g->mask;; h = (h + 1) & g->mask) {
-        size_t c = g->table[h];
-        if (c == SIZE_MAX || memcmp(g->keys[g->start[c]].k, cell, 3 * sizeof *cell) == 0)
-            return c;
-    }
-}
 
 static const axis_item *cell_axis(weld_grid *g, size_t c, int k)
 {
@@ -404,8 +381,7 @@ static bool cells_meet(weld_grid *g, size_t a, size_t b, const int d[3])
  * on every axis and two points within eps lie in the same or adjacent
  * cells. A cell's points are one class at once; each pair of adjacent
  * cells is decided once (the 13 neighbours after it in lexicographic
- * order, found by hash) by cells_meet(), unless its cells are of one
- * class already.
+ * order) by cells_meet(), unless its cells are of one class already.
  * O(n log n) whatever the points: each cell meets at most 26 others, at a
  * cost of O(size log size) each. False if memory runs out. */
 static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *keys,
@@ -432,12 +408,7 @@ static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *
     g.best = malloc(n * sizeof *g.best);
     g.place = malloc(n * sizeof *g.place);
     g.order = malloc(n * sizeof *g.order);
-    size_t tsize = 16;
-    while (tsize < 2 * ncell)
-        tsize *= 2;
-    g.mask = tsize - 1;
-    g.table = malloc(tsize * sizeof *g.table);
-    bool ok = g.start && g.lo && g.hi && g.sorted && g.best && g.place && g.order && g.table;
+    bool ok = g.start && g.lo && g.hi && g.sorted && g.best && g.place && g.order;
     for (int k = 0; k < 3; ++k) {
         g.axis[k] = ok ? malloc(n * sizeof *g.axis[k]) : NULL;
         ok = ok && g.axis[k] != NULL;
@@ -463,14 +434,6 @@ static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *
             }
         }
         g.start[ncell] = n;
-        for (size_t h = 0; h < tsize; ++h)
-            g.table[h] = SIZE_MAX;
-        for (size_t a = 0; a < ncell; ++a) {
-            size_t h = cell_hash(keys[g.start[a]].k) & g.mask;
-            while (g.table[h] != SIZE_MAX)
-                h = (h + 1) & g.mask;
-            g.table[h] = a;
-        }
         for (size_t a = 0; a < ncell; ++a) {
             const double *ca = keys[g.start[a]].k;
             for (int dx = 0; dx <= 1; ++dx)
@@ -478,12 +441,22 @@ static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *
                     for (int dz = dx || dy ? -1 : 1; dz <= 1; ++dz) {
                         const int dd[3] = {dx, dy, dz};
                         double cell[3] = {ca[0] + dx, ca[1] + dy, ca[2] + dz};
-                        size_t b = cell_lookup(&g, cell);
-                        if (b == SIZE_MAX)
+                        /* the cell, by binary search over the cells */
+                        size_t lo = a + 1, hi = ncell;
+                        while (lo < hi) {
+                            size_t mid = lo + (hi - lo) / 2;
+                            weld_key probe = {{cell[0], cell[1], cell[2]}, 0};
+                            if (cmp_weld_key(&keys[g.start[mid]], &probe) < 0)
+                                lo = mid + 1;
+                            else
+                                hi = mid;
+                        }
+                        if (lo == ncell ||
+                            memcmp(keys[g.start[lo]].k, cell, sizeof cell) != 0)
                             continue;
                         uint32_t ra = uf_find(parent, keys[g.start[a]].i);
-                        uint32_t rb = uf_find(parent, keys[g.start[b]].i);
-                        if (ra != rb && cells_meet(&g, a, b, dd))
+                        uint32_t rb = uf_find(parent, keys[g.start[lo]].i);
+                        if (ra != rb && cells_meet(&g, a, lo, dd))
                             uf_union(parent, ra, rb);
                     }
         }
@@ -497,7 +470,6 @@ static bool weld_tolerance_classes(const noctMeshData *d, double eps, weld_key *
     free(g.best);
     free(g.place);
     free(g.order);
-    free(g.table);
     for (int k = 0; k < 3; ++k)
         free(g.axis[k]);
     return ok;

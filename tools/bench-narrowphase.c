@@ -16,15 +16,18 @@
  *
  * Usage: bench-narrowphase [--quick] [--surfaces | --weld N]
  */
-#define _POSIX_C_SOURCE 200809L
+#define _POSIX_C_SOURCE 200809L /* mkdtemp() */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/scene.h>
+#include <noctree/world.h>
 
 #include "benchutil.h"
 
@@ -45,9 +48,11 @@ static void die(const char *what, noctStatus st, const noctError *err)
 /*
  * A UV sphere of n segments and m rings (2 n (m - 1) triangles), its radius
  * in direction (theta, phi) scaled by (sx, sy, sz) and multiplied by
- * 1 + bump * (smooth noise), so bump > 0 makes it non-convex.
+ * 1 + bump * (smooth noise), so bump > 0 makes it non-convex; a solid or
+ * a surface; written as OFF to `off` too unless it is NULL.
  */
-static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump, bool surface)
+static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump, bool surface,
+                           FILE *off)
 {
     size_t nv = 2 + (size_t)n * (size_t)(m - 1), nt = 2 * (size_t)n * (size_t)(m - 1);
     double *v = malloc(3 * nv * sizeof *v);
@@ -92,6 +97,13 @@ static noctMesh *uv_sphere(int n, int m, const double scale[3], double bump, boo
 #undef RING
     for (size_t i = 0; i < nt; ++i)
         sizes[i] = 3;
+    if (off != NULL) {
+        fprintf(off, "OFF\n%zu %zu 0\n", nv, nt);
+        for (size_t i = 0; i < nv; ++i)
+            fprintf(off, "%.17g %.17g %.17g\n", v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+        for (size_t i = 0; i < nt; ++i)
+            fprintf(off, "3 %u %u %u\n", idx[3 * i], idx[3 * i + 1], idx[3 * i + 2]);
+    }
     noctMesh *mesh;
     noctError err;
     noctStatus st = (surface ? noctMeshCreateSurface : noctMeshCreate)(v, nv, sizes, nt, idx,
@@ -227,11 +239,95 @@ static int bench_weld(size_t n, int repeats)
 
 /* ---- --surfaces: what a surface costs ---------------------------------------------- */
 
+/* The pair tests of each kind of pair, as functions of their own so that
+ * callgrind counts each kind's instructions apart (inclusive cost of
+ * collide_solids, collide_surfaces, collide_mixed). */
+static noctStatus collide_solids(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                 const double tb[3], bool *hit)
+{
+    return noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, hit, NULL);
+}
+
+static noctStatus collide_surfaces(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                   const double tb[3], bool *hit)
+{
+    return noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, hit, NULL);
+}
+
+static noctStatus collide_mixed(const noctMesh *a, const double ta[3], const noctMesh *b,
+                                const double tb[3], bool *hit)
+{
+    return noctCollide(a, ta, b, tb, NOCT_ACCURACY_EXACT, hit, NULL);
+}
+
+typedef noctStatus (*collide_fn)(const noctMesh *, const double *, const noctMesh *,
+                                 const double *, bool *);
+
+/* The world step of a scene file of k objects of one bumpy sphere's mesh
+ * (`mesh ball file ball.off`, as a solid or with `surface`), turned and
+ * moving in a container with walls (effects motion, events and walls: no
+ * response, so both runs move alike), exact level: milliseconds per step
+ * (median of the steps), colliding pairs summed over the steps and the
+ * contact-begin events. */
+static void world_run(const char *dir, bool surface, int k, int steps, double *ms,
+                      size_t *colliding, size_t *begins)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.scene", dir, surface ? "surfaces" : "solids");
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        die(path, NOCT_ERR_IO, NULL);
+    double side = 2.6 * cbrt((double)k); /* about 1/4 of the box filled */
+    fprintf(f, "N auto\naccuracy exact\nsteps %d\neffects motion events walls\n"
+            "walls 0 0 0 %.17g %.17g %.17g\nmesh ball file ball.off%s\n", steps, side,
+            side, side, surface ? " surface" : "");
+    uint64_t rng = 29;
+    for (int i = 0; i < k; ++i) {
+        double u[8];
+        for (int j = 0; j < 8; ++j)
+            u[j] = (double)(tool_rand(&rng) >> 11) * 0x1p-53;
+        fprintf(f, "object ball %.17g %.17g %.17g  %.17g %.17g %.17g 0.05 "
+                "rotate %.17g %.17g 1 %.17g\n", 1.3 + u[0] * (side - 2.6),
+                1.3 + u[1] * (side - 2.6), 1.3 + u[2] * (side - 2.6), u[3] - 0.5, u[4] - 0.5,
+                u[5] - 0.5, u[6], u[7], 360 * u[6]);
+    }
+    fclose(f);
+    noctScene *sn;
+    noctWorld *world;
+    noctError err;
+    noctStatus st = noctSceneRead(path, &sn, &err);
+    if (st != NOCT_OK)
+        die("noctSceneRead", st, &err);
+    st = noctSceneBuild(sn, &world, &err);
+    if (st != NOCT_OK)
+        die("noctSceneBuild", st, &err);
+    double *t = malloc((size_t)steps * sizeof *t);
+    if (t == NULL)
+        die("world", NOCT_ERR_NOMEM, NULL);
+    *colliding = *begins = 0;
+    for (int i = 0; i < steps; ++i) {
+        double t0 = tool_now();
+        st = noctWorldStep(world, &err);
+        t[i] = 1e3 * (tool_now() - t0);
+        if (st != NOCT_OK)
+            die("noctWorldStep", st, &err);
+        const noctPair *pairs;
+        *colliding += noctWorldColliding(world, &pairs);
+        *begins += noctWorldBegan(world, &pairs);
+    }
+    tool_sort(t, (size_t)steps);
+    *ms = tool_rank(t, (size_t)steps, 1, 2);
+    free(t);
+    noctWorldDestroy(world);
+    noctSceneDestroy(sn);
+}
+
 /* The same closed bumpy spheres as solids and as surfaces (noctMeshCreate
  * and noctMeshCreateSurface of the same triangles), at the exact level on
  * the same near-contact poses: nanoseconds per pair test and the hits.
  * The verdicts differ only where one lies wholly inside the other: a
- * solid contains it, a surface encloses nothing. */
+ * solid contains it, a surface encloses nothing. Then the world step of a
+ * scene of such spheres, solids against surfaces (world_run()). */
 static int bench_surfaces(bool quick)
 {
     static const struct {
@@ -247,11 +343,11 @@ static int bench_surfaces(bool quick)
     for (size_t s = 0; s < sizeof shapes / sizeof *shapes; ++s) {
         /* the same random spheres: the generator restarted per shape */
         rng_state = 2026 + s;
-        noctMesh *sa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false);
-        noctMesh *sb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false);
+        noctMesh *sa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false, NULL);
+        noctMesh *sb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, false, NULL);
         rng_state = 2026 + s;
-        noctMesh *fa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true);
-        noctMesh *fb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true);
+        noctMesh *fa = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true, NULL);
+        noctMesh *fb = uv_sphere(shapes[s].n, shapes[s].m, one, 0.3, true, NULL);
         size_t tris = noctMeshTriangleCount(sa);
         size_t npairs = quick ? 200 : tris > 5000 ? 2000 : 20000;
         double reach = bound_radius(sa) + bound_radius(sb);
@@ -271,18 +367,20 @@ static int bench_surfaces(bool quick)
         const struct {
             const char *kinds;
             noctMesh *a, *b;
-        } combos[] = {{"solid-solid", sa, sb}, {"surface-surface", fa, fb},
-                      {"solid-surface", sa, fb}};
+            collide_fn fn;
+        } combos[] = {{"solid-solid", sa, sb, collide_solids},
+                      {"surface-surface", fa, fb, collide_surfaces},
+                      {"solid-surface", sa, fb, collide_mixed}};
         double base = 0;
         for (size_t c = 0; c < 3; ++c) {
             double times[5];
             size_t hits = 0;
+            collide_fn volatile fn = combos[c].fn; /* called, not inlined */
             for (int r = 0; r < repeats; ++r) {
                 double t0 = tool_now();
                 for (size_t i = 0; i < npairs; ++i) {
                     bool hit;
-                    noctStatus st = noctCollide(combos[c].a, ta, combos[c].b, tb[i],
-                                                NOCT_ACCURACY_EXACT, &hit, NULL);
+                    noctStatus st = fn(combos[c].a, ta, combos[c].b, tb[i], &hit);
                     if (st != NOCT_OK)
                         die("noctCollide", st, NULL);
                     hits += r == 0 && hit;
@@ -303,6 +401,42 @@ static int bench_surfaces(bool quick)
         noctMeshDestroy(fa);
         noctMeshDestroy(fb);
     }
+    char dir[] = "/tmp/bench-narrowphase-XXXXXX";
+    if (mkdtemp(dir) == NULL)
+        die("mkdtemp", NOCT_ERR_IO, NULL);
+    const int k = quick ? 20 : 200, steps = quick ? 10 : 200;
+    printf("\nthe world step: %d objects of one mesh, exact level, motion, events and walls, "
+           "%d steps (median)\n", k, steps);
+    printf("%-12s %6s %-9s %10s %10s %7s %6s\n", "mesh", "tris", "kind", "ms/step",
+           "colliding", "begins", "ratio");
+    for (size_t s = 0; s < 2; ++s) {
+        char off[600];
+        snprintf(off, sizeof off, "%s/ball.off", dir);
+        FILE *f = fopen(off, "w");
+        if (f == NULL)
+            die(off, NOCT_ERR_IO, NULL);
+        rng_state = 2026 + s;
+        noctMesh *ball = uv_sphere(shapes[s + 1].n, shapes[s + 1].m, one, 0.3, false, f);
+        fclose(f);
+        size_t tris = noctMeshTriangleCount(ball);
+        noctMeshDestroy(ball);
+        double base = 0;
+        for (int surface = 0; surface < 2; ++surface) {
+            double ms;
+            size_t colliding, begins;
+            world_run(dir, surface, k, steps, &ms, &colliding, &begins);
+            if (!surface)
+                base = ms;
+            printf("%-12s %6zu %-9s %10.3f %10zu %7zu %6.2f\n", shapes[s + 1].name, tris,
+                   surface ? "surfaces" : "solids", ms, colliding, begins, ms / base);
+            fflush(stdout);
+            char path[600];
+            snprintf(path, sizeof path, "%s/%s.scene", dir, surface ? "surfaces" : "solids");
+            remove(path);
+        }
+        remove(off);
+    }
+    rmdir(dir);
     return EXIT_SUCCESS;
 }
 
@@ -336,12 +470,14 @@ int main(int argc, char **argv)
     const double ell1[3] = {1, 0.6, 0.4}, ell2[3] = {0.5, 1, 0.7}, one[3] = {1, 1, 1};
     scene scenes[] = {
         {"box-box", box, box, 0},
-        {"convex-100", uv_sphere(10, 6, ell1, 0, false), uv_sphere(10, 6, ell2, 0, false), 0},
-        {"bumpy-100", uv_sphere(10, 6, one, 0.3, false), uv_sphere(10, 6, one, 0.3, false), 0},
-        {"bumpy-960", uv_sphere(32, 16, one, 0.3, false), uv_sphere(32, 16, one, 0.3, false),
-         0},
-        {"bumpy-10000", uv_sphere(100, 51, one, 0.3, false),
-         uv_sphere(100, 51, one, 0.3, false), 0},
+        {"convex-100", uv_sphere(10, 6, ell1, 0, false, NULL),
+         uv_sphere(10, 6, ell2, 0, false, NULL), 0},
+        {"bumpy-100", uv_sphere(10, 6, one, 0.3, false, NULL),
+         uv_sphere(10, 6, one, 0.3, false, NULL), 0},
+        {"bumpy-960", uv_sphere(32, 16, one, 0.3, false, NULL),
+         uv_sphere(32, 16, one, 0.3, false, NULL), 0},
+        {"bumpy-10000", uv_sphere(100, 51, one, 0.3, false, NULL),
+         uv_sphere(100, 51, one, 0.3, false, NULL), 0},
     };
     const size_t nscenes = sizeof scenes / sizeof *scenes;
     const int repeats = quick ? 1 : 5;
