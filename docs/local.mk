@@ -50,7 +50,7 @@ docs_results = \
 	docs/results/default.txt docs/results/scale.txt docs/results/peers.txt \
 	docs/results/overlap.txt docs/results/driven.txt docs/results/queries.txt \
 	docs/results/distance.txt \
-	docs/results/soups.txt \
+	docs/results/soups.txt docs/results/surfaces.txt docs/results/weld.txt \
 	docs/results/peers.csv docs/results/sweep.txt docs/results/sweep.csv \
 	docs/results/sweep.gp docs/results/sweep.svg \
 	docs/results/fig9.svg docs/results/fig10.svg docs/results/scaling.svg \
