@@ -25,6 +25,12 @@
 #include "testutil.h"
 
 #ifdef NOCT_TEST_ASSIMP
+#if defined(__has_include)
+#if __has_include(<valgrind/valgrind.h>)
+#include <valgrind/valgrind.h>
+#define NOCT_HAVE_VALGRIND_H 1
+#endif
+#endif
 #include <assimp/cexport.h>
 #include <assimp/cimport.h>
 #include <assimp/scene.h>
@@ -1457,6 +1463,19 @@ static const char *write_fbx_binary(const tmesh *m, double dx, const char *name,
 }
 
 #ifdef NOCT_TEST_ASSIMP
+/* Whether leaks are checked: under AddressSanitizer (GCC's macro) or
+ * valgrind (its client request, where its header is installed). */
+static bool leak_checked(void)
+{
+#ifdef __SANITIZE_ADDRESS__
+    return true;
+#elif defined(NOCT_HAVE_VALGRIND_H)
+    return RUNNING_ON_VALGRIND != 0;
+#else
+    return false;
+#endif
+}
+
 /* The file holds m translated by (dx, 0, 0), and if turned, turned by
  * (x, y, z) -> (x, z, -y): after the exact weld, m's vertices and
  * triangles, a solid of m's volume, m's bounds moved (and turned). */
@@ -1559,6 +1578,13 @@ START_TEST(assimp_fbx_3ds)
          * leaves the file's axes as they are */
         expect_solid_file(path, m, 0, f == 1, 5);
         size_t n = file_size(path);
+        /* assimp 5.2's ASCII FBX parser leaks what it parsed when it fails:
+         * not under the leak checkers */
+        if (f == 0 && leak_checked()) {
+            fputs("check-meshio: a truncated ASCII FBX not read under a leak checker "
+                  "(AddressSanitizer, valgrind): assimp leaks on it\n", stderr);
+            continue;
+        }
         expect_error(truncated(path, n / 2, f ? "half.3ds" : "half-ascii.fbx"),
                      NOCT_ERR_PARSE, "the Open Asset Import Library cannot read it");
     }
@@ -1608,6 +1634,7 @@ static Suite *meshio_suite(void)
               repair_orients, repair_duplicates);
     tc = test_case(s, "the tolerance weld", 120, NULL);
     tcase_add_loop_test(tc, weld_against_oracle, 0, 2);
+    tc = test_case(s, "the tolerance weld's worst cases", 120, "slow");
     tcase_add_test(tc, weld_worst_cases_finish);
     return s;
 }
