@@ -174,50 +174,54 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     return -1;
 }
 
-/* The squared gap between objects i's and j's boxes, in floating point,
- * and in *scale the larger of d and their coordinates' magnitudes. */
-static inline double box_gap2(const noctWorld *w, uint32_t i, uint32_t j, double d,
-                              double *scale)
+/* The squared gap between boxes a and b (objects i's and j's, i < j), in
+ * floating point, and in *scale the larger of d and their coordinates'
+ * magnitudes. */
+static NOCT_ALWAYS_INLINE double box_gap2(const double alo[3], const double ahi[3],
+                                          const double blo[3], const double bhi[3], double d,
+                                          double *scale)
 {
-    const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
     double s = 0;
     *scale = d;
     for (int k = 0; k < 3; ++k) {
-        const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
+        const double g = noct_max(noct_max(blo[k] - ahi[k], alo[k] - bhi[k]), 0);
         s += g * g;
-        *scale = noct_max(*scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
-                                           noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+        *scale = noct_max(*scale, noct_max(noct_max(fabs(alo[k]), fabs(ahi[k])),
+                                           noct_max(fabs(blo[k]), fabs(bhi[k]))));
     }
     return s;
 }
 
-/* Are objects i and j near, at the world's level, if they collide or
- * not (colliding: listed in the step's contacts)? */
-static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding)
+/* The boxes' test of near() below, on boxes a and b of objects i < j
+ * (colliding pairs pass it: their boxes overlap, so their gap is 0): at
+ * the box level the answer, else false when the boxes alone prove the
+ * pair not near. */
+static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3],
+                                          const double ahi[3], const double blo[3],
+                                          const double bhi[3], double d)
 {
-    if (colliding)
-        return true;
-    if (w->def.accuracy != NOCT_ACCURACY_BOX) {
-        /* Boxes farther apart than d and 2^-37 of their coordinates: each
-         * solid lies in its box (up to the roundings of its placed
-         * vertices, a few ulps of those coordinates), so the solids are
-         * farther apart than d and twice noct_solids_within()'s slack
-         * (2^-40 of the same coordinates, or of d), where it answers
-         * false; the box forms' proofs below never answer true there
-         * (their points lie in the solids). A few dozen operations, where
-         * the separating-axis test takes hundreds. */
-        double scale;
-        const double s = box_gap2(w, i, j, d, &scale);
-        const double beyond = d + 0x1p-37 * scale;
-        if (s > beyond * beyond)
-            return false;
-    }
+    double scale;
+    const double s = box_gap2(alo, ahi, blo, bhi, d, &scale);
     if (w->def.accuracy == NOCT_ACCURACY_BOX) {
-        double scale;
-        const double s = box_gap2(w, i, j, d, &scale);
         const double reach = d + 0x1p-40 * scale;
         return s <= reach * reach;
     }
+    /* Boxes farther apart than d and 2^-37 of their coordinates: each
+     * solid lies in its box (up to the roundings of its placed
+     * vertices, a few ulps of those coordinates), so the solids are
+     * farther apart than d and twice noct_solids_within()'s slack
+     * (2^-40 of the same coordinates, or of d), where it answers
+     * false; the box forms' proofs below never answer true there
+     * (their points lie in the solids). A few dozen operations, where
+     * the separating-axis test takes hundreds. */
+    const double beyond = d + 0x1p-37 * scale;
+    return !(s > beyond * beyond);
+}
+
+/* Are objects i and j, whose boxes passed boxes_near(), near at the
+ * world's level (not the box level), if they do not collide? */
+static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d)
+{
     /* two boxes that a separating axis proves farther apart: the common
      * case, a few dozen operations */
     if (w->slot[i].has_box && w->slot[j].has_box &&
@@ -231,6 +235,18 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool coll
     noct_shape_view va, vb;
     const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
     return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
+}
+
+/* Are objects i and j near, at the world's level, if they collide or
+ * not (colliding: listed in the step's contacts)? */
+static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding)
+{
+    if (colliding)
+        return true;
+    const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
+    if (!boxes_near(w, a->lo, a->hi, b->lo, b->hi, d))
+        return false;
+    return w->def.accuracy == NOCT_ACCURACY_BOX || near_solids(w, i, j, d);
 }
 
 /* Leaves an object's scan reads at most, and their sizes' largest ratio
@@ -471,6 +487,11 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                                  noct_max(A->lo[2], B->lo[2])};
             if (!noct_cell_owns(c, s->root, P))
                 continue;
+            /* near()'s test on the boxes, here where they are at hand
+             * (the same numbers: copies) */
+            const double d = s->m != NULL ? s->W + (s->m[I->id] + s->m[J->id]) : s->W;
+            if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
+                continue;
             if (!noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
                 continue;
             if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
@@ -573,16 +594,27 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* the step's colliding pairs, sorted as the candidates are, walked
      * beside them */
     const noct_pair_list *col = &w->events.contact.now;
+    const bool solids = w->def.accuracy != NOCT_ACCURACY_BOX;
     size_t at = 0;
     for (size_t k = 0; by_leaves > 0 && k < s.cand.n; ++k) {
         const uint32_t i = s.cand.p[k].a.index, j = s.cand.p[k].b.index;
+        /* the box forms of the pairs a few ahead, scattered by the
+         * second object, requested */
+        if (solids && k + 8 < s.cand.n) {
+            const uint32_t ahead = s.cand.p[k + 8].b.index;
+            NOCT_PREFETCH((const char *)&w->slot[ahead]);
+            NOCT_PREFETCH((const char *)&w->slot[ahead] + 64);
+            NOCT_PREFETCH(w->pos[ahead]);
+        }
         while (at < col->n && (col->p[at].a.index < i ||
                                (col->p[at].a.index == i && col->p[at].b.index < j)))
             ++at;
         const bool colliding =
             at < col->n && col->p[at].a.index == i && col->p[at].b.index == j;
         const double d = m != NULL ? W + (m[i] + m[j]) : W;
-        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) || !near(w, i, j, d, colliding))
+        /* (the candidates passed near()'s test on the boxes) */
+        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
+            !(colliding || !solids || near_solids(w, i, j, d)))
             continue;
         const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
                                {j, noct_bp_generation(&w->bp, j)}};
