@@ -362,20 +362,33 @@ typedef struct near_box {
     uint32_t id;
 } near_box;
 
+/* A gathered box's place in the sweep: its lower corner on the sweep's
+ * axis and its index among the gathered. The leaves gather dozens of
+ * boxes in no useful order (the lists of several leaves, each sorted on
+ * its own axis if at all), so these 16 bytes are sorted, by insertion in
+ * runs of KEY_RUN and by merging the runs, rather than the 64 of a box. */
+typedef struct near_key {
+    double lo;
+    size_t at;
+} near_key;
+
 typedef struct near_sweep {
     noctWorld *w;
     const double *m; /* objects' own margins, or NULL */
     double W, M;     /* world's margin, largest own margin */
     double G;        /* every object's grow at most, with room */
     const noct_cell *root;
-    near_box *g;     /* the gathered boxes, and as many for the sort */
+    near_box *g;     /* the gathered boxes */
     size_t capg, ng;
+    near_key *key;   /* their order on the sweep's axis, and as many for the sort */
+    size_t capkey;
     uint32_t epoch;
     double qlo[3], qhi[3];
     noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j */
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
+    bool filtered;        /* some object has a filter (else all pass) */
 } near_sweep;
 
 NOCT_DEFINE_GROW(grow_near_box, near_box)
@@ -410,7 +423,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
     }
     noctWorld *w = s->w;
     uint32_t *mark = noct_bp_marks(&w->bp);
-    if (!grow_near_box(&s->g, &s->capg, 2 * (s->ng + c->count)))
+    if (!grow_near_box(&s->g, &s->capg, s->ng + c->count))
         return false;
     for (uint32_t t = 0; t < c->count; ++t) {
         const uint32_t id = c->objs[t];
@@ -431,7 +444,44 @@ static bool gather_node(near_sweep *s, const octNode *n)
     return true;
 }
 
-NOCT_DEFINE_BOX_SWEEP(near_boxes, near_box, size_t)
+NOCT_DEFINE_BOX_AXIS(near_boxes, near_box, size_t)
+
+#define KEY_RUN 8
+
+static void sort_keys(near_key *k, size_t n, near_key *tmp)
+{
+    for (size_t r = 0; r < n; r += KEY_RUN) {
+        const size_t end = r + KEY_RUN < n ? r + KEY_RUN : n;
+        for (size_t i = r + 1; i < end; ++i) {
+            const near_key t = k[i];
+            size_t j = i;
+            for (; j > r && k[j - 1].lo > t.lo; --j)
+                k[j] = k[j - 1];
+            k[j] = t;
+        }
+    }
+    near_key *src = k, *dst = tmp;
+    for (size_t width = KEY_RUN; width < n; width *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * width) {
+            const size_t mid = lo + width < n ? lo + width : n;
+            const size_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+            size_t i = lo, j = mid, o = lo;
+            while (i < mid && j < hi)
+                dst[o++] = src[j].lo < src[i].lo ? src[j++] : src[i++];
+            while (i < mid)
+                dst[o++] = src[i++];
+            while (j < hi)
+                dst[o++] = src[j++];
+        }
+        near_key *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != k)
+        memcpy(k, src, n * sizeof *k);
+}
+
+NOCT_DEFINE_GROW(grow_near_key, near_key)
 
 /* Leaf c's candidate pairs, into s->cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
@@ -454,13 +504,18 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     }
     if (n < 2)
         return true;
-    near_box *g = s->g;
+    const near_box *g = s->g;
     const int ax = near_boxes_axis(g, n);
-    near_boxes_sort(g, n, ax, g + n);
+    if (!grow_near_key(&s->key, &s->capkey, 2 * n))
+        return false;
+    near_key *key = s->key;
+    for (size_t a = 0; a < n; ++a)
+        key[a] = (near_key){g[a].lo[ax], a};
+    sort_keys(key, n, key + n);
     const double G = s->G;
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
     for (size_t a = 0; a < n; ++a) {
-        const near_box *A = &g[a];
+        const near_box *A = &g[key[a].at];
         /* A's box grown by the reach: G and more than the candidate
          * test's roundings, whichever object grows (a box beyond it on
          * an axis is no candidate) */
@@ -471,9 +526,9 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         }
         const double limit = up[ax];
         for (size_t bi = a + 1; bi < n; ++bi) {
-            const near_box *B = &g[bi];
-            if (B->lo[ax] > limit)
+            if (key[bi].lo > limit)
                 break;
+            const near_box *B = &g[key[bi].at];
             if ((B->lo[k1] > up[k1]) | (B->hi[k1] < dn[k1]) | (B->lo[k2] > up[k2]) |
                 (B->hi[k2] < dn[k2]))
                 continue;
@@ -492,7 +547,8 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
             const double d = s->m != NULL ? s->W + (s->m[I->id] + s->m[J->id]) : s->W;
             if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
                 continue;
-            if (!noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
+            if (s->filtered &&
+                !noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
                 continue;
             if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
                 return false;
@@ -543,6 +599,7 @@ static int near_candidates(near_sweep *s)
     s->G = G * (1 + 0x1p-30);
     s->root = noct_cell_of(noct_bp_root(bp));
     s->budget = 16 * live + 4096;
+    s->filtered = noct_bp_any_filter(bp);
     if (!sweep_node(s, noct_bp_root(bp)))
         return -1;
     if (s->over)
@@ -624,6 +681,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         }
     }
     free(s.g);
+    free(s.key);
     free(s.cand.p);
     /* else each object by a scan of its leaves or a query */
     const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;
