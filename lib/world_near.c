@@ -144,7 +144,7 @@ static bool witness_apart(const noct_box_slot *a, const noct_box_slot *b, const 
 }
 
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                        const double tb[3], double d)
+                        const double tb[3], double d, int rounds)
 {
     if (!(a->shrink < 1 && b->shrink < 1))
         return -1;
@@ -158,7 +158,7 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
     double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
-    for (int round = 1; round <= WITNESS_ROUNDS; ++round) {
+    for (int round = 1; round <= rounds; ++round) {
         project_box(a, CA, fa, q, p);
         project_box(b, CB, fb, p, q);
         for (int k = 0; k < 3; ++k)
@@ -222,13 +222,21 @@ static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3
  * world's level (not the box level), if they do not collide? */
 static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d)
 {
-    /* two boxes that a separating axis proves farther apart: the common
-     * case, a few dozen operations */
-    if (w->slot[i].has_box && w->slot[j].has_box &&
-        noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
-        return false;
     if (w->slot[i].has_box && w->slot[j].has_box) {
-        const int r = near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d);
+        const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
+        /* A first round of the witness proves most near pairs near (on
+         * keyframes:2000 four in five) in a few dozen operations, where
+         * the separating-axis test tries all its 15 axes in vain; the
+         * order of the proofs changes no answer, as none contradicts
+         * another (the witness's points lie in the solids, the axes
+         * part the solids' boxes by more than d). */
+        if (near_witness(a, w->pos[i], b, w->pos[j], d, 1) == 1)
+            return true;
+        /* two boxes that a separating axis proves farther apart: the
+         * common case, a few dozen operations */
+        if (noct_box_apart_by(a, w->pos[i], b, w->pos[j], d))
+            return false;
+        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS);
         if (r >= 0)
             return r == 1;
     }
@@ -383,7 +391,8 @@ typedef struct near_sweep {
     near_key *key;   /* their order on the sweep's axis, and as many for the sort */
     size_t capkey;
     uint32_t epoch;
-    double qlo[3], qhi[3];
+    double qlo[3], qhi[3]; /* the gather box */
+    double clo[3];         /* the sweeping leaf's lower corner */
     noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j */
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
@@ -425,15 +434,26 @@ static bool gather_node(near_sweep *s, const octNode *n)
     uint32_t *mark = noct_bp_marks(&w->bp);
     if (!grow_near_box(&s->g, &s->capg, s->ng + c->count))
         return false;
+    /* A leaf below the sweeping one on an axis (its cell ends where that
+     * one's starts, or lower) holds mostly boxes that end below the
+     * gather box on that axis: that comparison first. */
+    int below = -1;
+    for (int k = 0; k < 3; ++k)
+        if (c->lo[k] + c->size <= s->clo[k])
+            below = k;
     for (uint32_t t = 0; t < c->count; ++t) {
         const uint32_t id = c->objs[t];
+        const noct_aabb *b = noct_bp_box(&w->bp, id);
+        if (below >= 0 && b->hi[below] < s->qlo[below])
+            continue;
+        if ((b->hi[0] < s->qlo[0]) | (b->hi[1] < s->qlo[1]) | (b->hi[2] < s->qlo[2]) |
+            (b->lo[0] > s->qhi[0]) | (b->lo[1] > s->qhi[1]) | (b->lo[2] > s->qhi[2]))
+            continue;
+        /* (a box in several of the leaves, taken in the first) */
         if (mark[id] == s->epoch)
             continue;
         mark[id] = s->epoch;
-        const noct_aabb *b = noct_bp_box(&w->bp, id);
-        if ((b->hi[0] < s->qlo[0]) | (b->hi[1] < s->qlo[1]) | (b->hi[2] < s->qlo[2]) |
-            (b->lo[0] > s->qhi[0]) | (b->lo[1] > s->qhi[1]) | (b->lo[2] > s->qhi[2]) ||
-            w->obj[id].sensor)
+        if (w->obj[id].sensor)
             continue;
         near_box *e = &s->g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
@@ -491,6 +511,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         /* down by G and more than the roundings (see above) */
         s->qlo[k] = (c->lo[k] - s->G) - 0x1p-48 * fabs(c->lo[k]);
         s->qhi[k] = c->lo[k] + c->size;
+        s->clo[k] = c->lo[k];
     }
     s->ng = 0;
     s->epoch = noct_bp_new_epoch(&w->bp);
