@@ -192,6 +192,13 @@ static NOCT_ALWAYS_INLINE double box_gap2(const double alo[3], const double ahi[
     return s;
 }
 
+static NOCT_ALWAYS_INLINE bool boxes_overlap(const double alo[3], const double ahi[3],
+                                             const double blo[3], const double bhi[3])
+{
+    return !((ahi[0] < blo[0]) | (bhi[0] < alo[0]) | (ahi[1] < blo[1]) | (bhi[1] < alo[1]) |
+             (ahi[2] < blo[2]) | (bhi[2] < alo[2]));
+}
+
 /* The boxes' test of near() below, on boxes a and b of objects i < j
  * (colliding pairs pass it: their boxes overlap, so their gap is 0): at
  * the box level the answer, else false when the boxes alone prove the
@@ -219,18 +226,21 @@ static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3
 }
 
 /* Are objects i and j, whose boxes passed boxes_near(), near at the
- * world's level (not the box level), if they do not collide? */
-static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d)
+ * world's level (not the box level), if they do not collide? overlap:
+ * their boxes overlap (a hint only). */
+static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bool overlap)
 {
     if (w->slot[i].has_box && w->slot[j].has_box) {
         const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
-        /* A first round of the witness proves most near pairs near (on
-         * keyframes:2000 four in five) in a few dozen operations, where
-         * the separating-axis test tries all its 15 axes in vain; the
-         * order of the proofs changes no answer, as none contradicts
-         * another (the witness's points lie in the solids, the axes
-         * part the solids' boxes by more than d). */
-        if (near_witness(a, w->pos[i], b, w->pos[j], d, 1) == 1)
+        /* Where the boxes overlap, a first round of the witness proves
+         * most near pairs near (on keyframes:2000 four in five) in a few
+         * hundred operations, where the separating-axis test tries all
+         * its 15 axes in vain; else the pair is more often apart, which
+         * that test proves sooner. The order of the proofs changes no
+         * answer, as none contradicts another (the witness's points lie
+         * in the solids, the axes part the solids' boxes by more than
+         * d). */
+        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1) == 1)
             return true;
         /* two boxes that a separating axis proves farther apart: the
          * common case, a few dozen operations */
@@ -254,7 +264,8 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool coll
     const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
     if (!boxes_near(w, a->lo, a->hi, b->lo, b->hi, d))
         return false;
-    return w->def.accuracy == NOCT_ACCURACY_BOX || near_solids(w, i, j, d);
+    return w->def.accuracy == NOCT_ACCURACY_BOX ||
+           near_solids(w, i, j, d, boxes_overlap(a->lo, a->hi, b->lo, b->hi));
 }
 
 /* Leaves an object's scan reads at most, and their sizes' largest ratio
@@ -385,6 +396,8 @@ typedef struct near_sweep {
     const double *m; /* objects' own margins, or NULL */
     double W, M;     /* world's margin, largest own margin */
     double G;        /* every object's grow at most, with room */
+    double R;        /* the sweep's reach: G and the roundings' room */
+    double *grow;    /* each object's grow (not sensors'), by slot */
     const noct_cell *root;
     near_box *g;     /* the gathered boxes */
     size_t capg, ng;
@@ -393,7 +406,8 @@ typedef struct near_sweep {
     uint32_t epoch;
     double qlo[3], qhi[3]; /* the gather box */
     double clo[3];         /* the sweeping leaf's lower corner */
-    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j */
+    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j (i's
+                             generation: whether their boxes overlap) */
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
@@ -458,7 +472,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
         near_box *e = &s->g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
         memcpy(e->hi, b->hi, sizeof e->hi);
-        e->grow = grow_of(s, id, b);
+        e->grow = s->grow[id];
         e->id = id;
     }
     return true;
@@ -533,17 +547,20 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     for (size_t a = 0; a < n; ++a)
         key[a] = (near_key){g[a].lo[ax], a};
     sort_keys(key, n, key + n);
-    const double G = s->G;
+    const double R = s->R;
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
     for (size_t a = 0; a < n; ++a) {
         const near_box *A = &g[key[a].at];
         /* A's box grown by the reach: G and more than the candidate
          * test's roundings, whichever object grows (a box beyond it on
-         * an axis is no candidate) */
+         * an axis is no candidate); R = G + 2^-48 S, for S bounding
+         * every coordinate, is at least G + 2^-48 |x| for each, and so
+         * (rounding being monotone) up and dn at least as far out as
+         * with that */
         double up[3], dn[3];
         for (int k = 0; k < 3; ++k) {
-            up[k] = A->hi[k] + (G + 0x1p-48 * fabs(A->hi[k]));
-            dn[k] = A->lo[k] - (G + 0x1p-48 * fabs(A->lo[k]));
+            up[k] = A->hi[k] + R;
+            dn[k] = A->lo[k] - R;
         }
         const double limit = up[ax];
         for (size_t bi = a + 1; bi < n; ++bi) {
@@ -571,7 +588,9 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
             if (s->filtered &&
                 !noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
                 continue;
-            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+            /* (the first generation: whether the boxes overlap) */
+            const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
+            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, overlap}, {J->id, 0}}))
                 return false;
         }
     }
@@ -609,15 +628,29 @@ static int near_candidates(near_sweep *s)
     for (uint32_t i = 0; i < slots; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
             continue;
-        const noct_aabb *b = noct_bp_box(bp, i);
-        if (!noct_box_within(b, &root))
+        if (!noct_box_within(noct_bp_box(bp, i), &root))
             return 0;
-        G = noct_max(G, grow_of(s, i, b));
         ++live;
+    }
+    /* every object's grow, once (a box is gathered by several leaves) */
+    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
+    if (s->grow == NULL)
+        return -1;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        s->grow[i] = grow_of(s, i, noct_bp_box(bp, i));
+        G = noct_max(G, s->grow[i]);
     }
     if (!isfinite(G))
         return 0;
     s->G = G * (1 + 0x1p-30);
+    double S = 0;
+    for (int k = 0; k < 3; ++k)
+        S = noct_max(S, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
+    s->R = s->G + 0x1p-48 * S;
+    if (!isfinite(s->R))
+        return 0;
     s->root = noct_cell_of(noct_bp_root(bp));
     s->budget = 16 * live + 4096;
     s->filtered = noct_bp_any_filter(bp);
@@ -692,7 +725,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         const double d = m != NULL ? W + (m[i] + m[j]) : W;
         /* (the candidates passed near()'s test on the boxes) */
         if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
-            !(colliding || !solids || near_solids(w, i, j, d)))
+            !(colliding || !solids || near_solids(w, i, j, d, s.cand.p[k].a.generation != 0)))
             continue;
         const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
                                {j, noct_bp_generation(&w->bp, j)}};
@@ -703,6 +736,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     free(s.g);
     free(s.key);
+    free(s.grow);
     free(s.cand.p);
     /* else each object by a scan of its leaves or a query */
     const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;
