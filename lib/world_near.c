@@ -10,12 +10,14 @@
  * are objects, each object scans its leaves' lists or queries the tree
  * with its grown box instead, as noct_world_stage_near() does: the same
  * candidates). A pair that collides is near; boxes farther apart than
- * the margin and the triangles' slack are not; a pair of box forms that a
+ * the margin and the triangles' slack are not (boxes_near(), made in the
+ * leaves' sweeps on the gathered copies); a pair of box forms that a
  * separating axis proves farther apart is not, a pair of box forms with
  * two points of its solids proved within the margin is, and one proved
  * beyond it on the axis through those points is not (near_witness(): the
- * answers noct_solids_within() would give), and else the distance of
- * their triangles decides (noct_solids_within()).
+ * answers noct_solids_within() would give; tried in the order that
+ * settles most pairs soonest, which changes no answer), and else the
+ * distance of their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
