@@ -13,8 +13,10 @@
  *       the boxes' total extent, so that the fewest pairs overlap on it
  *       (cubes in a plane share their x; a gas spreads on every axis).
  *
- * The pair search (broadphase_pairs.c) and the margin's candidates
- * (world_near.c) sweep with them; I is the index type of each.
+ * The pair search (broadphase_pairs.c) sweeps with both; the margin's
+ * candidates (world_near.c) choose their axis so (NOCT_DEFINE_BOX_AXIS
+ * alone) but sort keys rather than their records. I is the index type of
+ * each.
  */
 #ifndef NOCT_LIB_BOX_SWEEP_H
 #define NOCT_LIB_BOX_SWEEP_H
@@ -24,6 +26,12 @@
 #include "internal.h"
 
 #define NOCT_DEFINE_BOX_SWEEP(prefix, T, I)                                              \
+    NOCT_DEFINE_BOX_SORT(prefix, T, I)                                                   \
+    NOCT_DEFINE_BOX_AXIS(prefix, T, I)
+
+/* Each half alone (NOCT_DEFINE_BOX_SORT: prefix_sort; NOCT_DEFINE_BOX_AXIS:
+ * prefix_axis), for a sweep that sorts otherwise. */
+#define NOCT_DEFINE_BOX_SORT(prefix, T, I)                                               \
     static void prefix##_sort(T *g, I n, int k, T *tmp)                                  \
     {                                                                                    \
         if (n > 64) {                                                                    \
@@ -55,8 +63,9 @@
                 g[j] = g[j - 1];                                                         \
             g[j] = t;                                                                    \
         }                                                                                \
-    }                                                                                    \
-                                                                                         \
+    }
+
+#define NOCT_DEFINE_BOX_AXIS(prefix, T, I)                                               \
     static int prefix##_axis(const T *g, I n)                                            \
     {                                                                                    \
         double lo[3], hi[3], ext[3] = {0, 0, 0};                                         \

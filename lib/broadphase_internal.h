@@ -259,6 +259,9 @@ static inline const struct noct_cell *noct_bp_leaf(const noctBroadphase *bp, uin
 {
     return NOCT_NODE_DATA(bp->proxy[s].spans[k].leaf);
 }
+/* Has any live proxy a filter that is not all bits (else every pair
+ * passes noct_filters_pass())? */
+static inline bool noct_bp_any_filter(const noctBroadphase *bp) { return bp->filtered > 0; }
 /* The per-slot stamps, for a use that starts with noct_bp_new_epoch(). */
 static inline uint32_t *noct_bp_marks(const noctBroadphase *bp) { return bp->mark; }
 /* The client rebuilds the tree every step: no merge invariant is kept. */

@@ -10,12 +10,14 @@
  * are objects, each object scans its leaves' lists or queries the tree
  * with its grown box instead, as noct_world_stage_near() does: the same
  * candidates). A pair that collides is near; boxes farther apart than
- * the margin and the triangles' slack are not; a pair of box forms that a
+ * the margin and the triangles' slack are not (boxes_near(), made in the
+ * leaves' sweeps on the gathered copies); a pair of box forms that a
  * separating axis proves farther apart is not, a pair of box forms with
  * two points of its solids proved within the margin is, and one proved
  * beyond it on the axis through those points is not (near_witness(): the
- * answers noct_solids_within() would give), and else the distance of
- * their triangles decides (noct_solids_within()).
+ * answers noct_solids_within() would give; tried in the order that
+ * settles most pairs soonest, which changes no answer), and else the
+ * distance of their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
@@ -144,7 +146,7 @@ static bool witness_apart(const noct_box_slot *a, const noct_box_slot *b, const 
 }
 
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                        const double tb[3], double d)
+                        const double tb[3], double d, int rounds)
 {
     if (!(a->shrink < 1 && b->shrink < 1))
         return -1;
@@ -158,7 +160,7 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
     double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
-    for (int round = 1; round <= WITNESS_ROUNDS; ++round) {
+    for (int round = 1; round <= rounds; ++round) {
         project_box(a, CA, fa, q, p);
         project_box(b, CB, fb, p, q);
         for (int k = 0; k < 3; ++k)
@@ -174,21 +176,85 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     return -1;
 }
 
-/* The squared gap between objects i's and j's boxes, in floating point,
- * and in *scale the larger of d and their coordinates' magnitudes. */
-static inline double box_gap2(const noctWorld *w, uint32_t i, uint32_t j, double d,
-                              double *scale)
+/* The squared gap between boxes a and b (objects i's and j's, i < j), in
+ * floating point, and in *scale the larger of d and their coordinates'
+ * magnitudes. */
+static NOCT_ALWAYS_INLINE double box_gap2(const double alo[3], const double ahi[3],
+                                          const double blo[3], const double bhi[3], double d,
+                                          double *scale)
 {
-    const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
     double s = 0;
     *scale = d;
     for (int k = 0; k < 3; ++k) {
-        const double g = noct_max(noct_max(b->lo[k] - a->hi[k], a->lo[k] - b->hi[k]), 0);
+        const double g = noct_max(noct_max(blo[k] - ahi[k], alo[k] - bhi[k]), 0);
         s += g * g;
-        *scale = noct_max(*scale, noct_max(noct_max(fabs(a->lo[k]), fabs(a->hi[k])),
-                                           noct_max(fabs(b->lo[k]), fabs(b->hi[k]))));
+        *scale = noct_max(*scale, noct_max(noct_max(fabs(alo[k]), fabs(ahi[k])),
+                                           noct_max(fabs(blo[k]), fabs(bhi[k]))));
     }
     return s;
+}
+
+static NOCT_ALWAYS_INLINE bool boxes_overlap(const double alo[3], const double ahi[3],
+                                             const double blo[3], const double bhi[3])
+{
+    return !((ahi[0] < blo[0]) | (bhi[0] < alo[0]) | (ahi[1] < blo[1]) | (bhi[1] < alo[1]) |
+             (ahi[2] < blo[2]) | (bhi[2] < alo[2]));
+}
+
+/* The boxes' test of near() below, on boxes a and b of objects i < j
+ * (colliding pairs pass it: their boxes overlap, so their gap is 0): at
+ * the box level the answer, else false when the boxes alone prove the
+ * pair not near. */
+static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3],
+                                          const double ahi[3], const double blo[3],
+                                          const double bhi[3], double d)
+{
+    double scale;
+    const double s = box_gap2(alo, ahi, blo, bhi, d, &scale);
+    if (w->def.accuracy == NOCT_ACCURACY_BOX) {
+        const double reach = d + 0x1p-40 * scale;
+        return s <= reach * reach;
+    }
+    /* Boxes farther apart than d and 2^-37 of their coordinates: each
+     * solid lies in its box (up to the roundings of its placed
+     * vertices, a few ulps of those coordinates), so the solids are
+     * farther apart than d and twice noct_solids_within()'s slack
+     * (2^-40 of the same coordinates, or of d), where it answers
+     * false; the box forms' proofs below never answer true there
+     * (their points lie in the solids). A few dozen operations, where
+     * the separating-axis test takes hundreds. */
+    const double beyond = d + 0x1p-37 * scale;
+    return !(s > beyond * beyond);
+}
+
+/* Are objects i and j, whose boxes passed boxes_near(), near at the
+ * world's level (not the box level), if they do not collide? overlap:
+ * their boxes overlap (a hint only). */
+static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bool overlap)
+{
+    if (w->slot[i].has_box && w->slot[j].has_box) {
+        const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
+        /* Where the boxes overlap, a first round of the witness proves
+         * most near pairs near (on keyframes:2000 four in five) in a few
+         * hundred operations, where the separating-axis test tries all
+         * its 15 axes in vain; else the pair is more often apart, which
+         * that test proves sooner. The order of the proofs changes no
+         * answer, as none contradicts another (the witness's points lie
+         * in the solids, the axes part the solids' boxes by more than
+         * d). */
+        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1) == 1)
+            return true;
+        /* two boxes that a separating axis proves farther apart: the
+         * common case, a few dozen operations */
+        if (noct_box_apart_by(a, w->pos[i], b, w->pos[j], d))
+            return false;
+        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS);
+        if (r >= 0)
+            return r == 1;
+    }
+    noct_shape_view va, vb;
+    const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
+    return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
 }
 
 /* Are objects i and j near, at the world's level, if they collide or
@@ -197,40 +263,11 @@ static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool coll
 {
     if (colliding)
         return true;
-    if (w->def.accuracy != NOCT_ACCURACY_BOX) {
-        /* Boxes farther apart than d and 2^-37 of their coordinates: each
-         * solid lies in its box (up to the roundings of its placed
-         * vertices, a few ulps of those coordinates), so the solids are
-         * farther apart than d and twice noct_solids_within()'s slack
-         * (2^-40 of the same coordinates, or of d), where it answers
-         * false; the box forms' proofs below never answer true there
-         * (their points lie in the solids). A few dozen operations, where
-         * the separating-axis test takes hundreds. */
-        double scale;
-        const double s = box_gap2(w, i, j, d, &scale);
-        const double beyond = d + 0x1p-37 * scale;
-        if (s > beyond * beyond)
-            return false;
-    }
-    if (w->def.accuracy == NOCT_ACCURACY_BOX) {
-        double scale;
-        const double s = box_gap2(w, i, j, d, &scale);
-        const double reach = d + 0x1p-40 * scale;
-        return s <= reach * reach;
-    }
-    /* two boxes that a separating axis proves farther apart: the common
-     * case, a few dozen operations */
-    if (w->slot[i].has_box && w->slot[j].has_box &&
-        noct_box_apart_by(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d))
+    const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
+    if (!boxes_near(w, a->lo, a->hi, b->lo, b->hi, d))
         return false;
-    if (w->slot[i].has_box && w->slot[j].has_box) {
-        const int r = near_witness(&w->slot[i], w->pos[i], &w->slot[j], w->pos[j], d);
-        if (r >= 0)
-            return r == 1;
-    }
-    noct_shape_view va, vb;
-    const noctMesh *ma = noct_world_shape(w, i, &va), *mb = noct_world_shape(w, j, &vb);
-    return noct_solids_within(ma, w->pos[i], mb, w->pos[j], d);
+    return w->def.accuracy == NOCT_ACCURACY_BOX ||
+           near_solids(w, i, j, d, boxes_overlap(a->lo, a->hi, b->lo, b->hi));
 }
 
 /* Leaves an object's scan reads at most, and their sizes' largest ratio
@@ -346,20 +383,37 @@ typedef struct near_box {
     uint32_t id;
 } near_box;
 
+/* A gathered box's place in the sweep: its lower corner on the sweep's
+ * axis and its index among the gathered. The leaves gather dozens of
+ * boxes in no useful order (the lists of several leaves, each sorted on
+ * its own axis if at all), so these 16 bytes are sorted, by insertion in
+ * runs of KEY_RUN and by merging the runs, rather than the 64 of a box. */
+typedef struct near_key {
+    double lo;
+    size_t at;
+} near_key;
+
 typedef struct near_sweep {
     noctWorld *w;
     const double *m; /* objects' own margins, or NULL */
     double W, M;     /* world's margin, largest own margin */
     double G;        /* every object's grow at most, with room */
+    double R;        /* the sweep's reach: G and the roundings' room */
+    double *grow;    /* each object's grow (not sensors'), by slot */
     const noct_cell *root;
-    near_box *g;     /* the gathered boxes, and as many for the sort */
+    near_box *g;     /* the gathered boxes */
     size_t capg, ng;
+    near_key *key;   /* their order on the sweep's axis, and as many for the sort */
+    size_t capkey;
     uint32_t epoch;
-    double qlo[3], qhi[3];
-    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j */
+    double qlo[3], qhi[3]; /* the gather box */
+    double clo[3];         /* the sweeping leaf's lower corner */
+    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j (i's
+                             generation: whether their boxes overlap) */
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
+    bool filtered;        /* some object has a filter (else all pass) */
 } near_sweep;
 
 NOCT_DEFINE_GROW(grow_near_box, near_box)
@@ -394,28 +448,76 @@ static bool gather_node(near_sweep *s, const octNode *n)
     }
     noctWorld *w = s->w;
     uint32_t *mark = noct_bp_marks(&w->bp);
-    if (!grow_near_box(&s->g, &s->capg, 2 * (s->ng + c->count)))
+    if (!grow_near_box(&s->g, &s->capg, s->ng + c->count))
         return false;
+    /* A leaf below the sweeping one on an axis (its cell ends where that
+     * one's starts, or lower) holds mostly boxes that end below the
+     * gather box on that axis: that comparison first. */
+    int below = -1;
+    for (int k = 0; k < 3; ++k)
+        if (c->lo[k] + c->size <= s->clo[k])
+            below = k;
     for (uint32_t t = 0; t < c->count; ++t) {
         const uint32_t id = c->objs[t];
+        const noct_aabb *b = noct_bp_box(&w->bp, id);
+        if (below >= 0 && b->hi[below] < s->qlo[below])
+            continue;
+        if ((b->hi[0] < s->qlo[0]) | (b->hi[1] < s->qlo[1]) | (b->hi[2] < s->qlo[2]) |
+            (b->lo[0] > s->qhi[0]) | (b->lo[1] > s->qhi[1]) | (b->lo[2] > s->qhi[2]))
+            continue;
+        /* (a box in several of the leaves, taken in the first) */
         if (mark[id] == s->epoch)
             continue;
         mark[id] = s->epoch;
-        const noct_aabb *b = noct_bp_box(&w->bp, id);
-        if ((b->hi[0] < s->qlo[0]) | (b->hi[1] < s->qlo[1]) | (b->hi[2] < s->qlo[2]) |
-            (b->lo[0] > s->qhi[0]) | (b->lo[1] > s->qhi[1]) | (b->lo[2] > s->qhi[2]) ||
-            w->obj[id].sensor)
+        if (w->obj[id].sensor)
             continue;
         near_box *e = &s->g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
         memcpy(e->hi, b->hi, sizeof e->hi);
-        e->grow = grow_of(s, id, b);
+        e->grow = s->grow[id];
         e->id = id;
     }
     return true;
 }
 
-NOCT_DEFINE_BOX_SWEEP(near_boxes, near_box, size_t)
+NOCT_DEFINE_BOX_AXIS(near_boxes, near_box, size_t)
+
+#define KEY_RUN 8
+
+static void sort_keys(near_key *k, size_t n, near_key *tmp)
+{
+    for (size_t r = 0; r < n; r += KEY_RUN) {
+        const size_t end = r + KEY_RUN < n ? r + KEY_RUN : n;
+        for (size_t i = r + 1; i < end; ++i) {
+            const near_key t = k[i];
+            size_t j = i;
+            for (; j > r && k[j - 1].lo > t.lo; --j)
+                k[j] = k[j - 1];
+            k[j] = t;
+        }
+    }
+    near_key *src = k, *dst = tmp;
+    for (size_t width = KEY_RUN; width < n; width *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * width) {
+            const size_t mid = lo + width < n ? lo + width : n;
+            const size_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+            size_t i = lo, j = mid, o = lo;
+            while (i < mid && j < hi)
+                dst[o++] = src[j].lo < src[i].lo ? src[j++] : src[i++];
+            while (i < mid)
+                dst[o++] = src[i++];
+            while (j < hi)
+                dst[o++] = src[j++];
+        }
+        near_key *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != k)
+        memcpy(k, src, n * sizeof *k);
+}
+
+NOCT_DEFINE_GROW(grow_near_key, near_key)
 
 /* Leaf c's candidate pairs, into s->cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
@@ -425,6 +527,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         /* down by G and more than the roundings (see above) */
         s->qlo[k] = (c->lo[k] - s->G) - 0x1p-48 * fabs(c->lo[k]);
         s->qhi[k] = c->lo[k] + c->size;
+        s->clo[k] = c->lo[k];
     }
     s->ng = 0;
     s->epoch = noct_bp_new_epoch(&w->bp);
@@ -438,26 +541,34 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     }
     if (n < 2)
         return true;
-    near_box *g = s->g;
+    const near_box *g = s->g;
     const int ax = near_boxes_axis(g, n);
-    near_boxes_sort(g, n, ax, g + n);
-    const double G = s->G;
+    if (!grow_near_key(&s->key, &s->capkey, 2 * n))
+        return false;
+    near_key *key = s->key;
+    for (size_t a = 0; a < n; ++a)
+        key[a] = (near_key){g[a].lo[ax], a};
+    sort_keys(key, n, key + n);
+    const double R = s->R;
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
     for (size_t a = 0; a < n; ++a) {
-        const near_box *A = &g[a];
+        const near_box *A = &g[key[a].at];
         /* A's box grown by the reach: G and more than the candidate
          * test's roundings, whichever object grows (a box beyond it on
-         * an axis is no candidate) */
+         * an axis is no candidate); R = G + 2^-48 S, for S bounding
+         * every coordinate, is at least G + 2^-48 |x| for each, and so
+         * (rounding being monotone) up and dn at least as far out as
+         * with that */
         double up[3], dn[3];
         for (int k = 0; k < 3; ++k) {
-            up[k] = A->hi[k] + (G + 0x1p-48 * fabs(A->hi[k]));
-            dn[k] = A->lo[k] - (G + 0x1p-48 * fabs(A->lo[k]));
+            up[k] = A->hi[k] + R;
+            dn[k] = A->lo[k] - R;
         }
         const double limit = up[ax];
         for (size_t bi = a + 1; bi < n; ++bi) {
-            const near_box *B = &g[bi];
-            if (B->lo[ax] > limit)
+            if (key[bi].lo > limit)
                 break;
+            const near_box *B = &g[key[bi].at];
             if ((B->lo[k1] > up[k1]) | (B->hi[k1] < dn[k1]) | (B->lo[k2] > up[k2]) |
                 (B->hi[k2] < dn[k2]))
                 continue;
@@ -471,9 +582,17 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                                  noct_max(A->lo[2], B->lo[2])};
             if (!noct_cell_owns(c, s->root, P))
                 continue;
-            if (!noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
+            /* near()'s test on the boxes, here where they are at hand
+             * (the same numbers: copies) */
+            const double d = s->m != NULL ? s->W + (s->m[I->id] + s->m[J->id]) : s->W;
+            if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
                 continue;
-            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+            if (s->filtered &&
+                !noct_filters_pass(noct_bp_proxy(&w->bp, I->id), noct_bp_proxy(&w->bp, J->id)))
+                continue;
+            /* (the first generation: whether the boxes overlap) */
+            const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
+            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, overlap}, {J->id, 0}}))
                 return false;
         }
     }
@@ -511,17 +630,32 @@ static int near_candidates(near_sweep *s)
     for (uint32_t i = 0; i < slots; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
             continue;
-        const noct_aabb *b = noct_bp_box(bp, i);
-        if (!noct_box_within(b, &root))
+        if (!noct_box_within(noct_bp_box(bp, i), &root))
             return 0;
-        G = noct_max(G, grow_of(s, i, b));
         ++live;
+    }
+    /* every object's grow, once (a box is gathered by several leaves) */
+    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
+    if (s->grow == NULL)
+        return -1;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        s->grow[i] = grow_of(s, i, noct_bp_box(bp, i));
+        G = noct_max(G, s->grow[i]);
     }
     if (!isfinite(G))
         return 0;
     s->G = G * (1 + 0x1p-30);
+    double S = 0;
+    for (int k = 0; k < 3; ++k)
+        S = noct_max(S, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
+    s->R = s->G + 0x1p-48 * S;
+    if (!isfinite(s->R))
+        return 0;
     s->root = noct_cell_of(noct_bp_root(bp));
     s->budget = 16 * live + 4096;
+    s->filtered = noct_bp_any_filter(bp);
     if (!sweep_node(s, noct_bp_root(bp)))
         return -1;
     if (s->over)
@@ -573,16 +707,27 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* the step's colliding pairs, sorted as the candidates are, walked
      * beside them */
     const noct_pair_list *col = &w->events.contact.now;
+    const bool solids = w->def.accuracy != NOCT_ACCURACY_BOX;
     size_t at = 0;
     for (size_t k = 0; by_leaves > 0 && k < s.cand.n; ++k) {
         const uint32_t i = s.cand.p[k].a.index, j = s.cand.p[k].b.index;
+        /* the box forms of the pairs a few ahead, scattered by the
+         * second object, requested */
+        if (solids && k + 8 < s.cand.n) {
+            const uint32_t ahead = s.cand.p[k + 8].b.index;
+            NOCT_PREFETCH((const char *)&w->slot[ahead]);
+            NOCT_PREFETCH((const char *)&w->slot[ahead] + 64);
+            NOCT_PREFETCH(w->pos[ahead]);
+        }
         while (at < col->n && (col->p[at].a.index < i ||
                                (col->p[at].a.index == i && col->p[at].b.index < j)))
             ++at;
         const bool colliding =
             at < col->n && col->p[at].a.index == i && col->p[at].b.index == j;
         const double d = m != NULL ? W + (m[i] + m[j]) : W;
-        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) || !near(w, i, j, d, colliding))
+        /* (the candidates passed near()'s test on the boxes) */
+        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
+            !(colliding || !solids || near_solids(w, i, j, d, s.cand.p[k].a.generation != 0)))
             continue;
         const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
                                {j, noct_bp_generation(&w->bp, j)}};
@@ -592,6 +737,8 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         }
     }
     free(s.g);
+    free(s.key);
+    free(s.grow);
     free(s.cand.p);
     /* else each object by a scan of its leaves or a query */
     const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;

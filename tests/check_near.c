@@ -94,6 +94,17 @@ START_TEST(near_pairs_against_geometry)
             for (int i = 0; i < s.n; ++i)
                 if (uniform() < 0.3 && !(i == 0 && step > 6))
                     teleport(&s, i);
+            /* From step 4 no object has a filter (all bits: the world's
+             * sweeps then skip the filters' test), from step 8 the last
+             * one has a filter that pairs with nothing (mask 0): the
+             * test's own filters follow (may_pair) */
+            if (step == 4 || step == 8)
+                for (int i = step == 4 ? 0 : s.n - 1; i < s.n; ++i) {
+                    s.cat[i] = step == 4 ? NOCT_FILTER_ALL : 1;
+                    s.mask[i] = step == 4 ? NOCT_FILTER_ALL : 0;
+                    ck_assert_int_eq(noctWorldSetFilter(s.w, s.id[i], s.cat[i], s.mask[i], NULL),
+                                     NOCT_OK);
+                }
             /* one object goes at step 6: its near pairs end at once */
             noctObjectId gone = {UINT32_MAX, 0};
             if (step == 6) {
