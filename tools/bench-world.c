@@ -14,6 +14,7 @@
  * Usage: bench-world [--quick] [--overlap] [--steps S] [--max-exhaustive N]
  *                    [SCENE...]
  *        bench-world --rays Q [--repeats R] [gas:N...]
+ *        bench-world --margin D [--quick] [--steps S] [FAMILY:N...]
  *   SCENE is planes:K or gas:N (default planes:10 planes:30 planes:100
  *   planes:300 gas:10000 gas:100000, which takes several minutes; rows
  *   are printed as they finish; --quick: planes:3 gas:200, 20 steps).
@@ -25,6 +26,12 @@
  *   peak memory; with --quick, small sizes that only check it runs.
  *   --rays Q: instead, Q segments across each gas scene's container
  *   (default gas:10000 gas:100000), closest and all hits (rays_bench()).
+ *   --margin D: instead, what a margin of D costs the step: each SCENE
+ *   (any family, default keyframes:2000 gas:100000) built twice, without
+ *   a margin and with D, the two worlds stepped in turn in this one
+ *   process, every noctWorldStep() call timed whole (the tracks'
+ *   placements included); median and mean per step and their ratios
+ *   (margin_bench()).
  *   --sweep: instead, N and the maximum depth over every family of
  *   noctSceneFamily() at 1 000 to 1 000 000 objects (--sizes, --families,
  *   --repeats; see sweep_bench()), the defaults marked; writes
@@ -538,6 +545,79 @@ static int rays_bench(const char *const *scenes, int nscenes, int q, int repeats
     return EXIT_SUCCESS;
 }
 
+/*
+ * --margin D: the same scene without a margin and with D, the two worlds
+ * stepped in turn (one step of each, then the next), so that both see the
+ * same machine; each noctWorldStep() timed whole. The margin changes no
+ * motion (near pairs are reported, not answered), so both worlds run the
+ * same steps.
+ */
+static int margin_bench(const char *const *scenes, int nscenes, double margin, int steps)
+{
+    printf("what a margin of %g costs a step: %d steps of each world, in turn, "
+           "noctWorldStep() timed whole\n", margin, steps);
+    printf("%-16s %8s %11s %11s %11s %11s %8s %8s %10s\n", "scene", "objects",
+           "median ms", "margin ms", "mean ms", "margin ms", "x median", "x mean",
+           "near/step");
+    for (int s = 0; s < nscenes; ++s) {
+        noctWorld *w[2] = {NULL, NULL};
+        noctError err;
+        for (int k = 0; k < 2; ++k) {
+            noctScene *sc;
+            if (noctSceneFamily(scenes[s], &sc, &err) != NOCT_OK) {
+                fprintf(stderr, "bench-world: %s: %s\n", scenes[s], err.message);
+                noctWorldDestroy(w[0]);
+                return EXIT_FAILURE;
+            }
+            noctSceneDef(sc)->margin = k == 0 ? 0 : margin;
+            noctStatus st = noctSceneBuild(sc, &w[k], &err);
+            noctSceneDestroy(sc);
+            if (st != NOCT_OK) {
+                fprintf(stderr, "bench-world: %s: %s\n", scenes[s], err.message);
+                noctWorldDestroy(w[0]);
+                return EXIT_FAILURE;
+            }
+        }
+        double *t = malloc(2 * (size_t)steps * sizeof *t), sum[2] = {0, 0};
+        if (t == NULL) {
+            noctWorldDestroy(w[0]);
+            noctWorldDestroy(w[1]);
+            fputs("bench-world: out of memory\n", stderr);
+            return EXIT_FAILURE;
+        }
+        size_t near = 0;
+        for (int i = 0; i < steps; ++i) {
+            for (int k = 0; k < 2; ++k) {
+                double a = tool_now();
+                if (noctWorldStep(w[k], &err) != NOCT_OK) {
+                    fprintf(stderr, "bench-world: %s: %s\n", scenes[s], err.message);
+                    free(t);
+                    noctWorldDestroy(w[0]);
+                    noctWorldDestroy(w[1]);
+                    return EXIT_FAILURE;
+                }
+                t[(size_t)k * (size_t)steps + (size_t)i] = tool_now() - a;
+                sum[k] += t[(size_t)k * (size_t)steps + (size_t)i];
+            }
+            const noctPair *p;
+            near += noctWorldNear(w[1], &p);
+        }
+        double med[2];
+        for (int k = 0; k < 2; ++k) {
+            tool_sort(t + (size_t)k * (size_t)steps, (size_t)steps);
+            med[k] = tool_rank(t + (size_t)k * (size_t)steps, (size_t)steps, 1, 2);
+        }
+        printf("%-16s %8zu %11.3f %11.3f %11.3f %11.3f %8.2f %8.2f %10.1f\n", scenes[s],
+               noctWorldObjectCount(w[0]), 1e3 * med[0], 1e3 * med[1], 1e3 * sum[0] / steps,
+               1e3 * sum[1] / steps, med[1] / med[0], sum[1] / sum[0], (double)near / steps);
+        fflush(stdout);
+        free(t);
+        noctWorldDestroy(w[0]);
+        noctWorldDestroy(w[1]);
+    }
+    return EXIT_SUCCESS;
+}
+
 typedef struct scene_job {
     const char *scene;
     int N, steps, max_exhaustive;
@@ -560,6 +640,7 @@ int main(int argc, char **argv)
     long sizes[8];
     bool quick = false, overlap = false, sweep = false, steps_given = false;
     int rays = 0;
+    double margin = -1;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--quick") == 0)
             quick = true;
@@ -569,7 +650,15 @@ int main(int argc, char **argv)
             sweep = true;
         else if (strcmp(argv[i], "--rays") == 0 && i + 1 < argc)
             rays = atoi(argv[++i]);
-        else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc)
+        else if (strcmp(argv[i], "--margin") == 0 && i + 1 < argc) {
+            char *end;
+            margin = strtod(argv[++i], &end);
+            if (end == argv[i] || *end != '\0' || !(margin > 0 && margin <= 1e100)) {
+                fprintf(stderr, "bench-world: --margin must be a distance above 0, not '%s'\n",
+                        argv[i]);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--repeats") == 0 && i + 1 < argc)
             repeats = atoi(argv[++i]);
         else if (strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
             for (char *tok = strtok(argv[++i], ","); tok != NULL && nsizes < 8;
@@ -585,7 +674,7 @@ int main(int argc, char **argv)
         }
         else if (strcmp(argv[i], "--max-exhaustive") == 0 && i + 1 < argc)
             max_exhaustive = atoi(argv[++i]);
-        else if ((strncmp(argv[i], "planes:", 7) == 0 || strncmp(argv[i], "gas:", 4) == 0) &&
+        else if (strchr(argv[i], ':') != NULL &&
                  nscenes < 32)
             scenes[nscenes++] = argv[i];
         else {
@@ -593,12 +682,24 @@ int main(int argc, char **argv)
                             "[--max-exhaustive N] [planes:K | gas:N]...\n"
                             "       bench-world --sweep [--quick] [--sizes N,...] "
                             "[--families F,...] [--steps S] [--repeats R]\n"
-                            "       bench-world --rays Q [--repeats R] [gas:N]...\n");
+                            "       bench-world --rays Q [--repeats R] [gas:N]...\n"
+                            "       bench-world --margin D [--steps S] [FAMILY:N]...\n");
             return 2;
         }
     }
     if (overlap)
         return overlap_bench(quick);
+    if (margin > 0) {
+        const char *def_margin[] = {"keyframes:2000", "gas:100000"};
+        if (steps < 1 || steps > 100000) {
+            fputs("bench-world: --steps must be 1 to 100000\n", stderr);
+            return 2;
+        }
+        if (quick)
+            def_margin[0] = "keyframes:200", def_margin[1] = "gas:2000", steps = 20;
+        return nscenes > 0 ? margin_bench(scenes, nscenes, margin, steps)
+                           : margin_bench(def_margin, 2, margin, steps);
+    }
     if (rays != 0) {
         if (rays < 1 || repeats < 1 || repeats > 15) {
             fputs("bench-world: --rays must be at least 1, --repeats 1 to 15\n", stderr);
