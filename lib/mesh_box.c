@@ -48,6 +48,27 @@ static const uint32_t BOX_TRIANGLES[36] = {
     0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
 };
 
+/* BOX_TRIANGLES' corners and faces as a box dual names them: corner p
+ * (bit j: +axis j) is vertex (bit 0 of p) << 2 | (bit 1) | (bit 2) >> 2,
+ * and the faces' triangles come in the order -x, +x, -y, +y, -z, +z. */
+static const uint8_t BOX_CORNER[8] = {0, 4, 2, 6, 1, 5, 3, 7};
+static const uint8_t BOX_FACE[6][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {8, 9}, {10, 11}};
+
+bool noct_box_topology(const noctMesh *m, const uint8_t **corner, const uint8_t (**face)[2])
+{
+    if (m->has_dual) {
+        *corner = m->dual.corner;
+        *face = (const uint8_t(*)[2])m->dual.face;
+        return true;
+    }
+    if (m->nt == 12 && m->tri == BOX_TRIANGLES) { /* a box view */
+        *corner = BOX_CORNER;
+        *face = BOX_FACE;
+        return true;
+    }
+    return false;
+}
+
 void noct_box_corners(const double half[3], const double R[9], double v[24])
 {
     for (int i = 0; i < 8; ++i) {

@@ -168,6 +168,12 @@ void noct_mesh_box_form(noctMesh *m);
 /* The slot of a mesh with a box form (has_box) (mesh_box.c). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 
+/* Which of m's vertices is at which corner of its box, and which
+ * triangles on which face, as box_dual names them, when m is a box-form
+ * mesh with a dual or a box view (noct_box_view()); false otherwise
+ * (mesh_box.c). */
+bool noct_box_topology(const noctMesh *m, const uint8_t **corner, const uint8_t (**face)[2]);
+
 /* The slot of m's box form turned by R, for its vertices placed as
  * fl(fl(R v) + t): made of the form (its corners, deviation and dual
  * turned, with bounds on R's rounding), not of the turned vertices

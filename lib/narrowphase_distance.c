@@ -1343,10 +1343,10 @@ static void set_colliding_sets(noctDistanceResult *r, const convex_set s[2])
 /* ---- two boxes: the nearest features in closed form ----------------------------- */
 
 /*
- * Two box-form meshes with duals (mesh_internal.h: their corners and
- * faces known) are rectangular boxes up to the rounding of their placed
- * vertices. Their nearest features are found in closed form on the ideal
- * boxes the placed vertices describe: the nearest points of two convex
+ * Two box-form meshes with duals or box views (their corners and faces
+ * known: noct_box_topology()) are rectangular boxes up to the rounding
+ * of their placed vertices (checked). Their nearest features are found
+ * in closed form on the ideal boxes the placed vertices describe: the nearest points of two convex
  * solids can be chosen with one of them at a corner, or with both inside
  * edges (the direction between them then perpendicular to both edges,
  * so along a cross product of an axis of each, and each edge the one of
@@ -1368,12 +1368,14 @@ static void set_colliding_sets(noctDistanceResult *r, const convex_set s[2])
  * half-lengths (false if they are not orthogonal within 1e-9). */
 typedef struct box_frame {
     double c[3], u[3][3], h[3];
-    const uint8_t *corner; /* the box dual's: vertex of each corner */
+    const uint8_t *corner;      /* vertex of each corner (noct_box_topology()) */
+    const uint8_t (*face)[2];   /* triangles of each face */
 } box_frame;
 
 static bool box_frame_of(const convex_set *s, box_frame *f)
 {
-    f->corner = s->m->dual.corner;
+    if (!noct_box_topology(s->m, &f->corner, &f->face))
+        return false;
     const double *p0 = &s->p[3 * f->corner[0]], *p7 = &s->p[3 * f->corner[7]];
     for (int k = 0; k < 3; ++k)
         f->c[k] = p0[k] + (p7[k] - p0[k]) / 2;
@@ -1547,7 +1549,7 @@ static void feature_nearest(const convex_set *s, const box_frame *f, box_feature
     } else {
         const unsigned j = 7 ^ x.free;
         const int k = j == 1 ? 0 : j == 2 ? 1 : 2;
-        const uint8_t *two = s->m->dual.face[2 * k + ((x.base >> k) & 1u)];
+        const uint8_t *two = f->face[2 * k + ((x.base >> k) & 1u)];
         double best = INFINITY;
         for (int i = 0; i < 2; ++i) {
             double y[3][3], c[3];
@@ -1563,12 +1565,12 @@ static void feature_nearest(const convex_set *s, const box_frame *f, box_feature
 }
 
 /* The normal of a face feature's first triangle, as placed. */
-static void face_axis(const convex_set *s, box_feature x, double u[3])
+static void face_axis(const convex_set *s, const box_frame *f, box_feature x, double u[3])
 {
     const unsigned j = 7 ^ x.free;
     const int k = j == 1 ? 0 : j == 2 ? 1 : 2;
     double y[3][3], e1[3], e2[3];
-    set_tri(s, s->m->dual.face[2 * k + ((x.base >> k) & 1u)][0], y);
+    set_tri(s, f->face[2 * k + ((x.base >> k) & 1u)][0], y);
     noct_sub3(y[1], y[0], e1);
     noct_sub3(y[2], y[0], e2);
     noct_cross3(e1, e2, u);
@@ -1622,9 +1624,9 @@ static bool boxes_distance(const convex_set *A, const convex_set *B, double mag,
          * product (made of the placed vertices) */
         double u[3];
         if (xa.free != 0 && (xa.free & (xa.free - 1)) != 0) {
-            face_axis(A, xa, u);
+            face_axis(A, &fa, xa, u);
         } else if (xb.free != 0 && (xb.free & (xb.free - 1)) != 0) {
-            face_axis(B, xb, u);
+            face_axis(B, &fb, xb, u);
         } else if (xa.free != 0 && xb.free != 0) {
             double e1[3], e2[3];
             noct_sub3(&A->p[3 * fa.corner[xa.base | xa.free]], &A->p[3 * fa.corner[xa.base]], e1);
@@ -1751,6 +1753,13 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
      * could not answer and the placed boxes overlap. */
     const bool boxes = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8;
     const int overlap = boxes ? sets_overlap(s) : 0;
+    /* (box views, noct_box_view(), have no dual but their corners and
+     * faces are known: the closed form serves them too) */
+    const uint8_t *corner;
+    const uint8_t (*face)[2];
+    const bool box_like = ok && s[0].n == 8 && s[1].n == 8 &&
+                          noct_box_topology(m[0], &corner, &face) &&
+                          noct_box_topology(m[1], &corner, &face);
     if (overlap == 2 && boxes_proved_meeting(s, R, turned, x)) {
         set_colliding_sets(r, s);
         if (stats)
@@ -1761,7 +1770,7 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     }
     /* Two boxes: their nearest features in closed form, at magnitudes
      * that need no scaling (search_scale()). */
-    if (boxes && mag >= 0x1p-100 && mag <= 0x1p100) {
+    if (box_like && mag >= 0x1p-100 && mag <= 0x1p100) {
         const bool first = set_first(&s[0], &s[1]);
         if (boxes_distance(&s[first ? 0 : 1], &s[first ? 1 : 0], mag, max_distance, r)) {
             if (!first)
