@@ -162,13 +162,10 @@ void noct_box_form_of(const double *v, const double *const d[3], const uint32_t 
  * (shrink +inf) when m has none or eta is not tiny; has_box 0 when m has
  * no form.
  */
-void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s)
+static void slot_turned(const box_form *b, bool has_dual, const double R[9], noct_box_slot *s)
 {
-    const box_form *b = &m->box;
-    s->has_box = m->has_box;
+    s->has_box = 1;
     s->shrink = INFINITY;
-    if (!m->has_box)
-        return;
     double rho = 0;
     for (int k = 0; k < 3; ++k)
         rho = fmax(rho, fabs(R[3 * k]) + fabs(R[3 * k + 1]) + fabs(R[3 * k + 2]));
@@ -185,7 +182,7 @@ void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s
         s->own[i] = float_above(fabs(noct_dot3(s->e[i], s->e[0])) +
                              fabs(noct_dot3(s->e[i], s->e[1])) +
                              fabs(noct_dot3(s->e[i], s->e[2])));
-    if (!m->has_dual)
+    if (!has_dual)
         return;
     double g[3][3];
     noct_cross3(s->e[1], s->e[2], g[0]);
@@ -211,6 +208,27 @@ void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s
         return;
     gmax *= 1 + 0x1p-50;
     s->shrink = float_above((2 * gmax * (double)s->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
+}
+
+void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s)
+{
+    s->has_box = 0;
+    s->shrink = INFINITY;
+    if (m->has_box)
+        slot_turned(&m->box, m->has_dual, R, s);
+}
+
+/* A box primitive's form is exact: centre 0, half-edges the half-extents
+ * along the axes, no deviation; its corners fl(R (+-h)) (noct_box_corners())
+ * are the turned vertices the slot describes, its triangles on its faces. */
+void noct_box_slot_of_half(const double half[3], const double R[9], noct_box_slot *s)
+{
+    box_form b;
+    memset(&b, 0, sizeof b);
+    for (int j = 0; j < 3; ++j)
+        b.e[j][j] = half[j];
+    b.size = fmax(half[0], fmax(half[1], half[2]));
+    slot_turned(&b, true, R, s);
 }
 
 void noct_mesh_box_form(noctMesh *m)

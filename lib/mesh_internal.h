@@ -168,6 +168,11 @@ void noct_mesh_box_form(noctMesh *m);
 /* The slot of a mesh with a box form (has_box) (mesh_box.c). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
 
+/* The slot of a box primitive of half-extents half turned by R, for its
+ * corners noct_box_corners() (box_form.c), made as noct_box_slot_turned()
+ * makes a mesh's. */
+void noct_box_slot_of_half(const double half[3], const double R[9], noct_box_slot *s);
+
 /* Which of m's vertices is at which corner of its box, and which
  * triangles on which face, as box_dual names them, when m is a box-form
  * mesh with a dual or a box view (noct_box_view()); false otherwise

@@ -69,7 +69,9 @@
 
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/query.h>
 #include <noctree/transform.h>
+#include <noctree/world.h>
 
 #include "testutil.h"
 
@@ -1824,6 +1826,153 @@ START_TEST(wrong_bounds_caught)
 }
 END_TEST
 
+/* Points against a turned box as a world object (a box primitive, and a
+ * box mesh): noctWorldQueryNearest()'s answer for the point against the
+ * exact squared distance to the placed triangles (the least of the 12
+ * point-triangle distances in rationals). Points anywhere about the box,
+ * and on its placed triangles pushed a few ulps in or out. Apart: lower^2
+ * <= D^2 <= upper^2, the width within 2^-40 of the coordinates, the
+ * point on the named triangle, upper at least the points' distance.
+ * Colliding: only where the point lies in the placed box; and a point
+ * well inside the ideal box is colliding. */
+START_TEST(points_against_boxes)
+{
+    uint64_t rng = 0x9017b0u;
+    static const double pscales[] = {1, 0x1p-30, 0x1p30, 12345.5, 3.7e-7};
+    int apart = 0, inside = 0;
+    temps_get();
+    mpq_t d2, t;
+    mpq_inits(d2, t, NULL);
+    for (int n = 0; n < 240; ++n) {
+        const double s = pscales[test_rand_below(&rng, sizeof pscales / sizeof pscales[0])];
+        const double h[3] = {s * (0.25 + test_uniform(&rng)), s * (0.25 + test_uniform(&rng)),
+                             s * (0.25 + test_uniform(&rng))};
+        tmesh A;
+        tm_box(&A, h[0], h[1], h[2]);
+        noctTransform x = noctIdentityTransform();
+        test_random_quat(&rng, &x.q);
+        const double O = test_rand_below(&rng, 3) == 0
+                             ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
+                             : 0;
+        for (int k = 0; k < 3; ++k)
+            x.p[k] = O * (k == 2 ? -1 : 1);
+        noctWorldDef wd = noctDefaultWorldDef();
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectDef od = noctDefaultObjectDef();
+        od.transform = x;
+        if (n % 2)
+            od.mesh = A.m;
+        else
+            memcpy(od.half_extents, h, sizeof h);
+        noctObjectId id;
+        ck_assert_int_eq(noctWorldCreateObject(w, &od, &id, NULL), NOCT_OK);
+        double PA[3 * TM_MAXV];
+        place(&A, &x, PA);
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = hi[k] = PA[k];
+            for (int i = 1; i < 8; ++i) {
+                lo[k] = fmin(lo[k], PA[3 * i + k]);
+                hi[k] = fmax(hi[k], PA[3 * i + k]);
+            }
+        }
+        for (int m = 0; m < 8; ++m) {
+            noctTransform qx = noctIdentityTransform();
+            if (m < 4) { /* about the box */
+                for (int k = 0; k < 3; ++k)
+                    qx.p[k] = x.p[k] + 3 * s * (2 * test_uniform(&rng) - 1);
+            } else { /* on a placed triangle, pushed */
+                const uint32_t *tr = &A.tri[3 * test_rand_below(&rng, A.nt)];
+                double a = test_uniform(&rng), b = test_uniform(&rng);
+                if (a + b > 1)
+                    a = 1 - a, b = 1 - b;
+                const int push = (int)test_rand_below(&rng, 9) - 4;
+                for (int k = 0; k < 3; ++k) {
+                    const double c = PA[3 * tr[0] + k] + a * (PA[3 * tr[1] + k] - PA[3 * tr[0] + k]) +
+                                     b * (PA[3 * tr[2] + k] - PA[3 * tr[0] + k]);
+                    qx.p[k] = c + push * ldexp(fabs(c) > 0 ? fabs(c) : s, -52) *
+                                      (2 * test_uniform(&rng) - 1);
+                }
+            }
+            noctDistanceHit hit;
+            bool found = false;
+            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &qx, INFINITY,
+                                                   noctDefaultQueryFilter(), &hit, &found, NULL),
+                             NOCT_OK);
+            ck_assert(found);
+            const noctDistanceResult *r = &hit.result;
+            bool in_box = true, deep = true;
+            double local[3];
+            for (int k = 0; k < 3; ++k)
+                in_box = in_box && lo[k] <= qx.p[k] && qx.p[k] <= hi[k];
+            /* well inside the ideal box: its local coordinates under
+             * 0.999 of the half-extents */
+            double R[9];
+            ck_assert_int_eq(noctQuatToMatrix(&x.q, R, NULL), NOCT_OK);
+            for (int j = 0; j < 3; ++j) {
+                local[j] = 0;
+                for (int k = 0; k < 3; ++k)
+                    local[j] += R[3 * k + j] * (qx.p[k] - x.p[k]);
+                deep = deep && fabs(local[j]) < 0.999 * h[j];
+            }
+            if (r->colliding) {
+                ck_assert_msg(in_box, "point %d/%d: colliding outside the placed box", n, m);
+                ck_assert(r->distance == 0 && r->lower == 0 && r->upper == 0);
+                inside++;
+                continue;
+            }
+            ck_assert_msg(!deep, "point %d/%d: well inside, not colliding", n, m);
+            /* the exact squared distance to the boundary */
+            qpt p, a, b, c;
+            qpt_init(&p);
+            qpt_init(&a);
+            qpt_init(&b);
+            qpt_init(&c);
+            qpt_set_d(&p, qx.p);
+            for (size_t f = 0; f < A.nt; ++f) {
+                qpt_set_d(&a, &PA[3 * A.tri[3 * f]]);
+                qpt_set_d(&b, &PA[3 * A.tri[3 * f + 1]]);
+                qpt_set_d(&c, &PA[3 * A.tri[3 * f + 2]]);
+                q_point_triangle(t, &p, &a, &b, &c);
+                if (f == 0 || mpq_cmp(t, d2) < 0)
+                    mpq_set(d2, t);
+            }
+            qpt_clear(&p);
+            qpt_clear(&a);
+            qpt_clear(&b);
+            qpt_clear(&c);
+            ck_assert_msg(cmp_sq(r->lower, d2) <= 0, "point %d/%d: lower %a above the distance %a",
+                          n, m, r->lower, sqrt(mpq_get_d(d2)));
+            ck_assert_msg(cmp_sq(r->upper, d2) >= 0, "point %d/%d: upper %a below the distance %a",
+                          n, m, r->upper, sqrt(mpq_get_d(d2)));
+            ck_assert(r->lower <= r->distance && r->distance <= r->upper);
+            double M = 0;
+            for (int k = 0; k < 3; ++k)
+                M = fmax(M, fmax(fabs(qx.p[k]), fmax(fabs(lo[k]), fabs(hi[k]))));
+            ck_assert_msg(r->upper - r->lower <= ldexp(fmax(2 * M, r->distance), -40),
+                          "point %d/%d: width %a", n, m, r->upper - r->lower);
+            double dd;
+            ck_assert(triangle_named(&A, r->triangle_b));
+            ck_assert_msg(near_triangle(&A, PA, r->triangle_b, r->point_b, &dd),
+                          "point %d/%d: point_b %a from its triangle", n, m, dd);
+            double g = 0;
+            for (int k = 0; k < 3; ++k)
+                g += (r->point_a[k] - r->point_b[k]) * (r->point_a[k] - r->point_b[k]);
+            ck_assert(r->upper >= sqrt(g) * (1 - 0x1p-50));
+            apart++;
+        }
+        noctWorldDestroy(w);
+        tm_free(&A);
+    }
+    mpq_clears(d2, t, NULL);
+    fprintf(stderr, "check_distance points_against_boxes: %d apart, %d inside\n", apart,
+            inside);
+    ck_assert_int_ge(apart, 1000);
+    ck_assert_int_ge(inside, 100);
+}
+END_TEST
+
 static Suite *distance_suite(void)
 {
     Suite *s = suite_create("distance");
@@ -1838,7 +1987,7 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, rotated_both_ways, 0, 1);
     tcase_add_loop_test(tc, near_touch, 0, 1);
     tcase_add_loop_test(tc, turned_boxes, 0, 1);
-    add_tests(tc, quarter_turned_boxes, wrong_bounds_caught);
+    add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes);
     tc = test_case(s, "random, more seeds", 600, "slow");
     tcase_add_loop_test(tc, random_pairs, 1, 6);
     tcase_add_loop_test(tc, rotated_both_ways, 1, 4);
