@@ -168,14 +168,15 @@ static void slot_turned(const box_form *b, bool has_dual, const double R[9], noc
     s->shrink = INFINITY;
     double rho = 0;
     for (int k = 0; k < 3; ++k)
-        rho = fmax(rho, fabs(R[3 * k]) + fabs(R[3 * k + 1]) + fabs(R[3 * k + 2]));
+        rho = noct_max(rho, fabs(R[3 * k]) + fabs(R[3 * k + 1]) + fabs(R[3 * k + 2]));
     noct_rotate(R, b->c, s->c);
     for (int j = 0; j < 3; ++j)
         noct_rotate(R, b->e[j], s->e[j]);
     const double dev = rho * ((double)b->dev + 20 * 0x1p-53 * b->size) * (1 + 0x1p-40);
     double size = 0;
     for (int k = 0; k < 3; ++k)
-        size = fmax(size, fabs(s->c[k]) + fabs(s->e[0][k]) + fabs(s->e[1][k]) + fabs(s->e[2][k]));
+        size = noct_max(size, fabs(s->c[k]) + fabs(s->e[0][k]) + fabs(s->e[1][k]) +
+                                  fabs(s->e[2][k]));
     s->size = (size + dev) * (1 + 0x1p-50);
     s->dev = float_above(dev);
     for (int i = 0; i < 3; ++i)
@@ -195,13 +196,13 @@ static void slot_turned(const box_form *b, bool has_dual, const double R[9], noc
     for (int i = 0; i < 3; ++i) {
         for (int k = 0; k < 3; ++k)
             g[i][k] /= det;
-        gmax = fmax(gmax, fabs(g[i][0]) + fabs(g[i][1]) + fabs(g[i][2]));
+        gmax = noct_max(gmax, fabs(g[i][0]) + fabs(g[i][1]) + fabs(g[i][2]));
     }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            eta = fmax(eta, fabs(noct_dot3(g[i], s->e[j]) - (i == j)));
+            eta = noct_max(eta, fabs(noct_dot3(g[i], s->e[j]) - (i == j)));
             for (int k = 0; k < 3; ++k)
-                mag = fmax(mag, fabs(g[i][k] * s->e[j][k]));
+                mag = noct_max(mag, fabs(g[i][k] * s->e[j][k]));
         }
     eta = eta * (1 + 0x1p-50) + 16 * 0x1p-53 * 3 * mag;
     if (!(eta <= 1e-14))

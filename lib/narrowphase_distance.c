@@ -1461,7 +1461,8 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
             AE[j][k] = A->h[j] * C[j][k]; /* A's half-edge j in B's frame */
         }
     double best = INFINITY;
-    if (!corners_against(T, BE, A->h, &best, fb, fa) || !corners_against(TB, AE, B->h, &best, fa, fb))
+    if (!corners_against(T, BE, A->h, &best, fb, fa) ||
+        !corners_against(TB, AE, B->h, &best, fa, fb))
         return false;
     /* edge i of A against edge j of B, along u = a_i x b_j (A's frame) */
     for (int i = 0; i < 3; ++i)
@@ -1722,7 +1723,8 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             if (!ok)
                 break;
         }
-        if (turned[i] && box_far_from_flat(m[i]) && box_corners_placed(m[i], R[i], x[i]->p, &s[i])) {
+        if (turned[i] && box_far_from_flat(m[i]) &&
+            box_corners_placed(m[i], R[i], x[i]->p, &s[i])) {
             ok = true;
         } else {
             for (size_t j = 0; j < s[i].n; ++j) {

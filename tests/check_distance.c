@@ -1889,8 +1889,8 @@ START_TEST(points_against_boxes)
                     a = 1 - a, b = 1 - b;
                 const int push = (int)test_rand_below(&rng, 9) - 4;
                 for (int k = 0; k < 3; ++k) {
-                    const double c = PA[3 * tr[0] + k] + a * (PA[3 * tr[1] + k] - PA[3 * tr[0] + k]) +
-                                     b * (PA[3 * tr[2] + k] - PA[3 * tr[0] + k]);
+                    const double *p0 = &PA[3 * tr[0]], *p1 = &PA[3 * tr[1]], *p2 = &PA[3 * tr[2]];
+                    const double c = p0[k] + a * (p1[k] - p0[k]) + b * (p2[k] - p0[k]);
                     qx.p[k] = c + push * ldexp(fabs(c) > 0 ? fabs(c) : s, -52) *
                                       (2 * test_uniform(&rng) - 1);
                 }
