@@ -4,7 +4,8 @@
  * directions described as a parallelepiped that the exact level's filter
  * can trust, and the dual that bounds how far its triangles may lie from
  * the ideal box's faces. Geometry only: mesh.c asks it of every mesh it
- * makes, mesh_box.c of every box primitive.
+ * makes, mesh_box.c of every box primitive; the distance's convex path
+ * turns a mesh's form with its rotation (noct_box_slot_turned()).
  */
 #include "config.h"
 
@@ -91,18 +92,34 @@ void noct_box_form_of(const double *v, const double *const d[3], const uint32_t 
     *has_box = true;
 
     /* The dual, for the witness: every triangle on a face of the ideal box
-     * (its three corners agree in one sign), and a well-conditioned box. */
+     * (its three corners agree in one sign), and a well-conditioned box.
+     * With it, the corners' vertices and the faces' triangles (two on
+     * each face: 8 vertices of a closed mesh make 12 triangles). */
+    unsigned on_face[6] = {0, 0, 0, 0, 0, 0};
+    for (size_t i = 0; i < 8; ++i) {
+        unsigned pattern = 0;
+        for (int j = 0; j < 3; ++j)
+            pattern |= (coef[i][j] > 0 ? 1u : 0u) << j;
+        x->corner[pattern] = (uint8_t)i;
+    }
     for (size_t t = 0; t < nt; ++t) {
         unsigned agree = 7;
+        const double *q0 = coef[tri[3 * t]];
         for (int corner = 1; corner < 3; ++corner) {
             const double *q = coef[tri[3 * t + corner]];
-            const double *q0 = coef[tri[3 * t]];
             for (int j = 0; j < 3; ++j)
                 if ((q[j] > 0) != (q0[j] > 0))
                     agree &= ~(1u << j);
         }
-        if (agree == 0)
+        if (agree == 0 || nt != 12)
             return;
+        for (int j = 0; j < 3; ++j)
+            if (agree & (1u << j)) {
+                const unsigned f = 2 * (unsigned)j + (q0[j] > 0 ? 1u : 0u);
+                if (on_face[f] == 2)
+                    return;
+                x->face[f][on_face[f]++] = (uint8_t)t;
+            }
     }
     double eta = 0, mag = 0, gmax = 0;
     for (int i = 0; i < 3; ++i) {
@@ -123,6 +140,96 @@ void noct_box_form_of(const double *v, const double *const d[3], const uint32_t 
     x->gmax = gmax * (1 + 0x1p-50);
     x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
     *has_dual = true;
+}
+
+/*
+ * The slot of m's box form turned by R (mesh_internal.h), made of the
+ * form, not of the turned vertices. A vertex v lies within dev of its
+ * corner c + sum s_j e[j] (per coordinate); its turned vertex fl(R v)
+ * then lies within, per coordinate k (rho_k = sum_l |R_kl|),
+ *   rho_k dev                                  (R applied to the deviation)
+ * + g3 rho_k (V + |c|_inf + sum_j |e[j]|_inf)  (rounding fl(R v), fl(R c),
+ *                                               fl(R e[j]): 3 roundings each)
+ * of the corner fl(R c) + sum s_j fl(R e[j]) of the turned form, with
+ * g3 = 3u / (1 - 3u) < 4u (u = 2^-53) and V, |c|_inf, |e[j]|_inf each at
+ * most the form's size: under rho (dev + 20 u size), rounded up by the
+ * factor 1 + 2^-40 for its own few roundings. The dual is made afresh of
+ * the turned half-edges (g[i] = e[j] x e[k] / det), its error eta bounded
+ * as box_form_of() bounds it, so the slot's shrink, and with it the
+ * oriented-box test's proof (noct_box_decide()), hold for the turned
+ * vertices placed as fl(fl(R v) + t). The triangles lie on the faces of
+ * the turned form as they lie on the form's (the same corners). No dual
+ * (shrink +inf) when m has none or eta is not tiny; has_box 0 when m has
+ * no form.
+ */
+static void slot_turned(const box_form *b, bool has_dual, const double R[9], noct_box_slot *s)
+{
+    s->has_box = 1;
+    s->shrink = INFINITY;
+    double rho = 0;
+    for (int k = 0; k < 3; ++k)
+        rho = noct_max(rho, fabs(R[3 * k]) + fabs(R[3 * k + 1]) + fabs(R[3 * k + 2]));
+    noct_rotate(R, b->c, s->c);
+    for (int j = 0; j < 3; ++j)
+        noct_rotate(R, b->e[j], s->e[j]);
+    const double dev = rho * ((double)b->dev + 20 * 0x1p-53 * b->size) * (1 + 0x1p-40);
+    double size = 0;
+    for (int k = 0; k < 3; ++k)
+        size = noct_max(size, fabs(s->c[k]) + fabs(s->e[0][k]) + fabs(s->e[1][k]) +
+                                  fabs(s->e[2][k]));
+    s->size = (size + dev) * (1 + 0x1p-50);
+    s->dev = float_above(dev);
+    for (int i = 0; i < 3; ++i)
+        s->own[i] = float_above(fabs(noct_dot3(s->e[i], s->e[0])) +
+                             fabs(noct_dot3(s->e[i], s->e[1])) +
+                             fabs(noct_dot3(s->e[i], s->e[2])));
+    if (!has_dual)
+        return;
+    double g[3][3];
+    noct_cross3(s->e[1], s->e[2], g[0]);
+    noct_cross3(s->e[2], s->e[0], g[1]);
+    noct_cross3(s->e[0], s->e[1], g[2]);
+    const double det = noct_dot3(s->e[0], g[0]);
+    if (!(fabs(det) > 0) || !isfinite(det))
+        return;
+    double eta = 0, mag = 0, gmax = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k)
+            g[i][k] /= det;
+        gmax = noct_max(gmax, fabs(g[i][0]) + fabs(g[i][1]) + fabs(g[i][2]));
+    }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            eta = noct_max(eta, fabs(noct_dot3(g[i], s->e[j]) - (i == j)));
+            for (int k = 0; k < 3; ++k)
+                mag = noct_max(mag, fabs(g[i][k] * s->e[j][k]));
+        }
+    eta = eta * (1 + 0x1p-50) + 16 * 0x1p-53 * 3 * mag;
+    if (!(eta <= 1e-14))
+        return;
+    gmax *= 1 + 0x1p-50;
+    s->shrink = float_above((2 * gmax * (double)s->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
+}
+
+void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s)
+{
+    s->has_box = 0;
+    s->shrink = INFINITY;
+    if (m->has_box)
+        slot_turned(&m->box, m->has_dual, R, s);
+}
+
+/* A box primitive's form is exact: centre 0, half-edges the half-extents
+ * along the axes, no deviation; its corners fl(R (+-h)) (noct_box_corners())
+ * are the turned vertices the slot describes, its triangles on its faces. */
+void noct_box_slot_of_half(const double half[3], const double R[9], noct_box_slot *s)
+{
+    box_form b;
+    memset(&b, 0, sizeof b);
+    for (int j = 0; j < 3; ++j)
+        b.e[j][j] = half[j];
+    b.size = fmax(half[0], fmax(half[1], half[2]));
+    slot_turned(&b, true, R, s);
 }
 
 void noct_mesh_box_form(noctMesh *m)

@@ -983,5 +983,7 @@ bool noct_mesh_same(const noctMesh *a, const noctMesh *b)
     return !a->has_dual ||
            (memcmp(g->g, h->g, sizeof g->g) == 0 && memcmp(&g->gmax, &h->gmax, sizeof g->gmax) == 0 &&
             memcmp(&g->eta, &h->eta, sizeof g->eta) == 0 &&
-            memcmp(&g->shrink, &h->shrink, sizeof g->shrink) == 0);
+            memcmp(&g->shrink, &h->shrink, sizeof g->shrink) == 0 &&
+            memcmp(g->corner, h->corner, sizeof g->corner) == 0 &&
+            memcmp(g->face, h->face, sizeof g->face) == 0);
 }

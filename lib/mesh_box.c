@@ -48,13 +48,47 @@ static const uint32_t BOX_TRIANGLES[36] = {
     0, 2, 6, 0, 6, 4, /* -z */ 1, 5, 7, 1, 7, 3, /* +z */
 };
 
+/* BOX_TRIANGLES' corners and faces as a box dual names them: corner p
+ * (bit j: +axis j) is vertex (bit 0 of p) << 2 | (bit 1) | (bit 2) >> 2,
+ * and the faces' triangles come in the order -x, +x, -y, +y, -z, +z. */
+static const uint8_t BOX_CORNER[8] = {0, 4, 2, 6, 1, 5, 3, 7};
+static const uint8_t BOX_FACE[6][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {8, 9}, {10, 11}};
+
+bool noct_box_topology(const noctMesh *m, const uint8_t **corner, const uint8_t (**face)[2])
+{
+    if (m->has_dual) {
+        *corner = m->dual.corner;
+        *face = (const uint8_t(*)[2])m->dual.face;
+        return true;
+    }
+    if (m->nt == 12 && m->tri == BOX_TRIANGLES) { /* a box view */
+        *corner = BOX_CORNER;
+        *face = BOX_FACE;
+        return true;
+    }
+    return false;
+}
+
+/* fl(R c) of each corner c = (+-h0, +-h1, +-h2), as noct_rotate() gives
+ * it, from the 9 products R_kl h_l: fl(R_kl (-h_l)) = -fl(R_kl h_l), and
+ * the sums are noct_rotate()'s, in its order, bit for bit. */
 void noct_box_corners(const double half[3], const double R[9], double v[24])
 {
-    for (int i = 0; i < 8; ++i) {
-        const double local[3] = {(i & 4) ? half[0] : -half[0], (i & 2) ? half[1] : -half[1],
-                                 (i & 1) ? half[2] : -half[2]};
-        noct_rotate(R, local, &v[3 * i]);
+    double a[9];
+    for (int k = 0; k < 3; ++k) {
+        volatile double x = R[3 * k] * half[0], y = R[3 * k + 1] * half[1],
+                        z = R[3 * k + 2] * half[2];
+        a[3 * k] = x;
+        a[3 * k + 1] = y;
+        a[3 * k + 2] = z;
     }
+    for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double x = (i & 4) ? a[3 * k] : -a[3 * k];
+            const double y = (i & 2) ? a[3 * k + 1] : -a[3 * k + 1];
+            const double z = (i & 1) ? a[3 * k + 2] : -a[3 * k + 2];
+            v[3 * i + k] = (x + y) + z;
+        }
 }
 
 void noct_box_slot_of_box(const double half[3], const double R[9], noct_box_slot *s,

@@ -80,6 +80,13 @@ typedef struct box_dual {
     double gmax, eta;
     float shrink; /* 2 gmax dev + 8 eta + 2e-15 rounded up: the proof's
                      shrink of the ideal box (narrowphase.c) */
+    /* Which vertex is at which corner, and which triangles on which face,
+     * for the distance's closed form (narrowphase_distance.c): corner[p]
+     * is the vertex at c + sum_j (bit j of p ? e[j] : -e[j]); face[2 j +
+     * s] are the two triangles on the face of sign s (1: +e[j]) across
+     * e[j]. */
+    uint8_t corner[8];
+    uint8_t face[6][2];
 } box_dual;
 
 /*
@@ -160,6 +167,23 @@ void noct_mesh_box_form(noctMesh *m);
 
 /* The slot of a mesh with a box form (has_box) (mesh_box.c). */
 void noct_box_slot_fill(const noctMesh *m, noct_box_slot *s);
+
+/* The slot of a box primitive of half-extents half turned by R, for its
+ * corners noct_box_corners() (box_form.c), made as noct_box_slot_turned()
+ * makes a mesh's. */
+void noct_box_slot_of_half(const double half[3], const double R[9], noct_box_slot *s);
+
+/* Which of m's vertices is at which corner of its box, and which
+ * triangles on which face, as box_dual names them, when m is a box-form
+ * mesh with a dual or a box view (noct_box_view()); false otherwise
+ * (mesh_box.c). */
+bool noct_box_topology(const noctMesh *m, const uint8_t **corner, const uint8_t (**face)[2]);
+
+/* The slot of m's box form turned by R, for its vertices placed as
+ * fl(fl(R v) + t): made of the form (its corners, deviation and dual
+ * turned, with bounds on R's rounding), not of the turned vertices
+ * (box_form.c). has_box 0 without a form, shrink +inf without a dual. */
+void noct_box_slot_turned(const noctMesh *m, const double R[9], noct_box_slot *s);
 
 /* The oriented-box test on two slots placed at ta and tb: -1 when it
  * proves the solids apart, 1 when it proves that they share a point (both
@@ -309,6 +333,10 @@ noctStatus noct_check_box_half(const double half[3], noctError *err);
 
 /* Is R the identity matrix? */
 bool noct_is_identity(const double R[9]);
+
+/* noctTransformCheck() that also gives the matrix (noctQuatToMatrix())
+ * it checked, for callers that need both. */
+noctStatus noct_transform_matrix(const noctTransform *x, double R[9], noctError *err);
 
 /* out = fl(R v) in transform.h's order. */
 void noct_rotate(const double R[9], const double v[3], double out[3]);

@@ -1285,43 +1285,25 @@ static bool convex_distance(const convex_set *A, const convex_set *B, double sca
 }
 
 /* Two box-form meshes (both with a dual) whose placed vertices' boxes
- * overlap: does the separating-axis proof on their placed box forms show
- * that the solids share a point (noct_box_decide())? The forms are made
- * of the placed vertices themselves (fl(fl(R v) + t), as every path
- * places them), their directions the mesh's box edges turned, so the
- * proof is about these solids; then the answer is the colliding one, as
+ * overlap: does the separating-axis proof on their box forms, turned with
+ * their rotations (noct_box_slot_turned(), which bounds the rotation's
+ * rounding, so that the forms describe the placed vertices
+ * fl(fl(R v) + t) as every path places them), show that the solids share
+ * a point (noct_box_decide())? Then the answer is the colliding one, as
  * the exact test would give it. */
-static bool boxes_proved_meeting(const convex_set s[2], double R[2][9], const bool turned[2])
+static bool boxes_proved_meeting(const convex_set s[2], double R[2][9], const bool turned[2],
+                                 const noctTransform *const x[2])
 {
     noct_box_slot slot[2];
     for (int i = 0; i < 2; ++i) {
-        const noctMesh *m = s[i].m;
-        double u[3][3];
-        for (int j = 0; j < 3; ++j) {
-            double e[3];
-            if (turned[i])
-                noct_rotate(R[i], m->box.e[j], e);
-            else
-                noct_copy3(m->box.e[j], e);
-            noct_unit3(e, u[j]);
-        }
-        const double *const d[3] = {u[0], u[1], u[2]};
-        box_form b;
-        box_dual x;
-        bool has_box, has_dual;
-        noct_box_form_of(s[i].p, d, m->tri, m->nt, &b, &has_box, &x, &has_dual);
-        if (!has_dual)
+        if (turned[i])
+            noct_box_slot_turned(s[i].m, R[i], &slot[i]);
+        else
+            noct_box_slot_fill(s[i].m, &slot[i]);
+        if (!(slot[i].shrink < 1))
             return false;
-        memcpy(slot[i].c, b.c, sizeof slot[i].c);
-        memcpy(slot[i].e, b.e, sizeof slot[i].e);
-        slot[i].size = b.size;
-        memcpy(slot[i].own, b.own, sizeof slot[i].own);
-        slot[i].dev = b.dev;
-        slot[i].shrink = x.shrink;
-        slot[i].has_box = 1;
     }
-    static const double zero[3] = {0, 0, 0};
-    return noct_box_decide(&slot[0], zero, &slot[1], zero) > 0;
+    return noct_box_decide(&slot[0], x[0]->p, &slot[1], x[1]->p) > 0;
 }
 
 /* Do the placed boxes of two vertex sets overlap: 0 no, 1 yes, 2 so
@@ -1358,6 +1340,368 @@ static void set_colliding_sets(noctDistanceResult *r, const convex_set s[2])
     }
 }
 
+/* ---- two boxes: the nearest features in closed form ----------------------------- */
+
+/*
+ * Two box-form meshes with duals or box views (their corners and faces
+ * known: noct_box_topology()) are rectangular boxes up to the rounding
+ * of their placed vertices (checked). Their nearest features are found
+ * in closed form on the ideal boxes the placed vertices describe: the nearest points of two convex
+ * solids can be chosen with one of them at a corner, or with both inside
+ * edges (the direction between them then perpendicular to both edges,
+ * so along a cross product of an axis of each, and each edge the one of
+ * its direction that reaches farthest along it: the one the signs of
+ * that cross product on the other axes name). So the candidates are each
+ * box's 8 corners against the other box (clamped in its frame: the
+ * clamped coordinates name the face, edge or corner reached) and the 9
+ * pairs of edges whose lines' nearest points lie inside both; the
+ * nearest candidate names a feature of each box. The floating-point
+ * search only chooses the features: the answer is then made as the GJK
+ * path makes it, on the placed vertices themselves (the nearest points
+ * of the features' placed triangles or edges, the proof by the gap of
+ * the placed vertex sets on the direction between the points or on the
+ * features' own axis), and when it cannot prove its interval as tight
+ * as promised the GJK path answers.
+ */
+
+/* A box's frame from its placed vertices: its centre, unit axes and
+ * half-lengths (false if they are not orthogonal within 1e-9). */
+typedef struct box_frame {
+    double c[3], u[3][3], h[3];
+    const uint8_t *corner;      /* vertex of each corner (noct_box_topology()) */
+    const uint8_t (*face)[2];   /* triangles of each face */
+} box_frame;
+
+static bool box_frame_of(const convex_set *s, box_frame *f)
+{
+    if (!noct_box_topology(s->m, &f->corner, &f->face))
+        return false;
+    const double *p0 = &s->p[3 * f->corner[0]], *p7 = &s->p[3 * f->corner[7]];
+    for (int k = 0; k < 3; ++k)
+        f->c[k] = p0[k] + (p7[k] - p0[k]) / 2;
+    for (int j = 0; j < 3; ++j) {
+        double e[3];
+        noct_sub3(p7, &s->p[3 * f->corner[7 ^ (1u << j)]], e);
+        const double n = noct_norm3(e);
+        if (!(n > 0))
+            return false;
+        f->h[j] = n / 2;
+        for (int k = 0; k < 3; ++k)
+            f->u[j][k] = e[k] / n;
+    }
+    return fabs(noct_dot3(f->u[0], f->u[1])) <= 1e-9 && fabs(noct_dot3(f->u[0], f->u[2])) <= 1e-9 &&
+           fabs(noct_dot3(f->u[1], f->u[2])) <= 1e-9;
+}
+
+/* A feature of a box: the corners base + any sum of the bits of free
+ * (free 0: a corner, one bit: an edge along that axis, two: a face). */
+typedef struct box_feature {
+    unsigned base, free;
+} box_feature;
+
+/* The nearest of the corners of one box against the other, in the
+ * other's frame: corner p of the first at o + sum_j (bit j of p ? 1 : -1)
+ * E[j], the other's half-lengths h. Updates the best squared distance
+ * *best and the two features (mine: the corner; its: what the clamp
+ * reached); false if a corner lies in the other box or on it (the boxes
+ * may meet). */
+static bool corners_against(const double o[3], double E[3][3], const double h[3], double *best,
+                            box_feature *mine, box_feature *its)
+{
+    double y[3][8], d2[8] = {0, 0, 0, 0, 0, 0, 0, 0}; /* y[k][p]: corner p's coordinate k */
+    for (int k = 0; k < 3; ++k) {
+        const double a0 = o[k] - E[0][k], a1 = o[k] + E[0][k];
+        const double b[4] = {a0 - E[1][k], a1 - E[1][k], a0 + E[1][k], a1 + E[1][k]};
+        for (int q = 0; q < 4; ++q) {
+            y[k][q] = b[q] - E[2][k];
+            y[k][q + 4] = b[q] + E[2][k];
+        }
+        for (int p = 0; p < 8; ++p) {
+            const double ex = noct_max(fabs(y[k][p]) - h[k], 0);
+            d2[p] += ex * ex;
+        }
+    }
+    unsigned p = 0;
+    for (unsigned q = 1; q < 8; ++q)
+        if (d2[q] < d2[p])
+            p = q;
+    if (!(d2[p] > 0))
+        return false;
+    if (d2[p] < *best) {
+        *best = d2[p];
+        unsigned base = 0, free = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (fabs(y[k][p]) > h[k])
+                base |= (y[k][p] > 0 ? 1u : 0u) << k;
+            else
+                free |= 1u << k;
+        }
+        *mine = (box_feature){p, 0};
+        *its = (box_feature){base, free};
+    }
+    return true;
+}
+
+/* The nearest features of the ideal boxes A and B (fa on A, fb on B), or
+ * false if a corner of one lies in the other. */
+static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa,
+                         box_feature *fb)
+{
+    double C[3][3], D[3], T[3], TB[3], BE[3][3], AE[3][3];
+    noct_sub3(B->c, A->c, D);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j)
+            C[i][j] = noct_dot3(A->u[i], B->u[j]);
+        T[i] = noct_dot3(A->u[i], D);
+        TB[i] = -noct_dot3(B->u[i], D);
+    }
+    for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) {
+            BE[j][k] = B->h[j] * C[k][j]; /* B's half-edge j in A's frame */
+            AE[j][k] = A->h[j] * C[j][k]; /* A's half-edge j in B's frame */
+        }
+    double best = INFINITY;
+    if (!corners_against(T, BE, A->h, &best, fb, fa) ||
+        !corners_against(TB, AE, B->h, &best, fa, fb))
+        return false;
+    /* edge i of A against edge j of B, along u = a_i x b_j (A's frame) */
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const double b[3] = {C[0][j], C[1][j], C[2][j]};
+            double u[3] = {0, 0, 0};
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            u[i1] = -b[i2];
+            u[i2] = b[i1];
+            if (!(u[i1] * u[i1] + u[i2] * u[i2] > 1e-12))
+                continue; /* parallel edges: their corners decide */
+            if (noct_dot3(u, T) < 0)
+                for (int k = 0; k < 3; ++k)
+                    u[k] = -u[k];
+            /* A's edge: the corners' signs u_k on its other axes; B's:
+             * against u.b_l on its own */
+            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const double s1 = u[i1] > 0 ? 1 : -1, s2 = u[i2] > 0 ? 1 : -1;
+            const double w1 = u[0] * C[0][j1] + u[1] * C[1][j1] + u[2] * C[2][j1];
+            const double w2 = u[0] * C[0][j2] + u[1] * C[1][j2] + u[2] * C[2][j2];
+            const double t1 = w1 < 0 ? 1 : -1, t2 = w2 < 0 ? 1 : -1;
+            const unsigned pa = (s1 > 0 ? 1u << i1 : 0u) | (s2 > 0 ? 1u << i2 : 0u);
+            const unsigned pb = (t1 > 0 ? 1u << j1 : 0u) | (t2 > 0 ? 1u << j2 : 0u);
+            double r[3];
+            for (int k = 0; k < 3; ++k)
+                r[k] = -T[k] - t1 * BE[j1][k] - t2 * BE[j2][k];
+            r[i1] += s1 * A->h[i1];
+            r[i2] += s2 * A->h[i2];
+            /* r = P0 - Q0; s along a_i, t along b_j */
+            const double bb = C[i][j], c = r[i], f = noct_dot3(b, r);
+            const double denom = 1 - bb * bb;
+            const double s = (bb * f - c) / denom, t = f + s * bb;
+            if (!(fabs(s) < A->h[i]) || !(fabs(t) < B->h[j]))
+                continue;
+            double g[3];
+            for (int k = 0; k < 3; ++k)
+                g[k] = r[k] - t * b[k];
+            g[i] += s;
+            const double d2 = noct_dot3(g, g);
+            if (d2 < best) {
+                best = d2;
+                *fa = (box_feature){pa, 1u << i};
+                *fb = (box_feature){pb, 1u << j};
+            }
+        }
+    return true;
+}
+
+/* The triangle of s's mesh with the feature's corners (a corner's or an
+ * edge's; a box's edge is a side of a triangle). */
+static uint32_t triangle_at(const convex_set *s, const box_frame *f, box_feature x)
+{
+    const uint32_t v0 = f->corner[x.base];
+    const uint32_t v1 = x.free ? f->corner[x.base | x.free] : v0;
+    const noctMesh *m = s->m;
+    for (uint32_t t = 0; t < m->nt; ++t) {
+        const uint32_t *v = &m->tri[3 * t];
+        if ((v[0] == v0 || v[1] == v0 || v[2] == v0) && (v[0] == v1 || v[1] == v1 || v[2] == v1))
+            return t;
+    }
+    NOCT_INVARIANT(false);
+    return 0;
+}
+
+/* The placed triangle t of s. */
+static void set_tri(const convex_set *s, uint32_t t, double x[3][3])
+{
+    for (int i = 0; i < 3; ++i)
+        noct_copy3(&s->p[3 * s->m->tri[3 * t + i]], x[i]);
+}
+
+/* The point of s's placed feature x nearest p (a face: of its two
+ * triangles), its triangle in *t. */
+static void feature_nearest(const convex_set *s, const box_frame *f, box_feature x,
+                            const double p[3], double q[3], uint32_t *t)
+{
+    if (x.free == 0) {
+        noct_copy3(&s->p[3 * f->corner[x.base]], q);
+        *t = triangle_at(s, f, x);
+    } else if ((x.free & (x.free - 1)) == 0) {
+        double c1[3];
+        seg_seg_nearest(p, p, &s->p[3 * f->corner[x.base]], &s->p[3 * f->corner[x.base | x.free]],
+                        c1, q);
+        *t = triangle_at(s, f, x);
+    } else {
+        const unsigned j = 7 ^ x.free;
+        const int k = j == 1 ? 0 : j == 2 ? 1 : 2;
+        const uint8_t *two = f->face[2 * k + ((x.base >> k) & 1u)];
+        double best = INFINITY;
+        for (int i = 0; i < 2; ++i) {
+            double y[3][3], c[3];
+            set_tri(s, two[i], y);
+            const double d2 = point_on_tri(p, y, c);
+            if (d2 < best) {
+                best = d2;
+                noct_copy3(c, q);
+                *t = two[i];
+            }
+        }
+    }
+}
+
+/* The normal of a face feature's first triangle, as placed. */
+static void face_axis(const convex_set *s, const box_frame *f, box_feature x, double u[3])
+{
+    const unsigned j = 7 ^ x.free;
+    const int k = j == 1 ? 0 : j == 2 ? 1 : 2;
+    double y[3][3], e1[3], e2[3];
+    set_tri(s, f->face[2 * k + ((x.base >> k) & 1u)][0], y);
+    noct_sub3(y[1], y[0], e1);
+    noct_sub3(y[2], y[0], e2);
+    noct_cross3(e1, e2, u);
+}
+
+/*
+ * The distance of two boxes (A, B in the canonical order; unscaled, their
+ * magnitude mag within [2^-100, 2^100]) by their nearest features in
+ * closed form. false when a corner of one lies in the other (they may
+ * meet), or the proof is not as tight as noctDistance() promises: the
+ * caller goes on as without it.
+ */
+static bool boxes_distance(const convex_set *A, const convex_set *B, double mag,
+                           double max_distance, noctDistanceResult *r)
+{
+    box_frame fa, fb;
+    box_feature xa, xb;
+    if (!box_frame_of(A, &fa) || !box_frame_of(B, &fb) || !box_features(&fa, &fb, &xa, &xb))
+        return false;
+    double qa[3], qb[3];
+    uint32_t ta, tb;
+    if (xa.free == 0) {
+        noct_copy3(&A->p[3 * fa.corner[xa.base]], qa);
+        ta = triangle_at(A, &fa, xa);
+        feature_nearest(B, &fb, xb, qa, qb, &tb);
+    } else if (xb.free == 0) {
+        noct_copy3(&B->p[3 * fb.corner[xb.base]], qb);
+        tb = triangle_at(B, &fb, xb);
+        feature_nearest(A, &fa, xa, qb, qa, &ta);
+    } else {
+        seg_seg_nearest(&A->p[3 * fa.corner[xa.base]], &A->p[3 * fa.corner[xa.base | xa.free]],
+                        &B->p[3 * fb.corner[xb.base]], &B->p[3 * fb.corner[xb.base | xb.free]],
+                        qa, qb);
+        ta = triangle_at(A, &fa, xa);
+        tb = triangle_at(B, &fb, xb);
+    }
+    double v[3];
+    noct_sub3(qb, qa, v);
+    const double d = noct_norm3(v);
+    if (!(d > 0))
+        return false;
+    const double allow = 0x1p-47 * mag;
+    double s = 0;
+    for (size_t i = 0; i < 8; ++i)
+        s = noct_max(s, noct_max(noct_max_abs3(&A->p[3 * i]), noct_max_abs3(&B->p[3 * i])));
+    const double upper = d * (1 + 0x1p-50) + 2 * allow;
+    const double width = 0x1p-41 * noct_max(mag, upper);
+    double lower = sets_gap(v, A, B, s);
+    if (!(upper - lower <= width)) {
+        /* the features' own axis: a face's normal, two edges' cross
+         * product (made of the placed vertices) */
+        double u[3];
+        if (xa.free != 0 && (xa.free & (xa.free - 1)) != 0) {
+            face_axis(A, &fa, xa, u);
+        } else if (xb.free != 0 && (xb.free & (xb.free - 1)) != 0) {
+            face_axis(B, &fb, xb, u);
+        } else if (xa.free != 0 && xb.free != 0) {
+            double e1[3], e2[3];
+            noct_sub3(&A->p[3 * fa.corner[xa.base | xa.free]], &A->p[3 * fa.corner[xa.base]], e1);
+            noct_sub3(&B->p[3 * fb.corner[xb.base | xb.free]], &B->p[3 * fb.corner[xb.base]], e2);
+            noct_cross3(e1, e2, u);
+        } else {
+            return false;
+        }
+        if (noct_dot3(u, v) < 0)
+            for (int k = 0; k < 3; ++k)
+                u[k] = -u[k];
+        lower = noct_max(lower, sets_gap(u, A, B, s));
+    }
+    if (!(lower > 0) || !(upper - lower <= width))
+        return false;
+    memset(r, 0, sizeof *r);
+    if (lower > max_distance) {
+        set_beyond(r, max_distance);
+        return true;
+    }
+    r->lower = lower;
+    r->upper = upper;
+    r->distance = noct_min(noct_max(d, lower), upper);
+    for (int k = 0; k < 3; ++k) {
+        r->point_a[k] = qa[k];
+        r->point_b[k] = qb[k];
+        r->triangle_a[k] = A->m->tri[3 * ta + k];
+        r->triangle_b[k] = B->m->tri[3 * tb + k];
+    }
+    return true;
+}
+
+/* The placed vertices fl(fl(R v) + t) of a mesh of 8 vertices (+-h0,
+ * +-h1, +-h2), a box about its origin (noctMeshCreateBox()'s), into s,
+ * with its placed box, from the 9 products R_kl h_l: fl(R_kl (-h_l)) =
+ * -fl(R_kl h_l) (and a product by +-1 is exact), so the sums, in
+ * noct_rotate()'s order, give its vertices bit for bit. false for another
+ * mesh. */
+static bool box_corners_placed(const noctMesh *m, const double R[9], const double t[3],
+                               convex_set *s)
+{
+    if (m->nv != 8)
+        return false;
+    const double h0 = fabs(m->v[0]), h1 = fabs(m->v[1]), h2 = fabs(m->v[2]);
+    for (int i = 1; i < 8; ++i) {
+        const double *v = &m->v[3 * i];
+        if (fabs(v[0]) != h0 || fabs(v[1]) != h1 || fabs(v[2]) != h2)
+            return false;
+    }
+    double a[9];
+    for (int k = 0; k < 3; ++k) {
+        volatile double x = R[3 * k] * h0, y = R[3 * k + 1] * h1, z = R[3 * k + 2] * h2;
+        a[3 * k] = x;
+        a[3 * k + 1] = y;
+        a[3 * k + 2] = z;
+    }
+    for (int k = 0; k < 3; ++k) {
+        s->lo[k] = INFINITY;
+        s->hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < 8; ++i) {
+        const double *v = &m->v[3 * i];
+        const double sx = v[0] < 0 ? -1.0 : 1.0, sy = v[1] < 0 ? -1.0 : 1.0,
+                     sz = v[2] < 0 ? -1.0 : 1.0;
+        for (int k = 0; k < 3; ++k) {
+            const double c = ((sx * a[3 * k] + sy * a[3 * k + 1]) + sz * a[3 * k + 2]) + t[k];
+            s->p[3 * i + k] = c;
+            s->lo[k] = noct_min(s->lo[k], c);
+            s->hi[k] = noct_max(s->hi[k], c);
+        }
+    }
+    return true;
+}
+
 /* The convex path of noctDistance(): true if it answered. */
 static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[2],
                         const noctTransform *x[2], double max_distance, noctDistanceResult *r,
@@ -1379,24 +1723,29 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             if (!ok)
                 break;
         }
-        for (size_t j = 0; j < s[i].n; ++j) {
-            double *p = &s[i].p[3 * j];
-            if (turned[i])
-                noct_rotate(R[i], &m[i]->v[3 * j], p);
-            else
-                noct_copy3(&m[i]->v[3 * j], p);
-        }
-        ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
-        for (int k = 0; k < 3; ++k) {
-            s[i].lo[k] = INFINITY;
-            s[i].hi[k] = -INFINITY;
-        }
-        for (size_t j = 0; j < s[i].n && ok; ++j)
-            for (int k = 0; k < 3; ++k) {
-                const double c = s[i].p[3 * j + k] += x[i]->p[k];
-                s[i].lo[k] = noct_min(s[i].lo[k], c);
-                s[i].hi[k] = noct_max(s[i].hi[k], c);
+        if (turned[i] && box_far_from_flat(m[i]) &&
+            box_corners_placed(m[i], R[i], x[i]->p, &s[i])) {
+            ok = true;
+        } else {
+            for (size_t j = 0; j < s[i].n; ++j) {
+                double *p = &s[i].p[3 * j];
+                if (turned[i])
+                    noct_rotate(R[i], &m[i]->v[3 * j], p);
+                else
+                    noct_copy3(&m[i]->v[3 * j], p);
             }
+            ok = !turned[i] || box_far_from_flat(m[i]) || rotated_fine(m[i], s[i].p);
+            for (int k = 0; k < 3; ++k) {
+                s[i].lo[k] = INFINITY;
+                s[i].hi[k] = -INFINITY;
+            }
+            for (size_t j = 0; j < s[i].n && ok; ++j)
+                for (int k = 0; k < 3; ++k) {
+                    const double c = s[i].p[3 * j + k] += x[i]->p[k];
+                    s[i].lo[k] = noct_min(s[i].lo[k], c);
+                    s[i].hi[k] = noct_max(s[i].hi[k], c);
+                }
+        }
         for (int k = 0; k < 3 && ok; ++k)
             mag = noct_max(mag, noct_max(fabs(s[i].lo[k]), fabs(s[i].hi[k])));
     }
@@ -1404,15 +1753,36 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     /* Two boxes whose placed boxes overlap deeply likely meet: the
      * separating-axis proof on their box forms first; else only when GJK
      * could not answer and the placed boxes overlap. */
-    const int overlap = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8
-                            ? sets_overlap(s) : 0;
-    if (overlap == 2 && boxes_proved_meeting(s, R, turned)) {
+    const bool boxes = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8;
+    const int overlap = boxes ? sets_overlap(s) : 0;
+    /* (box views, noct_box_view(), have no dual but their corners and
+     * faces are known: the closed form serves them too) */
+    const uint8_t *corner;
+    const uint8_t (*face)[2];
+    const bool box_like = ok && s[0].n == 8 && s[1].n == 8 &&
+                          noct_box_topology(m[0], &corner, &face) &&
+                          noct_box_topology(m[1], &corner, &face);
+    if (overlap == 2 && boxes_proved_meeting(s, R, turned, x)) {
         set_colliding_sets(r, s);
         if (stats)
             ++stats->witnesses;
         free(heap[0]);
         free(heap[1]);
         return true;
+    }
+    /* Two boxes: their nearest features in closed form, at magnitudes
+     * that need no scaling (search_scale()). */
+    if (box_like && mag >= 0x1p-100 && mag <= 0x1p100) {
+        const bool first = set_first(&s[0], &s[1]);
+        if (boxes_distance(&s[first ? 0 : 1], &s[first ? 1 : 0], mag, max_distance, r)) {
+            if (!first)
+                mirror(r);
+            if (stats)
+                ++stats->convex_tests;
+            free(heap[0]);
+            free(heap[1]);
+            return true;
+        }
     }
     if (ok) {
         const double scale = search_scale(mag);
@@ -1427,9 +1797,8 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             mirror(r);
         if (answered && stats)
             ++stats->convex_tests;
-        /* (on the scaled vertices: scaling up, for small meshes, is
-         * exact; scaling down may round, and the general path decides) */
-        if (!answered && overlap == 1 && scale >= 1 && boxes_proved_meeting(s, R, turned)) {
+        /* (the forms turned and placed as the vertices were, unscaled) */
+        if (!answered && overlap == 1 && boxes_proved_meeting(s, R, turned, x)) {
             set_colliding_sets(r, s);
             answered = true;
             if (stats)
@@ -1566,9 +1935,7 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     bool turned[2] = {false, false};
     noctStatus st = NOCT_OK;
     for (int i = 0; i < 2 && st == NOCT_OK; ++i) {
-        st = noctTransformCheck(x[i], err);
-        if (st == NOCT_OK)
-            st = noctQuatToMatrix(&x[i]->q, R[i], err);
+        st = noct_transform_matrix(x[i], R[i], err);
         turned[i] = st == NOCT_OK && !noct_is_identity(R[i]);
     }
     if (st != NOCT_OK)

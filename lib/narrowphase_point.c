@@ -307,6 +307,100 @@ static double hull_lower_bound(const point_walk *w, const double q[3])
     return best;
 }
 
+/*
+ * A box (a box-form mesh with a dual or a box view: its corners and faces
+ * known, noct_box_topology()), unscaled: the point's nearest feature in
+ * closed form, clamped in the frame of the ideal box its placed corners
+ * describe (checked rectangular), then the nearest point of that placed
+ * feature (a corner, an edge, or the nearer of a face's two triangles),
+ * as the walk would find it among the triangles. Sets w's best when
+ * nearer than it; false when the point is in the ideal box (the walk
+ * then looks). The proof that follows does not depend on it.
+ */
+static bool box_nearest(point_walk *w)
+{
+    const uint8_t *corner;
+    const uint8_t (*face)[2];
+    const noctMesh *m = w->m;
+    if (m->nv != 8 || w->scale != 1 || !noct_box_topology(m, &corner, &face))
+        return false;
+    double P[8][3];
+    for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k)
+            P[i][k] = m->v[3 * corner[i] + k] + w->t[k]; /* by corner */
+    double c[3], d[3], x[3], h[3];
+    for (int k = 0; k < 3; ++k) {
+        c[k] = P[0][k] + (P[7][k] - P[0][k]) / 2;
+        d[k] = w->ps[k] - c[k];
+    }
+    double u[3][3];
+    for (int j = 0; j < 3; ++j) {
+        double e[3];
+        noct_sub3(P[7], P[7 ^ (1u << j)], e);
+        const double n = noct_norm3(e);
+        if (!(n > 0))
+            return false;
+        h[j] = n / 2;
+        for (int k = 0; k < 3; ++k)
+            u[j][k] = e[k] / n;
+        x[j] = noct_dot3(u[j], d);
+    }
+    if (!(fabs(noct_dot3(u[0], u[1])) <= 1e-9 && fabs(noct_dot3(u[0], u[2])) <= 1e-9 &&
+          fabs(noct_dot3(u[1], u[2])) <= 1e-9))
+        return false;
+    unsigned base = 0, free = 0;
+    for (int j = 0; j < 3; ++j) {
+        if (fabs(x[j]) > h[j])
+            base |= (x[j] > 0 ? 1u : 0u) << j;
+        else
+            free |= 1u << j;
+    }
+    if (free == 7)
+        return false;
+    double q[3];
+    uint32_t tri = 0;
+    const uint32_t v0 = corner[base];
+    const uint32_t v1 = corner[(free & (free - 1)) == 0 ? base | free : base];
+    if ((free & (free - 1)) == 0) { /* a corner or an edge: a side of a triangle */
+        if (free == 0)
+            noct_copy3(P[base], q);
+        else
+            point_seg_nearest(w->ps, P[base], P[base | free], q);
+        for (uint32_t i = 0; i < m->nt; ++i) {
+            const uint32_t *v = &m->tri[3 * i];
+            if ((v[0] == v0 || v[1] == v0 || v[2] == v0) &&
+                (v[0] == v1 || v[1] == v1 || v[2] == v1)) {
+                tri = i;
+                break;
+            }
+        }
+    } else { /* a face: the nearer of its two triangles */
+        const unsigned j = 7 ^ free;
+        const int k = j == 1 ? 0 : j == 2 ? 1 : 2;
+        const uint8_t *two = face[2 * k + ((base >> k) & 1u)];
+        double best = INFINITY;
+        for (int i = 0; i < 2; ++i) {
+            double y[3][3], z[3];
+            placed_triangle(w, two[i], y);
+            point_tri_nearest(w->ps, y, z);
+            const double d2 = dist2(w->ps, z);
+            if (d2 < best) {
+                best = d2;
+                noct_copy3(z, q);
+                tri = two[i];
+            }
+        }
+    }
+    const double d2 = dist2(w->ps, q);
+    if (d2 < w->best2) {
+        w->best2 = d2;
+        noct_copy3(q, w->q);
+        w->tri = tri;
+        w->found = true;
+    }
+    return true;
+}
+
 noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, const double t[3],
                                       double max_distance, noctDistanceResult *r)
 {
@@ -346,7 +440,8 @@ noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, cons
             return NOCT_OK;
         }
         w.best2 = reach_max * reach_max;
-        nearest_walk(&w);
+        if (!box_nearest(&w))
+            nearest_walk(&w);
     }
     const double slack_s = slack * scale, allow = 0x1p-47 * mag * scale;
     if (!w.found) {

@@ -155,6 +155,12 @@ noctQuat noctQuatCompose(const noctQuat *a, const noctQuat *b)
 noctStatus noctTransformCheck(const noctTransform *x, noctError *err)
 {
     NOCT_REQUIRE(x != NULL);
+    double R[9];
+    return noct_transform_matrix(x, R, err);
+}
+
+noctStatus noct_transform_matrix(const noctTransform *x, double R[9], noctError *err)
+{
     for (int k = 0; k < 3; ++k) {
         if (!isfinite(x->p[k]))
             return noct_fail(err, NOCT_ERR_NONFINITE, -1, 0,
@@ -165,7 +171,6 @@ noctStatus noctTransformCheck(const noctTransform *x, noctError *err)
                              "translation (%g, %g, %g) lies beyond %g", x->p[0], x->p[1],
                              x->p[2], NOCT_MAX_COORDINATE);
     }
-    double R[9];
     return noctQuatToMatrix(&x->q, R, err);
 }
 

@@ -261,19 +261,18 @@ noctStatus noct_query_shape_make(query_shape *q, const noctMesh *mesh,
                                  noctError *err)
 {
     q->rotated = NULL;
-    noctStatus st = noctTransformCheck(x, err);
+    double R[9];
+    noctStatus st = noct_transform_matrix(x, R, err);
     if (st != NOCT_OK)
         return st;
-    double R[9];
-    noctQuatToMatrix(&x->q, R, NULL);
     if (mesh == NULL) {
         if ((st = noct_check_box_half(half_extents, err)) != NOCT_OK ||
             (st = noct_check_box_corners(half_extents, R, err)) != NOCT_OK)
             return st;
         noct_box_corners(half_extents, R, q->v);
         noct_box_view(q->v, &q->view, &q->leaf);
-        double blo[3], bhi[3];
-        noct_box_slot_of_corners(q->v, R, &q->slot, blo, bhi);
+        /* the form turned, not made again of the corners */
+        noct_box_slot_of_half(half_extents, R, &q->slot);
         q->has_slot = q->slot.has_box;
         q->m = &q->view;
         return NOCT_OK;

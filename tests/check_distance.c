@@ -69,7 +69,9 @@
 
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
+#include <noctree/query.h>
 #include <noctree/transform.h>
+#include <noctree/world.h>
 
 #include "testutil.h"
 
@@ -1634,6 +1636,343 @@ START_TEST(near_touch)
 }
 END_TEST
 
+/* ---- boxes: the closed form of the convex path ----------------------------- */
+
+/* Two library boxes, both turned at random, at a random scale (those
+ * from 2^-100 to 2^100 take the closed form of the nearest features,
+ * the others the GJK path), offset up to 2^40 sizes, B along a random
+ * direction from overlapping to two sizes apart; then B bisected along
+ * the same direction to where the exact verdict turns, and the last
+ * meeting and the first apart placements (an ulp or so either side of
+ * touching) checked too. */
+START_TEST(turned_boxes)
+{
+    uint64_t rng = 0xb0c5000u + (uint64_t)_i;
+    for (int n = 0; n < 60; ++n) {
+        const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
+        tmesh A, B;
+        tm_box(&A, s * (0.25 + test_uniform(&rng)), s * (0.25 + test_uniform(&rng)),
+               s * (0.25 + test_uniform(&rng)));
+        tm_box(&B, s * (0.25 + test_uniform(&rng)), s * (0.25 + test_uniform(&rng)),
+               s * (0.25 + test_uniform(&rng)));
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        test_random_quat(&rng, &xb.q);
+        double dir[3], l;
+        do {
+            l = 0;
+            for (int k = 0; k < 3; ++k) {
+                dir[k] = 2 * test_uniform(&rng) - 1;
+                l += dir[k] * dir[k];
+            }
+        } while (l < 0.01 || l > 1);
+        l = sqrt(l);
+        for (int k = 0; k < 3; ++k)
+            dir[k] /= l;
+        double O = test_rand_below(&rng, 3) == 0
+                       ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
+                       : 0;
+        while (O != 0 && !offset_ok(O, s))
+            O *= 0x1p-8;
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = O * (k == 1 ? -1 : 1);
+        const double dist = 4 * s * test_uniform(&rng);
+        for (int k = 0; k < 3; ++k)
+            xb.p[k] = xa.p[k] + dist * dir[k];
+        char label[160];
+        snprintf(label, sizeof label, "turned boxes %d: scale %g, offset %g, at %g", n, s, O,
+                 dist);
+        (void)check_pair_d2(&A, &xa, &B, &xb, label);
+        /* the exact verdict's turn along dir: lo meets, hi does not */
+        double lo = 0, hi = 8 * s;
+        for (int it = 0; it < 200 && lo < hi; ++it) {
+            const double mid = lo + (hi - lo) / 2;
+            if (mid == lo || mid == hi)
+                break;
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + mid * dir[k];
+            bool meet = false;
+            ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
+                                                    &meet, NULL, NULL),
+                             NOCT_OK);
+            *(meet ? &lo : &hi) = mid;
+        }
+        const double at[2] = {lo, hi};
+        for (int w = 0; w < 2; ++w) {
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + at[w] * dir[k];
+            snprintf(label, sizeof label, "turned boxes %d %s: scale %g, offset %g", n,
+                     w == 0 ? "last meeting" : "first apart", s, O);
+            (void)check_pair_d2(&A, &xa, &B, &xb, label);
+        }
+        tm_free(&A);
+        tm_free(&B);
+    }
+    report_failures("turned_boxes");
+}
+END_TEST
+
+/* Quarter turns keep a box's corners exact: boxes of dyadic half-extents
+ * turned by them touch face to face, edge to edge and corner to corner
+ * at dyadic places, and one ulp away either side. */
+START_TEST(quarter_turned_boxes)
+{
+    const double r = 0.70710678118654752440;
+    const noctQuat quarter[3] = {{r, 0, 0, r}, {0, r, 0, r}, {0, 0, r, r}};
+    const double exps[] = {0, -90, 90, -20};
+    for (size_t e = 0; e < sizeof exps / sizeof exps[0]; ++e) {
+        const double s = ldexp(1, (int)exps[e]);
+        tmesh A, B;
+        tm_box(&A, s, 0.5 * s, 0.75 * s);
+        tm_box(&B, 0.25 * s, 0.5 * s, 1.5 * s);
+        for (int qa = 0; qa < 3; ++qa)
+            for (int qb = 0; qb < 3; ++qb) {
+                noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+                xa.q = quarter[qa];
+                xb.q = quarter[qb];
+                double RA[9], RB[9], ha[3] = {0, 0, 0}, hb[3] = {0, 0, 0};
+                ck_assert_int_eq(noctQuatToMatrix(&xa.q, RA, NULL), NOCT_OK);
+                ck_assert_int_eq(noctQuatToMatrix(&xb.q, RB, NULL), NOCT_OK);
+                const double h0[3] = {s, 0.5 * s, 0.75 * s}, h1[3] = {0.25 * s, 0.5 * s, 1.5 * s};
+                for (int k = 0; k < 3; ++k)
+                    for (int j = 0; j < 3; ++j) {
+                        ha[k] += fabs(RA[3 * k + j]) * h0[j];
+                        hb[k] += fabs(RB[3 * k + j]) * h1[j];
+                    }
+                /* touching across x: face, edge (y too), corner (z too) */
+                for (int kind = 0; kind < 3; ++kind)
+                    for (int nudge = -1; nudge <= 1; ++nudge) {
+                        double p[3] = {ha[0] + hb[0], 0.25 * s, 0};
+                        if (kind >= 1)
+                            p[1] = ha[1] + hb[1];
+                        if (kind == 2)
+                            p[2] = ha[2] + hb[2];
+                        p[0] = nudge < 0 ? nextafter(p[0], 0)
+                                         : nudge > 0 ? nextafter(p[0], INFINITY) : p[0];
+                        memcpy(xb.p, p, sizeof p);
+                        char label[96];
+                        snprintf(label, sizeof label, "quarter turns %d %d, kind %d, nudge %d",
+                                 qa, qb, kind, nudge);
+                        const double D2 = check_pair_d2(&A, &xa, &B, &xb, label);
+                        if (nudge <= 0)
+                            EXPECT(D2 == 0);
+                        else
+                            EXPECT(D2 > 0);
+                    }
+            }
+        tm_free(&A);
+        tm_free(&B);
+    }
+    report_failures("quarter_turned_boxes");
+}
+END_TEST
+
+/* The checks bite: a correct answer for turned boxes apart, then each
+ * bound or point made wrong by a little, must be refused by
+ * check_result(). */
+START_TEST(wrong_bounds_caught)
+{
+    uint64_t rng = 0xbad0b0u;
+    int pairs = 0;
+    for (int n = 0; n < 20; ++n) {
+        tmesh A, B;
+        tm_box(&A, 0.5, 0.4, 0.3);
+        tm_box(&B, 0.35, 0.45, 0.25);
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        test_random_quat(&rng, &xb.q);
+        const double gap = ldexp(1, -(int)test_rand_below(&rng, 12));
+        xb.p[0] = 1.2 + gap;
+        xb.p[1] = 0.3 * (test_uniform(&rng) - 0.5);
+        double PA[3 * TM_MAXV], PB[3 * TM_MAXV];
+        place(&A, &xa, PA);
+        place(&B, &xb, PB);
+        const ctx cc = {&A, &B, &xa, &xb, PA, PB, "wrong bounds"}, *c = &cc;
+        bool meet = true;
+        ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT, &meet,
+                                                NULL, NULL),
+                         NOCT_OK);
+        noctDistanceResult r;
+        ck_assert_int_eq(noctDistance(A.m, &xa, B.m, &xb, INFINITY, &r, NULL, NULL), NOCT_OK);
+        if (!meet) {
+            oracle *o = oracle_get();
+            oracle_boundary_d2(o, &A, PA, &B, PB);
+            const double D = sqrt(mpq_get_d(o->d2)), eps = ldexp(D, -44);
+            ck_assert(check_result(c, false, o->d2, &r, INFINITY));
+            ck_assert_int_eq(failures, 0);
+            reported = 40; /* quiet: the failures below are expected */
+            noctDistanceResult w = r;
+            w.lower = w.distance = D + eps; /* above the true distance */
+            w.upper = fmax(w.upper, w.lower);
+            ck_assert(!check_result(c, false, o->d2, &w, INFINITY));
+            w = r;
+            w.upper = w.distance = D - eps; /* below it */
+            w.lower = fmin(w.lower, w.upper);
+            ck_assert(!check_result(c, false, o->d2, &w, INFINITY));
+            w = r;
+            w.point_a[1] += ldexp(1, -30); /* off its triangle */
+            ck_assert(!check_result(c, false, o->d2, &w, INFINITY));
+            w = r;
+            w.colliding = true; /* a wrong verdict */
+            ck_assert(!check_result(c, false, o->d2, &w, INFINITY));
+            failures = 0;
+            reported = 0;
+            pairs++;
+        }
+        tm_free(&A);
+        tm_free(&B);
+    }
+    ck_assert_int_ge(pairs, 15);
+}
+END_TEST
+
+/* Points against a turned box as a world object (a box primitive, and a
+ * box mesh): noctWorldQueryNearest()'s answer for the point against the
+ * exact squared distance to the placed triangles (the least of the 12
+ * point-triangle distances in rationals). Points anywhere about the box,
+ * and on its placed triangles pushed a few ulps in or out. Apart: lower^2
+ * <= D^2 <= upper^2, the width within 2^-40 of the coordinates, the
+ * point on the named triangle, upper at least the points' distance.
+ * Colliding: only where the point lies in the placed box; and a point
+ * well inside the ideal box is colliding. */
+START_TEST(points_against_boxes)
+{
+    uint64_t rng = 0x9017b0u;
+    static const double pscales[] = {1, 0x1p-30, 0x1p30, 12345.5, 3.7e-7};
+    int apart = 0, inside = 0;
+    temps_get();
+    mpq_t d2, t;
+    mpq_inits(d2, t, NULL);
+    for (int n = 0; n < 240; ++n) {
+        const double s = pscales[test_rand_below(&rng, sizeof pscales / sizeof pscales[0])];
+        const double h[3] = {s * (0.25 + test_uniform(&rng)), s * (0.25 + test_uniform(&rng)),
+                             s * (0.25 + test_uniform(&rng))};
+        tmesh A;
+        tm_box(&A, h[0], h[1], h[2]);
+        noctTransform x = noctIdentityTransform();
+        test_random_quat(&rng, &x.q);
+        const double O = test_rand_below(&rng, 3) == 0
+                             ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
+                             : 0;
+        for (int k = 0; k < 3; ++k)
+            x.p[k] = O * (k == 2 ? -1 : 1);
+        noctWorldDef wd = noctDefaultWorldDef();
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectDef od = noctDefaultObjectDef();
+        od.transform = x;
+        if (n % 2)
+            od.mesh = A.m;
+        else
+            memcpy(od.half_extents, h, sizeof h);
+        noctObjectId id;
+        ck_assert_int_eq(noctWorldCreateObject(w, &od, &id, NULL), NOCT_OK);
+        double PA[3 * TM_MAXV];
+        place(&A, &x, PA);
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = hi[k] = PA[k];
+            for (int i = 1; i < 8; ++i) {
+                lo[k] = fmin(lo[k], PA[3 * i + k]);
+                hi[k] = fmax(hi[k], PA[3 * i + k]);
+            }
+        }
+        for (int m = 0; m < 8; ++m) {
+            noctTransform qx = noctIdentityTransform();
+            if (m < 4) { /* about the box */
+                for (int k = 0; k < 3; ++k)
+                    qx.p[k] = x.p[k] + 3 * s * (2 * test_uniform(&rng) - 1);
+            } else { /* on a placed triangle, pushed */
+                const uint32_t *tr = &A.tri[3 * test_rand_below(&rng, A.nt)];
+                double a = test_uniform(&rng), b = test_uniform(&rng);
+                if (a + b > 1)
+                    a = 1 - a, b = 1 - b;
+                const int push = (int)test_rand_below(&rng, 9) - 4;
+                for (int k = 0; k < 3; ++k) {
+                    const double *p0 = &PA[3 * tr[0]], *p1 = &PA[3 * tr[1]], *p2 = &PA[3 * tr[2]];
+                    const double c = p0[k] + a * (p1[k] - p0[k]) + b * (p2[k] - p0[k]);
+                    qx.p[k] = c + push * ldexp(fabs(c) > 0 ? fabs(c) : s, -52) *
+                                      (2 * test_uniform(&rng) - 1);
+                }
+            }
+            noctDistanceHit hit;
+            bool found = false;
+            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &qx, INFINITY,
+                                                   noctDefaultQueryFilter(), &hit, &found, NULL),
+                             NOCT_OK);
+            ck_assert(found);
+            const noctDistanceResult *r = &hit.result;
+            bool in_box = true, deep = true;
+            double local[3];
+            for (int k = 0; k < 3; ++k)
+                in_box = in_box && lo[k] <= qx.p[k] && qx.p[k] <= hi[k];
+            /* well inside the ideal box: its local coordinates under
+             * 0.999 of the half-extents */
+            double R[9];
+            ck_assert_int_eq(noctQuatToMatrix(&x.q, R, NULL), NOCT_OK);
+            for (int j = 0; j < 3; ++j) {
+                local[j] = 0;
+                for (int k = 0; k < 3; ++k)
+                    local[j] += R[3 * k + j] * (qx.p[k] - x.p[k]);
+                deep = deep && fabs(local[j]) < 0.999 * h[j];
+            }
+            if (r->colliding) {
+                ck_assert_msg(in_box, "point %d/%d: colliding outside the placed box", n, m);
+                ck_assert(r->distance == 0 && r->lower == 0 && r->upper == 0);
+                inside++;
+                continue;
+            }
+            ck_assert_msg(!deep, "point %d/%d: well inside, not colliding", n, m);
+            /* the exact squared distance to the boundary */
+            qpt p, a, b, c;
+            qpt_init(&p);
+            qpt_init(&a);
+            qpt_init(&b);
+            qpt_init(&c);
+            qpt_set_d(&p, qx.p);
+            for (size_t f = 0; f < A.nt; ++f) {
+                qpt_set_d(&a, &PA[3 * A.tri[3 * f]]);
+                qpt_set_d(&b, &PA[3 * A.tri[3 * f + 1]]);
+                qpt_set_d(&c, &PA[3 * A.tri[3 * f + 2]]);
+                q_point_triangle(t, &p, &a, &b, &c);
+                if (f == 0 || mpq_cmp(t, d2) < 0)
+                    mpq_set(d2, t);
+            }
+            qpt_clear(&p);
+            qpt_clear(&a);
+            qpt_clear(&b);
+            qpt_clear(&c);
+            ck_assert_msg(cmp_sq(r->lower, d2) <= 0, "point %d/%d: lower %a above the distance %a",
+                          n, m, r->lower, sqrt(mpq_get_d(d2)));
+            ck_assert_msg(cmp_sq(r->upper, d2) >= 0, "point %d/%d: upper %a below the distance %a",
+                          n, m, r->upper, sqrt(mpq_get_d(d2)));
+            ck_assert(r->lower <= r->distance && r->distance <= r->upper);
+            double M = 0;
+            for (int k = 0; k < 3; ++k)
+                M = fmax(M, fmax(fabs(qx.p[k]), fmax(fabs(lo[k]), fabs(hi[k]))));
+            ck_assert_msg(r->upper - r->lower <= ldexp(fmax(2 * M, r->distance), -40),
+                          "point %d/%d: width %a", n, m, r->upper - r->lower);
+            double dd;
+            ck_assert(triangle_named(&A, r->triangle_b));
+            ck_assert_msg(near_triangle(&A, PA, r->triangle_b, r->point_b, &dd),
+                          "point %d/%d: point_b %a from its triangle", n, m, dd);
+            double g = 0;
+            for (int k = 0; k < 3; ++k)
+                g += (r->point_a[k] - r->point_b[k]) * (r->point_a[k] - r->point_b[k]);
+            ck_assert(r->upper >= sqrt(g) * (1 - 0x1p-50));
+            apart++;
+        }
+        noctWorldDestroy(w);
+        tm_free(&A);
+    }
+    mpq_clears(d2, t, NULL);
+    fprintf(stderr, "check_distance points_against_boxes: %d apart, %d inside\n", apart,
+            inside);
+    ck_assert_int_ge(apart, 1000);
+    ck_assert_int_ge(inside, 100);
+}
+END_TEST
+
 static Suite *distance_suite(void)
 {
     Suite *s = suite_create("distance");
@@ -1647,10 +1986,13 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, random_pairs, 0, 1);
     tcase_add_loop_test(tc, rotated_both_ways, 0, 1);
     tcase_add_loop_test(tc, near_touch, 0, 1);
+    tcase_add_loop_test(tc, turned_boxes, 0, 1);
+    add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes);
     tc = test_case(s, "random, more seeds", 600, "slow");
     tcase_add_loop_test(tc, random_pairs, 1, 6);
     tcase_add_loop_test(tc, rotated_both_ways, 1, 4);
     tcase_add_loop_test(tc, near_touch, 1, 6);
+    tcase_add_loop_test(tc, turned_boxes, 1, 6);
     return s;
 }
 

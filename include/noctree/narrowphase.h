@@ -469,6 +469,10 @@ typedef struct noctDistanceResult {
  * between them proves the lower bound (every solid lies in the hull of
  * its vertices, so their projections on it are at least that far apart).
  * The proof also shows the solids apart, so no collision test is needed.
+ * Two boxes (noctMeshCreateBox() meshes, or any mesh of 8 vertices that
+ * is a box up to rounding) find their nearest features in closed form
+ * instead of GJK, proved the same way, and overlapping ones are shown to
+ * meet by the separating-axis proof on their turned boxes.
  * If GJK does not settle, the hulls (nearly) meet, or the proved interval
  * is wider than the accuracy below, the general path answers instead.
  * **General:** the two bounding-volume hierarchies are searched depth
