@@ -1597,10 +1597,10 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     return st;
 }
 
-noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
-                                     const noctMesh *b, const noctTransform *xb,
-                                     double R[2][9], const bool turned[2],
-                                     bool *colliding, noctNarrowStats *stats, noctError *err)
+noctStatus noct_collide_exact_views(const noctMesh *a, const noctTransform *xa,
+                                    const noctMesh *b, const noctTransform *xb,
+                                    double R[2][9], const bool turned[2], bool *colliding,
+                                    noctNarrowStats *stats, noctError *err)
 {
     const noctMesh *m[2] = {a, b};
     noctMesh view[2], *rotated[2] = {NULL, NULL};
