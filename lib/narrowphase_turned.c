@@ -272,7 +272,7 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
         const uint32_t ia = stack[top].a, ib = stack[top].b;
         const bvh_node *na = &nodes_a[ia], *nb = &nodes_b[ib];
         ++pairs;
-        if (turned_nodes_apart(p, na, nb))
+        if (turned_nodes_apart(p, na, nb, false))
             continue;
         if (na->count > 0 && nb->count > 0) {
             double tb[NOCT_BVH_LEAF][3][3], blo[NOCT_BVH_LEAF][3], bhi[NOCT_BVH_LEAF][3];
