@@ -275,22 +275,27 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
         if (turned_nodes_apart(p, na, nb, false))
             continue;
         if (na->count > 0 && nb->count > 0) {
-            double tb[NOCT_BVH_LEAF][3][3], blo[NOCT_BVH_LEAF][3], bhi[NOCT_BVH_LEAF][3];
-            for (uint32_t j = 0; j < nb->count; ++j) {
-                turned_triangle(B, nb->first + j, tb[j]);
-                tri_box(tb[j], blo[j], bhi[j]);
-            }
-            for (uint32_t i = na->first; i < na->first + na->count && !met; ++i) {
-                double ta[3][3], alo[3], ahi[3];
-                turned_triangle(A, i, ta);
-                tri_box(ta, alo, ahi);
-                for (uint32_t j = 0; j < nb->count; ++j) {
-                    if (!boxes_meet(alo, ahi, blo[j], bhi[j]))
-                        continue;
-                    ++tris;
-                    if (tri_tri(x, ta, tb[j])) {
-                        met = true;
-                        break;
+            /* B's leaf in chunks (made meshes' leaves hold NOCT_BVH_LEAF) */
+            for (uint32_t j0 = 0; j0 < nb->count && !met; j0 += NOCT_BVH_LEAF) {
+                const uint32_t nj = nb->count - j0 < NOCT_BVH_LEAF ? nb->count - j0
+                                                                    : NOCT_BVH_LEAF;
+                double tb[NOCT_BVH_LEAF][3][3], blo[NOCT_BVH_LEAF][3], bhi[NOCT_BVH_LEAF][3];
+                for (uint32_t j = 0; j < nj; ++j) {
+                    turned_triangle(B, nb->first + j0 + j, tb[j]);
+                    tri_box(tb[j], blo[j], bhi[j]);
+                }
+                for (uint32_t i = na->first; i < na->first + na->count && !met; ++i) {
+                    double ta[3][3], alo[3], ahi[3];
+                    turned_triangle(A, i, ta);
+                    tri_box(ta, alo, ahi);
+                    for (uint32_t j = 0; j < nj; ++j) {
+                        if (!boxes_meet(alo, ahi, blo[j], bhi[j]))
+                            continue;
+                        ++tris;
+                        if (tri_tri(x, ta, tb[j])) {
+                            met = true;
+                            break;
+                        }
                     }
                 }
             }
