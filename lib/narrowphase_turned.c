@@ -261,10 +261,14 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
 {
     turned_side *A = &p->s[0], *B = &p->s[1];
     const bvh_node *nodes_a = A->m->nodes, *nodes_b = B->m->nodes;
-    struct { uint32_t a, b; } stack[NOCT_BVH_PAIR_STACK];
+    /* each pending pair keeps its B node's centre and radii in A's frame
+     * (turned_node_b()), which a split of A leaves as they are */
+    struct { uint32_t a, b; double c[3], r[3]; } stack[NOCT_BVH_PAIR_STACK];
     size_t top = 0;
     stack[top].a = 0;
-    stack[top++].b = 0;
+    stack[top].b = 0;
+    turned_node_b(p, &nodes_b[0], stack[top].c, stack[top].r);
+    ++top;
     uint64_t pairs = 0, tris = 0;
     bool met = false;
     while (top > 0 && !met) {
@@ -272,7 +276,7 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
         const uint32_t ia = stack[top].a, ib = stack[top].b;
         const bvh_node *na = &nodes_a[ia], *nb = &nodes_b[ib];
         ++pairs;
-        if (turned_nodes_apart(p, na, nb, false))
+        if (turned_nodes_apart_faces(p, na, nb, stack[top].c, stack[top].r))
             continue;
         if (na->count > 0 && nb->count > 0) {
             /* B's leaf in chunks (made meshes' leaves hold NOCT_BVH_LEAF) */
@@ -313,11 +317,18 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
             break;
         }
         if (split_a) {
-            stack[top].a = na->first;     stack[top++].b = ib;
-            stack[top].a = na->first + 1; stack[top++].b = ib;
+            /* the entry popped is still in place at stack[top] */
+            stack[top + 1] = stack[top];
+            stack[top].a = na->first;
+            stack[top + 1].a = na->first + 1;
+            top += 2;
         } else {
-            stack[top].a = ia; stack[top++].b = nb->first;
-            stack[top].a = ia; stack[top++].b = nb->first + 1;
+            for (uint32_t c = 0; c < 2; ++c) {
+                stack[top].a = ia;
+                stack[top].b = nb->first + c;
+                turned_node_b(p, &nodes_b[nb->first + c], stack[top].c, stack[top].r);
+                ++top;
+            }
         }
     }
     if (st) {

@@ -104,6 +104,53 @@ bool turned_pair_setup(turned_pair *p, const noctMesh *a, const double Ra[9],
                        const double ta[3], bool ta_turned, const noctMesh *b,
                        const double Rb[9], const double tb[3], bool tb_turned);
 
+/* B's node nb in A's frame: its centre S^ cb + U^ (c) and its radii on
+ * A's axes, |S^| hb (r), as turned_nodes_apart() computes them; a walk
+ * that splits A keeps them for the B node it does not split. */
+static NOCT_ALWAYS_INLINE void turned_node_b(const turned_pair *p, const bvh_node *nb,
+                                             double c[3], double r[3])
+{
+    double cb[3], hb[3];
+    for (int k = 0; k < 3; ++k) {
+        cb[k] = 0.5 * (nb->lo[k] + nb->hi[k]);
+        hb[k] = 0.5 * (nb->hi[k] - nb->lo[k]);
+    }
+    const double *S = p->S, *aS = p->aS;
+    for (int k = 0; k < 3; ++k) {
+        c[k] = (S[3 * k] * cb[0] + S[3 * k + 1] * cb[1]) + S[3 * k + 2] * cb[2] + p->U[k];
+        r[k] = aS[3 * k] * hb[0] + aS[3 * k + 1] * hb[1] + aS[3 * k + 2] * hb[2];
+    }
+}
+
+/* turned_nodes_apart() without the cross products, B's node given also
+ * by turned_node_b()'s c and r (the same numbers, so the same answer). */
+static NOCT_ALWAYS_INLINE bool turned_nodes_apart_faces(const turned_pair *p,
+                                                        const bvh_node *na,
+                                                        const bvh_node *nb,
+                                                        const double c[3], const double r[3])
+{
+    double ca[3], ha[3], T[3];
+    for (int k = 0; k < 3; ++k) {
+        ca[k] = 0.5 * (na->lo[k] + na->hi[k]);
+        ha[k] = 0.5 * (na->hi[k] - na->lo[k]);
+        T[k] = c[k] - ca[k];
+        if (fabs(T[k]) - ha[k] - r[k] > p->pad)
+            return true;
+    }
+    double hb[3];
+    for (int k = 0; k < 3; ++k)
+        hb[k] = 0.5 * (nb->hi[k] - nb->lo[k]);
+    const double *S = p->S, *aS = p->aS;
+    for (int j = 0; j < 3; ++j) {
+        const double d = S[j] * T[0] + S[3 + j] * T[1] + S[6 + j] * T[2];
+        const double ra = aS[j] * ha[0] + aS[3 + j] * ha[1] + aS[6 + j] * ha[2];
+        const double rb = p->G[3 * j] * hb[0] + p->G[3 * j + 1] * hb[1] + p->G[3 * j + 2] * hb[2];
+        if (fabs(d) - ra - rb > p->pad)
+            return true;
+    }
+    return false;
+}
+
 /*
  * The oriented-box test of node na of A against node nb of B: true when
  * an axis proves their triangles apart (the gap beyond the pad), false
