@@ -429,6 +429,57 @@ static inline double tri_box_dist2(const double xlo[3], const double xhi[3],
     return s;
 }
 
+/*
+ * A proved lower bound on the distance between two sets of placed
+ * (scaled) triangles x[0, nx) and y[0, ny) (a pair of leaves): their gap
+ * along the direction between their vertices' centroids, proved as
+ * proved_gap() proves a pair's (any axis bounds the distance of disjoint
+ * sets from below; the allowance covers the projections' rounding with s
+ * bounding every coordinate), or 0.
+ */
+static double proved_gap_sets(double x[][3][3], uint32_t nx, double y[][3][3], uint32_t ny)
+{
+    double cx[3] = {0, 0, 0}, cy[3] = {0, 0, 0}, s = 0;
+    for (uint32_t i = 0; i < nx; ++i)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) {
+                cx[k] += x[i][c][k];
+                s = noct_max(s, fabs(x[i][c][k]));
+            }
+    for (uint32_t j = 0; j < ny; ++j)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) {
+                cy[k] += y[j][c][k];
+                s = noct_max(s, fabs(y[j][c][k]));
+            }
+    double u[3];
+    for (int k = 0; k < 3; ++k)
+        u[k] = cy[k] / (3 * (double)ny) - cx[k] / (3 * (double)nx);
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    if (!(l1 > 0))
+        return 0;
+    double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
+    for (uint32_t i = 0; i < nx; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double pa = noct_dot3(u, x[i][c]);
+            amax = noct_max(amax, pa);
+            amin = noct_min(amin, pa);
+        }
+    for (uint32_t j = 0; j < ny; ++j)
+        for (int c = 0; c < 3; ++c) {
+            const double pb = noct_dot3(u, y[j][c]);
+            bmax = noct_max(bmax, pb);
+            bmin = noct_min(bmin, pb);
+        }
+    /* as proved_gap(): each projection errs by at most 4 ulp of l1 s */
+    const double err = 0x1p-50 * l1 * s;
+    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
+    if (!(gap > 0))
+        return 0;
+    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return gap / (n * (1 + 0x1p-48));
+}
+
 /* Triangle i of P, placed and scaled. */
 static inline void placed_tri(const placed *P, uint32_t i, double scale, double x[3][3])
 {
@@ -526,6 +577,14 @@ static void nearest_search(dist_walk *w)
                     tri_plane(y[j], ny[j]);
                     tri_bounds(y[j], ylo[j], yhi[j]);
                 }
+                if (na->count <= LEAF_CHUNK) { /* the leaves' own gap first */
+                    double xs[LEAF_CHUNK][3][3];
+                    for (uint32_t i = 0; i < na->count; ++i)
+                        placed_tri(A, na->first + i, w->scale, xs[i]);
+                    const double g = proved_gap_sets(xs, na->count, y, nj);
+                    if (g * g >= w->best2)
+                        continue;
+                }
                 for (uint32_t i = na->first; i < na->first + na->count; ++i) {
                     double x[3][3], nx[4], xlo[3], xhi[3];
                     placed_tri(A, i, w->scale, x);
@@ -604,6 +663,16 @@ static bool lower_search(dist_walk *w)
                 for (uint32_t j = 0; j < nj; ++j) {
                     placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
                     tri_bounds(y[j], ylo[j], yhi[j]);
+                }
+                /* the leaves' own gap first: beyond the reach, no pair
+                 * of them is within it */
+                if (na->count <= LEAF_CHUNK) {
+                    double xs[LEAF_CHUNK][3][3];
+                    for (uint32_t i = 0; i < na->count; ++i)
+                        placed_tri(A, na->first + i, w->scale, xs[i]);
+                    const double g = proved_gap_sets(xs, na->count, y, nj);
+                    if (g * g > w->reach2)
+                        continue;
                 }
                 for (uint32_t i = na->first; i < na->first + na->count; ++i) {
                     double x[3][3], xlo[3], xhi[3];
