@@ -432,29 +432,14 @@ static inline double tri_box_dist2(const double xlo[3], const double xhi[3],
 /*
  * A proved lower bound on the distance between two sets of placed
  * (scaled) triangles x[0, nx) and y[0, ny) (a pair of leaves): their gap
- * along the direction between their vertices' centroids, proved as
+ * along u (the direction between their placed boxes' centres), proved as
  * proved_gap() proves a pair's (any axis bounds the distance of disjoint
- * sets from below; the allowance covers the projections' rounding with s
+ * sets from below; the allowance covers the projections' rounding, s
  * bounding every coordinate), or 0.
  */
-static double proved_gap_sets(double x[][3][3], uint32_t nx, double y[][3][3], uint32_t ny)
+static double proved_gap_sets(const double u[3], double x[][3][3], uint32_t nx,
+                              double y[][3][3], uint32_t ny, double s)
 {
-    double cx[3] = {0, 0, 0}, cy[3] = {0, 0, 0}, s = 0;
-    for (uint32_t i = 0; i < nx; ++i)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) {
-                cx[k] += x[i][c][k];
-                s = noct_max(s, fabs(x[i][c][k]));
-            }
-    for (uint32_t j = 0; j < ny; ++j)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) {
-                cy[k] += y[j][c][k];
-                s = noct_max(s, fabs(y[j][c][k]));
-            }
-    double u[3];
-    for (int k = 0; k < 3; ++k)
-        u[k] = cy[k] / (3 * (double)ny) - cx[k] / (3 * (double)nx);
     const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
     if (!(l1 > 0))
         return 0;
@@ -478,6 +463,22 @@ static double proved_gap_sets(double x[][3][3], uint32_t nx, double y[][3][3], u
         return 0;
     const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     return gap / (n * (1 + 0x1p-48));
+}
+
+/* The direction between the placed (scaled) boxes' centres of nodes na
+ * and nb, and s, a bound on every coordinate of their placed (scaled)
+ * triangles (a placed box holds them exactly; scaling is exact). */
+static inline double leaf_axis(const bvh_node *na, const double ta[3], const bvh_node *nb,
+                               const double tb[3], double scale, double u[3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double alo = na->lo[k] + ta[k], ahi = na->hi[k] + ta[k];
+        const double blo = nb->lo[k] + tb[k], bhi = nb->hi[k] + tb[k];
+        u[k] = ((blo + bhi) - (alo + ahi)) * scale;
+        s = noct_max(s, noct_max(noct_max(fabs(alo), fabs(ahi)), noct_max(fabs(blo), fabs(bhi))));
+    }
+    return s * scale;
 }
 
 /* Triangle i of P, placed and scaled. */
@@ -577,11 +578,12 @@ static void nearest_search(dist_walk *w)
                     tri_plane(y[j], ny[j]);
                     tri_bounds(y[j], ylo[j], yhi[j]);
                 }
-                if (na->count <= LEAF_CHUNK) { /* the leaves' own gap first */
-                    double xs[LEAF_CHUNK][3][3];
+                if (e.d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
+                    double xs[LEAF_CHUNK][3][3], u[3];
                     for (uint32_t i = 0; i < na->count; ++i)
                         placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double g = proved_gap_sets(xs, na->count, y, nj);
+                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
                     if (g * g >= w->best2)
                         continue;
                 }
@@ -654,7 +656,8 @@ static bool lower_search(dist_walk *w)
         const uint32_t ia = stack[top].a, ib = stack[top].b;
         const bvh_node *na = &A->m->nodes[ia], *nb = &B->m->nodes[ib];
         ++w->nodes;
-        if (box_dist2_scaled(na, A->t, nb, B->t, w->scale) > w->reach2)
+        const double d2 = box_dist2_scaled(na, A->t, nb, B->t, w->scale);
+        if (d2 > w->reach2)
             continue;
         if (na->count > 0 && nb->count > 0) {
             for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
@@ -666,11 +669,12 @@ static bool lower_search(dist_walk *w)
                 }
                 /* the leaves' own gap first: beyond the reach, no pair
                  * of them is within it */
-                if (na->count <= LEAF_CHUNK) {
-                    double xs[LEAF_CHUNK][3][3];
+                if (d2 > 0 && na->count <= LEAF_CHUNK) {
+                    double xs[LEAF_CHUNK][3][3], u[3];
                     for (uint32_t i = 0; i < na->count; ++i)
                         placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double g = proved_gap_sets(xs, na->count, y, nj);
+                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
                     if (g * g > w->reach2)
                         continue;
                 }
