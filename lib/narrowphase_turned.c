@@ -111,7 +111,7 @@ static double mesh_extent(const noctMesh *m)
  * bounds |F_ij|: |fl(R^T R) - I| plus 10 u for the dot products'
  * rounding) and |R^T eps| <= lambda delta (lambda: the largest column
  * sum of |R|, rounded up). e adds 2 u V for the rounding of a node's
- * centre and half-extents (turned_nodes_apart()). false when R is too far
+ * centre and half-extents (turned_nodes_apart_faces()). false when R is too far
  * from a rotation (rho > 1.0001 or phi > 2^-20), never for
  * noctQuatToMatrix()'s matrices.
  */
@@ -156,9 +156,10 @@ static bool side_frame(turned_side *s, double *lambda_out)
  * 16 u VB + 12 u D + lambda_a delta_b bounds how far B's placed vertex
  * maps from S^ w + U^, and eA (side_frame()) A's from v.
  *
- * The node test on an axis xi (|xi|_1 <= 2.0002 for all 15: 1 for A's
- * faces, <= sqrt(3) (1 + phi) for S^'s columns, <= 2 (1 + phi) for the
- * cross products, whose components are entries of S^, exact): A's node
+ * The node test on an axis xi (|xi|_1 <= 2.0002 for every axis it may
+ * take: 1 for A's faces, <= sqrt(3) (1 + phi) for S^'s columns, and
+ * <= 2 (1 + phi) for the cross products e_i x S^col_j, whose components
+ * are entries of S^, exact): A's node
  * lies in its box (centre ca, half-extents ha) grown by eA, projecting
  * within sum |xi_k| ha_k + |xi|_1 eA of xi.ca; B's in the parallelepiped
  * S^ box + U^ grown by eB, projecting within sum_m hb_m |xi.S^col_m| +
@@ -166,7 +167,7 @@ static bool side_frame(turned_side *s, double *lambda_out)
  * radii, T = S^ cb + U^ - ca. Every magnitude the test meets is at most
  * W = VA + 4 VB + |U^| (|S^ cb| <= 3.0003 VB); computing T (6
  * operations), xi.T (3 more, |xi|_1 <= 2.0002), the radii (6 products of
- * coefficients within 9.1 u of their values, G's and X's, by half-extents
+ * coefficients within 9.1 u of their values, |S^|'s and G's, by half-extents
  * <= W) and the gap (2 subtractions) errs by under 100 u W in all. So a
  * computed gap above pad = 2.25 (eA + eB) + 128 u W + TINY proves the
  * nodes' placed triangles apart.
@@ -214,15 +215,6 @@ bool turned_pair_setup(turned_pair *p, const noctMesh *a, const double Ra[9],
         for (int m2 = 0; m2 < 3; ++m2)
             p->G[3 * j + m2] = fabs(p->S[j] * p->S[m2] + p->S[3 + j] * p->S[3 + m2] +
                                     p->S[6 + j] * p->S[6 + m2]);
-    for (int j = 0; j < 3; ++j)
-        for (int m2 = 0; m2 < 3; ++m2) {
-            const double sj[3] = {p->S[j], p->S[3 + j], p->S[6 + j]};
-            const double sm[3] = {p->S[m2], p->S[3 + m2], p->S[6 + m2]};
-            double c[3];
-            noct_cross3(sj, sm, c);
-            for (int i = 0; i < 3; ++i)
-                p->X[i][j][m2] = fabs(c[i]);
-        }
     const double VA = mesh_extent(a), VB = mesh_extent(b);
     const double D = noct_max_abs3(d) * (1 + U53);
     const double dB = U53 * (13 * VB + noct_max_abs3(tb)) + TINY;

@@ -14,9 +14,8 @@
  * and U = Ra^T (tb - ta), computed once per call (S^, U^) and within eB
  * of S^ w + U^. So a node of A holds triangles inside its box grown by
  * eA, and a node of B triangles inside the parallelepiped S^ box + U^
- * grown by eB: the oriented-box test on the 15 axes (A's 3, the
- * columns of S^, and their cross products), with an allowance for its own
- * rounding, proves a pair of nodes apart without turning a box or a
+ * grown by eB: the oriented-box test on A's 3 axes and the columns of
+ * S^, with an allowance for its own rounding, proves a pair of nodes apart without turning a box or a
  * vertex (narrowphase_turned.c, turned_pair_setup(), writes the bounds
  * out). A vertex is rotated and placed only when a triangle pair reads
  * it, bit for bit as transform.h places it, and kept for the rest of the
@@ -92,7 +91,6 @@ typedef struct turned_pair {
     double aS[9];       /* |S^| */
     double U[3];        /* U^ = fl(Ra^T fl(tb - ta)) */
     double G[9];        /* |S^col_j . S^col_m|, B's radius on its own axes */
-    double X[3][3][3];  /* X[i][j][m] = |(S^col_j x S^col_m)_i| */
     double pad;         /* the node test's allowance (turned_pair_setup()) */
 } turned_pair;
 
@@ -105,8 +103,8 @@ bool turned_pair_setup(turned_pair *p, const noctMesh *a, const double Ra[9],
                        const double Rb[9], const double tb[3], bool tb_turned);
 
 /* B's node nb in A's frame: its centre S^ cb + U^ (c) and its radii on
- * A's axes, |S^| hb (r), as turned_nodes_apart() computes them; a walk
- * that splits A keeps them for the B node it does not split. */
+ * A's axes, |S^| hb (r); a walk that splits A keeps them for the B node
+ * it does not split. */
 static NOCT_ALWAYS_INLINE void turned_node_b(const turned_pair *p, const bvh_node *nb,
                                              double c[3], double r[3])
 {
@@ -122,8 +120,16 @@ static NOCT_ALWAYS_INLINE void turned_node_b(const turned_pair *p, const bvh_nod
     }
 }
 
-/* turned_nodes_apart() without the cross products, B's node given also
- * by turned_node_b()'s c and r (the same numbers, so the same answer). */
+/*
+ * The oriented-box test of node na of A against node nb of B (given also
+ * by turned_node_b()'s c and r): true when an axis proves their placed
+ * triangles apart (the gap beyond the pad), false when it cannot. The
+ * axes are A's faces, then B's (the columns of S^). The nine cross
+ * products of an edge of each would prove more pairs apart, but the
+ * exact level's walk measured more instructions with them (164.5 against
+ * 141.8 million on 900 soup poses of bench-peers --soups): they cost
+ * more than the descents they save.
+ */
 static NOCT_ALWAYS_INLINE bool turned_nodes_apart_faces(const turned_pair *p,
                                                         const bvh_node *na,
                                                         const bvh_node *nb,
@@ -148,68 +154,6 @@ static NOCT_ALWAYS_INLINE bool turned_nodes_apart_faces(const turned_pair *p,
         if (fabs(d) - ra - rb > p->pad)
             return true;
     }
-    return false;
-}
-
-/*
- * The oriented-box test of node na of A against node nb of B: true when
- * an axis proves their triangles apart (the gap beyond the pad), false
- * when it cannot. The axes in FCL's order: A's faces, B's, then (if
- * cross) the 9 cross products. Without them the test proves fewer pairs
- * apart, but the exact level's walk measured fewer instructions in all
- * (141.8 against 164.5 million on 900 soup poses, bench-peers --soups):
- * the cross axes cost more than the descents they save.
- */
-static NOCT_ALWAYS_INLINE bool turned_nodes_apart(const turned_pair *p, const bvh_node *na,
-                                                  const bvh_node *nb, bool cross)
-{
-    double ca[3], ha[3], cb[3], hb[3], T[3];
-    for (int k = 0; k < 3; ++k) {
-        ca[k] = 0.5 * (na->lo[k] + na->hi[k]);
-        ha[k] = 0.5 * (na->hi[k] - na->lo[k]);
-        cb[k] = 0.5 * (nb->lo[k] + nb->hi[k]);
-        hb[k] = 0.5 * (nb->hi[k] - nb->lo[k]);
-    }
-    const double *S = p->S, *aS = p->aS;
-    const double pad = p->pad;
-    for (int k = 0; k < 3; ++k) {
-        T[k] = ((S[3 * k] * cb[0] + S[3 * k + 1] * cb[1]) + S[3 * k + 2] * cb[2] + p->U[k]) -
-               ca[k];
-        const double rb = aS[3 * k] * hb[0] + aS[3 * k + 1] * hb[1] + aS[3 * k + 2] * hb[2];
-        if (fabs(T[k]) - ha[k] - rb > pad)
-            return true;
-    }
-    for (int j = 0; j < 3; ++j) {
-        const double d = S[j] * T[0] + S[3 + j] * T[1] + S[6 + j] * T[2];
-        const double ra = aS[j] * ha[0] + aS[3 + j] * ha[1] + aS[6 + j] * ha[2];
-        const double rb = p->G[3 * j] * hb[0] + p->G[3 * j + 1] * hb[1] + p->G[3 * j + 2] * hb[2];
-        if (fabs(d) - ra - rb > pad)
-            return true;
-    }
-    /* xi = e_i x S^col_j = s: its components are -s_{i+2} at i+1 and
-     * s_{i+1} at i+2, exactly, 0 at i (d below is -xi.T); B's radius on
-     * it is the sum over m != j of hb_m |xi . S^col_m| =
-     * hb_m |(S^col_j x S^col_m)_i| (the m = j term is exactly 0). */
-#define TURNED_CROSS(i, i1, i2, j, j1, j2)                                              \
-    do {                                                                                \
-        const double d = S[3 * i2 + j] * T[i1] - S[3 * i1 + j] * T[i2];                 \
-        const double ra = ha[i1] * aS[3 * i2 + j] + ha[i2] * aS[3 * i1 + j];            \
-        const double rb = hb[j1] * p->X[i][j][j1] + hb[j2] * p->X[i][j][j2];            \
-        if (fabs(d) - ra - rb > pad)                                                    \
-            return true;                                                                \
-    } while (0)
-    if (!cross)
-        return false;
-    TURNED_CROSS(0, 1, 2, 0, 1, 2);
-    TURNED_CROSS(0, 1, 2, 1, 2, 0);
-    TURNED_CROSS(0, 1, 2, 2, 0, 1);
-    TURNED_CROSS(1, 2, 0, 0, 1, 2);
-    TURNED_CROSS(1, 2, 0, 1, 2, 0);
-    TURNED_CROSS(1, 2, 0, 2, 0, 1);
-    TURNED_CROSS(2, 0, 1, 0, 1, 2);
-    TURNED_CROSS(2, 0, 1, 1, 2, 0);
-    TURNED_CROSS(2, 0, 1, 2, 0, 1);
-#undef TURNED_CROSS
     return false;
 }
 
