@@ -34,6 +34,7 @@ noctree_sources = \
 	lib/narrowphase_point.c \
 	lib/narrowphase_query.c \
 	lib/narrowphase_swept.c \
+	lib/narrowphase_turned.c lib/turned.h \
 	lib/narrowphase_turning.c \
 	lib/neighbor.c \
 	lib/octree.c \

@@ -406,20 +406,79 @@ static double box_dist2_scaled(const bvh_node *na, const double ta[3], const bvh
     return s;
 }
 
+/* The bounding box of a placed (scaled) triangle. */
+static inline void tri_bounds(double x[3][3], double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = noct_min(x[0][k], noct_min(x[1][k], x[2][k]));
+        hi[k] = noct_max(x[0][k], noct_max(x[1][k], x[2][k]));
+    }
+}
+
 /* Squared distance between the bounding boxes of two placed (scaled)
- * triangles: a cheap bound below the pair's distance, within rounding. */
-static double tri_box_dist2(double x[3][3], double y[3][3])
+ * triangles (tri_bounds()): a cheap bound below the pair's distance,
+ * within rounding. */
+static inline double tri_box_dist2(const double xlo[3], const double xhi[3],
+                                   const double ylo[3], const double yhi[3])
 {
     double s = 0;
     for (int k = 0; k < 3; ++k) {
-        const double xlo = noct_min(x[0][k], noct_min(x[1][k], x[2][k]));
-        const double xhi = noct_max(x[0][k], noct_max(x[1][k], x[2][k]));
-        const double ylo = noct_min(y[0][k], noct_min(y[1][k], y[2][k]));
-        const double yhi = noct_max(y[0][k], noct_max(y[1][k], y[2][k]));
-        const double g = noct_max(noct_max(ylo - xhi, xlo - yhi), 0);
+        const double g = noct_max(noct_max(ylo[k] - xhi[k], xlo[k] - yhi[k]), 0);
         s += g * g;
     }
     return s;
+}
+
+/*
+ * A proved lower bound on the distance between two sets of placed
+ * (scaled) triangles x[0, nx) and y[0, ny) (a pair of leaves): their gap
+ * along u (the direction between their placed boxes' centres), proved as
+ * proved_gap() proves a pair's (any axis bounds the distance of disjoint
+ * sets from below; the allowance covers the projections' rounding, s
+ * bounding every coordinate), or 0.
+ */
+static double proved_gap_sets(const double u[3], double x[][3][3], uint32_t nx,
+                              double y[][3][3], uint32_t ny, double s)
+{
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+    if (!(l1 > 0))
+        return 0;
+    double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
+    for (uint32_t i = 0; i < nx; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double pa = noct_dot3(u, x[i][c]);
+            amax = noct_max(amax, pa);
+            amin = noct_min(amin, pa);
+        }
+    for (uint32_t j = 0; j < ny; ++j)
+        for (int c = 0; c < 3; ++c) {
+            const double pb = noct_dot3(u, y[j][c]);
+            bmax = noct_max(bmax, pb);
+            bmin = noct_min(bmin, pb);
+        }
+    /* as proved_gap(): each projection errs by at most 4 ulp of l1 s */
+    const double err = 0x1p-50 * l1 * s;
+    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
+    if (!(gap > 0))
+        return 0;
+    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    return gap / (n * (1 + 0x1p-48));
+}
+
+/* The direction between the placed (scaled) boxes' centres of nodes na
+ * and nb, and s, a bound on every coordinate of their placed (scaled)
+ * triangles (a placed box holds them exactly; scaling is exact). */
+static inline double leaf_axis(const bvh_node *na, const double ta[3], const bvh_node *nb,
+                               const double tb[3], double scale, double u[3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double alo = na->lo[k] + ta[k], ahi = na->hi[k] + ta[k];
+        const double blo = nb->lo[k] + tb[k], bhi = nb->hi[k] + tb[k];
+        u[k] = ((blo + bhi) - (alo + ahi)) * scale;
+        s = noct_max(s, noct_max(noct_max(fabs(alo), fabs(ahi)), noct_max(fabs(blo), fabs(bhi))));
+    }
+    return s * scale;
 }
 
 /* Triangle i of P, placed and scaled. */
@@ -431,6 +490,44 @@ static inline void placed_tri(const placed *P, uint32_t i, double scale, double 
             for (int k = 0; k < 3; ++k)
                 x[c][k] *= scale;
     }
+}
+
+/* A leaf's triangles the walks below place at once (a BVH leaf holds
+ * NOCT_BVH_LEAF, a box view's 12: they take it in chunks). */
+#define LEAF_CHUNK 16
+
+static inline uint32_t noct_min_u32(uint32_t a, uint32_t b)
+{
+    return a < b ? a : b;
+}
+
+/* The plane of triangle x: a normal n (not unit) and n.x[0] in n[3]. */
+static inline void tri_plane(double x[3][3], double n[4])
+{
+    double e1[3], e2[3];
+    noct_sub3(x[1], x[0], e1);
+    noct_sub3(x[2], x[0], e2);
+    noct_cross3(e1, e2, n);
+    n[3] = noct_dot3(n, x[0]);
+}
+
+/* The squared gap between the plane n and triangle y when y lies wholly
+ * on one side of it, else 0: in floating point, a cheap estimate from
+ * below of the pair's distance for the float search (nearest_search()),
+ * which proves nothing with it. */
+static inline double plane_gap2(const double n[4], double y[3][3])
+{
+    const double d0 = noct_dot3(n, y[0]) - n[3], d1 = noct_dot3(n, y[1]) - n[3],
+                 d2 = noct_dot3(n, y[2]) - n[3];
+    double g;
+    if (d0 > 0 && d1 > 0 && d2 > 0)
+        g = noct_min(d0, noct_min(d1, d2));
+    else if (d0 < 0 && d1 < 0 && d2 < 0)
+        g = -noct_max(d0, noct_max(d1, d2));
+    else
+        return 0;
+    const double nn = noct_dot3(n, n);
+    return nn > 0 ? g / nn * g : 0;
 }
 
 typedef struct node_pair {
@@ -471,23 +568,47 @@ static void nearest_search(dist_walk *w)
         ++w->nodes;
         const bvh_node *na = &A->m->nodes[e.a], *nb = &B->m->nodes[e.b];
         if (na->count > 0 && nb->count > 0) {
-            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                double x[3][3];
-                placed_tri(A, i, w->scale, x);
-                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
-                    double y[3][3], pa[3], pb[3];
-                    placed_tri(B, j, w->scale, y);
-                    if (tri_box_dist2(x, y) >= w->best2)
+            /* B's leaf in chunks (a box view's one leaf holds 12) */
+            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+                double y[LEAF_CHUNK][3][3], ny[LEAF_CHUNK][4];
+                double ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+                for (uint32_t j = 0; j < nj; ++j) {
+                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+                    tri_plane(y[j], ny[j]);
+                    tri_bounds(y[j], ylo[j], yhi[j]);
+                }
+                if (e.d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
+                    double xs[LEAF_CHUNK][3][3], u[3];
+                    for (uint32_t i = 0; i < na->count; ++i)
+                        placed_tri(A, na->first + i, w->scale, xs[i]);
+                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+                    if (g * g >= w->best2)
                         continue;
-                    ++w->pairs;
-                    const double d2 = tri_tri_nearest(x, y, pa, pb);
-                    if (d2 < w->best2) {
-                        w->best2 = d2;
-                        noct_copy3(pa, w->pa);
-                        noct_copy3(pb, w->pb);
-                        w->ia = i;
-                        w->ib = j;
-                        w->found = true;
+                }
+                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                    double x[3][3], nx[4], xlo[3], xhi[3];
+                    placed_tri(A, i, w->scale, x);
+                    tri_plane(x, nx);
+                    tri_bounds(x, xlo, xhi);
+                    for (uint32_t jj = 0; jj < nj; ++jj) {
+                        const uint32_t j = nb->first + j0 + jj;
+                        double pa[3], pb[3];
+                        if (tri_box_dist2(xlo, xhi, ylo[jj], yhi[jj]) >= w->best2 ||
+                            plane_gap2(nx, y[jj]) >= w->best2 ||
+                            plane_gap2(ny[jj], x) >= w->best2)
+                            continue;
+                        ++w->pairs;
+                        const double d2 = tri_tri_nearest(x, y[jj], pa, pb);
+                        if (d2 < w->best2) {
+                            w->best2 = d2;
+                            noct_copy3(pa, w->pa);
+                            noct_copy3(pb, w->pb);
+                            w->ia = i;
+                            w->ib = j;
+                            w->found = true;
+                        }
                     }
                 }
             }
@@ -535,19 +656,39 @@ static bool lower_search(dist_walk *w)
         const uint32_t ia = stack[top].a, ib = stack[top].b;
         const bvh_node *na = &A->m->nodes[ia], *nb = &B->m->nodes[ib];
         ++w->nodes;
-        if (box_dist2_scaled(na, A->t, nb, B->t, w->scale) > w->reach2)
+        const double d2 = box_dist2_scaled(na, A->t, nb, B->t, w->scale);
+        if (d2 > w->reach2)
             continue;
         if (na->count > 0 && nb->count > 0) {
-            for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                double x[3][3];
-                placed_tri(A, i, w->scale, x);
-                for (uint32_t j = nb->first; j < nb->first + nb->count; ++j) {
-                    double y[3][3];
-                    placed_tri(B, j, w->scale, y);
-                    if (tri_box_dist2(x, y) > w->reach2)
+            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+                double y[LEAF_CHUNK][3][3], ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+                for (uint32_t j = 0; j < nj; ++j) {
+                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+                    tri_bounds(y[j], ylo[j], yhi[j]);
+                }
+                /* the leaves' own gap first: beyond the reach, no pair
+                 * of them is within it */
+                if (d2 > 0 && na->count <= LEAF_CHUNK) {
+                    double xs[LEAF_CHUNK][3][3], u[3];
+                    for (uint32_t i = 0; i < na->count; ++i)
+                        placed_tri(A, na->first + i, w->scale, xs[i]);
+                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+                    if (g * g > w->reach2)
                         continue;
-                    ++w->pairs;
-                    w->lower = noct_min(w->lower, tri_tri_lower_bound_to(x, y, w->lower));
+                }
+                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+                    double x[3][3], xlo[3], xhi[3];
+                    placed_tri(A, i, w->scale, x);
+                    tri_bounds(x, xlo, xhi);
+                    for (uint32_t j = 0; j < nj; ++j) {
+                        if (tri_box_dist2(xlo, xhi, ylo[j], yhi[j]) > w->reach2)
+                            continue;
+                        ++w->pairs;
+                        w->lower =
+                            noct_min(w->lower, tri_tri_lower_bound_to(x, y[j], w->lower));
+                    }
                 }
             }
             continue;
@@ -1964,10 +2105,10 @@ noctStatus noctDistance(const noctMesh *a, const noctTransform *xa, const noctMe
     return st;
 }
 
-noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
-                                     const noctMesh *b, const noctTransform *xb,
-                                     double R[2][9], const bool turned[2],
-                                     bool *colliding, noctNarrowStats *stats, noctError *err)
+noctStatus noct_collide_exact_views(const noctMesh *a, const noctTransform *xa,
+                                    const noctMesh *b, const noctTransform *xb,
+                                    double R[2][9], const bool turned[2], bool *colliding,
+                                    noctNarrowStats *stats, noctError *err)
 {
     const noctMesh *m[2] = {a, b};
     noctMesh view[2], *rotated[2] = {NULL, NULL};

@@ -11,6 +11,9 @@
  *                           distance, and solids within one (the margin)
  *   narrowphase_point.c     a point's distance to a solid (the world's
  *                           point queries)
+ *   narrowphase_turned.c    the exact level on turned meshes in a relative
+ *                           frame (turned.h): oriented node boxes, lazily
+ *                           placed vertices, containment by a thin ray
  *   bvh.c, bvh.h            the bounding-volume hierarchies and their walks
  *
  * The exact primitives below decide every question by the sign of
@@ -244,14 +247,24 @@ typedef struct noct_dist_exact {
 } noct_dist_exact;
 
 /* noctCollideTransformed() at the exact level with at least one mesh
- * turned (R[i] its matrix where turned[i]): decided on rotated views of
- * the meshes (their vertices rotated, their hierarchies refitted) rather
- * than on rotated meshes made for the call; the same placed vertices, so
- * the same answer. */
+ * turned (R[i] its matrix where turned[i]): decided in A's frame
+ * (turned.h, narrowphase_turned.c): the hierarchies' boxes tested as
+ * oriented boxes, the vertices placed as triangle pairs read them; the
+ * same placed vertices, so the same answer. A mesh not turn_fine goes to
+ * noct_collide_exact_views(). */
 noctStatus noct_collide_exact_turned(const noctMesh *a, const noctTransform *xa,
                                      const noctMesh *b, const noctTransform *xb,
                                      double R[2][9], const bool turned[2],
                                      bool *colliding, noctNarrowStats *stats, noctError *err);
+
+/* The same decided on rotated views of the meshes (their vertices
+ * rotated, their hierarchies refitted; narrowphase_distance.c), or on
+ * rotated meshes where a rotated triangle comes near noctMeshCreate()'s
+ * tolerance (then a DEGENERATE rotated mesh fails the call). */
+noctStatus noct_collide_exact_views(const noctMesh *a, const noctTransform *xa,
+                                    const noctMesh *b, const noctTransform *xb,
+                                    double R[2][9], const bool turned[2], bool *colliding,
+                                    noctNarrowStats *stats, noctError *err);
 
 /* noctDistance() of two meshes placed at translations (already rotated,
  * or rotated views, as ex says; NULL: both made meshes). */

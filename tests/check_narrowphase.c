@@ -895,6 +895,244 @@ START_TEST(pieces_inside_another_solid)
 }
 END_TEST
 
+/* ---- turned pairs in a relative frame against meshes of placed vertices ------- */
+
+/* A mesh as vertices and triangles, for the turned pairs' tests. */
+typedef struct tmesh {
+    double *v;
+    size_t nv;
+    uint32_t *tri;
+    size_t nt;
+} tmesh;
+
+static void tmesh_free(tmesh *m)
+{
+    free(m->v);
+    free(m->tri);
+}
+
+/* A bumpy sphere: n around, r rings (poles apart), radius
+ * s (1 + 0.3 sin(3 theta) cos(4 phi)) (not convex); or, with bumps
+ * false, a box of half-extents s, s / 2, s / 3 (whose turned faces the
+ * node test's axes meet head on). Centred at c. */
+static tmesh make_tmesh(int n, int r, double s, bool bumps, const double c[3])
+{
+    tmesh m = {0};
+    if (!bumps) {
+        m.v = malloc(24 * sizeof *m.v);
+        m.tri = malloc(36 * sizeof *m.tri);
+        ck_assert(m.v != NULL && m.tri != NULL);
+        const double h[3] = {s, s / 2, s / 3};
+        for (int i = 0; i < 8; ++i)
+            for (int k = 0; k < 3; ++k)
+                m.v[3 * i + k] = c[k] + ((i >> (2 - k)) & 1 ? h[k] : -h[k]);
+        static const int quad[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                       {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+        for (int f = 0; f < 6; ++f) {
+            const uint32_t q[4] = {(uint32_t)quad[f][0], (uint32_t)quad[f][1],
+                                   (uint32_t)quad[f][2], (uint32_t)quad[f][3]};
+            const uint32_t t[6] = {q[0], q[1], q[2], q[0], q[2], q[3]};
+            memcpy(&m.tri[6 * f], t, sizeof t);
+        }
+        m.nv = 8;
+        m.nt = 12;
+        return m;
+    }
+    m.nv = (size_t)(n * (r - 1) + 2);
+    m.nt = (size_t)(2 * n * (r - 1));
+    m.v = malloc(3 * m.nv * sizeof *m.v);
+    m.tri = malloc(3 * m.nt * sizeof *m.tri);
+    ck_assert(m.v != NULL && m.tri != NULL);
+    const double pi = 3.14159265358979323846;
+    size_t nv = 0, nt = 0;
+    for (int i = 0; i <= r; ++i) {
+        const double th = pi * i / r;
+        for (int j = 0; j < ((i == 0 || i == r) ? 1 : n); ++j) {
+            const double ph = 2 * pi * j / n;
+            const double rad = s * (1 + 0.3 * sin(3 * th) * cos(4 * ph));
+            m.v[3 * nv] = c[0] + rad * sin(th) * cos(ph);
+            m.v[3 * nv + 1] = c[1] + rad * sin(th) * sin(ph);
+            m.v[3 * nv + 2] = c[2] + rad * cos(th);
+            ++nv;
+        }
+    }
+    const uint32_t south = (uint32_t)(m.nv - 1);
+    for (int i = 0; i < r - 1; ++i)
+        for (int j = 0; j < n; ++j) {
+            const uint32_t a = (uint32_t)(1 + i * n + j), b = (uint32_t)(1 + i * n + (j + 1) % n);
+            if (i == 0) {
+                const uint32_t t[3] = {0, a, b};
+                memcpy(&m.tri[3 * nt++], t, sizeof t);
+            }
+            if (i + 1 < r - 1) {
+                const uint32_t c2 = a + (uint32_t)n, d = b + (uint32_t)n;
+                const uint32_t t[6] = {a, c2, d, a, d, b};
+                memcpy(&m.tri[3 * nt], t, sizeof t);
+                nt += 2;
+            } else {
+                const uint32_t t[3] = {south, b, a};
+                memcpy(&m.tri[3 * nt++], t, sizeof t);
+            }
+        }
+    ck_assert_uint_eq(nt, m.nt);
+    return m;
+}
+
+/* The mesh of m's vertices, each turned by R as transform.h says,
+ * fl(fl(R0 v0 + R1 v1) + R2 v2) (R NULL: as they are). */
+static noctMesh *tmesh_made(const tmesh *m, const double *R)
+{
+    double *v = malloc(3 * m->nv * sizeof *v);
+    uint32_t *sizes = malloc(m->nt * sizeof *sizes);
+    ck_assert(v != NULL && sizes != NULL);
+    for (size_t i = 0; i < m->nv; ++i)
+        for (int k = 0; k < 3; ++k) {
+            const double *w = &m->v[3 * i];
+            v[3 * i + k] = R == NULL ? w[k]
+                                     : (R[3 * k] * w[0] + R[3 * k + 1] * w[1]) + R[3 * k + 2] * w[2];
+        }
+    for (size_t t = 0; t < m->nt; ++t)
+        sizes[t] = 3;
+    noctMesh *out = NULL;
+    noctError err;
+    const noctStatus st = noctMeshCreate(v, m->nv, sizes, m->nt, m->tri, &out, &err);
+    ck_assert_msg(st == NOCT_OK, "mesh: %s", st == NOCT_OK ? "" : err.message);
+    free(v);
+    free(sizes);
+    return out;
+}
+
+/* noctCollideTransformed() on the meshes (both orders) against noctCollide()
+ * on meshes made of their turned vertices, at the same translations. */
+static bool turned_agree(const noctMesh *A, const noctTransform *xa, const noctMesh *ra,
+                         const noctMesh *B, const noctTransform *xb, const noctMesh *rb,
+                         const char *what, int trial)
+{
+    const bool want = collide(ra, xa->p, rb, xb->p, NOCT_ACCURACY_EXACT);
+    bool got = !want;
+    ck_assert_int_eq(noctCollideTransformed(A, xa, B, xb, NOCT_ACCURACY_EXACT, &got, NULL, NULL),
+                     NOCT_OK);
+    ck_assert_msg(got == want, "%s trial %d: turned %d, placed meshes %d", what, trial, got,
+                  want);
+    ck_assert_int_eq(noctCollideTransformed(B, xb, A, xa, NOCT_ACCURACY_EXACT, &got, NULL, NULL),
+                     NOCT_OK);
+    ck_assert_msg(got == want, "%s trial %d (swapped): turned %d, placed meshes %d", what,
+                  trial, got, want);
+    return want;
+}
+
+/*
+ * The exact level on turned meshes (narrowphase_turned.c) decides in a
+ * relative frame, pruning node pairs by oriented boxes with an allowance
+ * for rounding, and reads the vertices it places lazily: its answers must
+ * be noctCollide()'s on meshes made of the placed vertices, exactly.
+ * _i = 0: random poses of two bumpy spheres (non-convex, deep
+ * hierarchies), sometimes one unturned; 1: grazing poses, found by
+ * bisecting the reference's answer along a direction to two adjacent
+ * translations that differ, for bumpy spheres and for boxes turned alike
+ * (face against face: the node test's own axes meet the contact head
+ * on), both sides of the flip tested; 2: a small sphere in a large one
+ * (containment, no boundary crossing) or near it; 3: _i 0's poses at an
+ * offset of 2^30, and at scales 2^-300 and 2^300.
+ */
+START_TEST(turned_pairs_match_placed_meshes)
+{
+    uint64_t rng = 777 + (uint64_t)_i;
+    int hits = 0, misses = 0, flips = 0;
+    const int trials = _i == 1 ? 40 : 60;
+    for (int trial = 0; trial < trials; ++trial) {
+        double scale = 1, off = 0;
+        if (_i == 3) {
+            const int kind = trial % 3;
+            off = kind == 0 ? 0x1p30 : 0;
+            scale = kind == 1 ? 0x1p-300 : kind == 2 ? 0x1p300 : 1;
+        }
+        const bool boxes = _i == 1 && trial % 2 == 1;
+        const double zero[3] = {0, 0, 0};
+        double ca[3] = {off, off, off};
+        tmesh ma = make_tmesh(12 + (int)test_rand_below(&rng, 20), 6 + (int)test_rand_below(&rng, 10),
+                              scale, !boxes, _i == 3 ? ca : zero);
+        const double sb = _i == 2 ? 0.2 * scale : scale * (0.5 + test_uniform(&rng));
+        tmesh mb = make_tmesh(10 + (int)test_rand_below(&rng, 20), 6 + (int)test_rand_below(&rng, 8),
+                              _i == 2 ? sb : sb, !boxes, zero);
+        if (_i == 2) { /* the large one three times the size */
+            for (size_t k = 0; k < 3 * ma.nv; ++k)
+                ma.v[k] *= 3;
+        }
+        noctMesh *A = tmesh_made(&ma, NULL), *B = tmesh_made(&mb, NULL);
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        if (boxes)
+            xb.q = xa.q; /* face against face */
+        else if (trial % 5 != 0)
+            test_random_quat(&rng, &xb.q);
+        double Ra[9], Rb[9];
+        ck_assert_int_eq(noctQuatToMatrix(&xa.q, Ra, NULL), NOCT_OK);
+        ck_assert_int_eq(noctQuatToMatrix(&xb.q, Rb, NULL), NOCT_OK);
+        /* A's centre, turned, brought back near 0 */
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = -(Ra[3 * k] + Ra[3 * k + 1] + Ra[3 * k + 2]) * off;
+        noctMesh *ra = tmesh_made(&ma, Ra), *rb = tmesh_made(&mb, Rb);
+        double dir[3];
+        if (boxes) { /* along A's first face normal */
+            for (int k = 0; k < 3; ++k)
+                dir[k] = Ra[3 * k];
+        } else {
+            double n2 = 0;
+            for (int k = 0; k < 3; ++k) {
+                dir[k] = test_uniform(&rng) - 0.5;
+                n2 += dir[k] * dir[k];
+            }
+            for (int k = 0; k < 3; ++k)
+                dir[k] /= sqrt(n2);
+        }
+        if (_i == 1) {
+            /* from coinciding centres (meeting) to 10 sizes apart */
+            double lo = 0, hi = 10 * scale;
+            for (int step = 0; step < 200; ++step) {
+                const double mid = lo + (hi - lo) / 2;
+                if (mid == lo || mid == hi)
+                    break;
+                for (int k = 0; k < 3; ++k)
+                    xb.p[k] = xa.p[k] + mid * dir[k];
+                if (collide(ra, xa.p, rb, xb.p, NOCT_ACCURACY_EXACT))
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            const double at[2] = {lo, hi};
+            for (int side = 0; side < 2; ++side) {
+                for (int k = 0; k < 3; ++k)
+                    xb.p[k] = xa.p[k] + at[side] * dir[k];
+                const bool want = turned_agree(A, &xa, ra, B, &xb, rb, "grazing", trial);
+                flips += want != (side == 1);
+                hits += want;
+                misses += !want;
+            }
+        } else {
+            const double spread = (_i == 2 ? 3.2 : 2.6) * scale;
+            for (int pose = 0; pose < 20; ++pose) {
+                for (int k = 0; k < 3; ++k)
+                    xb.p[k] = xa.p[k] + spread * (2 * test_uniform(&rng) - 1);
+                const bool want = turned_agree(A, &xa, ra, B, &xb, rb, "random", trial);
+                hits += want;
+                misses += !want;
+            }
+        }
+        noctMeshDestroy(A);
+        noctMeshDestroy(B);
+        noctMeshDestroy(ra);
+        noctMeshDestroy(rb);
+        tmesh_free(&ma);
+        tmesh_free(&mb);
+    }
+    ck_assert_int_gt(hits, 20);
+    ck_assert_int_gt(misses, 20);
+    if (_i == 1) /* the bisection ended on the flip every time */
+        ck_assert_int_eq(flips, 2 * trials);
+}
+END_TEST
+
 /* The convex level on hulls never misses a collision with real depth, and
  * on convex solids agrees with the exact level except within its
  * tolerance of touching. */
@@ -1940,6 +2178,7 @@ static Suite *narrowphase_suite(void)
     tcase_add_loop_test(tc, random_star_meshes_against_cones, 0, 4);
     tcase_add_loop_test(tc, turned_views_match_rotated_meshes, 0, 2);
     tcase_add_loop_test(tc, pieces_inside_another_solid, 0, 2);
+    tcase_add_loop_test(tc, turned_pairs_match_placed_meshes, 0, 4);
     tcase_add_test(tc, convex_level_one_sided);
 
     tc = test_case(s, "meshes and files", 0, NULL);

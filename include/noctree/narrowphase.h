@@ -169,10 +169,21 @@ NOCT_API noctStatus noctCollide(const noctMesh *a, const double ta[3],
  *
  * As noctCollide(), with each mesh rotated as well as translated: its
  * placed vertices are fl(fl(R v) + t) (transform.h). A mesh whose
- * rotation is the identity is used as it is; a rotated one is copied with
- * its vertices rotated (O(V log V) time and memory for V vertices, freed
- * before returning), so a program that tests one rotated mesh often
- * should rotate it once with noctMeshCreate() and call noctCollide().
+ * rotation is the identity is used as it is. At the exact level (and the
+ * continuous one, which has no motion here) no rotated copy is made: the
+ * two hierarchies' boxes are tested as oriented boxes in the first mesh's
+ * frame (with a proved allowance for rounding), a vertex is rotated and
+ * placed only when a pair of triangles reads it (into a per-thread cache,
+ * grown on first use and freed when the thread exits), and containment
+ * casts a thin ray down the hierarchy; so a call costs about what the
+ * walk visits, not the meshes' sizes (a few microseconds for turned
+ * meshes of thousands of triangles). Only a mesh that some rotation could
+ * bring near noctMeshCreate()'s tolerance (tiny triangles far from its
+ * origin) is still rotated whole and checked. At the box and convex
+ * levels a rotated mesh is copied with its vertices rotated (O(V log V)
+ * time and memory for V vertices, freed before returning), so a program
+ * that tests one rotated mesh often at those levels should rotate it once
+ * with noctMeshCreate() and call noctCollide().
  * @param[in]  a         The first mesh.
  * @param[in]  xa        Its transform.
  * @param[in]  b         The second mesh (may be @p a).
