@@ -88,11 +88,12 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
 /* The gap along u proved: (least of B's projections - greatest of A's,
  * less twice the rounding of either) over |u|, or 0; s bounds every
  * coordinate. */
-static double proved_gap(const double u[3], double a[3][3], double b[3][3], double s)
+static double proved_gap(const double axis[3], double a[3][3], double b[3][3], double s)
 {
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    if (!(l1 > 0))
+    double u[3];
+    if (!noct_gap_axis(axis, u))
         return 0;
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
     double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
     for (int i = 0; i < 3; ++i) {
         const double pa = noct_dot3(u, a[i]), pb = noct_dot3(u, b[i]);
@@ -101,14 +102,10 @@ static double proved_gap(const double u[3], double a[3][3], double b[3][3], doub
         bmax = noct_max(bmax, pb);
         bmin = noct_min(bmin, pb);
     }
-    /* each projection errs by at most 4 ulp of l1 s; the difference one
-     * more */
-    const double err = 0x1p-50 * l1 * s;
-    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
-    if (!(gap > 0))
-        return 0;
-    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    return gap / (n * (1 + 0x1p-48));
+    /* each projection errs by at most 4 ulp of l1 s (and NOCT_GAP_TINY
+     * where it underflows); the difference one more */
+    const double err = 0x1p-50 * l1 * s + NOCT_GAP_TINY;
+    return noct_gap_over(noct_max(bmin - amax, amin - bmax) - 2 * err, u);
 }
 
 /* The bound, or any proved bound of at least target once one axis gives
@@ -437,12 +434,13 @@ static inline double tri_box_dist2(const double xlo[3], const double xhi[3],
  * sets from below; the allowance covers the projections' rounding, s
  * bounding every coordinate), or 0.
  */
-static double proved_gap_sets(const double u[3], double x[][3][3], uint32_t nx,
+static double proved_gap_sets(const double axis[3], double x[][3][3], uint32_t nx,
                               double y[][3][3], uint32_t ny, double s)
 {
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    if (!(l1 > 0))
+    double u[3];
+    if (!noct_gap_axis(axis, u))
         return 0;
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
     double amax = -INFINITY, amin = INFINITY, bmax = -INFINITY, bmin = INFINITY;
     for (uint32_t i = 0; i < nx; ++i)
         for (int c = 0; c < 3; ++c) {
@@ -456,13 +454,10 @@ static double proved_gap_sets(const double u[3], double x[][3][3], uint32_t nx,
             bmax = noct_max(bmax, pb);
             bmin = noct_min(bmin, pb);
         }
-    /* as proved_gap(): each projection errs by at most 4 ulp of l1 s */
-    const double err = 0x1p-50 * l1 * s;
-    const double gap = noct_max(bmin - amax, amin - bmax) - 2 * err;
-    if (!(gap > 0))
-        return 0;
-    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    return gap / (n * (1 + 0x1p-48));
+    /* as proved_gap(): each projection errs by at most 4 ulp of l1 s,
+     * and NOCT_GAP_TINY */
+    const double err = 0x1p-50 * l1 * s + NOCT_GAP_TINY;
+    return noct_gap_over(noct_max(bmin - amax, amin - bmax) - 2 * err, u);
 }
 
 /* The direction between the placed (scaled) boxes' centres of nodes na
@@ -1305,21 +1300,20 @@ static bool set_first(const convex_set *a, const convex_set *b)
  * least of B's projections - the greatest of A's, less twice their
  * rounding) over |u|, or 0; s bounds every coordinate. Every closed solid
  * lies in the hull of its vertices, so it bounds their distance. */
-static double sets_gap(const double u[3], const convex_set *A, const convex_set *B, double s)
+static double sets_gap(const double axis[3], const convex_set *A, const convex_set *B,
+                       double s)
 {
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    if (!(l1 > 0))
+    double u[3];
+    if (!noct_gap_axis(axis, u))
         return 0;
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
     double amax = -INFINITY, bmin = INFINITY;
     for (size_t i = 0; i < A->n; ++i)
         amax = noct_max(amax, noct_dot3(u, &A->p[3 * i]));
     for (size_t i = 0; i < B->n; ++i)
         bmin = noct_min(bmin, noct_dot3(u, &B->p[3 * i]));
     /* each projection errs by at most 4 ulp of l1 s, as in proved_gap() */
-    const double gap = bmin - amax - 2 * (0x1p-50 * l1 * s);
-    if (!(gap > 0))
-        return 0;
-    return gap / (noct_norm3(u) * (1 + 0x1p-48));
+    return noct_gap_over(bmin - amax - 2 * (0x1p-50 * l1 * s + NOCT_GAP_TINY), u);
 }
 
 /* The axes of the features GJK ended on, turned towards v: the normal of

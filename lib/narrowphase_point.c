@@ -101,11 +101,12 @@ static void point_tri_nearest(const double p[3], double t[3][3], double out[3])
  * narrowphase_distance.c's proved_gap(): (the projections' gap less twice
  * an allowance for their rounding) over |u|, or 0; s bounds every
  * coordinate. */
-static double proved_gap(const double u[3], const double p[3], double t[3][3], double s)
+static double proved_gap(const double axis[3], const double p[3], double t[3][3], double s)
 {
-    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-    if (!(l1 > 0))
+    double u[3];
+    if (!noct_gap_axis(axis, u))
         return 0;
+    const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
     double tmax = -INFINITY, tmin = INFINITY;
     for (int i = 0; i < 3; ++i) {
         const double x = noct_dot3(u, t[i]);
@@ -113,14 +114,10 @@ static double proved_gap(const double u[3], const double p[3], double t[3][3], d
         tmin = noct_min(tmin, x);
     }
     const double pp = noct_dot3(u, p);
-    /* each projection errs by at most 4 ulp of l1 s; the difference one
-     * more */
-    const double err = 0x1p-50 * l1 * s;
-    const double gap = noct_max(pp - tmax, tmin - pp) - 2 * err;
-    if (!(gap > 0))
-        return 0;
-    const double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    return gap / (n * (1 + 0x1p-48));
+    /* each projection errs by at most 4 ulp of l1 s (and NOCT_GAP_TINY
+     * where it underflows); the difference one more */
+    const double err = 0x1p-50 * l1 * s + NOCT_GAP_TINY;
+    return noct_gap_over(noct_max(pp - tmax, tmin - pp) - 2 * err, u);
 }
 
 /* A proved lower bound on the distance from p to closed triangle t: the
@@ -289,10 +286,10 @@ static double hull_lower_bound(const point_walk *w, const double q[3])
         }
     double best = 0;
     for (int a = 0; a < 2; ++a) {
-        const double *u = axes[a];
-        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
-        if (!(l1 > 0))
+        double u[3];
+        if (!noct_gap_axis(axes[a], u))
             continue;
+        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
         double vmax = -INFINITY, vmin = INFINITY;
         for (size_t i = 0; i < m->nv; ++i) {
             const double y = noct_dot3(u, &pv[3 * i]);
@@ -300,9 +297,8 @@ static double hull_lower_bound(const point_walk *w, const double q[3])
             vmin = noct_min(vmin, y);
         }
         const double pp = noct_dot3(u, w->ps);
-        const double gap = noct_max(pp - vmax, vmin - pp) - 2 * (0x1p-50 * l1 * s);
-        if (gap > 0)
-            best = noct_max(best, gap / (noct_norm3(u) * (1 + 0x1p-48)));
+        const double gap = noct_max(pp - vmax, vmin - pp) - 2 * (0x1p-50 * l1 * s + NOCT_GAP_TINY);
+        best = noct_max(best, noct_gap_over(gap, u));
     }
     return best;
 }

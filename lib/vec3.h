@@ -7,6 +7,7 @@
 #ifndef NOCT_LIB_VEC3_H
 #define NOCT_LIB_VEC3_H
 
+#include <float.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -102,7 +103,6 @@ static inline double noct_max_abs3(const double a[3])
     return noct_max(fabs(a[0]), noct_max(fabs(a[1]), fabs(a[2])));
 }
 
-/* u = d / |d|, or 0 for d = 0, for d of any magnitude. */
 /* v scaled by the power of two that brings its largest component into
  * [1/2, 1) (exactly, but for parts under 2^-1022 of the largest); false
  * (out untouched) if v is 0. */
@@ -131,6 +131,43 @@ static inline bool noct_unit3(const double d[3], double u[3])
     for (int k = 0; k < 3; ++k)
         u[k] = x[k] / len;
     return true;
+}
+
+/*
+ * The proved gaps (the least distance of two point sets along an axis u,
+ * from their projections on u, less their rounding, over |u|) take u as
+ * it is when its largest component lies in [2^-400, 2^400], and scaled
+ * by a power of two into [1/2, 1) otherwise: then u.u is a normal double
+ * and |u| has only its own rounding, where a u of components under
+ * 2^-537 would make u.u 0 and a gap over it infinite. The projections
+ * may still underflow (points near the origin): NOCT_GAP_TINY, added to
+ * their allowance, covers the absolute error of subnormal products and
+ * sums, and noct_gap_over() gives 0 for gaps under 2^-1000, where its
+ * division's rounding would no longer be relative.
+ */
+#define NOCT_GAP_TINY 0x1p-1040
+
+/* The axis to project on (see above); false if u is 0 or not finite. */
+static inline bool noct_gap_axis(const double u[3], double axis[3])
+{
+    const double m = noct_max_abs3(u);
+    if (m >= 0x1p-400 && m <= 0x1p400) {
+        noct_copy3(u, axis);
+        return true;
+    }
+    if (!(m > 0 && m <= DBL_MAX))
+        return false;
+    return noct_scale_to_unit(u, axis);
+}
+
+/* A gap along axis (in units of |axis|, its allowance already taken off)
+ * over |axis|, rounded down: 0 if it is not above 2^-1000. */
+static inline double noct_gap_over(double gap, const double axis[3])
+{
+    if (!(gap > 0))
+        return 0;
+    const double q = gap / (noct_norm3(axis) * (1 + 0x1p-48));
+    return q >= 0x1p-1000 ? q : 0;
 }
 
 #endif /* NOCT_LIB_VEC3_H */

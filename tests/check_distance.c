@@ -1973,13 +1973,94 @@ START_TEST(points_against_boxes)
 }
 END_TEST
 
+/*
+ * A horn: a stack of square frusta along x, its tiny end a square of side
+ * h at x = x0 (corners (x0, 0..h, 0..h)), each next ring 2^20 times wider
+ * and that much further along dir, up to a side of 2^-100. Each triangle
+ * keeps a shape noctMeshCreate() accepts, but the tiny end's normal (h^2)
+ * is far below 2^-537, where its square underflows.
+ */
+static noctMesh *horn(double x0, double h, int dir)
+{
+    double v[3 * 4 * 16];
+    uint32_t sizes[2 + 4 * 15], idx[4 * (2 + 4 * 15)];
+    int nr = 0;
+    for (double side = h, x = x0;; x += dir * side) {
+        for (int c = 0; c < 4; ++c) {
+            v[3 * (4 * nr + c)] = x;
+            v[3 * (4 * nr + c) + 1] = (c == 1 || c == 2) ? side : 0;
+            v[3 * (4 * nr + c) + 2] = c >= 2 ? side : 0;
+        }
+        if (++nr == 16 || side >= 0x1p-100)
+            break;
+        side *= 0x1p20;
+    }
+    size_t np = 0, ni = 0;
+    for (int c = 0; c < 4; ++c) /* the tiny end looks along -dir */
+        idx[ni++] = (uint32_t)(dir < 0 ? c : 3 - c);
+    sizes[np++] = 4;
+    for (int c = 0; c < 4; ++c)
+        idx[ni++] = (uint32_t)(4 * (nr - 1) + (dir < 0 ? 3 - c : c));
+    sizes[np++] = 4;
+    for (uint32_t r = 0; r + 1 < (uint32_t)nr; ++r)
+        for (uint32_t c = 0; c < 4; ++c) {
+            const uint32_t a = 4 * r + c, b = 4 * r + (c + 1) % 4;
+            const uint32_t q[4] = {a, dir < 0 ? a + 4 : b, b + 4, dir < 0 ? b : a + 4};
+            for (int k = 0; k < 4; ++k)
+                idx[ni++] = q[k];
+            sizes[np++] = 4;
+        }
+    noctMesh *m = NULL;
+    noctError err;
+    ck_assert_msg(noctMeshCreate(v, 4 * (size_t)nr, sizes, np, idx, &m, &err) == NOCT_OK,
+                  "%s", err.message);
+    return m;
+}
+
+/* Two horns' tiny ends face to face, d apart (where B's vertices are
+ * exact): the distance is d exactly
+ * (the squares are parallel and over each other, every other part
+ * farther). The proved gaps along the tiny ends' normals once divided by
+ * a length whose square underflowed to 0 and "proved" a lower bound above
+ * d. */
+START_TEST(tiny_features_in_small_meshes)
+{
+    const noctTransform id = noctIdentityTransform();
+    int cases = 0;
+    for (int e = 200; e <= 300; e += 20) {
+        const double h = ldexp(1, -e);
+        for (int de = 105; de <= 200; de += 5) {
+            const double d = ldexp(1, -de);
+            if ((d + 0x1p20 * h) - d != 0x1p20 * h)
+                continue; /* B's first ring would round onto its tiny end */
+            noctMesh *a = horn(0, h, -1), *b = horn(d, h, 1);
+            noctDistanceResult r;
+            noctError err;
+            for (int swap = 0; swap < 2; ++swap) {
+                ck_assert_int_eq(noctDistance(swap ? b : a, &id, swap ? a : b, &id, INFINITY,
+                                              &r, NULL, &err),
+                                 NOCT_OK);
+                ck_assert_msg(r.lower <= d && d <= r.upper,
+                              "h 2^-%d, d 2^-%d: [%a, %a] misses %a", e, de, r.lower, r.upper,
+                              d);
+                ++cases;
+            }
+            noctMeshDestroy(a);
+            noctMeshDestroy(b);
+        }
+    }
+    ck_assert_int_ge(cases, 30);
+}
+END_TEST
+
 static Suite *distance_suite(void)
 {
     Suite *s = suite_create("distance");
     TCase *tc = test_case(s, "oracle", 60, NULL);
     add_tests(tc, oracle_against_sampling);
     tc = test_case(s, "hard cases", 120, NULL);
-    add_tests(tc, touching_and_gaps, vertex_face_and_crossed_edges, same_mesh_and_statuses);
+    add_tests(tc, touching_and_gaps, vertex_face_and_crossed_edges, same_mesh_and_statuses,
+              tiny_features_in_small_meshes);
     /* Each random test runs its cases from the seed _i: seed 0 here (under
      * valgrind too), more seeds in the slow case. */
     tc = test_case(s, "random against the oracle", 300, NULL);
