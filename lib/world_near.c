@@ -398,15 +398,10 @@ typedef struct near_key {
  * the other two axes turn away, are tested without reaching the boxes):
  * the box's lower corner on the sweep's axis, its lower and upper ones on
  * the next and on the last (copies: the same numbers, the same tests),
- * its index among the gathered, and on which axes its lower corner lies
- * below the sweeping leaf's cell (bit k for axis k). A pair whose boxes
- * both lie below it on an axis has its point P = max(lo_i, lo_j) below the
- * cell there, so the leaf does not own it (noct_cell_owns()): skipping it
- * early changes no candidate. */
+ * and its index among the gathered. */
 typedef struct near_run {
     double b[5];
-    uint32_t at;
-    unsigned below;
+    size_t at;
 } near_run;
 
 typedef struct near_sweep {
@@ -570,17 +565,18 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     sort_keys(key, n, key + n);
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
     /* the sweep's records in its order (see near_run); those below the
-     * leaf on the sweep's axis come first, up to `in` */
+     * leaf's cell on the sweep's axis come first, up to `in`. Two boxes
+     * below it on an axis have their point P = max(lo_i, lo_j) below the
+     * cell there, so the leaf owns no pair of them (noct_cell_owns()):
+     * a box before `in` is swept against the boxes from `in` on only,
+     * which changes no candidate. */
     near_run *run = s->run;
     size_t in = n;
     for (size_t a = 0; a < n; ++a) {
         const near_box *B = &g[key[a].at];
-        unsigned below = 0;
-        for (int k = 0; k < 3; ++k)
-            below |= (unsigned)(B->lo[k] < c->lo[k]) << k;
         run[a] = (near_run){{B->lo[ax], B->lo[k1], B->hi[k1], B->lo[k2], B->hi[k2]},
-                            (uint32_t)key[a].at, below};
-        if (in == n && !(below & (1u << ax)))
+                            key[a].at};
+        if (in == n && !(B->lo[ax] < c->lo[ax]))
             in = a;
     }
     const double R = s->R;
@@ -595,14 +591,11 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         const double limit = A->hi[ax] + R;
         const double up1 = A->hi[k1] + R, dn1 = A->lo[k1] - R;
         const double up2 = A->hi[k2] + R, dn2 = A->lo[k2] - R;
-        const unsigned mA = run[a].below;
-        /* a box below the leaf on the sweep's axis pairs only with those
-         * that are not (the run from `in` on) */
         for (size_t bi = a < in ? in : a + 1; bi < n; ++bi) {
             const near_run *r = &run[bi];
             if (r->b[0] > limit)
                 break;
-            if ((r->below & mA) | (r->b[1] > up1) | (r->b[2] < dn1) | (r->b[3] > up2) |
+            if ((r->b[1] > up1) | (r->b[2] < dn1) | (r->b[3] > up2) |
                 (r->b[4] < dn2))
                 continue;
             const near_box *B = &g[r->at];
