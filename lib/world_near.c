@@ -393,6 +393,17 @@ typedef struct near_key {
     size_t at;
 } near_key;
 
+/* A gathered box as the sweep reads it, its records side by side in the
+ * sweep's order (the pairs that meet on the sweep's axis, most of which
+ * the other two axes turn away, are tested without reaching the boxes):
+ * the box's lower corner on the sweep's axis, its lower and upper ones on
+ * the next and on the last (copies: the same numbers, the same tests),
+ * and its index among the gathered. */
+typedef struct near_run {
+    double b[5];
+    size_t at;
+} near_run;
+
 typedef struct near_sweep {
     noctWorld *w;
     const double *m; /* objects' own margins, or NULL */
@@ -405,6 +416,8 @@ typedef struct near_sweep {
     size_t capg, ng;
     near_key *key;   /* their order on the sweep's axis, and as many for the sort */
     size_t capkey;
+    near_run *run;   /* the sweep's records, in its order */
+    size_t caprun;
     uint32_t epoch;
     double qlo[3], qhi[3]; /* the gather box */
     double clo[3];         /* the sweeping leaf's lower corner */
@@ -518,6 +531,7 @@ static void sort_keys(near_key *k, size_t n, near_key *tmp)
 }
 
 NOCT_DEFINE_GROW(grow_near_key, near_key)
+NOCT_DEFINE_GROW(grow_near_run, near_run)
 
 /* Leaf c's candidate pairs, into s->cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
@@ -543,35 +557,48 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         return true;
     const near_box *g = s->g;
     const int ax = near_boxes_axis(g, n);
-    if (!grow_near_key(&s->key, &s->capkey, 2 * n))
+    if (!grow_near_key(&s->key, &s->capkey, 2 * n) || !grow_near_run(&s->run, &s->caprun, n))
         return false;
     near_key *key = s->key;
     for (size_t a = 0; a < n; ++a)
         key[a] = (near_key){g[a].lo[ax], a};
     sort_keys(key, n, key + n);
-    const double R = s->R;
     const int k1 = (ax + 1) % 3, k2 = (ax + 2) % 3;
+    /* the sweep's records in its order (see near_run); those below the
+     * leaf's cell on the sweep's axis come first, up to `in`. Two boxes
+     * below it on an axis have their point P = max(lo_i, lo_j) below the
+     * cell there, so the leaf owns no pair of them (noct_cell_owns()):
+     * a box before `in` is swept against the boxes from `in` on only,
+     * which changes no candidate. */
+    near_run *run = s->run;
+    size_t in = n;
     for (size_t a = 0; a < n; ++a) {
-        const near_box *A = &g[key[a].at];
+        const near_box *B = &g[key[a].at];
+        run[a] = (near_run){{B->lo[ax], B->lo[k1], B->hi[k1], B->lo[k2], B->hi[k2]},
+                            key[a].at};
+        if (in == n && !(B->lo[ax] < c->lo[ax]))
+            in = a;
+    }
+    const double R = s->R;
+    for (size_t a = 0; a < n; ++a) {
+        const near_box *A = &g[run[a].at];
         /* A's box grown by the reach: G and more than the candidate
          * test's roundings, whichever object grows (a box beyond it on
          * an axis is no candidate); R = G + 2^-48 S, for S bounding
          * every coordinate, is at least G + 2^-48 |x| for each, and so
          * (rounding being monotone) up and dn at least as far out as
          * with that */
-        double up[3], dn[3];
-        for (int k = 0; k < 3; ++k) {
-            up[k] = A->hi[k] + R;
-            dn[k] = A->lo[k] - R;
-        }
-        const double limit = up[ax];
-        for (size_t bi = a + 1; bi < n; ++bi) {
-            if (key[bi].lo > limit)
+        const double limit = A->hi[ax] + R;
+        const double up1 = A->hi[k1] + R, dn1 = A->lo[k1] - R;
+        const double up2 = A->hi[k2] + R, dn2 = A->lo[k2] - R;
+        for (size_t bi = a < in ? in : a + 1; bi < n; ++bi) {
+            const near_run *r = &run[bi];
+            if (r->b[0] > limit)
                 break;
-            const near_box *B = &g[key[bi].at];
-            if ((B->lo[k1] > up[k1]) | (B->hi[k1] < dn[k1]) | (B->lo[k2] > up[k2]) |
-                (B->hi[k2] < dn[k2]))
+            if ((r->b[1] > up1) | (r->b[2] < dn1) | (r->b[3] > up2) |
+                (r->b[4] < dn2))
                 continue;
+            const near_box *B = &g[r->at];
             const near_box *I = A->id < B->id ? A : B, *J = A->id < B->id ? B : A;
             const double gr = I->grow;
             if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
@@ -738,6 +765,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     free(s.g);
     free(s.key);
+    free(s.run);
     free(s.grow);
     free(s.cand.p);
     /* else each object by a scan of its leaves or a query */
