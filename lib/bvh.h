@@ -66,6 +66,18 @@ static inline bool noct_boxes_overlap(const double alo[3], const double ahi[3],
     return true;
 }
 
+/* Which node of a pair a walk splits: A's unless B's is the inner one
+ * and A's a leaf, or B's box is the larger (the sum of its extents). */
+static inline bool noct_bvh_split_a(const bvh_node *na, const bvh_node *nb)
+{
+    double sa = 0, sb = 0;
+    for (int k = 0; k < 3; ++k) {
+        sa += na->hi[k] - na->lo[k];
+        sb += nb->hi[k] - nb->lo[k];
+    }
+    return nb->count > 0 || (na->count == 0 && sa >= sb);
+}
+
 /* The pair walk's tests: prune says a pair of nodes holds nothing of
  * interest; pair decides a pair of placed triangles (A's triangle i, B's
  * triangle j, in BVH order), true to stop. */
@@ -115,12 +127,7 @@ static NOCT_ALWAYS_INLINE bool noct_bvh_pair_walk(const noct_placed_mesh *A,
             }
             continue;
         }
-        double sa = 0, sb = 0;
-        for (int k = 0; k < 3; ++k) {
-            sa += na->hi[k] - na->lo[k];
-            sb += nb->hi[k] - nb->lo[k];
-        }
-        const bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
+        const bool split_a = noct_bvh_split_a(na, nb);
         const uint32_t ia = stack[top].a, ib = stack[top].b;
         NOCT_INVARIANT(top + 2 <= NOCT_BVH_PAIR_STACK);
         if (top + 2 > NOCT_BVH_PAIR_STACK)

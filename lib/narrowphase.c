@@ -114,29 +114,9 @@ noctStatus noct_contains(const placed *B, const double p[3], const exact_ctx *x,
             noct_place_vertex(B, m->tri[3 * t], a);
             noct_place_vertex(B, m->tri[3 * t + 1], b);
             noct_place_vertex(B, m->tri[3 * t + 2], c);
-            int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
-            if (s1 == 0 && s2 == 0) {
-                bool flat = true;
-                for (int k = 0; k < 3 && flat; ++k)
-                    flat = o2(x, k, a, b, c) == 0;
-                ambiguous = !flat;
-                continue;
-            }
-            if (s2 == 0) {
-                ambiguous = true;
-                continue;
-            }
-            if (s1 == 0 || s1 == s2)
-                continue; /* p is on the plane but off the triangle */
-            int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c), e3 = o3(x, p, q, c, a);
-            bool pos = e1 >= 0 && e2 >= 0 && e3 >= 0;
-            bool neg = e1 <= 0 && e2 <= 0 && e3 <= 0;
-            if (pos || neg) {
-                if (e1 == 0 || e2 == 0 || e3 == 0)
-                    ambiguous = true; /* through an edge or a vertex */
-                else
-                    ++crossings;
-            }
+            const int r = noct_parity_step(x, p, q, a, b, c);
+            ambiguous = r < 0;
+            crossings += r > 0;
         }
         if (!ambiguous) {
             *inside = crossings % 2 == 1;

@@ -530,16 +530,6 @@ typedef struct node_pair {
     double d2;
 } node_pair;
 
-/* Which node of a pair the walks split: as noct_bvh_pair_walk() does. */
-static inline bool split_first(const bvh_node *na, const bvh_node *nb)
-{
-    double sa = 0, sb = 0;
-    for (int k = 0; k < 3; ++k) {
-        sa += na->hi[k] - na->lo[k];
-        sb += nb->hi[k] - nb->lo[k];
-    }
-    return nb->count > 0 || (na->count == 0 && sa >= sb);
-}
 
 /*
  * The float search for the nearest pair of triangles: a depth-first walk
@@ -610,7 +600,7 @@ static void nearest_search(dist_walk *w)
             continue;
         }
         node_pair c[2];
-        if (split_first(na, nb)) {
+        if (noct_bvh_split_a(na, nb)) {
             c[0] = (node_pair){na->first, e.b, 0};
             c[1] = (node_pair){na->first + 1, e.b, 0};
         } else {
@@ -690,7 +680,7 @@ static bool lower_search(dist_walk *w)
         }
         if (top + 2 > NOCT_BVH_PAIR_STACK)
             return false;
-        if (split_first(na, nb)) {
+        if (noct_bvh_split_a(na, nb)) {
             stack[top].a = na->first;     stack[top++].b = ib;
             stack[top].a = na->first + 1; stack[top++].b = ib;
         } else {

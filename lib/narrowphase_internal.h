@@ -111,6 +111,30 @@ static inline bool seg_seg_3d(const exact_ctx *x, const double p[3], const doubl
            noct_min(noct_max(p[axis], q[axis]), noct_max(a[axis], b[axis]));
 }
 
+/* One triangle abc of a parity count along segment pq, p off the solid's
+ * boundary and q outside its box (so off every triangle): 1 if pq
+ * crosses the triangle, 0 if not, -1 if the count is ambiguous (pq
+ * through an edge or a vertex, or lying in the plane of a triangle with
+ * area): then another q is tried. */
+static inline int noct_parity_step(const exact_ctx *x, const double p[3], const double q[3],
+                                   const double a[3], const double b[3], const double c[3])
+{
+    const int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
+    if (s1 == 0 && s2 == 0) {
+        for (int k = 0; k < 3; ++k)
+            if (o2(x, k, a, b, c) != 0)
+                return -1;
+        return 0; /* a collapsed triangle encloses nothing */
+    }
+    /* pq touches the plane at p or q alone, neither on the triangle */
+    if (s1 == 0 || s2 == 0 || s1 == s2)
+        return 0;
+    const int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c), e3 = o3(x, p, q, c, a);
+    if ((e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0))
+        return e1 == 0 || e2 == 0 || e3 == 0 ? -1 : 1;
+    return 0;
+}
+
 /* Closed segment pq meets closed triangle abc (any of them degenerate);
  * s1 and s2 are the signs of o3(a, b, c, p) and o3(a, b, c, q). */
 static inline bool seg_tri(const exact_ctx *x, const double p[3], const double q[3],

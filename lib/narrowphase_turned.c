@@ -297,12 +297,7 @@ static bool turned_boundaries_meet(turned_pair *p, const exact_ctx *x, noctNarro
             }
             continue;
         }
-        double sa = 0, sb = 0;
-        for (int k = 0; k < 3; ++k) {
-            sa += na->hi[k] - na->lo[k];
-            sb += nb->hi[k] - nb->lo[k];
-        }
-        const bool split_a = nb->count > 0 || (na->count == 0 && sa >= sb);
+        const bool split_a = noct_bvh_split_a(na, nb);
         NOCT_INVARIANT(top + 2 <= NOCT_BVH_PAIR_STACK);
         if (top + 2 > NOCT_BVH_PAIR_STACK) {
             met = true; /* the conservative answer */
@@ -444,30 +439,9 @@ static noctStatus turned_contains(turned_side *out, const double p[3], const exa
             for (uint32_t t = n->first; t < n->first + n->count && !ambiguous; ++t) {
                 double tr[3][3];
                 turned_triangle(out, t, tr);
-                const double *a = tr[0], *b = tr[1], *c = tr[2];
-                const int s1 = o3(x, a, b, c, p), s2 = o3(x, a, b, c, q);
-                if (s1 == 0 && s2 == 0) {
-                    bool flat = true;
-                    for (int k = 0; k < 3 && flat; ++k)
-                        flat = o2(x, k, a, b, c) == 0;
-                    ambiguous = !flat;
-                    continue;
-                }
-                /* the segment touches the plane at p or q alone, and
-                 * neither is on the triangle (p is off the boundary, q
-                 * outside the hull): no crossing */
-                if (s1 == 0 || s2 == 0 || s1 == s2)
-                    continue;
-                const int e1 = o3(x, p, q, a, b), e2 = o3(x, p, q, b, c),
-                          e3 = o3(x, p, q, c, a);
-                const bool pos = e1 >= 0 && e2 >= 0 && e3 >= 0;
-                const bool neg = e1 <= 0 && e2 <= 0 && e3 <= 0;
-                if (pos || neg) {
-                    if (e1 == 0 || e2 == 0 || e3 == 0)
-                        ambiguous = true; /* through an edge or a vertex */
-                    else
-                        ++crossings;
-                }
+                const int r = noct_parity_step(x, p, q, tr[0], tr[1], tr[2]);
+                ambiguous = r < 0;
+                crossings += r > 0;
             }
         }
         if (!ambiguous) {
