@@ -87,6 +87,12 @@ typedef struct box_dual {
      * e[j]. */
     uint8_t corner[8];
     uint8_t face[6][2];
+    /* The 8 vertices (+-h0, +-h1, +-h2) of a box about the origin
+     * (noctMeshCreateBox()'s, any order): sign[i] says vertex i's signs
+     * (bit 2: +h0, bit 1: +h1, bit 0: +h2), each sign once. The distance
+     * places such a box from 9 products (narrowphase_distance.c). */
+    bool about_origin;
+    uint8_t sign[8];
 } box_dual;
 
 /*
