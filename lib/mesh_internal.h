@@ -93,6 +93,13 @@ typedef struct box_dual {
      * places such a box from 9 products (narrowphase_distance.c). */
     bool about_origin;
     uint8_t sign[8];
+    /* (about_origin) axis j of the corners (corner 7 ^ 2^j to corner 7)
+     * is the mesh's axis frame_axis[j], the + side where bit j of
+     * frame_plus is set */
+    uint8_t frame_axis[3], frame_plus;
+    /* edges within a factor 10^6 of each other, dev within 2^-30 of the
+     * least half-edge (the distance's box_far_from_flat()) */
+    bool far_from_flat;
 } box_dual;
 
 /*

@@ -1264,15 +1264,7 @@ static bool rotated_fine(const noctMesh *m, const double *r)
  * tolerance, so rotated_fine() need not look. */
 static bool box_far_from_flat(const noctMesh *m)
 {
-    if (!m->has_dual)
-        return false;
-    double lo = INFINITY, hi = 0;
-    for (int i = 0; i < 3; ++i) {
-        const double n = noct_norm3(m->box.e[i]);
-        lo = noct_min(lo, n);
-        hi = noct_max(hi, n);
-    }
-    return lo > 1e-6 * hi && (double)m->box.dev <= 0x1p-30 * lo;
+    return m->has_dual && m->dual.far_from_flat; /* (box_form.c) */
 }
 
 /* Lexicographic order of the two placed sets: the canonical order of a
@@ -1533,21 +1525,17 @@ static bool box_frame_of(const convex_set *s, box_frame *f)
  * the placed vertices then prove. false if the corners are not so. */
 static bool box_frame_ideal(const convex_set *s, box_frame *f)
 {
-    if (!noct_box_topology(s->m, &f->corner, &f->face))
-        return false;
-    const unsigned c7 = s->sign[f->corner[7]];
-    unsigned used = 0;
+    const box_dual *x = &s->m->dual;
+    f->corner = x->corner;
+    f->face = (const uint8_t(*)[2])x->face;
+    const double *R = s->R;
     for (int j = 0; j < 3; ++j) {
-        const unsigned b = c7 ^ s->sign[f->corner[7 ^ (1u << j)]];
-        if ((b != 1 && b != 2 && b != 4) || (used & b))
-            return false;
-        used |= b;
-        const int l = b == 4 ? 0 : b == 2 ? 1 : 2;
-        const double sg = (c7 & b) ? 1 : -1;
-        if (s->R != NULL) {
-            f->u[j][0] = sg * s->R[l];
-            f->u[j][1] = sg * s->R[3 + l];
-            f->u[j][2] = sg * s->R[6 + l];
+        const int l = x->frame_axis[j];
+        const double sg = (x->frame_plus >> j) & 1u ? 1 : -1;
+        if (R != NULL) {
+            f->u[j][0] = sg * R[l];
+            f->u[j][1] = sg * R[3 + l];
+            f->u[j][2] = sg * R[6 + l];
         } else {
             f->u[j][0] = f->u[j][1] = f->u[j][2] = 0;
             f->u[j][l] = sg;
@@ -1580,17 +1568,43 @@ typedef struct box_feature {
 static bool corners_against(const double o[3], double E[3][3], const double h[3], double *best,
                             box_feature *mine, box_feature *its, double yb[3])
 {
-    double y[3][8], d2[8] = {0, 0, 0, 0, 0, 0, 0, 0}; /* y[k][p]: corner p's coordinate k */
+    /* (written out: the compiler keeps the 8 corners in registers) */
+    double y[3][8], d2[8];
     for (int k = 0; k < 3; ++k) {
         const double a0 = o[k] - E[0][k], a1 = o[k] + E[0][k];
-        const double b[4] = {a0 - E[1][k], a1 - E[1][k], a0 + E[1][k], a1 + E[1][k]};
-        for (int q = 0; q < 4; ++q) {
-            y[k][q] = b[q] - E[2][k];
-            y[k][q + 4] = b[q] + E[2][k];
-        }
-        for (int p = 0; p < 8; ++p) {
-            const double ex = noct_max(fabs(y[k][p]) - h[k], 0);
-            d2[p] += ex * ex;
+        const double b0 = a0 - E[1][k], b1 = a1 - E[1][k], b2 = a0 + E[1][k], b3 = a1 + E[1][k];
+        const double e2 = E[2][k], hk = h[k];
+        double *yk = y[k];
+        yk[0] = b0 - e2;
+        yk[1] = b1 - e2;
+        yk[2] = b2 - e2;
+        yk[3] = b3 - e2;
+        yk[4] = b0 + e2;
+        yk[5] = b1 + e2;
+        yk[6] = b2 + e2;
+        yk[7] = b3 + e2;
+        const double x0 = noct_max(fabs(yk[0]) - hk, 0), x1 = noct_max(fabs(yk[1]) - hk, 0);
+        const double x2 = noct_max(fabs(yk[2]) - hk, 0), x3 = noct_max(fabs(yk[3]) - hk, 0);
+        const double x4 = noct_max(fabs(yk[4]) - hk, 0), x5 = noct_max(fabs(yk[5]) - hk, 0);
+        const double x6 = noct_max(fabs(yk[6]) - hk, 0), x7 = noct_max(fabs(yk[7]) - hk, 0);
+        if (k == 0) {
+            d2[0] = x0 * x0;
+            d2[1] = x1 * x1;
+            d2[2] = x2 * x2;
+            d2[3] = x3 * x3;
+            d2[4] = x4 * x4;
+            d2[5] = x5 * x5;
+            d2[6] = x6 * x6;
+            d2[7] = x7 * x7;
+        } else {
+            d2[0] += x0 * x0;
+            d2[1] += x1 * x1;
+            d2[2] += x2 * x2;
+            d2[3] += x3 * x3;
+            d2[4] += x4 * x4;
+            d2[5] += x5 * x5;
+            d2[6] += x6 * x6;
+            d2[7] += x7 * x7;
         }
     }
     unsigned p = 0;
@@ -1640,6 +1654,8 @@ static bool corner_least(unsigned p, const double y[3], const double h[3], doubl
     return true;
 }
 
+static const int NEXT3[3] = {1, 2, 0};
+
 /* The nearest features of the ideal boxes A and B (fa on A, fb on B), or
  * false if a corner of one lies in the other. */
 static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa,
@@ -1675,7 +1691,7 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
         for (int j = 0; j < 3; ++j) {
             const double b[3] = {C[0][j], C[1][j], C[2][j]};
             double u[3] = {0, 0, 0};
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            const int i1 = NEXT3[i], i2 = NEXT3[i1];
             u[i1] = -b[i2];
             u[i2] = b[i1];
             if (!(u[i1] * u[i1] + u[i2] * u[i2] > 1e-12))
@@ -1685,7 +1701,7 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
                     u[k] = -u[k];
             /* A's edge: the corners' signs u_k on its other axes; B's:
              * against u.b_l on its own */
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const int j1 = NEXT3[j], j2 = NEXT3[j1];
             const double s1 = u[i1] > 0 ? 1 : -1, s2 = u[i2] > 0 ? 1 : -1;
             const double w1 = u[0] * C[0][j1] + u[1] * C[1][j1] + u[2] * C[2][j1];
             const double w2 = u[0] * C[0][j2] + u[1] * C[1][j2] + u[2] * C[2][j2];
@@ -1901,8 +1917,16 @@ static bool box_corners_placed(const noctMesh *m, const double *R, const double 
          * 2) + (sx == sz ? 0 : 1): -q0, -q1, -q2, -q3, q3, q2, q1, q0 */
         const double c[8] = {tk - q0, tk - q1, tk - q2, tk - q3,
                              tk + q3, tk + q2, tk + q1, tk + q0};
-        for (int i = 0; i < 8; ++i)
-            s->p[3 * i + k] = c[s->sign[i]];
+        const uint8_t *sg = s->sign;
+        double *p = s->p + k;
+        p[0] = c[sg[0]];
+        p[3] = c[sg[1]];
+        p[6] = c[sg[2]];
+        p[9] = c[sg[3]];
+        p[12] = c[sg[4]];
+        p[15] = c[sg[5]];
+        p[18] = c[sg[6]];
+        p[21] = c[sg[7]];
         const double M = noct_max(noct_max(fabs(q0), fabs(q1)), noct_max(fabs(q2), fabs(q3)));
         s->lo[k] = tk - M;
         s->hi[k] = tk + M;
