@@ -1674,17 +1674,19 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
             BE[j][k] = B->h[j] * C[k][j]; /* B's half-edge j in A's frame */
             AE[j][k] = A->h[j] * C[j][k]; /* A's half-edge j in B's frame */
         }
+    /* A corner already a pair of nearest points with what it reached:
+     * no other corner and no edge pair can be nearer, and the search
+     * stops (the float test only spares the search; the placed vertices
+     * prove whatever features it names). */
     double best = INFINITY, yb[3], ya[3];
     if (!corners_against(T, BE, A->h, &best, fb, fa, yb))
         return false;
+    if (corner_least(fb->base, yb, A->h, C, true))
+        return true;
     const double best_b = best;
     if (!corners_against(TB, AE, B->h, &best, fa, fb, ya))
         return false;
-    /* the nearest corner already a pair of nearest points: no edge pair
-     * can be nearer (the float test only spares the search; the placed
-     * vertices prove whatever features it names) */
-    if (best < best_b ? corner_least(fa->base, ya, B->h, C, false)
-                      : corner_least(fb->base, yb, A->h, C, true))
+    if (best < best_b && corner_least(fa->base, ya, B->h, C, false))
         return true;
     /* edge i of A against edge j of B, along u = a_i x b_j (A's frame) */
     for (int i = 0; i < 3; ++i)
