@@ -1517,12 +1517,13 @@ static bool box_frame_of(const convex_set *s, box_frame *f)
 }
 
 /* The frame of a box about its origin (s->ideal) from R, t and its
- * half-lengths rather than its placed vertices: axis j (from corner
- * 7 ^ 2^j to corner 7, which differ in one coordinate l of the mesh) is
- * +-R's column l, its half-length h_l, the centre t. The ideal box
- * {t + R y : |y_l| <= h_l} is within rounding of the placed vertices'
- * (box_corners_placed()); the frame only chooses the features, which
- * the placed vertices then prove. false if the corners are not so. */
+ * half-lengths rather than its placed vertices (no square roots): axis j
+ * (from corner 7 ^ 2^j to corner 7, which differ in the mesh's
+ * coordinate l = the dual's frame_axis[j]) is +-R's column l, its
+ * half-length h_l, the centre t. The ideal box {t + R y : |y_l| <= h_l}
+ * is within rounding of the placed vertices' (box_corners_placed()); the
+ * frame only chooses the features, which the placed vertices then
+ * prove. */
 static bool box_frame_ideal(const convex_set *s, box_frame *f)
 {
     const box_dual *x = &s->m->dual;
@@ -2008,10 +2009,10 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     convex_set s[2];
     bool ok = true;
     double mag = 0;
+    s[0].ideal = s[1].ideal = false;
     for (int i = 0; i < 2 && ok; ++i) {
         s[i].m = m[i];
         s[i].n = m[i]->nv;
-        s[i].ideal = false;
         if (s[i].n <= CONVEX_STACK_VERTICES) {
             s[i].p = stack_p[i];
         } else {
@@ -2047,7 +2048,8 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             mag = noct_max(mag, noct_max(fabs(s[i].lo[k]), fabs(s[i].hi[k])));
     }
     bool answered = false;
-    /* Two boxes whose placed boxes overlap deeply likely meet: the
+    /* Two boxes whose placed boxes overlap deeply likely meet: a centre
+     * proved inside both (boxes about their origins), else the
      * separating-axis proof on their box forms first; else only when GJK
      * could not answer and the placed boxes overlap. */
     const bool boxes = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8;
