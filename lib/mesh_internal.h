@@ -90,7 +90,8 @@ typedef struct box_dual {
     /* The 8 vertices (+-h0, +-h1, +-h2) of a box about the origin
      * (noctMeshCreateBox()'s, any order): sign[i] says vertex i's signs
      * (bit 2: +h0, bit 1: +h1, bit 0: +h2), each sign once. The distance
-     * places such a box from 9 products (narrowphase_distance.c). */
+     * places such a box from 9 products (narrowphase_distance.c). A
+     * copy of a mesh with other vertices (a rotated view) must clear it. */
     bool about_origin;
     uint8_t sign[8];
     /* (about_origin) axis j of the corners (corner 7 ^ 2^j to corner 7)

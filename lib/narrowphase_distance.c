@@ -1903,6 +1903,16 @@ static bool box_corners_placed(const noctMesh *m, const double *R, const double 
         return false;
     const double h0 = fabs(m->v[0]), h1 = fabs(m->v[1]), h2 = fabs(m->v[2]);
     s->sign = m->dual.sign;
+    /* (the dual describes m's own vertices: a copy of a mesh with other
+     * vertices, as rotated_view() makes, clears about_origin) */
+    for (int i = 0; i < 8; ++i) {
+        const double *v = &m->v[3 * i];
+        const unsigned c = s->sign[i];
+        NOCT_INVARIANT(v[0] == ((c & 4u) ? h0 : -h0) && v[1] == ((c & 2u) ? h1 : -h1) &&
+                       v[2] == ((c & 1u) ? h2 : -h2));
+        (void)v;
+        (void)c;
+    }
     double a[9] = {h0, 0, 0, 0, h1, 0, 0, 0, h2};
     if (R != NULL)
         for (int k = 0; k < 3; ++k) {
@@ -2160,6 +2170,7 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
     }
     *view = *m;
     view->v = v;
+    view->dual.about_origin = false; /* (its vertices are no longer (+-h)) */
     view->nodes = nodes;
     for (int k = 0; k < 3; ++k) {
         view->lo[k] = nodes[0].lo[k];
