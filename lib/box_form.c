@@ -139,6 +139,39 @@ void noct_box_form_of(const double *v, const double *const d[3], const uint32_t 
     x->eta = eta;
     x->gmax = gmax * (1 + 0x1p-50);
     x->shrink = float_above((2 * x->gmax * (double)b->dev + 8 * eta + 2e-15) * (1 + 0x1p-50));
+    /* a box about the origin: every vertex (+-h0, +-h1, +-h2), each sign
+     * pattern once */
+    unsigned signs = 0;
+    bool same = true;
+    for (int i = 0; i < 8; ++i) {
+        const double *p = &v[3 * i];
+        same = same && fabs(p[0]) == fabs(v[0]) && fabs(p[1]) == fabs(v[1]) &&
+               fabs(p[2]) == fabs(v[2]);
+        x->sign[i] = (uint8_t)((p[0] > 0 ? 4u : 0u) | (p[1] > 0 ? 2u : 0u) | (p[2] > 0 ? 1u : 0u));
+        signs |= 1u << x->sign[i];
+    }
+    x->about_origin = same && signs == 0xffu;
+    x->frame_plus = 0;
+    unsigned used = 0;
+    for (int j = 0; j < 3 && x->about_origin; ++j) {
+        const unsigned c7 = x->sign[x->corner[7]];
+        const unsigned bit = c7 ^ x->sign[x->corner[7 ^ (1u << j)]];
+        if ((bit != 1 && bit != 2 && bit != 4) || (used & bit)) {
+            x->about_origin = false;
+            break;
+        }
+        used |= bit;
+        x->frame_axis[j] = (uint8_t)(bit == 4 ? 0 : bit == 2 ? 1 : 2);
+        if (c7 & bit)
+            x->frame_plus |= (uint8_t)(1u << j);
+    }
+    double lo = INFINITY, hi = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double n = noct_norm3(b->e[i]);
+        lo = noct_min(lo, n);
+        hi = noct_max(hi, n);
+    }
+    x->far_from_flat = lo > 1e-6 * hi && (double)b->dev <= 0x1p-30 * lo;
     *has_dual = true;
 }
 

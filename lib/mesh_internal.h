@@ -87,6 +87,20 @@ typedef struct box_dual {
      * e[j]. */
     uint8_t corner[8];
     uint8_t face[6][2];
+    /* The 8 vertices (+-h0, +-h1, +-h2) of a box about the origin
+     * (noctMeshCreateBox()'s, any order): sign[i] says vertex i's signs
+     * (bit 2: +h0, bit 1: +h1, bit 0: +h2), each sign once. The distance
+     * places such a box from 9 products (narrowphase_distance.c). A
+     * copy of a mesh with other vertices (a rotated view) must clear it. */
+    bool about_origin;
+    uint8_t sign[8];
+    /* (about_origin) axis j of the corners (corner 7 ^ 2^j to corner 7)
+     * is the mesh's axis frame_axis[j], the + side where bit j of
+     * frame_plus is set */
+    uint8_t frame_axis[3], frame_plus;
+    /* edges within a factor 10^6 of each other, dev within 2^-30 of the
+     * least half-edge (the distance's box_far_from_flat()) */
+    bool far_from_flat;
 } box_dual;
 
 /*

@@ -984,6 +984,12 @@ typedef struct convex_set {
     double *p;      /* 3 m->nv */
     size_t n;
     double lo[3], hi[3]; /* the placed box (unscaled) */
+    /* a box about its origin (box_corners_placed()): its placed vertices
+     * are fl(fl(R v) + t) of v = (+-h0, +-h1, +-h2), R NULL for none */
+    bool ideal;
+    const double *R, *t;
+    double h[3];
+    const uint8_t *sign; /* vertex i's signs (box_dual's sign) */
 } convex_set;
 
 static size_t support(const convex_set *s, const double d[3])
@@ -1258,15 +1264,7 @@ static bool rotated_fine(const noctMesh *m, const double *r)
  * tolerance, so rotated_fine() need not look. */
 static bool box_far_from_flat(const noctMesh *m)
 {
-    if (!m->has_dual)
-        return false;
-    double lo = INFINITY, hi = 0;
-    for (int i = 0; i < 3; ++i) {
-        const double n = noct_norm3(m->box.e[i]);
-        lo = noct_min(lo, n);
-        hi = noct_max(hi, n);
-    }
-    return lo > 1e-6 * hi && (double)m->box.dev <= 0x1p-30 * lo;
+    return m->has_dual && m->dual.far_from_flat; /* (box_form.c) */
 }
 
 /* Lexicographic order of the two placed sets: the canonical order of a
@@ -1518,6 +1516,44 @@ static bool box_frame_of(const convex_set *s, box_frame *f)
            fabs(noct_dot3(f->u[1], f->u[2])) <= 1e-9;
 }
 
+/* The frame of a box about its origin (s->ideal) from R, t and its
+ * half-lengths rather than its placed vertices (no square roots): axis j
+ * (from corner 7 ^ 2^j to corner 7, which differ in the mesh's
+ * coordinate l = the dual's frame_axis[j]) is +-R's column l, its
+ * half-length h_l, the centre t. The ideal box {t + R y : |y_l| <= h_l}
+ * is within rounding of the placed vertices' (box_corners_placed()); the
+ * frame only chooses the features, which the placed vertices then
+ * prove. */
+static bool box_frame_ideal(const convex_set *s, box_frame *f)
+{
+    const box_dual *x = &s->m->dual;
+    f->corner = x->corner;
+    f->face = (const uint8_t(*)[2])x->face;
+    const double *R = s->R;
+    for (int j = 0; j < 3; ++j) {
+        const int l = x->frame_axis[j];
+        const double sg = (x->frame_plus >> j) & 1u ? 1 : -1;
+        if (R != NULL) {
+            f->u[j][0] = sg * R[l];
+            f->u[j][1] = sg * R[3 + l];
+            f->u[j][2] = sg * R[6 + l];
+        } else {
+            f->u[j][0] = f->u[j][1] = f->u[j][2] = 0;
+            f->u[j][l] = sg;
+        }
+        f->h[j] = s->h[l];
+    }
+    noct_copy3(s->t, f->c);
+    return true;
+}
+
+/* A box's frame: the ideal one for a box about its origin, else from its
+ * placed vertices. */
+static bool frame_of_box(const convex_set *s, box_frame *f)
+{
+    return s->ideal ? box_frame_ideal(s, f) : box_frame_of(s, f);
+}
+
 /* A feature of a box: the corners base + any sum of the bits of free
  * (free 0: a corner, one bit: an edge along that axis, two: a face). */
 typedef struct box_feature {
@@ -1531,19 +1567,45 @@ typedef struct box_feature {
  * reached); false if a corner lies in the other box or on it (the boxes
  * may meet). */
 static bool corners_against(const double o[3], double E[3][3], const double h[3], double *best,
-                            box_feature *mine, box_feature *its)
+                            box_feature *mine, box_feature *its, double yb[3])
 {
-    double y[3][8], d2[8] = {0, 0, 0, 0, 0, 0, 0, 0}; /* y[k][p]: corner p's coordinate k */
+    /* (written out: the compiler keeps the 8 corners in registers) */
+    double y[3][8], d2[8];
     for (int k = 0; k < 3; ++k) {
         const double a0 = o[k] - E[0][k], a1 = o[k] + E[0][k];
-        const double b[4] = {a0 - E[1][k], a1 - E[1][k], a0 + E[1][k], a1 + E[1][k]};
-        for (int q = 0; q < 4; ++q) {
-            y[k][q] = b[q] - E[2][k];
-            y[k][q + 4] = b[q] + E[2][k];
-        }
-        for (int p = 0; p < 8; ++p) {
-            const double ex = noct_max(fabs(y[k][p]) - h[k], 0);
-            d2[p] += ex * ex;
+        const double b0 = a0 - E[1][k], b1 = a1 - E[1][k], b2 = a0 + E[1][k], b3 = a1 + E[1][k];
+        const double e2 = E[2][k], hk = h[k];
+        double *yk = y[k];
+        yk[0] = b0 - e2;
+        yk[1] = b1 - e2;
+        yk[2] = b2 - e2;
+        yk[3] = b3 - e2;
+        yk[4] = b0 + e2;
+        yk[5] = b1 + e2;
+        yk[6] = b2 + e2;
+        yk[7] = b3 + e2;
+        const double x0 = noct_max(fabs(yk[0]) - hk, 0), x1 = noct_max(fabs(yk[1]) - hk, 0);
+        const double x2 = noct_max(fabs(yk[2]) - hk, 0), x3 = noct_max(fabs(yk[3]) - hk, 0);
+        const double x4 = noct_max(fabs(yk[4]) - hk, 0), x5 = noct_max(fabs(yk[5]) - hk, 0);
+        const double x6 = noct_max(fabs(yk[6]) - hk, 0), x7 = noct_max(fabs(yk[7]) - hk, 0);
+        if (k == 0) {
+            d2[0] = x0 * x0;
+            d2[1] = x1 * x1;
+            d2[2] = x2 * x2;
+            d2[3] = x3 * x3;
+            d2[4] = x4 * x4;
+            d2[5] = x5 * x5;
+            d2[6] = x6 * x6;
+            d2[7] = x7 * x7;
+        } else {
+            d2[0] += x0 * x0;
+            d2[1] += x1 * x1;
+            d2[2] += x2 * x2;
+            d2[3] += x3 * x3;
+            d2[4] += x4 * x4;
+            d2[5] += x5 * x5;
+            d2[6] += x6 * x6;
+            d2[7] += x7 * x7;
         }
     }
     unsigned p = 0;
@@ -1563,9 +1625,37 @@ static bool corners_against(const double o[3], double E[3][3], const double h[3]
         }
         *mine = (box_feature){p, 0};
         *its = (box_feature){base, free};
+        for (int k = 0; k < 3; ++k)
+            yb[k] = y[k][p];
     }
     return true;
 }
+
+/* Is corner p of a box (its axes' coordinates in the other box's frame
+ * ax(j) = (X[0][j], X[1][j], X[2][j]) when by_column, else row j) the
+ * nearest point of its box to the point q the clamp of its coordinates
+ * y to the other's half-lengths h reached? It is when p is least along
+ * r = y - q: bit j of p set (the + side of axis j) where r.ax(j) <= 0,
+ * clear where >= 0. Then q (the nearest point of the other box to p) and
+ * p are a pair of nearest points of the two boxes (each the nearest of
+ * its box to the other: the plane through q normal to r separates them
+ * with their distance), and no pair of edges is nearer. */
+static bool corner_least(unsigned p, const double y[3], const double h[3], double X[3][3],
+                         bool by_column)
+{
+    double r[3];
+    for (int k = 0; k < 3; ++k)
+        r[k] = y[k] - noct_clamp(y[k], -h[k], h[k]);
+    for (int j = 0; j < 3; ++j) {
+        const double sj = by_column ? r[0] * X[0][j] + r[1] * X[1][j] + r[2] * X[2][j]
+                                    : r[0] * X[j][0] + r[1] * X[j][1] + r[2] * X[j][2];
+        if ((p >> j) & 1u ? sj > 0 : sj < 0)
+            return false;
+    }
+    return true;
+}
+
+static const int NEXT3[3] = {1, 2, 0};
 
 /* The nearest features of the ideal boxes A and B (fa on A, fb on B), or
  * false if a corner of one lies in the other. */
@@ -1585,16 +1675,26 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
             BE[j][k] = B->h[j] * C[k][j]; /* B's half-edge j in A's frame */
             AE[j][k] = A->h[j] * C[j][k]; /* A's half-edge j in B's frame */
         }
-    double best = INFINITY;
-    if (!corners_against(T, BE, A->h, &best, fb, fa) ||
-        !corners_against(TB, AE, B->h, &best, fa, fb))
+    /* A corner already a pair of nearest points with what it reached:
+     * no other corner and no edge pair can be nearer, and the search
+     * stops (the float test only spares the search; the placed vertices
+     * prove whatever features it names). */
+    double best = INFINITY, yb[3], ya[3];
+    if (!corners_against(T, BE, A->h, &best, fb, fa, yb))
         return false;
+    if (corner_least(fb->base, yb, A->h, C, true))
+        return true;
+    const double best_b = best;
+    if (!corners_against(TB, AE, B->h, &best, fa, fb, ya))
+        return false;
+    if (best < best_b && corner_least(fa->base, ya, B->h, C, false))
+        return true;
     /* edge i of A against edge j of B, along u = a_i x b_j (A's frame) */
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             const double b[3] = {C[0][j], C[1][j], C[2][j]};
             double u[3] = {0, 0, 0};
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            const int i1 = NEXT3[i], i2 = NEXT3[i1];
             u[i1] = -b[i2];
             u[i2] = b[i1];
             if (!(u[i1] * u[i1] + u[i2] * u[i2] > 1e-12))
@@ -1604,7 +1704,7 @@ static bool box_features(const box_frame *A, const box_frame *B, box_feature *fa
                     u[k] = -u[k];
             /* A's edge: the corners' signs u_k on its other axes; B's:
              * against u.b_l on its own */
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const int j1 = NEXT3[j], j2 = NEXT3[j1];
             const double s1 = u[i1] > 0 ? 1 : -1, s2 = u[i2] > 0 ? 1 : -1;
             const double w1 = u[0] * C[0][j1] + u[1] * C[1][j1] + u[2] * C[2][j1];
             const double w2 = u[0] * C[0][j2] + u[1] * C[1][j2] + u[2] * C[2][j2];
@@ -1714,7 +1814,7 @@ static bool boxes_distance(const convex_set *A, const convex_set *B, double mag,
 {
     box_frame fa, fb;
     box_feature xa, xb;
-    if (!box_frame_of(A, &fa) || !box_frame_of(B, &fb) || !box_features(&fa, &fb, &xa, &xb))
+    if (!frame_of_box(A, &fa) || !frame_of_box(B, &fb) || !box_features(&fa, &fb, &xa, &xb))
         return false;
     double qa[3], qb[3];
     uint32_t ta, tb;
@@ -1739,9 +1839,9 @@ static bool boxes_distance(const convex_set *A, const convex_set *B, double mag,
     if (!(d > 0))
         return false;
     const double allow = 0x1p-47 * mag;
-    double s = 0;
-    for (size_t i = 0; i < 8; ++i)
-        s = noct_max(s, noct_max(noct_max_abs3(&A->p[3 * i]), noct_max_abs3(&B->p[3 * i])));
+    /* (mag: the largest magnitude of a placed coordinate, from the
+     * placed boxes) */
+    const double s = mag;
     const double upper = d * (1 + 0x1p-50) + 2 * allow;
     const double width = 0x1p-41 * noct_max(mag, upper);
     double lower = sets_gap(v, A, B, s);
@@ -1787,44 +1887,126 @@ static bool boxes_distance(const convex_set *A, const convex_set *B, double mag,
 
 /* The placed vertices fl(fl(R v) + t) of a mesh of 8 vertices (+-h0,
  * +-h1, +-h2), a box about its origin (noctMeshCreateBox()'s), into s,
- * with its placed box, from the 9 products R_kl h_l: fl(R_kl (-h_l)) =
- * -fl(R_kl h_l) (and a product by +-1 is exact), so the sums, in
- * noct_rotate()'s order, give its vertices bit for bit. false for another
- * mesh. */
-static bool box_corners_placed(const noctMesh *m, const double R[9], const double t[3],
+ * with its placed box, from the 9 products R_kl h_l (R NULL: none, the
+ * vertices fl(v + t)). fl(R_kl (-h_l)) = -fl(R_kl h_l) and, rounding
+ * being symmetric, fl(-x - y) = -fl(x + y): so coordinate k of every
+ * corner, in noct_rotate()'s order ((R_k0 v0 + R_k1 v1) + R_k2 v2) + t_k,
+ * is +-one of the four sums fl(fl(a0 +- a1) +- a2) (a_l = fl(R_kl h_l))
+ * plus t_k, bit for bit: 14 additions a coordinate instead of 24. The
+ * least and greatest coordinates are fl(t_k -+ M) for M the largest of
+ * the four sums' magnitudes (x -> fl(x + t_k) is monotonic). false for
+ * another mesh (one whose dual is not about_origin: box_form.c). */
+static bool box_corners_placed(const noctMesh *m, const double *R, const double t[3],
                                convex_set *s)
 {
-    if (m->nv != 8)
+    if (m->nv != 8 || !m->has_dual || !m->dual.about_origin)
         return false;
     const double h0 = fabs(m->v[0]), h1 = fabs(m->v[1]), h2 = fabs(m->v[2]);
-    for (int i = 1; i < 8; ++i) {
-        const double *v = &m->v[3 * i];
-        if (fabs(v[0]) != h0 || fabs(v[1]) != h1 || fabs(v[2]) != h2)
-            return false;
-    }
-    double a[9];
-    for (int k = 0; k < 3; ++k) {
-        volatile double x = R[3 * k] * h0, y = R[3 * k + 1] * h1, z = R[3 * k + 2] * h2;
-        a[3 * k] = x;
-        a[3 * k + 1] = y;
-        a[3 * k + 2] = z;
-    }
-    for (int k = 0; k < 3; ++k) {
-        s->lo[k] = INFINITY;
-        s->hi[k] = -INFINITY;
-    }
+    s->sign = m->dual.sign;
+    /* (the dual describes m's own vertices: a copy of a mesh with other
+     * vertices, as rotated_view() makes, clears about_origin) */
     for (int i = 0; i < 8; ++i) {
         const double *v = &m->v[3 * i];
-        const double sx = v[0] < 0 ? -1.0 : 1.0, sy = v[1] < 0 ? -1.0 : 1.0,
-                     sz = v[2] < 0 ? -1.0 : 1.0;
+        const unsigned c = s->sign[i];
+        NOCT_INVARIANT(v[0] == ((c & 4u) ? h0 : -h0) && v[1] == ((c & 2u) ? h1 : -h1) &&
+                       v[2] == ((c & 1u) ? h2 : -h2));
+        (void)v;
+        (void)c;
+    }
+    double a[9] = {h0, 0, 0, 0, h1, 0, 0, 0, h2};
+    if (R != NULL)
         for (int k = 0; k < 3; ++k) {
-            const double c = ((sx * a[3 * k] + sy * a[3 * k + 1]) + sz * a[3 * k + 2]) + t[k];
-            s->p[3 * i + k] = c;
-            s->lo[k] = noct_min(s->lo[k], c);
-            s->hi[k] = noct_max(s->hi[k], c);
+            volatile double x = R[3 * k] * h0, y = R[3 * k + 1] * h1, z = R[3 * k + 2] * h2;
+            a[3 * k] = x;
+            a[3 * k + 1] = y;
+            a[3 * k + 2] = z;
         }
+    for (int k = 0; k < 3; ++k) {
+        const double pp = a[3 * k] + a[3 * k + 1], pm = a[3 * k] - a[3 * k + 1];
+        const double a2 = a[3 * k + 2], tk = t[k];
+        const double q0 = pp + a2, q1 = pp - a2, q2 = pm + a2, q3 = pm - a2;
+        /* corner c (bit 2: +h0, bit 1: +h1, bit 0: +h2): with sx, sy, sz
+         * its signs, fl(fl(sx a0 + sy a1) + sz a2) = sx q_(sx == sy ? 0 :
+         * 2) + (sx == sz ? 0 : 1): -q0, -q1, -q2, -q3, q3, q2, q1, q0 */
+        const double c[8] = {tk - q0, tk - q1, tk - q2, tk - q3,
+                             tk + q3, tk + q2, tk + q1, tk + q0};
+        const uint8_t *sg = s->sign;
+        double *p = s->p + k;
+        p[0] = c[sg[0]];
+        p[3] = c[sg[1]];
+        p[6] = c[sg[2]];
+        p[9] = c[sg[3]];
+        p[12] = c[sg[4]];
+        p[15] = c[sg[5]];
+        p[18] = c[sg[6]];
+        p[21] = c[sg[7]];
+        const double M = noct_max(noct_max(fabs(q0), fabs(q1)), noct_max(fabs(q2), fabs(q3)));
+        s->lo[k] = tk - M;
+        s->hi[k] = tk + M;
+    }
+    s->ideal = true;
+    s->R = R;
+    s->t = t;
+    s->h[0] = h0;
+    s->h[1] = h1;
+    s->h[2] = h2;
+    return true;
+}
+
+/*
+ * Is the point x proved inside the solid of s, a box about its origin
+ * placed by R and t (s->ideal)? A floating-point test with its rounding
+ * bounded, sound as follows. Let B* = {t + R y : |y_l| <= h_l} be the
+ * ideal box of the float matrix R (its entries, from a unit quaternion
+ * as noctQuatToMatrix() rounds and snaps them, within 2^-43 of an
+ * orthogonal Q's, so ||R - Q|| < 2^-41 and ||R^T - R^-1|| < 2^-39) and
+ * S = h0 + h1 + h2, T = max |t_k|.
+ *  (1) Each placed vertex fl(fl(R v) + t) is within d = 2^-50 (S + T) +
+ *      2^-1070 of R v + t in each coordinate (three products and two
+ *      sums, then the sum with t: under 6 u (S + T), plus an absolute
+ *      2^-1074 an operation for underflow), so within 2 d in length.
+ *  (2) Moving each vertex on the straight line from R v + t to its placed
+ *      point moves every point of the surface (the mesh's triangles, all
+ *      on B*'s faces, a dual's) by at most 2 d; a point farther than 2 d
+ *      from B*'s boundary is never crossed, so its winding number about
+ *      the placed surface is its winding number about B*'s: 1 inside
+ *      B*. x is then inside the placed solid.
+ *  (3) y = R^-1 (x - t) is computed as fl(R^T fl(x - t)): within
+ *      2^-38 D of it in each coordinate, D = |d_0| + |d_1| + |d_2| of the
+ *      computed difference d (R^T for R^-1: 2^-39 |d|; the difference's
+ *      and the sums' rounding: under 6 u D), plus 2^-1070 for underflow.
+ *      If |y_l| <= h_l - m for every l, the ball of radius m (1 - 2^-41)
+ *      about x lies in B*, so x is farther than m / 2 from its boundary.
+ *  So |fl(y_l)| + 2^-38 D + 4 d < h_l for every l proves x inside. The
+ *  test adds slack = 2^-36 (D + S + T) + 2^-1000 > 2^-38 D + 4 d + 2^-1069,
+ *  which also covers the rounding of fl(|y_l| + slack) (at most 2 u h_l
+ *  where it matters, below 2^-37 S).
+ */
+static bool ideal_box_holds(const convex_set *s, const double x[3])
+{
+    double d[3];
+    noct_sub3(x, s->t, d);
+    const double D = fabs(d[0]) + fabs(d[1]) + fabs(d[2]);
+    const double T = noct_max(fabs(s->t[0]), noct_max(fabs(s->t[1]), fabs(s->t[2])));
+    const double slack = 0x1p-36 * (D + (s->h[0] + s->h[1] + s->h[2]) + T) + 0x1p-1000;
+    for (int l = 0; l < 3; ++l) {
+        const double *R = s->R;
+        const double y = R != NULL ? R[l] * d[0] + R[3 + l] * d[1] + R[6 + l] * d[2] : d[l];
+        if (!(fabs(y) + slack < s->h[l]))
+            return false;
     }
     return true;
+}
+
+/* Two boxes about their origins (both s[i].ideal): is a point proved
+ * inside both solids (ideal_box_holds()), either's centre t? Then they
+ * meet. */
+static bool ideal_boxes_meet(const convex_set s[2])
+{
+    for (int i = 0; i < 2; ++i)
+        if (ideal_box_holds(&s[0], s[i].t) && ideal_box_holds(&s[1], s[i].t))
+            return true;
+    return false;
 }
 
 /* The convex path of noctDistance(): true if it answered. */
@@ -1837,6 +2019,7 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     convex_set s[2];
     bool ok = true;
     double mag = 0;
+    s[0].ideal = s[1].ideal = false;
     for (int i = 0; i < 2 && ok; ++i) {
         s[i].m = m[i];
         s[i].n = m[i]->nv;
@@ -1848,8 +2031,8 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             if (!ok)
                 break;
         }
-        if (turned[i] && box_far_from_flat(m[i]) &&
-            box_corners_placed(m[i], R[i], x[i]->p, &s[i])) {
+        if (s[i].n == 8 && box_far_from_flat(m[i]) &&
+            box_corners_placed(m[i], turned[i] ? R[i] : NULL, x[i]->p, &s[i])) {
             ok = true;
         } else {
             for (size_t j = 0; j < s[i].n; ++j) {
@@ -1875,7 +2058,8 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
             mag = noct_max(mag, noct_max(fabs(s[i].lo[k]), fabs(s[i].hi[k])));
     }
     bool answered = false;
-    /* Two boxes whose placed boxes overlap deeply likely meet: the
+    /* Two boxes whose placed boxes overlap deeply likely meet: a centre
+     * proved inside both (boxes about their origins), else the
      * separating-axis proof on their box forms first; else only when GJK
      * could not answer and the placed boxes overlap. */
     const bool boxes = ok && m[0]->has_dual && m[1]->has_dual && s[0].n == 8 && s[1].n == 8;
@@ -1887,7 +2071,13 @@ static bool convex_path(const noctMesh *m[2], double R[2][9], const bool turned[
     const bool box_like = ok && s[0].n == 8 && s[1].n == 8 &&
                           noct_box_topology(m[0], &corner, &face) &&
                           noct_box_topology(m[1], &corner, &face);
-    if (overlap == 2 && boxes_proved_meeting(s, R, turned, x)) {
+    /* Two boxes about their origins whose placed boxes overlap: either's
+     * centre proved inside both (ideal_boxes_meet(), a few products)
+     * before the separating-axis proof on their turned forms. */
+    bool meet = overlap != 0 && s[0].ideal && s[1].ideal && ideal_boxes_meet(s);
+    if (!meet && overlap == 2)
+        meet = boxes_proved_meeting(s, R, turned, x);
+    if (meet) {
         set_colliding_sets(r, s);
         if (stats)
             ++stats->witnesses;
@@ -1980,6 +2170,7 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
     }
     *view = *m;
     view->v = v;
+    view->dual.about_origin = false; /* (its vertices are no longer (+-h)) */
     view->nodes = nodes;
     for (int k = 0; k < 3; ++k) {
         view->lo[k] = nodes[0].lo[k];

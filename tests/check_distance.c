@@ -1712,6 +1712,188 @@ START_TEST(turned_boxes)
 }
 END_TEST
 
+/* A box of half-extents h of one of four kinds: 0 noctMeshCreateBox(),
+ * 1 the same corners through noctMeshCreate() (another numbering and
+ * triangulation, still about the origin), 2 a box off the origin
+ * ([lo, hi] with lo != -hi: not a box about its origin), 3 a flat
+ * noctMeshCreateBox() (its least half-extent 1e-7 or 2e-6 of its
+ * largest, either side of the closed form's factor 10^6). */
+static void tm_box_kind(tmesh *t, int kind, const double h[3], uint64_t *rng)
+{
+    if (kind == 0) {
+        tm_box(t, h[0], h[1], h[2]);
+    } else if (kind == 1 || kind == 2) {
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            const double off = kind == 2 ? h[k] * (test_uniform(rng) - 0.5) : 0;
+            lo[k] = -h[k] + off;
+            hi[k] = h[k] + off;
+        }
+        tm_own_box(t, lo, hi);
+    } else {
+        const double f = test_rand_below(rng, 2) ? 1e-7 : 2e-6;
+        tm_box(t, h[0], h[1], h[2] * f);
+    }
+}
+
+/* Two boxes placed to drive each way the distance of two boxes answers
+ * (for boxes about their origins: the closed form, the edge pairs skipped
+ * when a corner is already nearest, a centre proved inside both when
+ * they overlap; and each fallback: the turned forms' separating-axis
+ * proof, GJK, the general path) against the oracle: turned or not, of
+ * every kind (tm_box_kind()), at random scales and offsets,
+ *  0. touching along a random direction: the exact verdict's turn
+ *     bisected, the last meeting and first apart placements;
+ *  1. one wholly inside the other (centres in both), or deep inside;
+ *  2. B's centre exactly on A's face (A not turned), and an ulp either
+ *     side: not proved by the centre test, decided by the fallbacks;
+ *  3. crossed bars overlapping at their ends, neither centre in the
+ *     other: the separating-axis proof or the exact test decides;
+ *  4. neither turned, face to face, edge to edge and corner to corner at
+ *     dyadic places, touching and an ulp apart. */
+START_TEST(box_paths)
+{
+    uint64_t rng = 0xb0a7u + (uint64_t)_i;
+    for (int n = 0; n < 40; ++n) {
+        const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
+        const int ka = (int)test_rand_below(&rng, 4), kb = (int)test_rand_below(&rng, 4);
+        const int how = n % 5;
+        double ha[3], hb[3];
+        for (int k = 0; k < 3; ++k) {
+            ha[k] = s * (0.25 + test_uniform(&rng));
+            hb[k] = s * (0.25 + test_uniform(&rng));
+        }
+        if (how == 1)
+            for (int k = 0; k < 3; ++k)
+                hb[k] = ha[0] * 0.1 * (1 + test_uniform(&rng)); /* small */
+        if (how == 3) {
+            ha[0] = s, ha[1] = ha[2] = 0.125 * s;
+            hb[1] = s, hb[0] = hb[2] = 0.125 * s;
+        }
+        if (how == 4)
+            for (int k = 0; k < 3; ++k) {
+                ha[k] = s * ldexp(1 + (double)test_rand_below(&rng, 8), -3);
+                hb[k] = s * ldexp(1 + (double)test_rand_below(&rng, 8), -3);
+            }
+        tmesh A, B;
+        /* (A about its origin and not flat where the placements need its
+         * faces where they are; B too for the bars and the dyadic ones) */
+        tm_box_kind(&A, how >= 2 ? ka % 2 : ka, ha, &rng);
+        tm_box_kind(&B, how >= 3 ? kb % 2 : kb, hb, &rng);
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        const bool turn_a = how <= 1 && test_rand_below(&rng, 3) != 0;
+        const bool turn_b = how <= 2 && test_rand_below(&rng, 3) != 0;
+        if (turn_a)
+            test_random_quat(&rng, &xa.q);
+        if (turn_b)
+            test_random_quat(&rng, &xb.q);
+        double O = test_rand_below(&rng, 3) == 0
+                       ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
+                       : 0;
+        while (O != 0 && !offset_ok(O, s))
+            O *= 0x1p-8;
+        O = how >= 2 ? ldexp(round(ldexp(O / s, 8)), -8) * s : O; /* dyadic in s */
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = O * (k == 1 ? -1 : 1);
+        char label[160];
+        if (how == 0) {
+            double dir[3], l;
+            do {
+                l = 0;
+                for (int k = 0; k < 3; ++k) {
+                    dir[k] = 2 * test_uniform(&rng) - 1;
+                    l += dir[k] * dir[k];
+                }
+            } while (l < 0.01 || l > 1);
+            l = sqrt(l);
+            double lo = 0, hi = 8 * s;
+            for (int it = 0; it < 200 && lo < hi; ++it) {
+                const double mid = lo + (hi - lo) / 2;
+                if (mid == lo || mid == hi)
+                    break;
+                for (int k = 0; k < 3; ++k)
+                    xb.p[k] = xa.p[k] + mid * dir[k] / l;
+                bool meet = false;
+                ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
+                                                        &meet, NULL, NULL),
+                                 NOCT_OK);
+                *(meet ? &lo : &hi) = mid;
+            }
+            const double at[3] = {lo, hi, lo / 2};
+            for (int w = 0; w < 3; ++w) {
+                for (int k = 0; k < 3; ++k)
+                    xb.p[k] = xa.p[k] + at[w] * dir[k] / l;
+                snprintf(label, sizeof label, "box paths %d, kinds %d %d: touching %d, scale %g",
+                         n, ka, kb, w, s);
+                (void)check_pair_d2(&A, &xa, &B, &xb, label);
+            }
+        } else if (how == 1) {
+            /* B about a point well inside A (A's frame: within half its
+             * half-extents), then the two swapped roles by the checks */
+            double RA[9], y[3];
+            ck_assert_int_eq(noctQuatToMatrix(&xa.q, RA, NULL), NOCT_OK);
+            for (int k = 0; k < 3; ++k)
+                y[k] = ha[k] * (test_uniform(&rng) - 0.5);
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + RA[3 * k] * y[0] + RA[3 * k + 1] * y[1] + RA[3 * k + 2] * y[2];
+            snprintf(label, sizeof label, "box paths %d, kinds %d %d: inside, scale %g", n, ka, kb,
+                     s);
+            const double D2 = check_pair_d2(&A, &xa, &B, &xb, label);
+            EXPECT(D2 == 0 || ka == 3 || kb == 3 || ka == 2 || kb == 2);
+        } else if (how == 2) {
+            /* B's centre on A's face +x, an ulp in, on it, an ulp out */
+            const double y = ldexp(round(ldexp(ha[1] / s, 3) * (test_uniform(&rng) - 0.5)), -3);
+            const double z = ldexp(round(ldexp(ha[2] / s, 3) * (test_uniform(&rng) - 0.5)), -3);
+            const double f = xa.p[0] + ha[0];
+            const double xs[3] = {nextafter(f, -INFINITY), f, nextafter(f, INFINITY)};
+            for (int w = 0; w < 3; ++w) {
+                xb.p[0] = xs[w];
+                xb.p[1] = xa.p[1] + y * s;
+                xb.p[2] = xa.p[2] + z * s;
+                snprintf(label, sizeof label, "box paths %d, kinds %d %d: centre on a face %d",
+                         n, ka, kb, w);
+                const double D2 = check_pair_d2(&A, &xa, &B, &xb, label);
+                EXPECT(D2 == 0 || kb == 3);
+            }
+        } else if (how == 3) {
+            /* bars along x and y overlapping at their ends: B's centre at
+             * (0.875, 0.875) s from A's, ends overlapping by 1/4 s; then
+             * at (1.25, 1.25) s, 1/8 s apart */
+            for (int w = 0; w < 2; ++w) {
+                const double d = w == 0 ? 0.875 * s : 1.25 * s; /* overlapping, then apart */
+                xb.p[0] = xa.p[0] + d;
+                xb.p[1] = xa.p[1] + d;
+                xb.p[2] = xa.p[2];
+                snprintf(label, sizeof label, "box paths %d, kinds %d %d: crossed bars %d, "
+                         "scale %g", n, ka, kb, w, s);
+                const double D2 = check_pair_d2(&A, &xa, &B, &xb, label);
+                EXPECT(w == 0 ? D2 == 0 : D2 > 0);
+            }
+        } else {
+            /* neither turned: touching across x at a face, an edge, a
+             * corner, and an ulp apart */
+            for (int kind = 0; kind < 3; ++kind)
+                for (int nudge = 0; nudge <= 1; ++nudge) {
+                    double p[3] = {xa.p[0] + ha[0] + hb[0], xa.p[1] + 0.125 * s, xa.p[2]};
+                    if (kind >= 1)
+                        p[1] = xa.p[1] + ha[1] + hb[1];
+                    if (kind == 2)
+                        p[2] = xa.p[2] + ha[2] + hb[2];
+                    if (nudge)
+                        p[0] = nextafter(p[0], INFINITY);
+                    memcpy(xb.p, p, sizeof p);
+                    snprintf(label, sizeof label, "box paths %d, kinds %d %d: unturned %d %d", n,
+                             ka, kb, kind, nudge);
+                    (void)check_pair_d2(&A, &xa, &B, &xb, label);
+                }
+        }
+        tm_free(&A);
+        tm_free(&B);
+    }
+    report_failures("box_paths");
+}
+END_TEST
+
 /* Quarter turns keep a box's corners exact: boxes of dyadic half-extents
  * turned by them touch face to face, edge to edge and corner to corner
  * at dyadic places, and one ulp away either side. */
@@ -2068,12 +2250,14 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, rotated_both_ways, 0, 1);
     tcase_add_loop_test(tc, near_touch, 0, 1);
     tcase_add_loop_test(tc, turned_boxes, 0, 1);
+    tcase_add_loop_test(tc, box_paths, 0, 1);
     add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes);
     tc = test_case(s, "random, more seeds", 600, "slow");
     tcase_add_loop_test(tc, random_pairs, 1, 6);
     tcase_add_loop_test(tc, rotated_both_ways, 1, 4);
     tcase_add_loop_test(tc, near_touch, 1, 6);
     tcase_add_loop_test(tc, turned_boxes, 1, 6);
+    tcase_add_loop_test(tc, box_paths, 1, 6);
     return s;
 }
 
