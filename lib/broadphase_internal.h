@@ -576,6 +576,58 @@ bool noct_bp_insert_below(noctBroadphase *bp, octNode *n, uint32_t id, bool push
 void noct_bp_leaf_remove_at(noctBroadphase *bp, octNode *leaf, uint32_t i);
 void noct_bp_merge_all(noctBroadphase *bp, octNode *n);
 
+/* ---- broadphase_query.c ---------------------------------------------------------- */
+
+/*
+ * The squared gap between a box [blo, bhi] and the query box [lo, hi], as
+ * noct_bp_nearest() computes it for boxes and cells alike: per axis
+ * g = max(fl(blo - hi), fl(lo - bhi), 0), and the sum of fl(g * g) over
+ * the axes x, y, z in order, each operation rounded to nearest. Each
+ * rounded operation is monotone in its operands, so a box within another
+ * never has a larger gap than it.
+ */
+static NOCT_ALWAYS_INLINE double noct_gap2(const double lo[3], const double hi[3],
+                                           const double blo[3], const double bhi[3])
+{
+    const double gx = noct_max(noct_max(blo[0] - hi[0], lo[0] - bhi[0]), 0);
+    const double gy = noct_max(noct_max(blo[1] - hi[1], lo[1] - bhi[1]), 0);
+    const double gz = noct_max(noct_max(blo[2] - hi[2], lo[2] - bhi[2]), 0);
+    return gx * gx + gy * gy + gz * gz;
+}
+
+/* Called by noct_bp_nearest() with a proxy and its squared gap; false stops
+ * the walk (the caller's failure). */
+typedef bool noct_nearest_fcn(void *context, uint32_t id, double gap2);
+
+/* What noct_bp_nearest() reads from its caller as it goes (gap2 and below
+ * may shrink at every call of its function; done2 holds still). */
+typedef struct noct_nearest_bound {
+    double gap2;    /* proxies (and cells) whose noct_gap2() exceeds it are
+                       not wanted */
+    double done2;   /* nor proxies whose noct_gap2() is at most this (an
+                       earlier walk's bound; -1: none) */
+    uint32_t below; /* nor proxies of this index or more */
+} noct_nearest_bound;
+
+/*
+ * Hand fcn, once each, every live proxy that the filter lets through, of
+ * index below bound->below, whose box's noct_gap2() to [lo, hi] is above
+ * bound->done2 and at most bound->gap2 when its turn comes: the walk goes
+ * through the leaves depth first, from the child that holds centre (a
+ * point of [lo, hi]) outward, skipping cells beyond the bound, and within
+ * a leaf nearer boxes first; fcn may shrink the bound at every call.
+ * Without a tree, every proxy is asked, nearer first. *cut tells whether
+ * a cell or a box was left out for being beyond the bound as it was then
+ * (else every proxy above done2 was handed over, or was left out by a
+ * shrunk bound while the walk took a leaf's boxes in order). NOMEM when
+ * the walk's list of a leaf's boxes could not grow (fcn may have been
+ * called).
+ */
+noctStatus noct_bp_nearest(const noctBroadphase *bp, const double lo[3], const double hi[3],
+                           const double centre[3], noctQueryFilter filter,
+                           const noct_nearest_bound *bound, noct_nearest_fcn *fcn,
+                           void *context, bool *cut);
+
 /* ---- broadphase_pairs.c ---------------------------------------------------------- */
 
 /* Every pair of proxies whose boxes overlap (and filters pass), once,

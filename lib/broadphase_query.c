@@ -101,6 +101,266 @@ noctStatus noctBroadphaseQueryPoint(const noctBroadphase *bp, const double p[3],
     return noctBroadphaseQueryBox(bp, p, p, filter, fcn, context);
 }
 
+/* ---- the nearest ----------------------------------------------------------------- */
+
+/*
+ * The walk for the nearest object (noct_bp_nearest()). Each proxy is
+ * handed over by one leaf only: the one that owns its anchor, the point
+ * of its box nearest the query's box on each axis, min(max(blo, lo), bhi)
+ * (a corner's coordinate of the box, or of their overlap). The anchor
+ * lies in the box, so the leaf that owns it lists the proxy; and the
+ * anchor's gap to [lo, hi] on each axis is the box's, while the owning
+ * cell reaches at least to the anchor: the cell's rounded differences
+ * are no larger than the box's (rounding is monotone), so its
+ * noct_gap2() is at most the box's, and so is each ancestor's. A proxy
+ * within the bound when its leaf comes is therefore never behind a cell
+ * the walk skipped: the bound only shrinks, so a cell skipped earlier
+ * was beyond a bound at least as large.
+ *
+ * Within a leaf the boxes within the bound are gathered in one pass (the
+ * leaf's list and their boxes only), then taken nearest first (least
+ * gap, then least index) by passes that also drop what the bound has
+ * come to exclude: the first hand-over usually shrinks the bound to a
+ * few boxes. Should many passes be needed (boxes owned elsewhere, or an
+ * answer at distance 0 with many boxes tied), the rest are sorted once,
+ * so that a leaf costs O(n log n) at worst.
+ */
+
+typedef struct near_cand {
+    double g2;
+    uint32_t id;
+} near_cand;
+
+static inline bool near_before(const near_cand *a, const near_cand *b)
+{
+    return a->g2 < b->g2 || (a->g2 == b->g2 && a->id < b->id);
+}
+
+static int near_order(const void *x, const void *y)
+{
+    const near_cand *a = x, *b = y;
+    return near_before(a, b) ? -1 : near_before(b, a) ? 1 : 0;
+}
+
+/* The boxes of a leaf on the stack (N is 128 at most by default), more on
+ * the heap; after this many passes over more than NEAR_SORT boxes, a sort. */
+#define NEAR_LOCAL 160
+#define NEAR_PASSES 4
+#define NEAR_SORT 32
+
+NOCT_DEFINE_GROW_LOCAL(grow_near, near_cand)
+
+typedef struct near_walk {
+    const noctBroadphase *bp;
+    const noct_cell *rc; /* the root's cell; NULL without a tree */
+    double lo[3], hi[3], centre[3];
+    noctQueryFilter filter;
+    bool filtering; /* some proxy may fail the filter */
+    const noct_nearest_bound *bound;
+    noct_nearest_fcn *fcn;
+    void *context;
+    bool failed; /* without memory */
+    bool cut;    /* something left out for the bound */
+    near_cand *c;
+    size_t cap;
+    near_cand local[NEAR_LOCAL];
+} near_walk;
+
+/* Hand x over if leaf (NULL: no tree) owns its anchor; false: stop. */
+static bool near_hand(near_walk *nw, near_cand x, const noct_cell *leaf)
+{
+    if (leaf != NULL) {
+        const noct_aabb *b = &nw->bp->box[x.id];
+        double a[3];
+        for (int k = 0; k < 3; ++k)
+            a[k] = noct_min(noct_max(b->lo[k], nw->lo[k]), b->hi[k]);
+        if (!noct_cell_owns(leaf, nw->rc, a))
+            return true;
+    }
+    return nw->fcn(nw->context, x.id, x.g2);
+}
+
+/* Take the n gathered boxes nearest first; false: stop. */
+static bool near_take(near_walk *nw, size_t n, const noct_cell *leaf)
+{
+    near_cand *c = nw->c;
+    const noct_nearest_bound *bd = nw->bound;
+    for (int pass = 0; n > 0; ++pass) {
+        if (pass == NEAR_PASSES && n > NEAR_SORT) {
+            qsort(c, n, sizeof *c, near_order);
+            for (size_t i = 0; i < n && c[i].g2 <= bd->gap2; ++i)
+                if (c[i].id < bd->below && !near_hand(nw, c[i], leaf))
+                    return false;
+            return true;
+        }
+        size_t kept = 0, m = 0;
+        for (size_t i = 0; i < n; ++i) {
+            if (c[i].g2 > bd->gap2 || c[i].id >= bd->below)
+                continue;
+            c[kept] = c[i];
+            if (near_before(&c[kept], &c[m]))
+                m = kept;
+            ++kept;
+        }
+        if (kept == 0)
+            break;
+        const near_cand x = c[m];
+        c[m] = c[--kept];
+        n = kept;
+        if (!near_hand(nw, x, leaf))
+            return false;
+    }
+    return true;
+}
+
+/* Add box id of squared gap g2 to the walk's list of n; false without
+ * memory. */
+static inline bool near_push(near_walk *nw, size_t *n, uint32_t id, double g2)
+{
+    if (!grow_near(&nw->c, nw->local, &nw->cap, *n + 1)) {
+        nw->failed = true;
+        return false;
+    }
+    nw->c[(*n)++] = (near_cand){g2, id};
+    return true;
+}
+
+/* A leaf's scan of one box: its noct_gap2() to [lo, hi] when it is within
+ * bound, else +inf (and *cut set). First the axes one by one: when a
+ * rounded difference exceeds rk, its square rounds above the bound (rk's
+ * square does, see near_leaf()), and so does the sum of squares, which is
+ * at least each of its terms; the gap need not be computed. */
+static NOCT_ALWAYS_INLINE double near_scan(const double lo[3], const double hi[3],
+                                           const noct_aabb *b, double rk, double bound,
+                                           bool *cut)
+{
+    if (b->lo[0] - hi[0] > rk || lo[0] - b->hi[0] > rk || b->lo[1] - hi[1] > rk ||
+        lo[1] - b->hi[1] > rk || b->lo[2] - hi[2] > rk || lo[2] - b->hi[2] > rk) {
+        *cut = true;
+        return INFINITY;
+    }
+    const double g2 = noct_gap2(lo, hi, b->lo, b->hi);
+    if (g2 > bound) {
+        *cut = true;
+        return INFINITY;
+    }
+    return g2;
+}
+
+/* The boxes of list ids[0..count) (NULL: every live slot) within the
+ * bound, taken nearest first; false: stop. The bound holds still while
+ * they are gathered (fcn is not called), and the query's box is read
+ * into locals, which the list's stores cannot change. */
+static bool near_leaf(near_walk *nw, const uint32_t *ids, uint32_t count, const noct_cell *leaf)
+{
+    const noctBroadphase *bp = nw->bp;
+    const noct_aabb *box = bp->box;
+    const double lo[3] = {nw->lo[0], nw->lo[1], nw->lo[2]};
+    const double hi[3] = {nw->hi[0], nw->hi[1], nw->hi[2]};
+    const double bound = nw->bound->gap2, done = nw->bound->done2;
+    const uint32_t below = nw->bound->below;
+    /* rk: fl(sqrt(bound)) >= (1 - u) sqrt(bound) (u = 2^-53), so
+     * rk >= (1 + 2^-51) sqrt(bound) and fl(rk^2) >= (1 + 2^-50)(1 - u)
+     * bound > bound (bound is at least 2^-990, a normal number; +inf
+     * stays +inf). */
+    const double rk = sqrt(bound) * (1 + 0x1p-50);
+    bool cut = false;
+    size_t n = 0;
+    if (ids == NULL) {
+        for (uint32_t id = 0; id < count; ++id) {
+            if (!bp->proxy[id].alive)
+                continue;
+            const double g2 = near_scan(lo, hi, &box[id], rk, bound, &cut);
+            if (g2 <= bound && g2 > done && id < below && passes(&bp->proxy[id], nw->filter) &&
+                !near_push(nw, &n, id, g2))
+                return false;
+        }
+    } else if (nw->filtering) {
+        for (uint32_t j = 0; j < count; ++j) {
+            const uint32_t id = ids[j];
+            const double g2 = near_scan(lo, hi, &box[id], rk, bound, &cut);
+            if (g2 <= bound && g2 > done && id < below && passes(&bp->proxy[id], nw->filter) &&
+                !near_push(nw, &n, id, g2))
+                return false;
+        }
+    } else {
+        for (uint32_t j = 0; j < count; ++j) {
+            const uint32_t id = ids[j];
+            const double g2 = near_scan(lo, hi, &box[id], rk, bound, &cut);
+            if (g2 <= bound && g2 > done && id < below && !near_push(nw, &n, id, g2))
+                return false;
+        }
+    }
+    nw->cut = nw->cut || cut;
+    return near_take(nw, n, leaf);
+}
+
+/* The walk below node n (not beyond the bound); false: stop. */
+static bool near_node(near_walk *nw, const octNode *n)
+{
+    const noct_cell *c = noct_cell_of(n);
+    if (!NOCT_NODE_IS_SPLIT(n))
+        return near_leaf(nw, c->objs, c->count, c);
+    /* A child's cube is its parent's lower or upper half on each axis,
+     * exactly (the corners are exact): the squares of each half's gap,
+     * sq[k][0] and sq[k][1], are noct_gap2()'s terms for every child, so
+     * a child's sum below is noct_gap2() of its cube, bit for bit. */
+    const double half = c->size / 2;
+    double sq[3][2];
+    unsigned o = 0; /* the child that holds the centre (or is nearest it) first */
+    for (int k = 0; k < 3; ++k) {
+        const double mid = c->lo[k] + half, top = c->lo[k] + c->size;
+        const double g0 = noct_max(noct_max(c->lo[k] - nw->hi[k], nw->lo[k] - mid), 0);
+        const double g1 = noct_max(noct_max(mid - nw->hi[k], nw->lo[k] - top), 0);
+        sq[k][0] = g0 * g0;
+        sq[k][1] = g1 * g1;
+        o |= (nw->centre[k] >= mid ? 4u : 0u) >> k;
+    }
+    for (unsigned i = 0; i < 8; ++i) {
+        const unsigned j = i ^ o;
+        const double g2 = sq[0][j >> 2] + sq[1][(j >> 1) & 1u] + sq[2][j & 1u];
+        if (g2 > nw->bound->gap2) {
+            nw->cut = true;
+            continue;
+        }
+        if (!near_node(nw, NOCT_NODE_CHILD(n, (octDirection)(OCT_LDB + (int)j))))
+            return false;
+    }
+    return true;
+}
+
+noctStatus noct_bp_nearest(const noctBroadphase *bp, const double lo[3], const double hi[3],
+                           const double centre[3], noctQueryFilter filter,
+                           const noct_nearest_bound *bound, noct_nearest_fcn *fcn,
+                           void *context, bool *cut)
+{
+    near_walk nw;
+    nw.bp = bp;
+    nw.rc = bp->root != NULL ? noct_cell_of(bp->root) : NULL;
+    memcpy(nw.lo, lo, sizeof nw.lo);
+    memcpy(nw.hi, hi, sizeof nw.hi);
+    memcpy(nw.centre, centre, sizeof nw.centre);
+    nw.filter = filter;
+    /* without filters on the proxies, all bits in the query's pass all */
+    nw.filtering = bp->filtered > 0 || filter.category != NOCT_FILTER_ALL ||
+                   filter.mask != NOCT_FILTER_ALL;
+    nw.bound = bound;
+    nw.fcn = fcn;
+    nw.context = context;
+    nw.failed = false;
+    nw.cut = false;
+    nw.c = nw.local;
+    nw.cap = NEAR_LOCAL;
+    if (bp->root != NULL)
+        near_node(&nw, bp->root);
+    else /* no tree (a failure tore it down): every proxy, as one leaf */
+        near_leaf(&nw, NULL, bp->nslots, NULL);
+    if (nw.c != nw.local)
+        free(nw.c);
+    *cut = nw.cut;
+    return nw.failed ? NOCT_ERR_NOMEM : NOCT_OK;
+}
+
 /* ---- segments -------------------------------------------------------------------- */
 
 /* Where the segment o + t d, t in [0, tmax], meets the closed box

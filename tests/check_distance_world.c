@@ -17,6 +17,12 @@
  *   checked both ways);
  * - exact ties (dyadic boxes about the query) to the least index, and the
  *   same answers from trees of different N and histories;
+ * - the nearest's walk (a dense cluster, scattered boxes, queries in the
+ *   cluster and far outside, filters, moved and removed objects, trees of
+ *   N 1, 4, automatic and exhaustive; max_distance at the best's distance
+ *   exactly and just below it; no object passing, none left, an empty
+ *   world) against the least of the distances noctWorldQueryWithin()
+ *   reports for every object, and a point's against the ideal solids;
  * - the near pairs' distances against noctWorldDistance() and
  *   noctDistance(), cached until the next step;
  * - bad input: a status, no call.
@@ -582,6 +588,225 @@ START_TEST(the_tree_does_not_show)
 }
 END_TEST
 
+/* ---- the nearest's walk ------------------------------------------------------------------ */
+
+#define WALK_OBJECTS 360
+
+/* A world for the walk: a dense cluster of small turned boxes in the unit
+ * cube (many in one leaf for a large N) and others scattered over
+ * [-20, 20]^3, some with filters, some moved and some removed; the ideal
+ * solids beside it. */
+typedef struct walk_world {
+    noctWorld *w;
+    int n;
+    noctObjectId id[WALK_OBJECTS];
+    ideal g[WALK_OBJECTS];
+    uint64_t cat[WALK_OBJECTS], mask[WALK_OBJECTS];
+    bool gone[WALK_OBJECTS];
+} walk_world;
+
+static void walk_place(walk_world *ww, int i, noctTransform *x, bool cluster)
+{
+    for (int k = 0; k < 3; ++k)
+        x->p[k] = cluster ? uniform() : -20 + 40 * uniform();
+    random_quat(&x->q);
+    quat_matrix(&x->q, ww->g[i].R);
+    for (int k = 0; k < 3; ++k)
+        ww->g[i].t[k] = x->p[k];
+}
+
+static void make_walk_world(walk_world *ww, int n, int N)
+{
+    memset(ww, 0, sizeof *ww);
+    ww->w = new_world(N, NOCT_ACCURACY_EXACT);
+    ww->n = n;
+    for (int i = 0; i < n; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        const bool cluster = i % 4 != 3;
+        double h[3];
+        for (int k = 0; k < 3; ++k)
+            h[k] = cluster ? 0.02 + 0.08 * uniform() : 0.2 + 0.8 * uniform();
+        memcpy(d.half_extents, h, sizeof h);
+        ww->g[i].npieces = 1;
+        ww->g[i].pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+        walk_place(ww, i, &d.transform, cluster);
+        d.category = ww->cat[i] = random_bits();
+        d.mask = ww->mask[i] = random_bits();
+        d.user_data = &ww->id[i];
+        ck_assert_int_eq(noctWorldCreateObject(ww->w, &d, &ww->id[i], NULL), NOCT_OK);
+    }
+    for (int i = 0; i < n; ++i) {
+        const double u = uniform();
+        if (u < 0.1) {
+            noctTransform x;
+            walk_place(ww, i, &x, uniform() < 0.5);
+            ck_assert_int_eq(noctWorldSetTransform(ww->w, ww->id[i], &x, NULL), NOCT_OK);
+        } else if (u < 0.2) {
+            ck_assert_int_eq(noctWorldRemove(ww->w, ww->id[i], NULL), NOCT_OK);
+            ww->gone[i] = true;
+        }
+    }
+    if (uniform() < 0.5)
+        ck_assert_int_eq(noctWorldStep(ww->w, NULL), NOCT_OK);
+}
+
+static bool walk_live(const walk_world *ww, int i, noctQueryFilter f)
+{
+    return !ww->gone[i] && (ww->cat[i] & f.mask) != 0 && (f.category & ww->mask[i]) != 0;
+}
+
+/* The brute force: every object, by noctWorldQueryWithin() over a distance
+ * that holds them all (the broadphase's box query, not the walk), with
+ * the distances the world computes; the least (distance, index) within
+ * max. */
+typedef struct walk_all {
+    double max;
+    int count;
+    bool got;
+    uint32_t index;
+    double distance;
+    double d[WALK_OBJECTS]; /* by index: the computed distances */
+} walk_all;
+
+static bool walk_collect(void *context, const noctDistanceHit *hit)
+{
+    walk_all *a = context;
+    ck_assert_uint_lt(hit->id.index, WALK_OBJECTS);
+    a->d[hit->id.index] = hit->result.distance;
+    ++a->count;
+    if (hit->result.distance <= a->max &&
+        (!a->got || hit->result.distance < a->distance ||
+         (hit->result.distance == a->distance && hit->id.index < a->index))) {
+        a->got = true;
+        a->index = hit->id.index;
+        a->distance = hit->result.distance;
+    }
+    return true;
+}
+
+/* The query against the brute force (and, for a point, against the ideal
+ * solids); returns the brute force's best distance (INFINITY: none). */
+static double check_walk_query(const walk_world *ww, const double *half, const noctTransform *x,
+                               double max, noctQueryFilter f)
+{
+    walk_all a;
+    memset(&a, 0, sizeof a);
+    a.max = max;
+    for (int i = 0; i < WALK_OBJECTS; ++i)
+        a.d[i] = NAN;
+    ck_assert_int_eq(noctWorldQueryWithin(ww->w, NULL, half, x, 1e7, f, walk_collect, &a, NULL),
+                     NOCT_OK);
+    int live = 0;
+    for (int i = 0; i < ww->n; ++i)
+        live += walk_live(ww, i, f);
+    ck_assert_int_eq(a.count, live);
+    noctDistanceHit hit;
+    bool got;
+    ck_assert_int_eq(noctWorldQueryNearest(ww->w, NULL, half, x, max, f, &hit, &got, NULL),
+                     NOCT_OK);
+    ck_assert(got == a.got);
+    if (!got)
+        return a.got ? a.distance : (double)INFINITY;
+    const uint32_t i = hit.id.index;
+    ck_assert(walk_live(ww, (int)i, f));
+    ck_assert(hit.user_data == &ww->id[i]);
+    ck_assert(hit.id.generation == ww->id[i].generation);
+    ck_assert(hit.result.distance <= max);
+    if (half == NULL) { /* a point's distance does not depend on the search's max */
+        ck_assert_uint_eq(i, a.index);
+        ck_assert(hit.result.distance == a.distance);
+        /* and against the ideal solids */
+        long double best = INFINITY;
+        for (int j = 0; j < ww->n; ++j)
+            if (walk_live(ww, j, f))
+                best = fminl(best, point_ideal(&ww->g[j], x->p));
+        const long double mine = point_ideal(&ww->g[i], x->p);
+        ck_assert(mine - best <= TOL);
+        ck_assert(hit.result.lower <= mine + 1e-9L && mine - 1e-9L <= hit.result.upper);
+    } else { /* the same object but in a near tie */
+        ck_assert(fabs(hit.result.distance - a.distance) <= TOL);
+        if (i != a.index)
+            ck_assert(fabs(a.d[i] - a.distance) <= TOL);
+    }
+    return a.distance;
+}
+
+START_TEST(walk_against_brute_force)
+{
+    static const int N[4] = {1, 4, NOCT_AUTO, NOCT_N_EXHAUSTIVE};
+    int queries = 0, cut = 0;
+    for (int v = 0; v < 4; ++v) {
+        walk_world ww;
+        make_walk_world(&ww, WALK_OBJECTS, N[v]);
+        for (int t = 0; t < 40; ++t) {
+            noctTransform x;
+            const int where = t % 4;
+            for (int k = 0; k < 3; ++k)
+                x.p[k] = where == 0   ? uniform()                 /* in the cluster */
+                         : where == 1 ? -22 + 44 * uniform()      /* among the others */
+                         : where == 2 ? 1e3 * (1 + uniform())     /* far outside */
+                                      : -1e6 * (1 + uniform());
+            random_quat(&x.q);
+            double half[3];
+            for (int k = 0; k < 3; ++k)
+                half[k] = 0.05 + 0.5 * uniform();
+            const bool point = t % 3 != 2;
+            const noctQueryFilter f = t % 5 == 4 ? random_filter() : noctDefaultQueryFilter();
+            const double *h = point ? NULL : half;
+            const double best = check_walk_query(&ww, h, &x, INFINITY, f);
+            ++queries;
+            if (!isfinite(best))
+                continue;
+            /* a max_distance at the best's distance, exactly: found; just
+             * below it (for a point, whose distance does not depend on the
+             * search's max): nothing */
+            check_walk_query(&ww, h, &x, best, f);
+            if (point && best > 0) {
+                ck_assert(!isfinite(check_walk_query(&ww, h, &x, nextafter(best, 0), f)));
+                ++cut;
+            }
+            check_walk_query(&ww, h, &x, best * uniform(), f);
+        }
+        /* a filter no object passes, then every object removed */
+        noctTransform x = noctIdentityTransform();
+        const noctQueryFilter none = {0, 0};
+        noctDistanceHit hit;
+        bool got = true;
+        ck_assert_int_eq(noctWorldQueryNearest(ww.w, NULL, NULL, &x, INFINITY, none, &hit, &got,
+                                               NULL),
+                         NOCT_OK);
+        ck_assert(!got);
+        for (int i = 0; i < ww.n; ++i)
+            if (!ww.gone[i]) {
+                ck_assert_int_eq(noctWorldRemove(ww.w, ww.id[i], NULL), NOCT_OK);
+                ww.gone[i] = true;
+            }
+        for (int step = 0; step < 2; ++step) {
+            got = true;
+            ck_assert_int_eq(noctWorldQueryNearest(ww.w, NULL, NULL, &x, INFINITY,
+                                                   noctDefaultQueryFilter(), &hit, &got, NULL),
+                             NOCT_OK);
+            ck_assert(!got);
+            ck_assert_int_eq(noctWorldStep(ww.w, NULL), NOCT_OK);
+        }
+        noctWorldDestroy(ww.w);
+    }
+    ck_assert_int_gt(cut, 20);
+    ck_assert_int_eq(queries, 160);
+    /* an empty world */
+    noctWorld *w = new_world(1, NOCT_ACCURACY_EXACT);
+    noctTransform x = noctIdentityTransform();
+    const double half[3] = {1, 1, 1};
+    noctDistanceHit hit;
+    bool got = true;
+    ck_assert_int_eq(noctWorldQueryNearest(w, NULL, half, &x, INFINITY,
+                                           noctDefaultQueryFilter(), &hit, &got, NULL),
+                     NOCT_OK);
+    ck_assert(!got);
+    noctWorldDestroy(w);
+}
+END_TEST
+
 /* ---- the near pairs ---------------------------------------------------------------------- */
 
 START_TEST(near_distances_against_pairs)
@@ -729,6 +954,7 @@ static Suite *distance_world_suite(void)
     tcase_add_loop_test(tc, points_against_geometry, 0, 1);
     tcase_add_test(tc, ties_to_the_least_index);
     tcase_add_test(tc, the_tree_does_not_show);
+    tcase_add_test(tc, walk_against_brute_force);
     tcase_add_loop_test(tc, near_distances_against_pairs, 0, 1);
     tcase_add_test(tc, bad_input);
     TCase *full = test_case(s, "distance world, full", 600, "slow");

@@ -433,11 +433,12 @@ typedef bool noctDistanceHitFcn(void *context, const noctDistanceHit *hit);
  * boundary, with the same proved interval and accuracy (2^-40 of the
  * coordinates' magnitude) and point_b the boundary's nearest point.
  *
- * The search goes outward in the broadphase (boxes about the query's
- * box, growing until an object is found, then to the best distance so
- * far), testing nearer boxes first and skipping objects whose boxes are
- * farther than the best so far; each object's search stops once it is
- * proved farther. It never tests every object unless they are all near.
+ * The search walks the broadphase's leaves outward from the one that
+ * holds the query's centre (within a radius that grows until an object
+ * is found, then within the best distance so far), testing nearer boxes
+ * first and skipping cells and objects whose boxes are farther than the
+ * best so far; each object's search stops once it is proved farther. It
+ * never tests every object unless they are all near.
  * @pre world != NULL && x != NULL && hit != NULL && found != NULL
  * @post *found tells whether an object the filter lets through has a
  *       computed distance (noctDistanceResult::distance) at most
