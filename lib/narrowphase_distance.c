@@ -531,85 +531,102 @@ typedef struct node_pair {
 } node_pair;
 
 
-/*
- * The float search for the nearest pair of triangles: a depth-first walk
- * that visits the nearer child pair first (its boxes' distance), so that
- * the best distance falls early and prunes the rest, and that drops a
- * pair of nodes or triangles whose boxes are no nearer than the best.
- * Finds a pair within sqrt(w->best2) if there is one (as floating point
- * sees it); its points are an upper bound, whatever the pruning missed.
- */
-static void nearest_search(dist_walk *w)
+/* The float search's pair of leaves na and nb (their boxes' squared
+ * distance d2): each pair of their triangles not ruled out by its boxes,
+ * the planes or the leaves' own gap is measured, and the nearest kept if
+ * it beats the best. */
+static inline void nearest_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
+                                  double d2)
 {
     const placed *A = w->A, *B = w->B;
+    /* B's leaf in chunks (a box view's one leaf holds 12) */
+    for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+        const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+        double y[LEAF_CHUNK][3][3], ny[LEAF_CHUNK][4];
+        double ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+        for (uint32_t j = 0; j < nj; ++j) {
+            placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+            tri_plane(y[j], ny[j]);
+            tri_bounds(y[j], ylo[j], yhi[j]);
+        }
+        if (d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
+            double xs[LEAF_CHUNK][3][3], u[3];
+            for (uint32_t i = 0; i < na->count; ++i)
+                placed_tri(A, na->first + i, w->scale, xs[i]);
+            const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+            const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+            if (g * g >= w->best2)
+                continue;
+        }
+        for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+            double x[3][3], nx[4], xlo[3], xhi[3];
+            placed_tri(A, i, w->scale, x);
+            tri_plane(x, nx);
+            tri_bounds(x, xlo, xhi);
+            for (uint32_t jj = 0; jj < nj; ++jj) {
+                const uint32_t j = nb->first + j0 + jj;
+                double pa[3], pb[3];
+                if (tri_box_dist2(xlo, xhi, ylo[jj], yhi[jj]) >= w->best2 ||
+                    plane_gap2(nx, y[jj]) >= w->best2 || plane_gap2(ny[jj], x) >= w->best2)
+                    continue;
+                ++w->pairs;
+                const double dd = tri_tri_nearest(x, y[jj], pa, pb);
+                if (dd < w->best2) {
+                    w->best2 = dd;
+                    noct_copy3(pa, w->pa);
+                    noct_copy3(pb, w->pb);
+                    w->ia = i;
+                    w->ib = j;
+                    w->found = true;
+                }
+            }
+        }
+    }
+}
+
+/* The two child pairs of a pair of inner nodes (the split rule's), with
+ * their boxes' squared distances. */
+static inline void child_pairs(const dist_walk *w, const node_pair *e, node_pair c[2])
+{
+    const bvh_node *na = &w->A->m->nodes[e->a], *nb = &w->B->m->nodes[e->b];
+    if (noct_bvh_split_a(na, nb)) {
+        c[0] = (node_pair){na->first, e->b, 0};
+        c[1] = (node_pair){na->first + 1, e->b, 0};
+    } else {
+        c[0] = (node_pair){e->a, nb->first, 0};
+        c[1] = (node_pair){e->a, nb->first + 1, 0};
+    }
+    for (int k = 0; k < 2; ++k)
+        c[k].d2 = box_dist2_scaled(&w->A->m->nodes[c[k].a], w->A->t, &w->B->m->nodes[c[k].b],
+                                   w->B->t, w->scale);
+}
+
+/*
+ * The float search for the nearest pair of triangles, depth first: it
+ * visits the nearer child pair first (its boxes' distance), so that the
+ * best distance falls early and prunes the rest, and drops a pair of
+ * nodes or triangles whose boxes are no nearer than the best. Finds a
+ * pair within sqrt(w->best2) if there is one (as floating point sees
+ * it); its points are an upper bound, whatever the pruning missed.
+ */
+static void nearest_search_depth(dist_walk *w)
+{
     node_pair stack[NOCT_BVH_PAIR_STACK];
     size_t top = 0;
-    stack[top++] = (node_pair){0, 0, box_dist2_scaled(&A->m->nodes[0], A->t,
-                                                      &B->m->nodes[0], B->t, w->scale)};
+    stack[top++] = (node_pair){0, 0, box_dist2_scaled(&w->A->m->nodes[0], w->A->t,
+                                                      &w->B->m->nodes[0], w->B->t, w->scale)};
     while (top > 0) {
         const node_pair e = stack[--top];
         if (e.d2 >= w->best2)
             continue;
         ++w->nodes;
-        const bvh_node *na = &A->m->nodes[e.a], *nb = &B->m->nodes[e.b];
+        const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
         if (na->count > 0 && nb->count > 0) {
-            /* B's leaf in chunks (a box view's one leaf holds 12) */
-            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
-                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
-                double y[LEAF_CHUNK][3][3], ny[LEAF_CHUNK][4];
-                double ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
-                for (uint32_t j = 0; j < nj; ++j) {
-                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
-                    tri_plane(y[j], ny[j]);
-                    tri_bounds(y[j], ylo[j], yhi[j]);
-                }
-                if (e.d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
-                    double xs[LEAF_CHUNK][3][3], u[3];
-                    for (uint32_t i = 0; i < na->count; ++i)
-                        placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
-                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
-                    if (g * g >= w->best2)
-                        continue;
-                }
-                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                    double x[3][3], nx[4], xlo[3], xhi[3];
-                    placed_tri(A, i, w->scale, x);
-                    tri_plane(x, nx);
-                    tri_bounds(x, xlo, xhi);
-                    for (uint32_t jj = 0; jj < nj; ++jj) {
-                        const uint32_t j = nb->first + j0 + jj;
-                        double pa[3], pb[3];
-                        if (tri_box_dist2(xlo, xhi, ylo[jj], yhi[jj]) >= w->best2 ||
-                            plane_gap2(nx, y[jj]) >= w->best2 ||
-                            plane_gap2(ny[jj], x) >= w->best2)
-                            continue;
-                        ++w->pairs;
-                        const double d2 = tri_tri_nearest(x, y[jj], pa, pb);
-                        if (d2 < w->best2) {
-                            w->best2 = d2;
-                            noct_copy3(pa, w->pa);
-                            noct_copy3(pb, w->pb);
-                            w->ia = i;
-                            w->ib = j;
-                            w->found = true;
-                        }
-                    }
-                }
-            }
+            nearest_leaves(w, na, nb, e.d2);
             continue;
         }
         node_pair c[2];
-        if (noct_bvh_split_a(na, nb)) {
-            c[0] = (node_pair){na->first, e.b, 0};
-            c[1] = (node_pair){na->first + 1, e.b, 0};
-        } else {
-            c[0] = (node_pair){e.a, nb->first, 0};
-            c[1] = (node_pair){e.a, nb->first + 1, 0};
-        }
-        for (int k = 0; k < 2; ++k)
-            c[k].d2 = box_dist2_scaled(&A->m->nodes[c[k].a], A->t, &B->m->nodes[c[k].b],
-                                       B->t, w->scale);
+        child_pairs(w, &e, c);
         /* the nearer pair on top; a full stack only loses candidates for
          * the upper bound, never a proof */
         const int near = c[1].d2 < c[0].d2;
@@ -620,6 +637,89 @@ static void nearest_search(dist_walk *w)
         if (c[near].d2 < w->best2)
             stack[top++] = c[near];
     }
+}
+
+/* Node pairs the best-first search keeps pending, at most (a binary heap
+ * on the stack); beyond, it finishes depth first. */
+#define NEAREST_HEAP 1024
+
+static inline void heap_push(node_pair *h, size_t *n, node_pair e)
+{
+    size_t i = (*n)++;
+    while (i > 0) {
+        const size_t p = (i - 1) / 2;
+        if (!(e.d2 < h[p].d2))
+            break;
+        h[i] = h[p];
+        i = p;
+    }
+    h[i] = e;
+}
+
+static inline node_pair heap_pop(node_pair *h, size_t *n)
+{
+    const node_pair top = h[0], e = h[--*n];
+    size_t i = 0;
+    for (;;) {
+        size_t c = 2 * i + 1;
+        if (c >= *n)
+            break;
+        if (c + 1 < *n && h[c + 1].d2 < h[c].d2)
+            ++c;
+        if (!(h[c].d2 < e.d2))
+            break;
+        h[i] = h[c];
+        i = c;
+    }
+    if (*n > 0)
+        h[i] = e;
+    return top;
+}
+
+/*
+ * The float search, best first: the pending pairs of nodes in a heap on
+ * their boxes' distance, the nearest taken next, so that a pair of leaves
+ * is measured only when no pending pair's boxes are nearer: once the best
+ * is near the distance (the first few leaves), little else is measured.
+ * Stops when the nearest pending pair is no nearer than the best. If the
+ * heap fills, the pairs it could not keep are searched depth first
+ * (nearest_search_depth(), the best so far pruning it), so the search
+ * finds what the depth-first one alone would. Finds a pair within
+ * sqrt(w->best2) if there is one (as floating point sees it); its points
+ * are an upper bound, whatever the pruning missed; the proof
+ * (lower_search()) is independent of it.
+ */
+static void nearest_search(dist_walk *w)
+{
+    node_pair heap[NEAREST_HEAP];
+    size_t n = 0;
+    bool lost = false;
+    heap_push(heap, &n, (node_pair){0, 0, box_dist2_scaled(&w->A->m->nodes[0], w->A->t,
+                                                           &w->B->m->nodes[0], w->B->t,
+                                                           w->scale)});
+    while (n > 0) {
+        const node_pair e = heap_pop(heap, &n);
+        if (e.d2 >= w->best2)
+            break; /* every pending pair is as far */
+        ++w->nodes;
+        const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
+        if (na->count > 0 && nb->count > 0) {
+            nearest_leaves(w, na, nb, e.d2);
+            continue;
+        }
+        node_pair c[2];
+        child_pairs(w, &e, c);
+        for (int k = 0; k < 2; ++k) {
+            if (!(c[k].d2 < w->best2))
+                continue;
+            if (n < NEAREST_HEAP)
+                heap_push(heap, &n, c[k]);
+            else
+                lost = true;
+        }
+    }
+    if (lost)
+        nearest_search_depth(w);
 }
 
 /*
