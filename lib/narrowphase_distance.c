@@ -2085,30 +2085,36 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
         noct_rotate(R, &m->v[3 * i], &v[3 * i]);
     if (!m->turn_fine && !rotated_fine(m, v))
         return NOCT_ERR_DEGENERATE;
+    /* refitted children first; the bounds kept in locals (stores through
+     * x would be reloaded for every corner) */
     for (size_t n = m->nnodes; n-- > 0;) {
         const bvh_node *o = &m->nodes[n];
         bvh_node *x = &nodes[n];
         x->first = o->first;
         x->count = o->count;
-        for (int k = 0; k < 3; ++k) {
-            x->lo[k] = INFINITY;
-            x->hi[k] = -INFINITY;
-        }
+        double lo[3], hi[3];
         if (o->count > 0) {
-            for (uint32_t t = o->first; t < o->first + o->count; ++t)
-                for (int c = 0; c < 3; ++c) {
-                    const double *p = &v[3 * m->tri[3 * t + c]];
-                    for (int k = 0; k < 3; ++k) {
-                        x->lo[k] = noct_min(x->lo[k], p[k]);
-                        x->hi[k] = noct_max(x->hi[k], p[k]);
-                    }
-                }
-        } else {
-            for (int c = 0; c < 2; ++c)
+            const double *p = &v[3 * m->tri[3 * o->first]];
+            for (int k = 0; k < 3; ++k)
+                lo[k] = hi[k] = p[k];
+            const uint32_t *t = &m->tri[3 * o->first];
+            for (uint32_t c = 1; c < 3 * o->count; ++c) {
+                p = &v[3 * t[c]];
                 for (int k = 0; k < 3; ++k) {
-                    x->lo[k] = noct_min(x->lo[k], nodes[o->first + (uint32_t)c].lo[k]);
-                    x->hi[k] = noct_max(x->hi[k], nodes[o->first + (uint32_t)c].hi[k]);
+                    lo[k] = noct_min(lo[k], p[k]);
+                    hi[k] = noct_max(hi[k], p[k]);
                 }
+            }
+        } else {
+            const bvh_node *c0 = &nodes[o->first], *c1 = &nodes[o->first + 1];
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = noct_min(c0->lo[k], c1->lo[k]);
+                hi[k] = noct_max(c0->hi[k], c1->hi[k]);
+            }
+        }
+        for (int k = 0; k < 3; ++k) {
+            x->lo[k] = lo[k];
+            x->hi[k] = hi[k];
         }
     }
     *view = *m;
