@@ -398,7 +398,17 @@ typedef struct dist_walk {
     double reach2;             /* the lower bound walk's reach, squared */
     double lower;              /* the least lower bound (scaled) */
     uint64_t pairs, nodes;
+    struct leaf_pair *leaves;  /* the pairs of leaves the float search took */
+    size_t nleaves, leaves_cap;
+    bool leaves_whole;         /* ... all of them: every other pair pruned by its boxes */
 } dist_walk;
+
+/* A pair of leaves the float search took, and their proved gap squared
+ * (0 when not computed). */
+typedef struct leaf_pair {
+    uint32_t a, b;
+    double g2;
+} leaf_pair;
 
 /* Squared distance between boxes, scaled: each gap is computed, then
  * scaled, then squared. A placed box holds its placed triangles exactly
@@ -568,7 +578,7 @@ typedef struct node_pair {
  * its centroids' axis, the planes or the leaves' own gap is measured, and the
  * nearest kept if it beats the best. */
 static inline void nearest_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
-                                  double d2)
+                                  double d2, leaf_pair *rec)
 {
     const placed *A = w->A, *B = w->B;
     /* B's leaf in chunks (a box view's one leaf holds 12) */
@@ -587,6 +597,8 @@ static inline void nearest_leaves(dist_walk *w, const bvh_node *na, const bvh_no
                 placed_tri(A, na->first + i, w->scale, xs[i]);
             const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
             const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+            if (rec != NULL && nb->count <= LEAF_CHUNK)
+                rec->g2 = g * g; /* the whole of B's leaf: the proof may use it */
             if (g * g >= w->best2)
                 continue;
         }
@@ -655,7 +667,7 @@ static void nearest_search_depth(dist_walk *w)
         ++w->nodes;
         const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
         if (na->count > 0 && nb->count > 0) {
-            nearest_leaves(w, na, nb, e.d2);
+            nearest_leaves(w, na, nb, e.d2, NULL);
             continue;
         }
         node_pair c[2];
@@ -719,14 +731,19 @@ static inline node_pair heap_pop(node_pair *h, size_t *n)
  * (nearest_search_depth(), the best so far pruning it), so the search
  * finds what the depth-first one alone would. Finds a pair within
  * sqrt(w->best2) if there is one (as floating point sees it); its points
- * are an upper bound, whatever the pruning missed; the proof
- * (lower_search()) is independent of it.
+ * are an upper bound, whatever the pruning missed. It records the pairs
+ * of leaves it takes (w->leaves, with their proved gaps), for the proof
+ * (lower_leaves_taken()); every other pair of nodes it dropped or left
+ * pending has boxes no nearer than the final best, by their computed
+ * distance.
  */
 static void nearest_search(dist_walk *w)
 {
     node_pair heap[NEAREST_HEAP];
     size_t n = 0;
     bool lost = false;
+    w->nleaves = 0;
+    w->leaves_whole = w->leaves_cap > 0;
     heap_push(heap, &n, (node_pair){0, 0, box_dist2_scaled(&w->A->m->nodes[0], w->A->t,
                                                            &w->B->m->nodes[0], w->B->t,
                                                            w->scale)});
@@ -737,7 +754,14 @@ static void nearest_search(dist_walk *w)
         ++w->nodes;
         const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
         if (na->count > 0 && nb->count > 0) {
-            nearest_leaves(w, na, nb, e.d2);
+            leaf_pair *rec = NULL;
+            if (w->nleaves < w->leaves_cap) {
+                rec = &w->leaves[w->nleaves++];
+                *rec = (leaf_pair){e.a, e.b, 0};
+            } else {
+                w->leaves_whole = false;
+            }
+            nearest_leaves(w, na, nb, e.d2, rec);
             continue;
         }
         node_pair c[2];
@@ -751,8 +775,51 @@ static void nearest_search(dist_walk *w)
                 lost = true;
         }
     }
-    if (lost)
+    if (lost) {
+        w->leaves_whole = false;
         nearest_search_depth(w);
+    }
+}
+
+/* The proof's pair of leaves na and nb (their boxes' squared distance
+ * d2, within the reach): the least proved bound of their triangle pairs
+ * within the reach taken into w->lower (the leaves' own gap first: beyond
+ * the reach, no pair of them is within it). */
+static inline void lower_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
+                                double d2)
+{
+    const placed *A = w->A, *B = w->B;
+    for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+        const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+        double y[LEAF_CHUNK][3][3], ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+        for (uint32_t j = 0; j < nj; ++j) {
+            placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+            tri_bounds(y[j], ylo[j], yhi[j]);
+        }
+        /* the leaves' own gap first: beyond the reach, no pair
+         * of them is within it */
+        if (d2 > 0 && na->count <= LEAF_CHUNK) {
+            double xs[LEAF_CHUNK][3][3], u[3];
+            for (uint32_t i = 0; i < na->count; ++i)
+                placed_tri(A, na->first + i, w->scale, xs[i]);
+            const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+            const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+            if (g * g > w->reach2)
+                continue;
+        }
+        for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+            double x[3][3], xlo[3], xhi[3];
+            placed_tri(A, i, w->scale, x);
+            tri_bounds(x, xlo, xhi);
+            for (uint32_t j = 0; j < nj; ++j) {
+                if (tri_box_dist2(xlo, xhi, ylo[j], yhi[j]) > w->reach2)
+                    continue;
+                ++w->pairs;
+                w->lower =
+                    noct_min(w->lower, tri_tri_lower_bound_to(x, y[j], w->lower));
+            }
+        }
+    }
 }
 
 /*
@@ -778,37 +845,7 @@ static bool lower_search(dist_walk *w)
         if (d2 > w->reach2)
             continue;
         if (na->count > 0 && nb->count > 0) {
-            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
-                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
-                double y[LEAF_CHUNK][3][3], ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
-                for (uint32_t j = 0; j < nj; ++j) {
-                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
-                    tri_bounds(y[j], ylo[j], yhi[j]);
-                }
-                /* the leaves' own gap first: beyond the reach, no pair
-                 * of them is within it */
-                if (d2 > 0 && na->count <= LEAF_CHUNK) {
-                    double xs[LEAF_CHUNK][3][3], u[3];
-                    for (uint32_t i = 0; i < na->count; ++i)
-                        placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
-                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
-                    if (g * g > w->reach2)
-                        continue;
-                }
-                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                    double x[3][3], xlo[3], xhi[3];
-                    placed_tri(A, i, w->scale, x);
-                    tri_bounds(x, xlo, xhi);
-                    for (uint32_t j = 0; j < nj; ++j) {
-                        if (tri_box_dist2(xlo, xhi, ylo[j], yhi[j]) > w->reach2)
-                            continue;
-                        ++w->pairs;
-                        w->lower =
-                            noct_min(w->lower, tri_tri_lower_bound_to(x, y[j], w->lower));
-                    }
-                }
-            }
+            lower_leaves(w, na, nb, d2);
             continue;
         }
         if (top + 2 > NOCT_BVH_PAIR_STACK)
@@ -823,6 +860,56 @@ static bool lower_search(dist_walk *w)
     }
     return true;
 }
+
+/*
+ * The proved lower bound from the pairs of leaves the float search took
+ * (w->leaves, all of them: w->leaves_whole), without a second walk: the
+ * least proved bound of their triangle pairs within the reach, as
+ * lower_search() takes it (a pair whose recorded proved gap, or whose
+ * boxes' distance, is beyond the reach is skipped). Every pair of nodes
+ * the search did not take it dropped or left pending because its boxes'
+ * computed squared distance D2 was no less than the best then, so no
+ * less than the final best2; the caller bounds those pairs by
+ * pruned_bound() below.
+ */
+static void lower_leaves_taken(dist_walk *w)
+{
+    for (size_t k = 0; k < w->nleaves; ++k) {
+        const leaf_pair *e = &w->leaves[k];
+        if (e->g2 > w->reach2)
+            continue;
+        const bvh_node *na = &w->A->m->nodes[e->a], *nb = &w->B->m->nodes[e->b];
+        ++w->nodes;
+        const double d2 = box_dist2_scaled(na, w->A->t, nb, w->B->t, w->scale);
+        if (d2 > w->reach2)
+            continue;
+        lower_leaves(w, na, nb, d2);
+    }
+}
+
+/*
+ * A proved lower bound on the distance of every pair of nodes whose
+ * boxes' computed squared distance (box_dist2_scaled()) is at least
+ * best2, or 0. The boxes hold their placed triangles exactly; each gap
+ * is a difference of two doubles (error at most u = 2^-53 relative),
+ * scaled exactly, squared and summed (three more roundings of at most u
+ * each, relative, while no term underflows; a term that does errs by at
+ * most 2^-1074 absolutely), so the boxes' true squared distance is at
+ * least D2 (1 - 6u) - 2^-1072 >= best2 (1 - 6u) - 2^-1072. For best2 of
+ * at least 2^-900 the absolute term is under 2^-170 best2, and the
+ * distance is at least sqrt(best2) (1 - 4u); sqrt's rounding (half an ulp)
+ * and the product's (another) take less than 2u more, far inside the
+ * factor 1 - 2^-45 taken off. Below 2^-900, 0 (the caller then walks
+ * the trees, lower_search()).
+ */
+static double pruned_bound(double best2)
+{
+    return best2 >= 0x1p-900 ? sqrt(best2) * (1 - 0x1p-45) : 0;
+}
+
+/* Pairs of leaves a search records for its proof, at most (on the stack);
+ * beyond, the proof walks the trees again. */
+#define TAKEN_LEAVES 2048
 
 /* The largest magnitude of a placed mesh's box corners. */
 static double placed_magnitude(const noctMesh *m, const double t[3])
@@ -1022,7 +1109,9 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
                                  ? (max_distance * (1 + 0x1p-40) + slack) * scale
                                  : (double)INFINITY;
     const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
-    dist_walk w = {&A, &B, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0};
+    leaf_pair taken[TAKEN_LEAVES];
+    dist_walk w = {&A, &B, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0,
+                   taken, 0, TAKEN_LEAVES, false};
     const double root2 = box_dist2_scaled(&a->nodes[0], ta, &b->nodes[0], tb, scale);
     if (root2 > reach_max * reach_max) {
         set_beyond(r, max_distance);
@@ -1069,7 +1158,14 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
         const double reach = upper * (1 + 0x1p-40) + slack_s;
         w.reach2 = reach * reach;
         w.lower = upper;
-        proved = lower_search(&w);
+        const double pruned = pruned_bound(w.best2);
+        if (w.leaves_whole && pruned > 0) {
+            /* the search's leaves, and its pruned pairs by their boxes */
+            lower_leaves_taken(&w);
+            w.lower = noct_min(w.lower, pruned);
+        } else {
+            proved = lower_search(&w);
+        }
     }
     if (!proved)
         w.lower = 0;
