@@ -784,9 +784,10 @@ static void nearest_search(dist_walk *w)
 /* The proof's pair of leaves na and nb (their boxes' squared distance
  * d2, within the reach): the least proved bound of their triangle pairs
  * within the reach taken into w->lower (the leaves' own gap first: beyond
- * the reach, no pair of them is within it). */
+ * the reach, no pair of them is within it; gap_known when the caller has
+ * it, within the reach). */
 static inline void lower_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
-                                double d2)
+                                double d2, bool gap_known)
 {
     const placed *A = w->A, *B = w->B;
     for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
@@ -798,7 +799,7 @@ static inline void lower_leaves(dist_walk *w, const bvh_node *na, const bvh_node
         }
         /* the leaves' own gap first: beyond the reach, no pair
          * of them is within it */
-        if (d2 > 0 && na->count <= LEAF_CHUNK) {
+        if (!gap_known && d2 > 0 && na->count <= LEAF_CHUNK) {
             double xs[LEAF_CHUNK][3][3], u[3];
             for (uint32_t i = 0; i < na->count; ++i)
                 placed_tri(A, na->first + i, w->scale, xs[i]);
@@ -845,7 +846,7 @@ static bool lower_search(dist_walk *w)
         if (d2 > w->reach2)
             continue;
         if (na->count > 0 && nb->count > 0) {
-            lower_leaves(w, na, nb, d2);
+            lower_leaves(w, na, nb, d2, false);
             continue;
         }
         if (top + 2 > NOCT_BVH_PAIR_STACK)
@@ -883,7 +884,9 @@ static void lower_leaves_taken(dist_walk *w)
         const double d2 = box_dist2_scaled(na, w->A->t, nb, w->B->t, w->scale);
         if (d2 > w->reach2)
             continue;
-        lower_leaves(w, na, nb, d2);
+        /* B's leaf in one chunk: its gap is the one recorded, within the
+         * reach */
+        lower_leaves(w, na, nb, d2, nb->count <= LEAF_CHUNK);
     }
 }
 
@@ -2196,10 +2199,13 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
             const uint32_t *t = &m->tri[3 * o->first];
             for (uint32_t c = 1; c < 3 * o->count; ++c) {
                 p = &v[3 * t[c]];
-                for (int k = 0; k < 3; ++k) {
-                    lo[k] = noct_min(lo[k], p[k]);
-                    hi[k] = noct_max(hi[k], p[k]);
-                }
+                /* the axes written out: the loop over them cost a third */
+                lo[0] = noct_min(lo[0], p[0]);
+                hi[0] = noct_max(hi[0], p[0]);
+                lo[1] = noct_min(lo[1], p[1]);
+                hi[1] = noct_max(hi[1], p[1]);
+                lo[2] = noct_min(lo[2], p[2]);
+                hi[2] = noct_max(hi[2], p[2]);
             }
         } else {
             const bvh_node *c0 = &nodes[o->first], *c1 = &nodes[o->first + 1];
