@@ -110,22 +110,36 @@ static double proved_gap(const double axis[3], double a[3][3], double b[3][3], d
 
 /* The bound, or any proved bound of at least target once one axis gives
  * it: a caller that takes the least bound over many pairs needs no more of
- * a pair than that it is not below the least so far. The axes the nearest
- * pair of most triangle pairs lies on come first (faces, then corners,
- * then edges). */
+ * a pair than that it is not below the least so far. With a finite target
+ * the direction between the triangles' centroids (times 3) comes first:
+ * any axis bounds the distance from below, and for triangles apart by
+ * more than their size it is within a little of the pair's distance, so
+ * that most pairs the proof's walk meets, beyond the least so far, are
+ * done with one projection. Then the axes the nearest pair of most
+ * triangle pairs lies on (faces, then corners, then edges). */
 static double tri_tri_lower_bound_to(double a[3][3], double b[3][3], double target)
 {
     double s = 0;
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k)
             s = noct_max(s, noct_max(fabs(a[i][k]), fabs(b[i][k])));
+    double first = 0;
+    if (target < (double)INFINITY) {
+        /* an overflowing sum is not finite: noct_gap_axis() refuses it */
+        double c[3];
+        for (int k = 0; k < 3; ++k)
+            c[k] = ((b[0][k] - a[0][k]) + (b[1][k] - a[1][k])) + (b[2][k] - a[2][k]);
+        first = proved_gap(c, a, b, s);
+        if (first >= target)
+            return first;
+    }
     double ea[3][3], eb[3][3];
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
             ea[i][k] = a[(i + 1) % 3][k] - a[i][k];
             eb[i][k] = b[(i + 1) % 3][k] - b[i][k];
         }
-    double best = 0, u[3], w[3], v[3];
+    double best = first, u[3], w[3], v[3];
     /* face normals */
     cross_into(ea[0], ea[1], u);
     best = noct_max(best, proved_gap(u, a, b, s));
@@ -384,7 +398,17 @@ typedef struct dist_walk {
     double reach2;             /* the lower bound walk's reach, squared */
     double lower;              /* the least lower bound (scaled) */
     uint64_t pairs, nodes;
+    struct leaf_pair *leaves;  /* the pairs of leaves the float search took */
+    size_t nleaves, leaves_cap;
+    bool leaves_whole;         /* ... all of them: every other pair pruned by its boxes */
 } dist_walk;
+
+/* A pair of leaves the float search took, and their proved gap squared
+ * (0 when not computed). */
+typedef struct leaf_pair {
+    uint32_t a, b;
+    double g2;
+} leaf_pair;
 
 /* Squared distance between boxes, scaled: each gap is computed, then
  * scaled, then squared. A placed box holds its placed triangles exactly
@@ -525,91 +549,129 @@ static inline double plane_gap2(const double n[4], double y[3][3])
     return nn > 0 ? g / nn * g : 0;
 }
 
+/* The squared gap between triangles x and y along the direction between
+ * their centroids, 0 if their projections overlap: in floating point, a
+ * cheap estimate from below of the pair's distance for the float search
+ * (nearest_leaves()), within a little of it for triangles apart by more
+ * than their size; the search proves nothing with it. */
+static inline double centroid_gap2(double x[3][3], double y[3][3])
+{
+    double u[3];
+    for (int k = 0; k < 3; ++k)
+        u[k] = ((y[0][k] - x[0][k]) + (y[1][k] - x[1][k])) + (y[2][k] - x[2][k]);
+    const double xmax = noct_max(noct_dot3(u, x[0]), noct_max(noct_dot3(u, x[1]),
+                                                              noct_dot3(u, x[2])));
+    const double ymin = noct_min(noct_dot3(u, y[0]), noct_min(noct_dot3(u, y[1]),
+                                                              noct_dot3(u, y[2])));
+    const double g = ymin - xmax, uu = noct_dot3(u, u);
+    return g > 0 && uu > 0 ? g / uu * g : 0;
+}
+
 typedef struct node_pair {
     uint32_t a, b;
     double d2;
 } node_pair;
 
 
-/*
- * The float search for the nearest pair of triangles: a depth-first walk
- * that visits the nearer child pair first (its boxes' distance), so that
- * the best distance falls early and prunes the rest, and that drops a
- * pair of nodes or triangles whose boxes are no nearer than the best.
- * Finds a pair within sqrt(w->best2) if there is one (as floating point
- * sees it); its points are an upper bound, whatever the pruning missed.
- */
-static void nearest_search(dist_walk *w)
+/* The float search's pair of leaves na and nb (their boxes' squared
+ * distance d2): each pair of their triangles not ruled out by its boxes,
+ * its centroids' axis, the planes or the leaves' own gap is measured, and the
+ * nearest kept if it beats the best. */
+static inline void nearest_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
+                                  double d2, leaf_pair *rec)
 {
     const placed *A = w->A, *B = w->B;
+    /* B's leaf in chunks (a box view's one leaf holds 12) */
+    for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+        const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+        double y[LEAF_CHUNK][3][3], ny[LEAF_CHUNK][4];
+        double ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+        for (uint32_t j = 0; j < nj; ++j) {
+            placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+            tri_plane(y[j], ny[j]);
+            tri_bounds(y[j], ylo[j], yhi[j]);
+        }
+        if (d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
+            double xs[LEAF_CHUNK][3][3], u[3];
+            for (uint32_t i = 0; i < na->count; ++i)
+                placed_tri(A, na->first + i, w->scale, xs[i]);
+            const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+            const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+            if (rec != NULL && nb->count <= LEAF_CHUNK)
+                rec->g2 = g * g; /* the whole of B's leaf: the proof may use it */
+            if (g * g >= w->best2)
+                continue;
+        }
+        for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+            double x[3][3], nx[4], xlo[3], xhi[3];
+            placed_tri(A, i, w->scale, x);
+            tri_plane(x, nx);
+            tri_bounds(x, xlo, xhi);
+            for (uint32_t jj = 0; jj < nj; ++jj) {
+                const uint32_t j = nb->first + j0 + jj;
+                double pa[3], pb[3];
+                if (tri_box_dist2(xlo, xhi, ylo[jj], yhi[jj]) >= w->best2 ||
+                    centroid_gap2(x, y[jj]) >= w->best2 ||
+                    plane_gap2(nx, y[jj]) >= w->best2 || plane_gap2(ny[jj], x) >= w->best2)
+                    continue;
+                ++w->pairs;
+                const double dd = tri_tri_nearest(x, y[jj], pa, pb);
+                if (dd < w->best2) {
+                    w->best2 = dd;
+                    noct_copy3(pa, w->pa);
+                    noct_copy3(pb, w->pb);
+                    w->ia = i;
+                    w->ib = j;
+                    w->found = true;
+                }
+            }
+        }
+    }
+}
+
+/* The two child pairs of a pair of inner nodes (the split rule's), with
+ * their boxes' squared distances. */
+static inline void child_pairs(const dist_walk *w, const node_pair *e, node_pair c[2])
+{
+    const bvh_node *na = &w->A->m->nodes[e->a], *nb = &w->B->m->nodes[e->b];
+    if (noct_bvh_split_a(na, nb)) {
+        c[0] = (node_pair){na->first, e->b, 0};
+        c[1] = (node_pair){na->first + 1, e->b, 0};
+    } else {
+        c[0] = (node_pair){e->a, nb->first, 0};
+        c[1] = (node_pair){e->a, nb->first + 1, 0};
+    }
+    for (int k = 0; k < 2; ++k)
+        c[k].d2 = box_dist2_scaled(&w->A->m->nodes[c[k].a], w->A->t, &w->B->m->nodes[c[k].b],
+                                   w->B->t, w->scale);
+}
+
+/*
+ * The float search for the nearest pair of triangles, depth first: it
+ * visits the nearer child pair first (its boxes' distance), so that the
+ * best distance falls early and prunes the rest, and drops a pair of
+ * nodes or triangles whose boxes are no nearer than the best. Finds a
+ * pair within sqrt(w->best2) if there is one (as floating point sees
+ * it); its points are an upper bound, whatever the pruning missed.
+ */
+static void nearest_search_depth(dist_walk *w)
+{
     node_pair stack[NOCT_BVH_PAIR_STACK];
     size_t top = 0;
-    stack[top++] = (node_pair){0, 0, box_dist2_scaled(&A->m->nodes[0], A->t,
-                                                      &B->m->nodes[0], B->t, w->scale)};
+    stack[top++] = (node_pair){0, 0, box_dist2_scaled(&w->A->m->nodes[0], w->A->t,
+                                                      &w->B->m->nodes[0], w->B->t, w->scale)};
     while (top > 0) {
         const node_pair e = stack[--top];
         if (e.d2 >= w->best2)
             continue;
         ++w->nodes;
-        const bvh_node *na = &A->m->nodes[e.a], *nb = &B->m->nodes[e.b];
+        const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
         if (na->count > 0 && nb->count > 0) {
-            /* B's leaf in chunks (a box view's one leaf holds 12) */
-            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
-                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
-                double y[LEAF_CHUNK][3][3], ny[LEAF_CHUNK][4];
-                double ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
-                for (uint32_t j = 0; j < nj; ++j) {
-                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
-                    tri_plane(y[j], ny[j]);
-                    tri_bounds(y[j], ylo[j], yhi[j]);
-                }
-                if (e.d2 > 0 && na->count <= LEAF_CHUNK) { /* the leaves' own gap */
-                    double xs[LEAF_CHUNK][3][3], u[3];
-                    for (uint32_t i = 0; i < na->count; ++i)
-                        placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
-                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
-                    if (g * g >= w->best2)
-                        continue;
-                }
-                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                    double x[3][3], nx[4], xlo[3], xhi[3];
-                    placed_tri(A, i, w->scale, x);
-                    tri_plane(x, nx);
-                    tri_bounds(x, xlo, xhi);
-                    for (uint32_t jj = 0; jj < nj; ++jj) {
-                        const uint32_t j = nb->first + j0 + jj;
-                        double pa[3], pb[3];
-                        if (tri_box_dist2(xlo, xhi, ylo[jj], yhi[jj]) >= w->best2 ||
-                            plane_gap2(nx, y[jj]) >= w->best2 ||
-                            plane_gap2(ny[jj], x) >= w->best2)
-                            continue;
-                        ++w->pairs;
-                        const double d2 = tri_tri_nearest(x, y[jj], pa, pb);
-                        if (d2 < w->best2) {
-                            w->best2 = d2;
-                            noct_copy3(pa, w->pa);
-                            noct_copy3(pb, w->pb);
-                            w->ia = i;
-                            w->ib = j;
-                            w->found = true;
-                        }
-                    }
-                }
-            }
+            nearest_leaves(w, na, nb, e.d2, NULL);
             continue;
         }
         node_pair c[2];
-        if (noct_bvh_split_a(na, nb)) {
-            c[0] = (node_pair){na->first, e.b, 0};
-            c[1] = (node_pair){na->first + 1, e.b, 0};
-        } else {
-            c[0] = (node_pair){e.a, nb->first, 0};
-            c[1] = (node_pair){e.a, nb->first + 1, 0};
-        }
-        for (int k = 0; k < 2; ++k)
-            c[k].d2 = box_dist2_scaled(&A->m->nodes[c[k].a], A->t, &B->m->nodes[c[k].b],
-                                       B->t, w->scale);
+        child_pairs(w, &e, c);
         /* the nearer pair on top; a full stack only loses candidates for
          * the upper bound, never a proof */
         const int near = c[1].d2 < c[0].d2;
@@ -619,6 +681,145 @@ static void nearest_search(dist_walk *w)
             stack[top++] = c[1 - near];
         if (c[near].d2 < w->best2)
             stack[top++] = c[near];
+    }
+}
+
+/* Node pairs the best-first search keeps pending, at most (a binary heap
+ * on the stack); beyond, it finishes depth first. */
+#define NEAREST_HEAP 1024
+
+static inline void heap_push(node_pair *h, size_t *n, node_pair e)
+{
+    size_t i = (*n)++;
+    while (i > 0) {
+        const size_t p = (i - 1) / 2;
+        if (!(e.d2 < h[p].d2))
+            break;
+        h[i] = h[p];
+        i = p;
+    }
+    h[i] = e;
+}
+
+static inline node_pair heap_pop(node_pair *h, size_t *n)
+{
+    const node_pair top = h[0], e = h[--*n];
+    size_t i = 0;
+    for (;;) {
+        size_t c = 2 * i + 1;
+        if (c >= *n)
+            break;
+        if (c + 1 < *n && h[c + 1].d2 < h[c].d2)
+            ++c;
+        if (!(h[c].d2 < e.d2))
+            break;
+        h[i] = h[c];
+        i = c;
+    }
+    if (*n > 0)
+        h[i] = e;
+    return top;
+}
+
+/*
+ * The float search, best first: the pending pairs of nodes in a heap on
+ * their boxes' distance, the nearest taken next, so that a pair of leaves
+ * is measured only when no pending pair's boxes are nearer: once the best
+ * is near the distance (the first few leaves), little else is measured.
+ * Stops when the nearest pending pair is no nearer than the best. If the
+ * heap fills, the pairs it could not keep are searched depth first
+ * (nearest_search_depth(), the best so far pruning it), so the search
+ * finds what the depth-first one alone would. Finds a pair within
+ * sqrt(w->best2) if there is one (as floating point sees it); its points
+ * are an upper bound, whatever the pruning missed. It records the pairs
+ * of leaves it takes (w->leaves, with their proved gaps), for the proof
+ * (lower_leaves_taken()); every other pair of nodes it dropped or left
+ * pending has boxes no nearer than the final best, by their computed
+ * distance.
+ */
+static void nearest_search(dist_walk *w)
+{
+    node_pair heap[NEAREST_HEAP];
+    size_t n = 0;
+    bool lost = false;
+    w->nleaves = 0;
+    w->leaves_whole = w->leaves_cap > 0;
+    heap_push(heap, &n, (node_pair){0, 0, box_dist2_scaled(&w->A->m->nodes[0], w->A->t,
+                                                           &w->B->m->nodes[0], w->B->t,
+                                                           w->scale)});
+    while (n > 0) {
+        const node_pair e = heap_pop(heap, &n);
+        if (e.d2 >= w->best2)
+            break; /* every pending pair is as far */
+        ++w->nodes;
+        const bvh_node *na = &w->A->m->nodes[e.a], *nb = &w->B->m->nodes[e.b];
+        if (na->count > 0 && nb->count > 0) {
+            leaf_pair *rec = NULL;
+            if (w->nleaves < w->leaves_cap) {
+                rec = &w->leaves[w->nleaves++];
+                *rec = (leaf_pair){e.a, e.b, 0};
+            } else {
+                w->leaves_whole = false;
+            }
+            nearest_leaves(w, na, nb, e.d2, rec);
+            continue;
+        }
+        node_pair c[2];
+        child_pairs(w, &e, c);
+        for (int k = 0; k < 2; ++k) {
+            if (!(c[k].d2 < w->best2))
+                continue;
+            if (n < NEAREST_HEAP)
+                heap_push(heap, &n, c[k]);
+            else
+                lost = true;
+        }
+    }
+    if (lost) {
+        w->leaves_whole = false;
+        nearest_search_depth(w);
+    }
+}
+
+/* The proof's pair of leaves na and nb (their boxes' squared distance
+ * d2, within the reach): the least proved bound of their triangle pairs
+ * within the reach taken into w->lower (the leaves' own gap first: beyond
+ * the reach, no pair of them is within it; gap_known when the caller has
+ * it, within the reach). */
+static inline void lower_leaves(dist_walk *w, const bvh_node *na, const bvh_node *nb,
+                                double d2, bool gap_known)
+{
+    const placed *A = w->A, *B = w->B;
+    for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
+        const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
+        double y[LEAF_CHUNK][3][3], ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
+        for (uint32_t j = 0; j < nj; ++j) {
+            placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
+            tri_bounds(y[j], ylo[j], yhi[j]);
+        }
+        /* the leaves' own gap first: beyond the reach, no pair
+         * of them is within it */
+        if (!gap_known && d2 > 0 && na->count <= LEAF_CHUNK) {
+            double xs[LEAF_CHUNK][3][3], u[3];
+            for (uint32_t i = 0; i < na->count; ++i)
+                placed_tri(A, na->first + i, w->scale, xs[i]);
+            const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
+            const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
+            if (g * g > w->reach2)
+                continue;
+        }
+        for (uint32_t i = na->first; i < na->first + na->count; ++i) {
+            double x[3][3], xlo[3], xhi[3];
+            placed_tri(A, i, w->scale, x);
+            tri_bounds(x, xlo, xhi);
+            for (uint32_t j = 0; j < nj; ++j) {
+                if (tri_box_dist2(xlo, xhi, ylo[j], yhi[j]) > w->reach2)
+                    continue;
+                ++w->pairs;
+                w->lower =
+                    noct_min(w->lower, tri_tri_lower_bound_to(x, y[j], w->lower));
+            }
+        }
     }
 }
 
@@ -645,37 +846,7 @@ static bool lower_search(dist_walk *w)
         if (d2 > w->reach2)
             continue;
         if (na->count > 0 && nb->count > 0) {
-            for (uint32_t j0 = 0; j0 < nb->count; j0 += LEAF_CHUNK) {
-                const uint32_t nj = noct_min_u32(nb->count - j0, LEAF_CHUNK);
-                double y[LEAF_CHUNK][3][3], ylo[LEAF_CHUNK][3], yhi[LEAF_CHUNK][3];
-                for (uint32_t j = 0; j < nj; ++j) {
-                    placed_tri(B, nb->first + j0 + j, w->scale, y[j]);
-                    tri_bounds(y[j], ylo[j], yhi[j]);
-                }
-                /* the leaves' own gap first: beyond the reach, no pair
-                 * of them is within it */
-                if (d2 > 0 && na->count <= LEAF_CHUNK) {
-                    double xs[LEAF_CHUNK][3][3], u[3];
-                    for (uint32_t i = 0; i < na->count; ++i)
-                        placed_tri(A, na->first + i, w->scale, xs[i]);
-                    const double sc = leaf_axis(na, A->t, nb, B->t, w->scale, u);
-                    const double g = proved_gap_sets(u, xs, na->count, y, nj, sc);
-                    if (g * g > w->reach2)
-                        continue;
-                }
-                for (uint32_t i = na->first; i < na->first + na->count; ++i) {
-                    double x[3][3], xlo[3], xhi[3];
-                    placed_tri(A, i, w->scale, x);
-                    tri_bounds(x, xlo, xhi);
-                    for (uint32_t j = 0; j < nj; ++j) {
-                        if (tri_box_dist2(xlo, xhi, ylo[j], yhi[j]) > w->reach2)
-                            continue;
-                        ++w->pairs;
-                        w->lower =
-                            noct_min(w->lower, tri_tri_lower_bound_to(x, y[j], w->lower));
-                    }
-                }
-            }
+            lower_leaves(w, na, nb, d2, false);
             continue;
         }
         if (top + 2 > NOCT_BVH_PAIR_STACK)
@@ -690,6 +861,58 @@ static bool lower_search(dist_walk *w)
     }
     return true;
 }
+
+/*
+ * The proved lower bound from the pairs of leaves the float search took
+ * (w->leaves, all of them: w->leaves_whole), without a second walk: the
+ * least proved bound of their triangle pairs within the reach, as
+ * lower_search() takes it (a pair whose recorded proved gap, or whose
+ * boxes' distance, is beyond the reach is skipped). Every pair of nodes
+ * the search did not take it dropped or left pending because its boxes'
+ * computed squared distance D2 was no less than the best then, so no
+ * less than the final best2; the caller bounds those pairs by
+ * pruned_bound() below.
+ */
+static void lower_leaves_taken(dist_walk *w)
+{
+    for (size_t k = 0; k < w->nleaves; ++k) {
+        const leaf_pair *e = &w->leaves[k];
+        if (e->g2 > w->reach2)
+            continue;
+        const bvh_node *na = &w->A->m->nodes[e->a], *nb = &w->B->m->nodes[e->b];
+        ++w->nodes;
+        const double d2 = box_dist2_scaled(na, w->A->t, nb, w->B->t, w->scale);
+        if (d2 > w->reach2)
+            continue;
+        /* B's leaf in one chunk: its gap is the one recorded, within the
+         * reach */
+        lower_leaves(w, na, nb, d2, nb->count <= LEAF_CHUNK);
+    }
+}
+
+/*
+ * A proved lower bound on the distance of every pair of nodes whose
+ * boxes' computed squared distance (box_dist2_scaled()) is at least
+ * best2, or 0. The boxes hold their placed triangles exactly; each gap
+ * is a difference of two doubles (error at most u = 2^-53 relative),
+ * scaled exactly, squared and summed (three more roundings of at most u
+ * each, relative, while no term underflows; a term that does errs by at
+ * most 2^-1074 absolutely), so the boxes' true squared distance is at
+ * least D2 (1 - 6u) - 2^-1072 >= best2 (1 - 6u) - 2^-1072. For best2 of
+ * at least 2^-900 the absolute term is under 2^-170 best2, and the
+ * distance is at least sqrt(best2) (1 - 4u); sqrt's rounding (half an ulp)
+ * and the product's (another) take less than 2u more, far inside the
+ * factor 1 - 2^-45 taken off. Below 2^-900, 0 (the caller then walks
+ * the trees, lower_search()).
+ */
+static double pruned_bound(double best2)
+{
+    return best2 >= 0x1p-900 ? sqrt(best2) * (1 - 0x1p-45) : 0;
+}
+
+/* Pairs of leaves a search records for its proof, at most (on the stack);
+ * beyond, the proof walks the trees again. */
+#define TAKEN_LEAVES 2048
 
 /* The largest magnitude of a placed mesh's box corners. */
 static double placed_magnitude(const noctMesh *m, const double t[3])
@@ -889,7 +1112,9 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
                                  ? (max_distance * (1 + 0x1p-40) + slack) * scale
                                  : (double)INFINITY;
     const placed A = {a, {ta[0], ta[1], ta[2]}}, B = {b, {tb[0], tb[1], tb[2]}};
-    dist_walk w = {&A, &B, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0};
+    leaf_pair taken[TAKEN_LEAVES];
+    dist_walk w = {&A, &B, scale, 0, {0, 0, 0}, {0, 0, 0}, 0, 0, false, 0, INFINITY, 0, 0,
+                   taken, 0, TAKEN_LEAVES, false};
     const double root2 = box_dist2_scaled(&a->nodes[0], ta, &b->nodes[0], tb, scale);
     if (root2 > reach_max * reach_max) {
         set_beyond(r, max_distance);
@@ -936,7 +1161,14 @@ noctStatus noct_distance_placed(const noctMesh *a, const double ta[3], const noc
         const double reach = upper * (1 + 0x1p-40) + slack_s;
         w.reach2 = reach * reach;
         w.lower = upper;
-        proved = lower_search(&w);
+        const double pruned = pruned_bound(w.best2);
+        if (w.leaves_whole && pruned > 0) {
+            /* the search's leaves, and its pruned pairs by their boxes */
+            lower_leaves_taken(&w);
+            w.lower = noct_min(w.lower, pruned);
+        } else {
+            proved = lower_search(&w);
+        }
     }
     if (!proved)
         w.lower = 0;
@@ -2142,30 +2374,39 @@ static noctStatus rotated_view(const noctMesh *m, const double R[9], noctMesh *v
         noct_rotate(R, &m->v[3 * i], &v[3 * i]);
     if (!m->turn_fine && !rotated_fine(m, v))
         return NOCT_ERR_DEGENERATE;
+    /* refitted children first; the bounds kept in locals (stores through
+     * x would be reloaded for every corner) */
     for (size_t n = m->nnodes; n-- > 0;) {
         const bvh_node *o = &m->nodes[n];
         bvh_node *x = &nodes[n];
         x->first = o->first;
         x->count = o->count;
-        for (int k = 0; k < 3; ++k) {
-            x->lo[k] = INFINITY;
-            x->hi[k] = -INFINITY;
-        }
+        double lo[3], hi[3];
         if (o->count > 0) {
-            for (uint32_t t = o->first; t < o->first + o->count; ++t)
-                for (int c = 0; c < 3; ++c) {
-                    const double *p = &v[3 * m->tri[3 * t + c]];
-                    for (int k = 0; k < 3; ++k) {
-                        x->lo[k] = noct_min(x->lo[k], p[k]);
-                        x->hi[k] = noct_max(x->hi[k], p[k]);
-                    }
-                }
+            const double *p = &v[3 * m->tri[3 * o->first]];
+            for (int k = 0; k < 3; ++k)
+                lo[k] = hi[k] = p[k];
+            const uint32_t *t = &m->tri[3 * o->first];
+            for (uint32_t c = 1; c < 3 * o->count; ++c) {
+                p = &v[3 * t[c]];
+                /* the axes written out: the loop over them cost a third */
+                lo[0] = noct_min(lo[0], p[0]);
+                hi[0] = noct_max(hi[0], p[0]);
+                lo[1] = noct_min(lo[1], p[1]);
+                hi[1] = noct_max(hi[1], p[1]);
+                lo[2] = noct_min(lo[2], p[2]);
+                hi[2] = noct_max(hi[2], p[2]);
+            }
         } else {
-            for (int c = 0; c < 2; ++c)
-                for (int k = 0; k < 3; ++k) {
-                    x->lo[k] = noct_min(x->lo[k], nodes[o->first + (uint32_t)c].lo[k]);
-                    x->hi[k] = noct_max(x->hi[k], nodes[o->first + (uint32_t)c].hi[k]);
-                }
+            const bvh_node *c0 = &nodes[o->first], *c1 = &nodes[o->first + 1];
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = noct_min(c0->lo[k], c1->lo[k]);
+                hi[k] = noct_max(c0->hi[k], c1->hi[k]);
+            }
+        }
+        for (int k = 0; k < 3; ++k) {
+            x->lo[k] = lo[k];
+            x->hi[k] = hi[k];
         }
     }
     *view = *m;

@@ -77,8 +77,8 @@
 
 /* ---- the test's meshes ----------------------------------------------------- */
 
-#define TM_MAXV 24
-#define TM_MAXT 48
+#define TM_MAXV 512
+#define TM_MAXT 1024
 
 /* A mesh as the oracle sees it: its vertices and the triangles of the
  * solid, and the library's mesh. */
@@ -2235,6 +2235,152 @@ START_TEST(tiny_features_in_small_meshes)
 }
 END_TEST
 
+/* ---- many triangles: the general path's search and proof ------------------ */
+
+/* A bumpy sphere of n * (m - 1) + 2 vertices (as bench-peers' bumpy-960,
+ * radius r, bumps of bump r), scaled by s; a surface (enclosing nothing)
+ * if surface. */
+static bool tm_bumpy(tmesh *t, int n, int m, double r, double bump, double s, bool surface)
+{
+    const double pi = 3.14159265358979323846;
+    double v[3 * TM_MAXV];
+    uint32_t idx[3 * TM_MAXT], sizes[TM_MAXT];
+    size_t nv = 0, nt = 0;
+    for (int i = 0; i <= m; ++i) {
+        const double th = pi * i / m;
+        for (int j = 0; j < (i == 0 || i == m ? 1 : n); ++j) {
+            const double ph = 2 * pi * j / n;
+            const double rad = r * (1 + bump * (0.5 * sin(3 * th + 1.3) * cos(4 * ph + 4.1) +
+                                                0.5 * sin(5 * ph) * sin(2 * th)));
+            ck_assert(nv < TM_MAXV);
+            v[3 * nv] = s * (rad * sin(th) * cos(ph));
+            v[3 * nv + 1] = s * (rad * sin(th) * sin(ph));
+            v[3 * nv + 2] = s * (rad * cos(th));
+            ++nv;
+        }
+    }
+    const uint32_t last = (uint32_t)nv - 1, base = 1 + (uint32_t)((m - 2) * n);
+#define TRI(x, y, z)                                                                      \
+    do {                                                                                  \
+        ck_assert(nt < TM_MAXT);                                                          \
+        idx[3 * nt] = (x), idx[3 * nt + 1] = (y), idx[3 * nt + 2] = (z), sizes[nt++] = 3; \
+    } while (0)
+    for (int j = 0; j < n; ++j)
+        TRI(0, 1 + (uint32_t)j, 1 + (uint32_t)((j + 1) % n));
+    for (int j = 0; j < n; ++j)
+        TRI(last, base + (uint32_t)((j + 1) % n), base + (uint32_t)j);
+    for (int i = 1; i + 1 < m; ++i)
+        for (int j = 0; j < n; ++j) {
+            const uint32_t a = 1 + (uint32_t)((i - 1) * n + j),
+                           b = 1 + (uint32_t)((i - 1) * n + (j + 1) % n);
+            TRI(a, a + (uint32_t)n, b);
+            TRI(b, a + (uint32_t)n, b + (uint32_t)n);
+        }
+#undef TRI
+    if (!surface) {
+        char name[48];
+        snprintf(name, sizeof name, "bumpy %d x %d r %g", n, m, r);
+        return tm_create(t, v, nv, sizes, nt, idx, name);
+    }
+    tm_geometry(t, v, nv, sizes, nt, idx);
+    t->numbered = true;
+    snprintf(t->name, sizeof t->name, "bumpy surface %d x %d r %g", n, m, r);
+    return noctMeshCreateSurface(v, nv, sizes, nt, idx, &t->m, NULL) == NOCT_OK;
+}
+
+/*
+ * Meshes of hundreds of triangles, where the general path's best-first
+ * search, the proof's and the search's centroid axes and the rotated
+ * views' refitted boxes decide: two bumpy solids (224 triangles each),
+ * both turned, at random scales (2^-300 to 2^300) and offsets, B along a
+ * random direction from overlapping to three sizes apart, then bisected
+ * (with the exact verdict) to where the solids just touch and checked an
+ * ulp or so either side; and a bumpy solid of 960 triangles inside a
+ * bumpy shell (a surface, which encloses nothing) of 960, whose boxes
+ * all overlap, so that the best-first search's heap fills and the search
+ * finishes depth first. Each placement against the exact oracle over all
+ * pairs of boundary triangles.
+ */
+START_TEST(many_triangles)
+{
+    uint64_t rng = 0x3a7e0000u;
+    for (int n = 0; n < 8; ++n) {
+        const double s = scales[n % (sizeof scales / sizeof scales[0])];
+        const double O = n % 3 == 0 ? 0 : s * ldexp(1, (int)test_rand_below(&rng, 41));
+        if (!offset_ok(O, 4 * s))
+            continue;
+        tmesh A, B;
+        ck_assert(tm_bumpy(&A, 16, 8, 1, 0.3, s, false));
+        ck_assert(tm_bumpy(&B, 16, 8, 0.8, 0.4, s, false));
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        test_random_quat(&rng, &xb.q);
+        double dir[3], len;
+        do {
+            for (int k = 0; k < 3; ++k)
+                dir[k] = 2 * test_uniform(&rng) - 1;
+            len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        } while (len < 0.1 || len > 1);
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = O;
+        const double at[] = {1.5, 2.3, 4.0, 6.5};
+        char label[160];
+        for (size_t i = 0; i < sizeof at / sizeof at[0]; ++i) {
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = O + dir[k] / len * at[i] * s;
+            snprintf(label, sizeof label, "many %d: scale %a offset %a, %g apart", n, s, O,
+                     at[i]);
+            (void)check_pair_d2(&A, &xa, &B, &xb, label);
+        }
+        /* bisected to the exact verdict's turn */
+        double lo = 0, hi = 6.5 * s;
+        for (int it = 0; it < 80; ++it) {
+            const double mid = lo + (hi - lo) / 2;
+            if (mid <= lo || mid >= hi)
+                break;
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = O + dir[k] / len * mid;
+            bool meet = false;
+            ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
+                                                    &meet, NULL, NULL),
+                             NOCT_OK);
+            if (meet)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        const double ends[2] = {lo, hi};
+        for (int e = 0; e < 2; ++e) {
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = O + dir[k] / len * ends[e];
+            snprintf(label, sizeof label, "many %d: scale %a offset %a, touching (%s)", n, s,
+                     O, e ? "apart" : "meeting");
+            (void)check_pair_d2(&A, &xa, &B, &xb, label);
+        }
+        tm_free(&A);
+        tm_free(&B);
+    }
+    /* a solid in a shell: every box pair overlaps at first */
+    for (int n = 0; n < 3; ++n) {
+        const double s = scales[n];
+        tmesh A, B;
+        ck_assert(tm_bumpy(&A, 32, 16, 1, 0.3, s, false));
+        ck_assert(tm_bumpy(&B, 32, 16, 2.2, 0.2, s, true));
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        test_random_quat(&rng, &xa.q);
+        test_random_quat(&rng, &xb.q);
+        xb.p[0] = 0.1 * s;
+        char label[160];
+        snprintf(label, sizeof label, "solid in a shell, scale %a", s);
+        const double d2 = check_pair_d2(&A, &xa, &B, &xb, label);
+        EXPECT(d2 > 0);
+        tm_free(&A);
+        tm_free(&B);
+    }
+    report_failures("many_triangles");
+}
+END_TEST
+
 static Suite *distance_suite(void)
 {
     Suite *s = suite_create("distance");
@@ -2251,7 +2397,8 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, near_touch, 0, 1);
     tcase_add_loop_test(tc, turned_boxes, 0, 1);
     tcase_add_loop_test(tc, box_paths, 0, 1);
-    add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes);
+    add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes,
+              many_triangles);
     tc = test_case(s, "random, more seeds", 600, "slow");
     tcase_add_loop_test(tc, random_pairs, 1, 6);
     tcase_add_loop_test(tc, rotated_both_ways, 1, 4);
