@@ -152,12 +152,14 @@ typedef struct noct_near_hint {
 } noct_near_hint;
 
 /* The hints of the last step's candidate pairs, sorted by (i, j); at most
- * one a candidate of that step, all dropped when a step has no margin or
- * cannot make them (the hints are never needed: a step without them
- * decides the same pairs). */
+ * one a candidate of that step, none when a step could not make them all
+ * (the hints are never needed: a step without them decides the same
+ * pairs); and the spare array the next step makes its hints in (the two
+ * swap), so that a step allocates nothing once they are large enough.
+ * Both freed when a step finds the margin gone. */
 typedef struct noct_near_hints {
-    noct_near_hint *h;
-    size_t n;
+    noct_near_hint *h, *spare;
+    size_t n, cap, capspare;
 } noct_near_hints;
 
 /*

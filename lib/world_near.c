@@ -201,9 +201,11 @@ static void hint_apart(noct_near_hint *h, const double v[3])
 }
 
 /* near_witness() below; when it proves the pair near or apart, the proof
- * as a hint into *h. */
+ * as a hint into *h. from: where the projections start in b's shrunk box
+ * (its centre when NULL; any point will do: the points are found anew). */
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                        const double tb[3], double d, int rounds, noct_near_hint *h)
+                        const double tb[3], double d, int rounds, noct_near_hint *h,
+                        const double *from)
 {
     if (!(a->shrink < 1 && b->shrink < 1))
         return -1;
@@ -216,7 +218,8 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CA[3] = {a->c[0] + ta[0], a->c[1] + ta[1], a->c[2] + ta[2]};
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
-    double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0}, la[3], lb[3];
+    const double *q0 = from != NULL ? from : CB;
+    double p[3], q[3] = {q0[0], q0[1], q0[2]}, v[3] = {0, 0, 0}, la[3], lb[3];
     for (int round = 1; round <= rounds; ++round) {
         project_box(a, CA, fa, q, p, la);
         project_box(b, CB, fb, p, q, lb);
@@ -260,7 +263,7 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
  * operations for an apart hint, fifty for a near one.
  */
 static int hint_proof(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                      const double tb[3], double d, const noct_near_hint *h)
+                      const double tb[3], double d, const noct_near_hint *h, double from[3])
 {
     double T[3];
     const double M = box_offset(a, ta, b, tb, T);
@@ -289,6 +292,7 @@ static int hint_proof(const noct_box_slot *a, const double ta[3], const noct_box
     }
     const double reach = (d - unit) * (1 - 0x1p-48);
     const double v[3] = {x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
+    memcpy(from, x[1], sizeof x[1]);
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach ? 1 : -1;
 }
 
@@ -354,11 +358,18 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
     if (w->slot[i].has_box && w->slot[j].has_box) {
         const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
         if (old != NULL) {
-            const int r = hint_proof(a, w->pos[i], b, w->pos[j], d, old);
+            double from[3] = {0, 0, 0};
+            const int r = hint_proof(a, w->pos[i], b, w->pos[j], d, old, from);
             if (r >= 0) {
                 *h = *old;
                 return r == 1;
             }
+            /* a near pair that moved: most often still near, its points
+             * found again by a round of projections from j's old point
+             * (which changes no answer, as any start would not) */
+            if (old->kind == NOCT_HINT_NEAR &&
+                near_witness(a, w->pos[i], b, w->pos[j], d, 1, h, from) == 1)
+                return true;
         }
         /* Where the boxes overlap, a first round of the witness proves
          * most near pairs near (on keyframes:2000 four in five) in a few
@@ -368,7 +379,7 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
          * answer, as none contradicts another (the witness's points lie
          * in the solids, the axes part the solids' boxes by more than
          * d). */
-        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1, h) == 1)
+        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1, h, NULL) == 1)
             return true;
         /* two boxes that a separating axis proves farther apart: the
          * common case, a few dozen operations */
@@ -377,7 +388,7 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
             hint_apart(h, axis);
             return false;
         }
-        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS, h);
+        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS, h, NULL);
         if (r >= 0)
             return r == 1;
     }
@@ -859,7 +870,8 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* (no margin left: the pairs the last one kept end) */
     const bool any = W > 0 || m != NULL;
     near_sweep s = {.w = w, .m = m, .W = W, .M = M};
-    hint_walk hw = {w->hints.h, w->hints.h + w->hints.n, NULL, 0, 0, !any};
+    hint_walk hw = {w->hints.h, w->hints.h + w->hints.n, w->hints.spare, 0, w->hints.capspare,
+                    !any};
     noct_near_hint h;
     const int by_leaves = any ? near_candidates(&s) : 0;
     if (by_leaves < 0)
@@ -956,15 +968,19 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     free(p.s);
     /* this step's hints for the next (none when it failed or could not
-     * keep them all: a missing hint only costs a proof) */
-    free(w->hints.h);
-    w->hints.h = NULL;
-    w->hints.n = 0;
-    if (st == NOCT_OK && !hw.failed) {
-        w->hints.h = hw.h;
-        w->hints.n = hw.n;
-    } else {
+     * keep them all: a missing hint only costs a proof); the last step's
+     * array is the next one's spare */
+    noct_near_hints *kept = &w->hints;
+    if (!any) {
+        free(kept->h);
         free(hw.h);
+        *kept = (noct_near_hints){NULL, NULL, 0, 0, 0};
+    } else if (st == NOCT_OK && !hw.failed) {
+        *kept = (noct_near_hints){hw.h, kept->h, hw.n, hw.cap, kept->cap};
+    } else {
+        kept->n = 0;
+        kept->spare = hw.h;
+        kept->capspare = hw.cap;
     }
     /* near events are not among the counters' events */
     if (st == NOCT_OK && (w->def.effects & NOCT_EFFECT_EVENTS))
