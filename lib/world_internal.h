@@ -149,6 +149,8 @@ typedef struct noct_near_hint {
     uint32_t i, j;
     uint32_t kind;
     float h[6];
+    float turn[2]; /* a mark of each box form's turn then: a hint whose
+                      objects turned since is not tried */
 } noct_near_hint;
 
 /* The hints of the last step's candidate pairs, sorted by (i, j); at most

@@ -347,6 +347,13 @@ static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3
     return !(s > beyond * beyond);
 }
 
+/* A mark of box form s's turn, which an object that only moved keeps (a
+ * heuristic: which hints to try). */
+static NOCT_ALWAYS_INLINE float turn_mark(const noct_box_slot *s)
+{
+    return (float)(s->e[0][1] + s->e[1][2] + s->e[2][0]);
+}
+
 /* Are objects i and j, whose boxes passed boxes_near(), near at the
  * world's level (not the box level), if they do not collide? overlap:
  * their boxes overlap (a hint only). old: the last step's proof of the
@@ -357,7 +364,10 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
     h->kind = 0;
     if (w->slot[i].has_box && w->slot[j].has_box) {
         const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
-        if (old != NULL) {
+        h->turn[0] = turn_mark(a);
+        h->turn[1] = turn_mark(b);
+        /* (a turned object's hint seldom holds: not tried) */
+        if (old != NULL && old->turn[0] == h->turn[0] && old->turn[1] == h->turn[1]) {
             double from[3] = {0, 0, 0};
             const int r = hint_proof(a, w->pos[i], b, w->pos[j], d, old, from);
             if (r >= 0) {
