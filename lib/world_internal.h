@@ -157,8 +157,10 @@ typedef struct noct_near_hint {
  * one a candidate of that step, none when a step could not make them all
  * (the hints are never needed: a step without them decides the same
  * pairs); and the spare array the next step makes its hints in (the two
- * swap), so that a step allocates nothing once they are large enough.
- * Both freed when a step finds the margin gone. */
+ * swap), so that a step allocates nothing once they are large enough
+ * (the spare goes when it is far larger than the last step's hints). Both
+ * freed when a step finds the margin gone; a removed object's hints go
+ * with the next step's. */
 typedef struct noct_near_hints {
     noct_near_hint *h, *spare;
     size_t n, cap, capspare;

@@ -992,6 +992,14 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         kept->spare = hw.h;
         kept->capspare = hw.cap;
     }
+    /* (a spare far larger than the pairs now, left by a step of many
+     * more, goes: what the hints hold stays within a few times the
+     * pairs of the last two steps) */
+    if (kept->capspare > 4 * kept->n + 4096) {
+        free(kept->spare);
+        kept->spare = NULL;
+        kept->capspare = 0;
+    }
     /* near events are not among the counters' events */
     if (st == NOCT_OK && (w->def.effects & NOCT_EFFECT_EVENTS))
         st = noct_record_diff(e, NULL);
