@@ -280,6 +280,10 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
  * noct_box_decide())? false when it cannot. */
 bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                        const double tb[3], double d);
+/* noct_box_apart_by(), and when true the axis (not unit) along which the
+ * box forms were proved farther apart than d, into axis. */
+bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                         const double tb[3], double d, double axis[3]);
 
 /* The slack of the distance test below for these placed meshes and d:
  * 2^-40 of the largest coordinate of their placed boxes or d, whichever

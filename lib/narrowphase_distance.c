@@ -26,8 +26,18 @@ static bool gap_beyond(double gap, const double u[3], double d)
     return gap > d * n * (1 + 0x1p-40);
 }
 
-bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                       const double tb[3], double d)
+static NOCT_ALWAYS_INLINE bool found_axis(double *axis, const double u[3])
+{
+    if (axis != NULL)
+        memcpy(axis, u, 3 * sizeof *axis);
+    return true;
+}
+
+/* noct_box_apart_by(), and the axis that proved it into axis (when not
+ * NULL). */
+static NOCT_ALWAYS_INLINE bool apart_by(const noct_box_slot *a, const double ta[3],
+                                        const noct_box_slot *b, const double tb[3], double d,
+                                        double *axis)
 {
     double T[3];
     const double M = box_offset(a, ta, b, tb, T);
@@ -42,7 +52,7 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
                            (fabs(C[i][0]) + fabs(C[i][1]) + fabs(C[i][2])) - la[i] * dev -
                            unit * la[i];
         if (gap_beyond(gap, u, d))
-            return true;
+            return found_axis(axis, u);
     }
     for (int j = 0; j < 3; ++j) {
         const double *u = b->e[j];
@@ -51,7 +61,7 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
                            (fabs(C[0][j]) + fabs(C[1][j]) + fabs(C[2][j])) - lb[j] * dev -
                            unit * lb[j];
         if (gap_beyond(gap, u, d))
-            return true;
+            return found_axis(axis, u);
     }
     for (int i = 0; i < 3; ++i) {
         const double *x = a->e[i];
@@ -65,10 +75,22 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
             const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) -
                                box_radius(a->e, u) - box_radius(b->e, u) - l1 * dev - unit * l1;
             if (gap_beyond(gap, u, d))
-                return true;
+                return found_axis(axis, u);
         }
     }
     return false;
+}
+
+bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                       const double tb[3], double d)
+{
+    return apart_by(a, ta, b, tb, d, NULL);
+}
+
+bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                         const double tb[3], double d, double axis[3])
+{
+    return apart_by(a, ta, b, tb, d, axis);
 }
 
 /* ---- triangles' distances, proved from below ------------------------------------ */

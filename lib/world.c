@@ -110,6 +110,8 @@ void noctWorldDestroy(noctWorld *w)
     free(w->spin.w);
     free(w->spin.spinners);
     free(w->margins.of);
+    free(w->hints.h);
+    free(w->hints.spare);
     free(w->placed);
     noct_world_free_sweeps(w);
     noct_world_free_tracks(w);

@@ -136,6 +136,36 @@ typedef struct noct_margins {
                               last one kept to end */
 } noct_margins;
 
+/* A proof of the last step's near stage kept for the next (world_near.c)
+ * for pair (i, j), i < j: NOCT_HINT_NEAR, the coefficients of a point of
+ * each solid's shrunk box form (h[0..2] i's, h[3..5] j's) that were
+ * within the margin; NOCT_HINT_APART, an axis along which the box forms
+ * were farther apart. Only a hint: the next step proves the pair afresh
+ * from it (a few dozen operations, where the proofs take a thousand) and
+ * decides as before when that fails, so a hint for another pair, another
+ * object in the slot or a turned shape is merely useless. */
+enum { NOCT_HINT_NEAR = 1, NOCT_HINT_APART = 2 };
+typedef struct noct_near_hint {
+    uint32_t i, j;
+    uint32_t kind;
+    float h[6];
+    float turn[2]; /* a mark of each box form's turn then: a hint whose
+                      objects turned since is not tried */
+} noct_near_hint;
+
+/* The hints of the last step's candidate pairs, sorted by (i, j); at most
+ * one a candidate of that step, none when a step could not make them all
+ * (the hints are never needed: a step without them decides the same
+ * pairs); and the spare array the next step makes its hints in (the two
+ * swap), so that a step allocates nothing once they are large enough
+ * (the spare goes when it is far larger than the last step's hints). Both
+ * freed when a step finds the margin gone; a removed object's hints go
+ * with the next step's. */
+typedef struct noct_near_hints {
+    noct_near_hint *h, *spare;
+    size_t n, cap, capspare;
+} noct_near_hints;
+
 /*
  * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, or objects of
  * continuous quality; world_sweep.c):
@@ -228,6 +258,7 @@ struct noctWorld {
     noct_events events;
     noct_spin spin;
     noct_margins margins;
+    noct_near_hints hints;
     noct_tracks tracks;
     noct_ignored ignored;
     noct_sweeps sweeps;

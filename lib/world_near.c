@@ -40,6 +40,41 @@ typedef struct partners {
 } partners;
 
 NOCT_DEFINE_GROW(grow_u32, uint32_t)
+NOCT_DEFINE_GROW(grow_hint, noct_near_hint)
+
+/* The hints of a step: the last step's, read in the order of the pairs
+ * (both lists sorted by (i, j)), and this one's, made as the pairs are
+ * decided (failed: no room for them, and this step keeps none). */
+typedef struct hint_walk {
+    const noct_near_hint *old, *end;
+    noct_near_hint *h;
+    size_t n, cap;
+    bool failed;
+} hint_walk;
+
+/* The last step's hint for pair (i, j), or NULL; pairs asked in order. */
+static NOCT_ALWAYS_INLINE const noct_near_hint *hint_of(hint_walk *k, uint32_t i, uint32_t j)
+{
+    while (k->old < k->end && (k->old->i < i || (k->old->i == i && k->old->j < j)))
+        ++k->old;
+    return k->old < k->end && k->old->i == i && k->old->j == j ? k->old : NULL;
+}
+
+/* Keep pair (i, j)'s proof h, if any, for the next step. */
+static NOCT_ALWAYS_INLINE void hint_keep(hint_walk *k, uint32_t i, uint32_t j,
+                                         const noct_near_hint *h)
+{
+    if (h->kind == 0 || k->failed)
+        return;
+    if (k->n == k->cap && !grow_hint(&k->h, &k->cap, k->cap > 0 ? k->n + 1 : 1024)) {
+        k->failed = true;
+        return;
+    }
+    k->h[k->n] = *h;
+    k->h[k->n].i = i;
+    k->h[k->n].j = j;
+    ++k->n;
+}
 
 static bool take(void *context, noctProxyId id, void *user)
 {
@@ -105,9 +140,10 @@ static bool listed(const noct_pair_list *l, uint32_t a, uint32_t b)
 #define WITNESS_CHECK 8
 
 /* The coefficients of the point of shrunk box s (centre at C, factor f)
- * nearest x, if its edges are orthogonal, clamped to it; and the point. */
+ * nearest x, if its edges are orthogonal, clamped to it, into lam; and the
+ * point. */
 static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double C[3], double f,
-                                           const double x[3], double p[3])
+                                           const double x[3], double p[3], double lam[3])
 {
     const double r[3] = {x[0] - C[0], x[1] - C[1], x[2] - C[2]};
     p[0] = C[0];
@@ -118,6 +154,7 @@ static NOCT_ALWAYS_INLINE void project_box(const noct_box_slot *s, const double 
         const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
         double l = ee > 0 ? (e[0] * r[0] + e[1] * r[1] + e[2] * r[2]) / ee : 0;
         l = l > f ? f : l < -f ? -f : l; /* (a NaN stays: the check fails) */
+        lam[i] = l;
         for (int k = 0; k < 3; ++k)
             p[k] += l * e[k];
     }
@@ -145,8 +182,30 @@ static bool witness_apart(const noct_box_slot *a, const noct_box_slot *b, const 
     return gap > beyond * un * (1 + 0x1p-40);
 }
 
+/* A hint from a proof: near, with the coefficients of the two points; or
+ * apart, along axis v. */
+static void hint_near(noct_near_hint *h, const double la[3], const double lb[3])
+{
+    h->kind = NOCT_HINT_NEAR;
+    for (int k = 0; k < 3; ++k) {
+        h->h[k] = (float)la[k];
+        h->h[3 + k] = (float)lb[k];
+    }
+}
+
+static void hint_apart(noct_near_hint *h, const double v[3])
+{
+    h->kind = NOCT_HINT_APART;
+    for (int k = 0; k < 3; ++k)
+        h->h[k] = (float)v[k];
+}
+
+/* near_witness() below; when it proves the pair near or apart, the proof
+ * as a hint into *h. from: where the projections start in b's shrunk box
+ * (its centre when NULL; any point will do: the points are found anew). */
 static int near_witness(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
-                        const double tb[3], double d, int rounds)
+                        const double tb[3], double d, int rounds, noct_near_hint *h,
+                        const double *from)
 {
     if (!(a->shrink < 1 && b->shrink < 1))
         return -1;
@@ -159,21 +218,82 @@ static int near_witness(const noct_box_slot *a, const double ta[3], const noct_b
     const double CA[3] = {a->c[0] + ta[0], a->c[1] + ta[1], a->c[2] + ta[2]};
     const double CB[3] = {b->c[0] + tb[0], b->c[1] + tb[1], b->c[2] + tb[2]};
     const double reach = (d - unit) * (1 - 0x1p-48);
-    double p[3], q[3] = {CB[0], CB[1], CB[2]}, v[3] = {0, 0, 0};
+    const double *q0 = from != NULL ? from : CB;
+    double p[3], q[3] = {q0[0], q0[1], q0[2]}, v[3] = {0, 0, 0}, la[3], lb[3];
     for (int round = 1; round <= rounds; ++round) {
-        project_box(a, CA, fa, q, p);
-        project_box(b, CB, fb, p, q);
+        project_box(a, CA, fa, q, p, la);
+        project_box(b, CB, fb, p, q, lb);
         for (int k = 0; k < 3; ++k)
             v[k] = q[k] - p[k];
-        if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach)
+        if (sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach) {
+            hint_near(h, la, lb);
             return 1;
+        }
         /* Not near, it seems: the points' direction is close to the one
          * along which the box forms are farthest apart (now and then, as
          * the projections approach the closest pair) */
-        if ((round & (WITNESS_CHECK - 1)) == 0 && witness_apart(a, b, T, M, unit, d, v))
+        if ((round & (WITNESS_CHECK - 1)) == 0 && witness_apart(a, b, T, M, unit, d, v)) {
+            hint_apart(h, v);
             return 0;
+        }
     }
     return -1;
+}
+
+/*
+ * The last step's proof of a pair of box forms (a hint, noct_near_hint)
+ * made afresh for their placements now: 1 near, 0 apart, -1 when it
+ * proves neither (then the pair is decided as without it). Nothing of the
+ * hint is trusted: a near hint's coefficients, converted back to doubles
+ * (exactly) and clamped to the shrunk boxes' ranges now, are coefficients
+ * in range whatever they are, so they give points of the solids (the
+ * lemma of near_witness()), computed in the same operations and order as
+ * near_witness() computes its points, and its bound on their roundings
+ * (256 half-ulps of M, M made from the placements now, and the relative
+ * 2^-48 of reach) holds as it stands: the pair is proved within the
+ * margin, which noct_solids_within() would answer too (it never misses
+ * such a pair). An apart hint's axis, any finite non-zero vector, is
+ * handed to witness_apart() as near_witness() hands it its points'
+ * direction: its argument holds for any axis. So every answer here is
+ * one that each of near_solids()'s proofs would give if it decided the
+ * pair (none answers near for a pair farther apart than witness_apart()
+ * proves, nor apart for a pair within the margin): the hint changes no
+ * answer, only the cost, whether the objects moved, turned, were placed
+ * anew or replaced by others in the same slots since. Some thirty
+ * operations for an apart hint, fifty for a near one.
+ */
+static int hint_proof(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
+                      const double tb[3], double d, const noct_near_hint *h, double from[3])
+{
+    double T[3];
+    const double M = box_offset(a, ta, b, tb, T);
+    const double unit = 256 * 0x1p-53 * M;
+    if (!(d > unit))
+        return -1;
+    if (h->kind == NOCT_HINT_APART) {
+        const double v[3] = {(double)h->h[0], (double)h->h[1], (double)h->h[2]};
+        return witness_apart(a, b, T, M, unit, d, v) ? 0 : -1;
+    }
+    if (h->kind != NOCT_HINT_NEAR || !(a->shrink < 1 && b->shrink < 1))
+        return -1;
+    const double f[2] = {1 - (double)a->shrink, 1 - (double)b->shrink};
+    const noct_box_slot *s[2] = {a, b};
+    const double *t[2] = {ta, tb};
+    double x[2][3];
+    for (int o = 0; o < 2; ++o) {
+        for (int k = 0; k < 3; ++k)
+            x[o][k] = s[o]->c[k] + t[o][k];
+        for (int i = 0; i < 3; ++i) {
+            double l = (double)h->h[3 * o + i];
+            l = l > f[o] ? f[o] : l < -f[o] ? -f[o] : l;
+            for (int k = 0; k < 3; ++k)
+                x[o][k] += l * s[o]->e[i][k];
+        }
+    }
+    const double reach = (d - unit) * (1 - 0x1p-48);
+    const double v[3] = {x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]};
+    memcpy(from, x[1], sizeof x[1]);
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= reach ? 1 : -1;
 }
 
 /* The squared gap between boxes a and b (objects i's and j's, i < j), in
@@ -227,13 +347,40 @@ static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3
     return !(s > beyond * beyond);
 }
 
+/* A mark of box form s's turn, which an object that only moved keeps (a
+ * heuristic: which hints to try). */
+static NOCT_ALWAYS_INLINE float turn_mark(const noct_box_slot *s)
+{
+    return (float)(s->e[0][1] + s->e[1][2] + s->e[2][0]);
+}
+
 /* Are objects i and j, whose boxes passed boxes_near(), near at the
  * world's level (not the box level), if they do not collide? overlap:
- * their boxes overlap (a hint only). */
-static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bool overlap)
+ * their boxes overlap (a hint only). old: the last step's proof of the
+ * pair, or NULL; the proof made, if any, into *h (kind 0: none). */
+static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bool overlap,
+                        const noct_near_hint *old, noct_near_hint *h)
 {
+    h->kind = 0;
     if (w->slot[i].has_box && w->slot[j].has_box) {
         const noct_box_slot *a = &w->slot[i], *b = &w->slot[j];
+        h->turn[0] = turn_mark(a);
+        h->turn[1] = turn_mark(b);
+        /* (a turned object's hint seldom holds: not tried) */
+        if (old != NULL && old->turn[0] == h->turn[0] && old->turn[1] == h->turn[1]) {
+            double from[3] = {0, 0, 0};
+            const int r = hint_proof(a, w->pos[i], b, w->pos[j], d, old, from);
+            if (r >= 0) {
+                *h = *old;
+                return r == 1;
+            }
+            /* a near pair that moved: most often still near, its points
+             * found again by a round of projections from j's old point
+             * (which changes no answer, as any start would not) */
+            if (old->kind == NOCT_HINT_NEAR &&
+                near_witness(a, w->pos[i], b, w->pos[j], d, 1, h, from) == 1)
+                return true;
+        }
         /* Where the boxes overlap, a first round of the witness proves
          * most near pairs near (on keyframes:2000 four in five) in a few
          * hundred operations, where the separating-axis test tries all
@@ -242,13 +389,16 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
          * answer, as none contradicts another (the witness's points lie
          * in the solids, the axes part the solids' boxes by more than
          * d). */
-        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1) == 1)
+        if (overlap && near_witness(a, w->pos[i], b, w->pos[j], d, 1, h, NULL) == 1)
             return true;
         /* two boxes that a separating axis proves farther apart: the
          * common case, a few dozen operations */
-        if (noct_box_apart_by(a, w->pos[i], b, w->pos[j], d))
+        double axis[3];
+        if (noct_box_apart_axis(a, w->pos[i], b, w->pos[j], d, axis)) {
+            hint_apart(h, axis);
             return false;
-        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS);
+        }
+        const int r = near_witness(a, w->pos[i], b, w->pos[j], d, WITNESS_ROUNDS, h, NULL);
         if (r >= 0)
             return r == 1;
     }
@@ -259,15 +409,17 @@ static bool near_solids(const noctWorld *w, uint32_t i, uint32_t j, double d, bo
 
 /* Are objects i and j near, at the world's level, if they collide or
  * not (colliding: listed in the step's contacts)? */
-static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding)
+static bool near(const noctWorld *w, uint32_t i, uint32_t j, double d, bool colliding,
+                 const noct_near_hint *old, noct_near_hint *h)
 {
+    h->kind = 0;
     if (colliding)
         return true;
     const noct_aabb *a = noct_bp_box(&w->bp, i), *b = noct_bp_box(&w->bp, j);
     if (!boxes_near(w, a->lo, a->hi, b->lo, b->hi, d))
         return false;
     return w->def.accuracy == NOCT_ACCURACY_BOX ||
-           near_solids(w, i, j, d, boxes_overlap(a->lo, a->hi, b->lo, b->hi));
+           near_solids(w, i, j, d, boxes_overlap(a->lo, a->hi, b->lo, b->hi), old, h);
 }
 
 /* Leaves an object's scan reads at most, and their sizes' largest ratio
@@ -728,6 +880,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* (no margin left: the pairs the last one kept end) */
     const bool any = W > 0 || m != NULL;
     near_sweep s = {.w = w, .m = m, .W = W, .M = M};
+    hint_walk hw = {w->hints.h, w->hints.h + w->hints.n, w->hints.spare, 0, w->hints.capspare,
+                    !any};
+    noct_near_hint h;
     const int by_leaves = any ? near_candidates(&s) : 0;
     if (by_leaves < 0)
         st = NOCT_ERR_NOMEM;
@@ -753,9 +908,15 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             at < col->n && col->p[at].a.index == i && col->p[at].b.index == j;
         const double d = m != NULL ? W + (m[i] + m[j]) : W;
         /* (the candidates passed near()'s test on the boxes) */
-        if ((w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
-            !(colliding || !solids || near_solids(w, i, j, d, s.cand.p[k].a.generation != 0)))
+        if (w->ignored.n > 0 && noct_world_ignored(w, i, j))
             continue;
+        if (!colliding && solids) {
+            const bool is_near = near_solids(w, i, j, d, s.cand.p[k].a.generation != 0,
+                                             hint_of(&hw, i, j), &h);
+            hint_keep(&hw, i, j, &h);
+            if (!is_near)
+                continue;
+        }
         const noctPair pair = {{i, noct_bp_generation(&w->bp, i)},
                                {j, noct_bp_generation(&w->bp, j)}};
         if (!noct_pairs_push(&e->now, pair)) {
@@ -801,8 +962,12 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         for (size_t k = 0; k < p.n; ++k) {
             const uint32_t j = p.s[k];
             const double d = m != NULL ? W + (mi + m[j]) : W;
-            if (w->obj[j].sensor || (w->ignored.n > 0 && noct_world_ignored(w, i, j)) ||
-                !near(w, i, j, d, listed(&w->events.contact.now, i, j)))
+            if (w->obj[j].sensor || (w->ignored.n > 0 && noct_world_ignored(w, i, j)))
+                continue;
+            const bool is_near =
+                near(w, i, j, d, listed(&w->events.contact.now, i, j), hint_of(&hw, i, j), &h);
+            hint_keep(&hw, i, j, &h);
+            if (!is_near)
                 continue;
             const noctPair pair = {{i, noct_bp_generation(&w->bp, i)}, {j, noct_bp_generation(&w->bp, j)}};
             if (!noct_pairs_push(&e->now, pair)) {
@@ -812,6 +977,29 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         }
     }
     free(p.s);
+    /* this step's hints for the next (none when it failed or could not
+     * keep them all: a missing hint only costs a proof); the last step's
+     * array is the next one's spare */
+    noct_near_hints *kept = &w->hints;
+    if (!any) {
+        free(kept->h);
+        free(hw.h);
+        *kept = (noct_near_hints){NULL, NULL, 0, 0, 0};
+    } else if (st == NOCT_OK && !hw.failed) {
+        *kept = (noct_near_hints){hw.h, kept->h, hw.n, hw.cap, kept->cap};
+    } else {
+        kept->n = 0;
+        kept->spare = hw.h;
+        kept->capspare = hw.cap;
+    }
+    /* (a spare far larger than the pairs now, left by a step of many
+     * more, goes: what the hints hold stays within a few times the
+     * pairs of the last two steps) */
+    if (kept->capspare > 4 * kept->n + 4096) {
+        free(kept->spare);
+        kept->spare = NULL;
+        kept->capspare = 0;
+    }
     /* near events are not among the counters' events */
     if (st == NOCT_OK && (w->def.effects & NOCT_EFFECT_EVENTS))
         st = noct_record_diff(e, NULL);

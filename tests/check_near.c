@@ -778,6 +778,284 @@ START_TEST(near_pairs_across_leaves)
 }
 END_TEST
 
+/* Is the pair of objects a and b (either order) in the near list? */
+static bool near_now(noctWorld *w, noctObjectId a, noctObjectId b)
+{
+    const noctPair *p;
+    const size_t n = noctWorldNear(w, &p);
+    if (a.index > b.index) {
+        const noctObjectId t = a;
+        a = b;
+        b = t;
+    }
+    return in_list(p, n, a, b);
+}
+
+/* Object b (a box mesh of half-extents h, or the L when h is NULL) of a
+ * two-object world placed at x, in the world and in the test's ideal g. */
+static void place(noctWorld *w, noctObjectId id, ideal *g, const noctTransform *x,
+                  const double *h)
+{
+    ck_assert_int_eq(noctWorldSetTransform(w, id, x, NULL), NOCT_OK);
+    *g = ideal_shape(x, h == NULL, h);
+}
+
+/* The rotation by angle a about z. */
+static noctQuat about_z(double a)
+{
+    return (noctQuat){0, 0, sin(a / 2), cos(a / 2)};
+}
+
+/*
+ * The proofs the near stage keeps from one step to the next (hints,
+ * world_near.c) must never decide a pair by themselves: two unit boxes
+ * (box meshes, with duals, so that the witness and the separating axes
+ * decide them) at margin 0.3, one of them moved in steps of 0.0123, far
+ * less than what a near proof has to spare, towards the other, through
+ * the margin, into contact and back out; then turned about its centre
+ * after a near proof (so that the gap grows beyond the margin) and after
+ * an apart proof along x (so that it shrinks within it); then jumps by
+ * set-transform; then removed and its slot given to objects of other
+ * shapes (a smaller box, the L, which has no dual) placed near where the
+ * old one was apart and apart where it was near. Every step's near pair
+ * against the test's own distance of the ideal solids (testgeom.c).
+ */
+START_TEST(kept_proofs_cross_the_margin)
+{
+    const double d = 0.3, unit[3] = {0.5, 0.5, 0.5}, small[3] = {0.2, 0.3, 0.25};
+    world_margin = d;
+    noctWorld *w = new_world(2 + _i, NOCT_ACCURACY_EXACT);
+    world_margin = 0;
+    noctMesh *box, *other;
+    ck_assert_int_eq(noctMeshCreateBox(0.5, 0.5, 0.5, &box, NULL), NOCT_OK);
+    ck_assert_int_eq(noctMeshCreateBox(small[0], small[1], small[2], &other, NULL), NOCT_OK);
+    noctObjectDef def = noctDefaultObjectDef();
+    def.mesh = box;
+    noctObjectId a, b;
+    ck_assert_int_eq(noctWorldCreateObject(w, &def, &a, NULL), NOCT_OK);
+    def.transform.p[0] = 3;
+    ck_assert_int_eq(noctWorldCreateObject(w, &def, &b, NULL), NOCT_OK);
+    int near_seen = 0, apart_seen = 0, changes = 0;
+    bool was = false;
+    const ideal ga = ideal_shape(&(noctTransform){{0, 0, 0}, {0, 0, 0, 1}}, false, unit);
+    ideal gb;
+    /* the step's answer against the ideal distance */
+#define EXPECT_STEP()                                                                     \
+    do {                                                                                  \
+        ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);                                \
+        const long double dist = ideal_distance(&ga, &gb);                                \
+        const bool got = near_now(w, a, b);                                               \
+        if (dist <= d - BEYOND)                                                           \
+            ck_assert_msg(got, "%.12Lg apart, not near (line %d)", dist, __LINE__);       \
+        else if (dist > d + BEYOND)                                                       \
+            ck_assert_msg(!got, "%.12Lg apart, near (line %d)", dist, __LINE__);          \
+        near_seen += got;                                                                 \
+        apart_seen += !got;                                                               \
+        changes += got != was;                                                            \
+        was = got;                                                                        \
+    } while (0)
+    /* Turned by 45 degrees about z and raised by 0.7 on y, the box's
+     * bounding box reaches nearer than the box: where the bounding boxes
+     * are 0.22-0.3 apart along x the boxes are apart (beyond the margin)
+     * and pass the bounding boxes' test, so that apart proofs are made and
+     * kept, and a kept apart proof decides the pair wrongly as soon as
+     * the box comes within the margin. In small steps from a gap of the
+     * bounding boxes of 0.6 to an overlap of 0.1 and back (near proofs
+     * kept, wrong as soon as the box leaves the margin), drifting a
+     * little along y as well. */
+    const double corner = 0.5 * sqrt(2);
+    noctTransform x = {{0, 0, 0}, about_z(0.7853981633974483)};
+    for (int k = 0; k <= 2 * 57; ++k) {
+        const int t = k <= 57 ? k : 2 * 57 - k;
+        x.p[0] = 0.5 + corner + 0.6 - 0.0123 * t;
+        x.p[1] = 0.7 + 0.002 * (k % 7);
+        place(w, b, &gb, &x, unit);
+        EXPECT_STEP();
+    }
+    x = (noctTransform){{0, 0, 0}, {0, 0, 0, 1}};
+    /* near at a gap of 0.25, then turned by 45 degrees about z: nearer
+     * (0.043); and near at 0.25 turned, then turned back: 0.457, apart */
+    x = (noctTransform){{1.25, 0, 0}, {0, 0, 0, 1}};
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP();
+    x.q = about_z(0.7853981633974483);
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP();
+    x.p[0] = 1.25 + 0.5 * (sqrt(2) - 1);
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP(); /* turned, gap 0.25 */
+    x.q = (noctQuat){0, 0, 0, 1};
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP(); /* 0.457: apart */
+    ck_assert(!was);
+    /* apart along x at 0.45, then turned: 0.243, near */
+    x.p[0] = 1.45;
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP();
+    x.q = about_z(0.7853981633974483);
+    place(w, b, &gb, &x, unit);
+    EXPECT_STEP();
+    ck_assert(was);
+    /* turned a little each step, the gap shrinking from 0.45 */
+    for (int k = 0; k < 40; ++k) {
+        x.q = about_z(0.02 * k);
+        x.p[0] = 1.45 - 0.002 * k;
+        place(w, b, &gb, &x, unit);
+        EXPECT_STEP();
+    }
+    /* jumps: near, far, near at 0.29, apart at 0.31, touching */
+    const double jumps[] = {1.1, 7, 1.29, 1.31, 1.0, 1.299, 1.301, 5, 1.2};
+    x.q = (noctQuat){0, 0, 0, 1};
+    for (size_t k = 0; k < sizeof jumps / sizeof *jumps; ++k) {
+        x.p[0] = jumps[k];
+        x.p[2] = 0.01 * (double)k;
+        place(w, b, &gb, &x, unit);
+        EXPECT_STEP();
+    }
+    /* the slot given to other objects: near where the last was apart
+     * (the smaller box at x 0.9, a gap of 0.2 where a unit box at 1.9
+     * had 0.9), apart where it was near (the L, at a gap of 0.5 beyond
+     * its extents, where the unit box at 1.2 was near) */
+    const struct {
+        double last, next;
+        const double *h;
+    } swaps[] = {{1.9, 0.5 + 0.2 + small[0], small}, {1.2, 2.5, NULL},
+                 {1.25, 0.5 + 0.35 + small[0], small}, {2.5, 1.55, NULL},
+                 {1.1, 1.62, unit}};
+    const double *cur = unit; /* the shape in the slot: NULL, the L */
+    for (size_t r = 0; r < 2 * sizeof swaps / sizeof *swaps; ++r) {
+        const size_t k = r % (sizeof swaps / sizeof *swaps);
+        const bool turned = r >= sizeof swaps / sizeof *swaps; /* (see above) */
+        x = (noctTransform){{swaps[k].last, turned ? 0.7 : 0, 0}, {0, 0, 0, 1}};
+        if (turned)
+            x.q = about_z(0.7853981633974483);
+        place(w, b, &gb, &x, cur);
+        EXPECT_STEP();
+        const uint32_t slot = b.index;
+        ck_assert_int_eq(noctWorldRemove(w, b, NULL), NOCT_OK);
+        def = noctDefaultObjectDef();
+        cur = swaps[k].h;
+        def.mesh = cur == NULL ? ell : cur == small ? other : box;
+        def.transform = x;
+        def.transform.p[0] = swaps[k].next;
+        ck_assert_int_eq(noctWorldCreateObject(w, &def, &b, NULL), NOCT_OK);
+        ck_assert_uint_eq(b.index, slot);
+        gb = ideal_shape(&def.transform, cur == NULL, cur);
+        EXPECT_STEP();
+    }
+#undef EXPECT_STEP
+    ck_assert_int_gt(near_seen, 60);
+    ck_assert_int_gt(apart_seen, 40);
+    ck_assert_int_gt(changes, 12);
+    noctWorldDestroy(w);
+    noctMeshDestroy(box);
+    noctMeshDestroy(other);
+}
+END_TEST
+
+/*
+ * Random scenes of boxes and L meshes drifting in small steps (each
+ * object by up to a fifth of the margin a step, so that kept proofs
+ * mostly hold), a few turned a little or teleported each step, one
+ * removed and made again in its slot every few steps: every pair's near
+ * answer against the ideal distance, every step.
+ */
+START_TEST(kept_proofs_against_geometry)
+{
+    int within = 0, beyond = 0, skipped = 0;
+    const int rounds = _i ? 6 : 2;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = 0.05 + 0.5 * uniform();
+        const double d = world_margin;
+        scene s;
+        random_scene(&s, 12 + (int)(20 * uniform()), 1 + round % 4, NOCT_ACCURACY_EXACT, ell);
+        world_margin = 0;
+        for (int step = 0; step < 30; ++step) {
+            for (int i = 0; i < s.n; ++i) {
+                const double r = uniform();
+                if (r < 0.03) {
+                    teleport(&s, i);
+                    continue;
+                }
+                for (int k = 0; k < 3; ++k)
+                    s.x[i].p[k] = fmin(6, fmax(0, s.x[i].p[k] + 0.4 * d * (uniform() - 0.5)));
+                if (r < 0.1) { /* a small turn */
+                    noctQuat q = s.x[i].q, t;
+                    random_quat(&t);
+                    const double f = 0.05;
+                    q = (noctQuat){q.x + f * t.x, q.y + f * t.y, q.z + f * t.z, q.w + f * t.w};
+                    const double n = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+                    s.x[i].q = (noctQuat){q.x / n, q.y / n, q.z / n, q.w / n};
+                }
+                ck_assert_int_eq(noctWorldSetTransform(s.w, s.id[i], &s.x[i], NULL), NOCT_OK);
+                quat_matrix(&s.x[i].q, s.g[i].R);
+                for (int k = 0; k < 3; ++k)
+                    s.g[i].t[k] = s.x[i].p[k];
+            }
+            if (step % 4 == 3) { /* one goes and comes back elsewhere */
+                const int i = (int)(s.n * uniform());
+                const uint32_t slot = s.id[i].index;
+                ck_assert_int_eq(noctWorldRemove(s.w, s.id[i], NULL), NOCT_OK);
+                noctObjectDef def = noctDefaultObjectDef();
+                for (int k = 0; k < 3; ++k)
+                    def.transform.p[k] = 6 * uniform();
+                def.transform.q = s.x[i].q;
+                if (s.kind[i] == 2) {
+                    def.mesh = ell;
+                } else {
+                    const double h[3] = {(double)s.g[i].pc[0].h[0], (double)s.g[i].pc[0].h[1],
+                                         (double)s.g[i].pc[0].h[2]};
+                    if (s.kind[i] == 0)
+                        memcpy(def.half_extents, h, sizeof h);
+                    else
+                        def.mesh = s.mesh[i];
+                }
+                def.category = s.cat[i];
+                def.mask = s.mask[i];
+                def.sensor = s.sensor[i];
+                def.user_data = &s.id[i];
+                ck_assert_int_eq(noctWorldCreateObject(s.w, &def, &s.id[i], NULL), NOCT_OK);
+                ck_assert_uint_eq(s.id[i].index, slot);
+                s.x[i] = def.transform;
+                for (int k = 0; k < 3; ++k)
+                    s.g[i].t[k] = def.transform.p[k];
+            }
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            const noctPair *near;
+            const size_t nn = noctWorldNear(s.w, &near);
+            for (int i = 0; i < s.n; ++i)
+                for (int j = i + 1; j < s.n; ++j) {
+                    if (!may_pair(&s, i, j))
+                        continue;
+                    const long double dist = ideal_distance(&s.g[i], &s.g[j]);
+                    noctObjectId a = s.id[i], c = s.id[j];
+                    if (a.index > c.index) {
+                        const noctObjectId t = a;
+                        a = c;
+                        c = t;
+                    }
+                    const bool got = in_list(near, nn, a, c);
+                    if (dist <= d - BEYOND) {
+                        ck_assert_msg(got, "step %d: objects %d and %d, %.12Lg apart, not near "
+                                      "(margin %g)", step, i, j, dist, d);
+                        ++within;
+                    } else if (dist > d + BEYOND) {
+                        ck_assert_msg(!got, "step %d: objects %d and %d, %.12Lg apart, near "
+                                      "(margin %g)", step, i, j, dist, d);
+                        ++beyond;
+                    } else {
+                        ++skipped;
+                    }
+                }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 300 : 100);
+    ck_assert_int_gt(beyond, _i ? 3000 : 1000);
+    ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
+}
+END_TEST
+
 static Suite *near_suite(void)
 {
     Suite *s = suite_create("near");
@@ -793,6 +1071,8 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, query_near_with_object_margins, 0, 1);
     tcase_add_test(tc, object_margin_setters_and_errors);
     tcase_add_loop_test(tc, near_pairs_across_leaves, 0, 1);
+    tcase_add_loop_test(tc, kept_proofs_cross_the_margin, 0, 1);
+    tcase_add_loop_test(tc, kept_proofs_against_geometry, 0, 1);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
@@ -802,6 +1082,8 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, object_margins_against_distance, 1, 2);
     tcase_add_loop_test(full, query_near_with_object_margins, 1, 2);
     tcase_add_loop_test(full, near_pairs_across_leaves, 1, 2);
+    tcase_add_loop_test(full, kept_proofs_cross_the_margin, 1, 2);
+    tcase_add_loop_test(full, kept_proofs_against_geometry, 1, 2);
     return s;
 }
 
