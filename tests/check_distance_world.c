@@ -23,6 +23,9 @@
  *   exactly and just below it; no object passing, none left, an empty
  *   world) against the least of the distances noctWorldQueryWithin()
  *   reports for every object, and a point's against the ideal solids;
+ * - the walk at sizes 2^-300 and 2^300, offsets 2^40 and 1e99, tiny boxes
+ *   beside huge ones, dyadic boxes with shared faces and exact ties (at
+ *   distance 0 the least index) against noctWorldQueryWithin();
  * - the near pairs' distances against noctWorldDistance() and
  *   noctDistance(), cached until the next step;
  * - bad input: a status, no call.
@@ -807,6 +810,137 @@ START_TEST(walk_against_brute_force)
 }
 END_TEST
 
+/* The walk at the extreme scales: dyadic boxes on a grid (faces shared,
+ * many exact ties, boxes nested and overlapping) at sizes 2^-300 and
+ * 2^300, offset by 2^40 of their size, off by 1e99 with queries up to
+ * 4e99 from them, and tiny boxes beside huge ones in one tree; point
+ * and box queries on the grid (ties at distance 0), between, far
+ * outside, with filters; max_distance 0, the best's distance and just
+ * below it. The answer against the least (distance, index) over every
+ * object of noctWorldQueryWithin() (the box query, not the walk): the
+ * same object and distance for points and at distance 0, a near tie
+ * otherwise. */
+typedef struct scale_all {
+    int n;
+    double d[2 * WALK_OBJECTS];
+} scale_all;
+
+static bool scale_collect(void *context, const noctDistanceHit *hit)
+{
+    scale_all *a = context;
+    ck_assert_uint_lt(hit->id.index, 2 * WALK_OBJECTS);
+    a->d[hit->id.index] = hit->result.distance;
+    ++a->n;
+    return true;
+}
+
+static double scale_check(noctWorld *w, const double *half, const noctTransform *x, double max,
+                          noctQueryFilter f)
+{
+    scale_all a;
+    a.n = 0;
+    for (int i = 0; i < 2 * WALK_OBJECTS; ++i)
+        a.d[i] = NAN;
+    ck_assert_int_eq(noctWorldQueryWithin(w, NULL, half, x, 1e100, f, scale_collect, &a, NULL),
+                     NOCT_OK);
+    bool got = false;
+    uint32_t bi = 0;
+    double bd = INFINITY;
+    for (int i = 0; i < 2 * WALK_OBJECTS; ++i)
+        if (!isnan(a.d[i]) && a.d[i] <= max && (!got || a.d[i] < bd)) {
+            got = true;
+            bi = (uint32_t)i;
+            bd = a.d[i];
+        }
+    noctDistanceHit hit;
+    bool hit_got;
+    ck_assert_int_eq(noctWorldQueryNearest(w, NULL, half, x, max, f, &hit, &hit_got, NULL),
+                     NOCT_OK);
+    ck_assert(hit_got == got);
+    if (!hit_got)
+        return bd;
+    if (half == NULL || bd == 0) {
+        ck_assert_uint_eq(hit.id.index, bi);
+        ck_assert(hit.result.distance == bd);
+    } else {
+        ck_assert(fabs(hit.result.distance - bd) <= 1e-9 * bd);
+    }
+    return bd;
+}
+
+START_TEST(walk_at_extreme_scales)
+{
+    static const int N[3] = {1, 2, NOCT_AUTO};
+    for (int v = 0; v < 5; ++v) {
+        const double scale = v == 1 ? 0x1p-300 : v == 2 ? 0x1p300 : 1;
+        const double off = v == 3 ? 0x1p40 : v == 4 ? 1e99 : 0;
+        const bool mixed = v == 0;
+        noctWorld *w = new_world(N[v % 3], NOCT_ACCURACY_EXACT);
+        noctObjectId id[WALK_OBJECTS];
+        const int n = 120;
+        for (int i = 0; i < n; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            const int kind = (int)(4 * uniform());
+            for (int k = 0; k < 3; ++k) {
+                const double h = kind == 0   ? 0.5
+                                 : kind == 1 ? 0x1p-20
+                                 : kind == 2 ? 0.25 * (1 + (int)(4 * uniform()))
+                                             : 2;
+                const double p = (double)((int)(16 * uniform()) - 8) * 0.5;
+                d.half_extents[k] = mixed ? (i % 7 == 0 ? h * 1e50 : h * 0x1p-300) : h * scale;
+                d.transform.p[k] = mixed ? (i % 7 == 0 ? p * 1e51 : p * 0x1p-299) : off + p * scale;
+            }
+            if (uniform() < 0.3)
+                random_quat(&d.transform.q);
+            if (uniform() < 0.2) {
+                d.category = (uint64_t)1 << (int)(3 * uniform());
+                d.mask = uniform() < 0.5 ? NOCT_FILTER_ALL : (uint64_t)1 << (int)(3 * uniform());
+            }
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+        }
+        for (int i = 0; i < n; ++i)
+            if (uniform() < 0.1)
+                ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+        if (uniform() < 0.5)
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+        for (int t = 0; t < 40; ++t) {
+            noctTransform x = noctIdentityTransform();
+            const int where = t % 5;
+            double half[3];
+            for (int k = 0; k < 3; ++k) {
+                const double p = where == 0   ? (double)((int)(16 * uniform()) - 8) * 0.5
+                                 : where == 1 ? 10 * uniform() - 5
+                                 : where == 2 ? 1e3 * (1 + uniform())
+                                 : where == 3 ? -1e6
+                                              : (double)((int)(16 * uniform()) - 8) * 0.25;
+                half[k] = (t % 3 == 2 ? 0.25 * (1 + (int)(3 * uniform())) : 0.5) * scale;
+                x.p[k] = off + p * scale;
+                if (mixed) {
+                    x.p[k] = where < 2 ? p * 0x1p-300 : where == 2 ? p * 1e45 : p;
+                    half[k] = where < 2 ? half[k] * 0x1p-300 : half[k];
+                }
+                if (v == 4 && where >= 2)
+                    x.p[k] = (uniform() < 0.5 ? -4e99 : 4e99) * (uniform() < 0.5 ? 1 : 0.5);
+            }
+            const double *h = t % 3 == 0 ? half : NULL;
+            noctQueryFilter f = noctDefaultQueryFilter();
+            if (t % 4 == 3) {
+                f.category = (uint64_t)1 << (int)(3 * uniform());
+                f.mask = (uint64_t)1 << (int)(3 * uniform());
+            }
+            const double best = scale_check(w, h, &x, INFINITY, f);
+            scale_check(w, h, &x, 0, f);
+            if (isfinite(best)) {
+                scale_check(w, h, &x, best, f);
+                if (best > 0 && h == NULL)
+                    ck_assert(!isfinite(scale_check(w, h, &x, nextafter(best, 0), f)));
+            }
+        }
+        noctWorldDestroy(w);
+    }
+}
+END_TEST
+
 /* ---- the near pairs ---------------------------------------------------------------------- */
 
 START_TEST(near_distances_against_pairs)
@@ -955,6 +1089,7 @@ static Suite *distance_world_suite(void)
     tcase_add_test(tc, ties_to_the_least_index);
     tcase_add_test(tc, the_tree_does_not_show);
     tcase_add_test(tc, walk_against_brute_force);
+    tcase_add_test(tc, walk_at_extreme_scales);
     tcase_add_loop_test(tc, near_distances_against_pairs, 0, 1);
     tcase_add_test(tc, bad_input);
     TCase *full = test_case(s, "distance world, full", 600, "slow");

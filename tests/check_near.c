@@ -1056,6 +1056,122 @@ START_TEST(kept_proofs_against_geometry)
 }
 END_TEST
 
+/*
+ * Kept proofs at the extreme scales (2^-200 and 2^200; the hints' floats
+ * hold coefficients, which have no scale, and axes, which may overflow or
+ * vanish as floats), with slots given to objects of another shape (a box
+ * primitive's slot to a box mesh of other sizes and back), objects' own
+ * margins set and cleared between steps, small turns and jumps: every
+ * pair against noctWorldDistance()'s bracket (near when its upper bound
+ * is inside the margin, not near when its lower bound is beyond it, by a
+ * relative 1e-9).
+ */
+START_TEST(kept_proofs_at_extreme_scales)
+{
+    enum { NO = 30 };
+    int within = 0, beyond = 0;
+    for (int v = 0; v < 3; ++v) {
+        const double scale = v == 0 ? 1 : v == 1 ? 0x1p-200 : 0x1p200;
+        noctMesh *box[2];
+        ck_assert_int_eq(noctMeshCreateBox(0.5 * scale, 0.3 * scale, 0.7 * scale, &box[0], NULL),
+                         NOCT_OK);
+        ck_assert_int_eq(noctMeshCreateBox(0.2 * scale, 0.9 * scale, 0.4 * scale, &box[1], NULL),
+                         NOCT_OK);
+        noctWorldDef wd = noctDefaultWorldDef();
+        wd.effects = NOCT_EFFECT_EVENTS;
+        wd.margin = (0.05 + 0.3 * uniform()) * scale;
+        wd.N = v == 1 ? 2 : NOCT_AUTO;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&wd, &w, NULL), NOCT_OK);
+        noctObjectId id[NO];
+        noctTransform x[NO];
+        double m[NO];
+        bool alive[NO];
+        for (int step = 0; step < 60; ++step) {
+            for (int i = 0; i < NO; ++i) {
+                const double u = uniform();
+                if (step == 0 || (!alive[i] && u < 0.3)) {
+                    noctObjectDef d = noctDefaultObjectDef();
+                    const int kind = (int)(3 * uniform());
+                    if (kind == 0)
+                        for (int k = 0; k < 3; ++k)
+                            d.half_extents[k] = (0.2 + 0.8 * uniform()) * scale;
+                    else
+                        d.mesh = box[kind - 1];
+                    for (int k = 0; k < 3; ++k)
+                        d.transform.p[k] = 6 * uniform() * scale;
+                    random_quat(&d.transform.q);
+                    d.margin = uniform() < 0.3 ? 0.3 * uniform() * scale : 0;
+                    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                    x[i] = d.transform;
+                    m[i] = d.margin;
+                    alive[i] = true;
+                    continue;
+                }
+                if (!alive[i])
+                    continue;
+                if (u < 0.03) {
+                    ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+                    alive[i] = false;
+                    continue;
+                }
+                if (u < 0.06) {
+                    m[i] = uniform() < 0.3 ? 0 : 0.3 * uniform() * scale;
+                    ck_assert_int_eq(noctWorldSetMargin(w, id[i], m[i], NULL), NOCT_OK);
+                }
+                if (u < 0.5) {
+                    for (int k = 0; k < 3; ++k)
+                        x[i].p[k] += 0.05 * (uniform() - 0.5) * scale;
+                } else if (u < 0.6) { /* a small turn */
+                    noctQuat q = x[i].q, t;
+                    random_quat(&t);
+                    const double f = 0.02;
+                    q = (noctQuat){q.x + f * t.x, q.y + f * t.y, q.z + f * t.z, q.w + f * t.w};
+                    const double n = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+                    x[i].q = (noctQuat){q.x / n, q.y / n, q.z / n, q.w / n};
+                } else if (u < 0.62) {
+                    for (int k = 0; k < 3; ++k)
+                        x[i].p[k] = 6 * uniform() * scale;
+                }
+                ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x[i], NULL), NOCT_OK);
+            }
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+            const noctPair *near;
+            const size_t nn = noctWorldNear(w, &near);
+            for (int i = 0; i < NO; ++i)
+                for (int j = i + 1; j < NO; ++j) {
+                    if (!alive[i] || !alive[j])
+                        continue;
+                    const double d = wd.margin + (m[i] + m[j]);
+                    noctDistanceResult r;
+                    ck_assert_int_eq(noctWorldDistance(w, id[i], id[j], INFINITY, &r, NULL),
+                                     NOCT_OK);
+                    noctObjectId a = id[i], c = id[j];
+                    if (a.index > c.index) {
+                        const noctObjectId t = a;
+                        a = c;
+                        c = t;
+                    }
+                    const bool got = in_list(near, nn, a, c);
+                    if (r.upper < d * (1 - 1e-9)) {
+                        ck_assert_msg(got, "scale %g step %d: %d and %d not near", scale, step, i,
+                                      j);
+                        ++within;
+                    } else if (r.lower > d * (1 + 1e-9)) {
+                        ck_assert_msg(!got, "scale %g step %d: %d and %d near", scale, step, i, j);
+                        ++beyond;
+                    }
+                }
+        }
+        noctWorldDestroy(w);
+        noctMeshDestroy(box[0]);
+        noctMeshDestroy(box[1]);
+    }
+    ck_assert_int_gt(within, 1000);
+    ck_assert_int_gt(beyond, 10000);
+}
+END_TEST
+
 static Suite *near_suite(void)
 {
     Suite *s = suite_create("near");
@@ -1073,6 +1189,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, near_pairs_across_leaves, 0, 1);
     tcase_add_loop_test(tc, kept_proofs_cross_the_margin, 0, 1);
     tcase_add_loop_test(tc, kept_proofs_against_geometry, 0, 1);
+    tcase_add_test(tc, kept_proofs_at_extreme_scales);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
