@@ -2381,6 +2381,136 @@ START_TEST(many_triangles)
 }
 END_TEST
 
+/* (revdist) Boxes about their origins through noctMeshCreate() with the 8
+ * corners listed in a random order, each face split along a random
+ * diagonal and, half the time, every triangle listed clockwise (the
+ * library turns the mesh right side out): the dual's signs, frame axes
+ * and sides (box_form.c) then differ from noctMeshCreateBox()'s, and the
+ * closed form's ideal frame, its corner early stop and the centre test
+ * must still agree with the oracle: touching bisected, apart, inside. */
+static void tm_odd_box(tmesh *t, const double h[3], uint64_t *rng)
+{
+    uint32_t perm[8]; /* perm[c]: the listed index of corner c (bit 0 x) */
+    for (uint32_t i = 0; i < 8; ++i)
+        perm[i] = i;
+    for (uint32_t i = 7; i > 0; --i) {
+        const uint32_t j = (uint32_t)test_rand_below(rng, i + 1), x = perm[i];
+        perm[i] = perm[j];
+        perm[j] = x;
+    }
+    double v[24];
+    for (int c = 0; c < 8; ++c)
+        for (int k = 0; k < 3; ++k)
+            v[3 * perm[c] + k] = (c >> k) & 1 ? h[k] : -h[k];
+    const bool flip = test_rand_below(rng, 2) != 0;
+    uint32_t idx[36], sizes[12];
+    for (int f = 0; f < 6; ++f) {
+        const uint32_t *q = &box_quads[4 * f];
+        const int r = (int)test_rand_below(rng, 4); /* rotate the quad: the diagonal */
+        uint32_t a[4];
+        for (int i = 0; i < 4; ++i)
+            a[i] = perm[q[(i + r) % 4]];
+        uint32_t two[6] = {a[0], a[1], a[2], a[0], a[2], a[3]};
+        if (flip)
+            for (int tt = 0; tt < 2; ++tt) {
+                const uint32_t x = two[3 * tt + 1];
+                two[3 * tt + 1] = two[3 * tt + 2];
+                two[3 * tt + 2] = x;
+            }
+        memcpy(&idx[6 * f], two, sizeof two);
+        sizes[2 * f] = sizes[2 * f + 1] = 3;
+    }
+    ck_assert(tm_create(t, v, 8, sizes, 12, idx, flip ? "odd box, inside out" : "odd box"));
+    /* the library may have turned it right side out: its triangles then
+     * are not the listed ones; the oracle's distance does not care */
+    t->numbered = !flip;
+}
+
+START_TEST(odd_boxes)
+{
+    uint64_t rng = 0x0dd0b0u + (uint64_t)_i;
+    for (int n = 0; n < 60; ++n) {
+        const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
+        double ha[3], hb[3];
+        for (int k = 0; k < 3; ++k) {
+            ha[k] = s * (0.25 + test_uniform(&rng));
+            hb[k] = s * (0.25 + test_uniform(&rng));
+        }
+        tmesh A, B;
+        tm_odd_box(&A, ha, &rng);
+        if (n % 3 == 0)
+            tm_box(&B, hb[0], hb[1], hb[2]);
+        else
+            tm_odd_box(&B, hb, &rng);
+        noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
+        if (test_rand_below(&rng, 4) != 0)
+            test_random_quat(&rng, &xa.q);
+        if (test_rand_below(&rng, 4) != 0)
+            test_random_quat(&rng, &xb.q);
+        double O = test_rand_below(&rng, 3) == 0
+                       ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
+                       : 0;
+        while (O != 0 && !offset_ok(O, s))
+            O *= 0x1p-8;
+        for (int k = 0; k < 3; ++k)
+            xa.p[k] = O * (k == 1 ? -1 : 1);
+        double dir[3], l;
+        do {
+            l = 0;
+            for (int k = 0; k < 3; ++k) {
+                dir[k] = 2 * test_uniform(&rng) - 1;
+                l += dir[k] * dir[k];
+            }
+        } while (l < 0.01 || l > 1);
+        l = sqrt(l);
+        double lo = 0, hi = 8 * s;
+        for (int it = 0; it < 200 && lo < hi; ++it) {
+            const double mid = lo + (hi - lo) / 2;
+            if (mid == lo || mid == hi)
+                break;
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + mid * dir[k] / l;
+            bool meet = false;
+            ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
+                                                    &meet, NULL, NULL),
+                             NOCT_OK);
+            *(meet ? &lo : &hi) = mid;
+        }
+        const double at[6] = {lo, hi, lo / 2, lo / 16, hi * 1.25, hi * 3};
+        char label[160];
+        for (int w = 0; w < 6; ++w) {
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + at[w] * dir[k] / l;
+            if (!offset_ok(fabs(O) + at[w], 4 * s))
+                continue;
+            snprintf(label, sizeof label, "odd boxes %d (%s, %s): at %d, scale %g", n, A.name,
+                     B.name, w, s);
+            (void)check_pair_d2(&A, &xa, &B, &xb, label);
+        }
+        /* B small, its centre inside A a hair from A's face (A's
+         * frame: 1 - 2^-k of a half-length): the centre test's slack */
+        double RA[9];
+        ck_assert_int_eq(noctQuatToMatrix(&xa.q, RA, NULL), NOCT_OK);
+        tmesh C;
+        const double hc = ha[0] * 0x1p-18;
+        tm_odd_box(&C, (const double[3]){hc, hc * 1.5, hc * 0.75}, &rng);
+        const int ks[] = {8, 20, 30, 36, 40, 44, 50};
+        for (size_t i = 0; i < sizeof ks / sizeof ks[0]; ++i) {
+            const double y[3] = {ha[0] * (1 - ldexp(1, -ks[i])), 0.25 * ha[1], -0.25 * ha[2]};
+            for (int k = 0; k < 3; ++k)
+                xb.p[k] = xa.p[k] + RA[3 * k] * y[0] + RA[3 * k + 1] * y[1] + RA[3 * k + 2] * y[2];
+            snprintf(label, sizeof label, "odd boxes %d: small inside, 2^-%d from a face", n,
+                     ks[i]);
+            (void)check_pair_d2(&A, &xa, &C, &xb, label);
+        }
+        tm_free(&C);
+        tm_free(&A);
+        tm_free(&B);
+    }
+    report_failures("odd_boxes");
+}
+END_TEST
+
 static Suite *distance_suite(void)
 {
     Suite *s = suite_create("distance");
@@ -2397,6 +2527,7 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, near_touch, 0, 1);
     tcase_add_loop_test(tc, turned_boxes, 0, 1);
     tcase_add_loop_test(tc, box_paths, 0, 1);
+    tcase_add_loop_test(tc, odd_boxes, 0, 1);
     add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes,
               many_triangles);
     tc = test_case(s, "random, more seeds", 600, "slow");
@@ -2405,6 +2536,7 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, near_touch, 1, 6);
     tcase_add_loop_test(tc, turned_boxes, 1, 6);
     tcase_add_loop_test(tc, box_paths, 1, 6);
+    tcase_add_loop_test(tc, odd_boxes, 1, 6);
     return s;
 }
 
