@@ -285,6 +285,10 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
  * noct_box_decide())? false when it cannot. */
 bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                        const double tb[3], double d);
+/* noct_box_apart_by() with a point p as the first slot (one of no size
+ * placed at p), the same answer from B's face axes alone. */
+bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double tb[3],
+                         double d);
 /* noct_box_apart_by(), and when true the axis (not unit) along which the
  * box forms were proved farther apart than d, into axis. */
 bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,

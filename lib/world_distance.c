@@ -215,8 +215,10 @@ static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
 static bool apart(const dquery *d, uint32_t s, double dist)
 {
     const noctWorld *w = d->w;
-    return d->has_slot && w->slot[s].has_box && isfinite(dist) &&
-           noct_box_apart_by(&d->slot, d->t, &w->slot[s], w->pos[s], dist);
+    if (!d->has_slot || !w->slot[s].has_box || !isfinite(dist))
+        return false;
+    return d->point ? noct_point_apart_by(d->t, &w->slot[s], w->pos[s], dist)
+                    : noct_box_apart_by(&d->slot, d->t, &w->slot[s], w->pos[s], dist);
 }
 
 /* The magnitude of object s's placed box. */
