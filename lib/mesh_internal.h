@@ -240,6 +240,11 @@ noctStatus noct_collide_turning(const noct_turning *a, const noct_turning *b, bo
 int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                     const double tb[3]);
 
+/* Does the solid that slot b describes, placed at tb, contain point p?
+ * noct_box_decide() with p as a box of no size: -1 proved outside, 1
+ * proved inside (b has a dual), 0 not decided (narrowphase.c). */
+int noct_point_slot_decide(const double p[3], const noct_box_slot *b, const double tb[3]);
+
 /* The exact level on two box-form meshes that noct_box_decide() left
  * undecided: the witnesses, then the triangles. */
 noctStatus noct_collide_undecided_boxes(const noctMesh *a, const double ta[3],
@@ -280,6 +285,10 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
  * noct_box_decide())? false when it cannot. */
 bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                        const double tb[3], double d);
+/* noct_box_apart_by() with a point p as the first slot (one of no size
+ * placed at p), the same answer from B's face axes alone. */
+bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double tb[3],
+                         double d);
 /* noct_box_apart_by(), and when true the axis (not unit) along which the
  * box forms were proved farther apart than d, into axis. */
 bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,

@@ -369,6 +369,54 @@ int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_s
 }
 
 /*
+ * noct_box_decide() for a point p and the slot b placed at tb: the point
+ * is the slot of no size (c = 0, e = 0, dev = 0, shrink 0) placed at p,
+ * its one vertex p itself, exact (fl(0 + p) = p). With A's radii, products
+ * a_i.b_j and deviation exact zeros, every quantity below is bit for bit
+ * the one noct_box_decide() computes for that slot, and the bounds on
+ * rounding are its own. The separation test on B's face axes e[j] then
+ * proves p outside B's solid (A's face axes and the nine cross products
+ * are zero: no separating axis). The proof on B's face normals (the cross
+ * products of its edges) proves p inside the ideal box shrunk by B's
+ * dual, and so inside the solid (box_contains' lemma): a point lies in a
+ * parallelepiped iff its projection on each of the three face normals
+ * lies within the parallelepiped's, so these three axes suffice (the
+ * proof's other twelve are zero for a point, and noct_box_decide() gives
+ * up on them; here they have nothing to prove).
+ */
+int noct_point_slot_decide(const double p[3], const noct_box_slot *b, const double tb[3])
+{
+    static const noct_box_slot point; /* zero: c, e, size, dev, shrink */
+    double T[3];
+    const double M = box_offset(&point, p, b, tb, T);
+    const double unit = 256 * 0x1p-53 * M, dev = (double)b->dev;
+    double bmax[3];
+    for (int j = 0; j < 3; ++j) {
+        const double *u = b->e[j];
+        const double lb = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        const double gap = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] -
+                           lb * dev;
+        if (gap > unit * lb)
+            return -1;
+        bmax[j] = noct_max(fabs(u[0]), noct_max(fabs(u[1]), fabs(u[2])));
+    }
+    if (!(b->shrink < 1))
+        return 0;
+    const double fb = 1 - (double)b->shrink;
+    for (int n = 0; n < 3; ++n) {
+        const double *x = b->e[(n + 1) % 3], *y = b->e[(n + 2) % 3];
+        const double u[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2],
+                             x[0] * y[1] - x[1] * y[0]};
+        const double l1 = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        const double pq = bmax[(n + 1) % 3] * bmax[(n + 2) % 3];
+        const double d = fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]);
+        if (!(d + unit * (l1 + pq) < fb * box_radius(b->e, u)))
+            return 0;
+    }
+    return 1;
+}
+
+/*
  * Is x proven inside the solid of a placed mesh with a box dual
  * (mesh_internal.h)? Its triangles lie, within sqrt(3) dev, on the
  * surface of the ideal box c + sum s_i e[i] (|s_i| <= 1): moving the

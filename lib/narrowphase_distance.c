@@ -87,6 +87,30 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
     return apart_by(a, ta, b, tb, d, NULL);
 }
 
+/* noct_box_apart_by() for a point p, the slot of no size (c = 0, e = 0,
+ * dev = 0) placed at p (fl(0 + p) = p), as noct_point_slot_decide()
+ * takes it: A's face axes and the nine cross products are zero (gap 0,
+ * not above d times a norm of 0; l1 = 0 skips a cross product), and on
+ * B's face axes every term of A is an exact zero, so each gap below is
+ * bit for bit apart_by()'s, and so is the answer. */
+bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double tb[3],
+                         double d)
+{
+    static const noct_box_slot point; /* zero */
+    double T[3];
+    const double M = box_offset(&point, p, b, tb, T);
+    const double unit = 256 * 0x1p-53 * M, dev = (double)b->dev;
+    for (int j = 0; j < 3; ++j) {
+        const double *u = b->e[j];
+        const double lb = fabs(u[0]) + fabs(u[1]) + fabs(u[2]);
+        const double gap =
+            fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] - lb * dev - unit * lb;
+        if (gap_beyond(gap, u, d))
+            return true;
+    }
+    return false;
+}
+
 bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                          const double tb[3], double d, double axis[3])
 {

@@ -312,8 +312,10 @@ bool noct_distance_convex_placed(const noctMesh *a, bool a_convex, const double 
  * noct_distance_placed() gives a pair's with p the first solid: point_a is
  * p, triangle_a none; 0 and colliding when the solid contains p (exactly);
  * beyond max_distance as there. NUMERIC if the containment count stayed
- * ambiguous. */
+ * ambiguous. outside: p is known to be outside the solid (a proof the
+ * caller made): the containment test is skipped, the answer the same. */
 noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, const double t[3],
-                                      double max_distance, noctDistanceResult *result);
+                                      double max_distance, bool outside,
+                                      noctDistanceResult *result);
 
 #endif /* NOCT_LIB_NARROWPHASE_INTERNAL_H */

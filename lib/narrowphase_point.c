@@ -398,7 +398,7 @@ static bool box_nearest(point_walk *w)
 }
 
 noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, const double t[3],
-                                      double max_distance, noctDistanceResult *r)
+                                      double max_distance, bool outside, noctDistanceResult *r)
 {
     memset(r, 0, sizeof *r);
     for (int k = 0; k < 3; ++k)
@@ -421,7 +421,7 @@ noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, cons
     if (!far) {
         /* outside the placed box, outside the solid (fl(v + t) is
          * monotone: the placed box holds the placed vertices) */
-        bool inside = true;
+        bool inside = !outside;
         for (int k = 0; k < 3; ++k)
             inside = inside && m->lo[k] + t[k] <= p[k] && p[k] <= m->hi[k] + t[k];
         if (inside) {

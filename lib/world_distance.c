@@ -165,18 +165,44 @@ static bool boxes_meet(const dquery *d, uint32_t s, const noctMesh *m, noctDista
     return true;
 }
 
-/* The distance from the query to object s, searched up to max. */
+/* The answer of noct_point_distance_placed() for a point p in the
+ * solid: 0, colliding, both points p, no triangles. */
+static void point_inside(const double p[3], noctDistanceResult *r)
+{
+    memset(r, 0, sizeof *r);
+    for (int k = 0; k < 3; ++k) {
+        r->triangle_a[k] = r->triangle_b[k] = NOCT_NO_TRIANGLE;
+        r->point_a[k] = r->point_b[k] = p[k];
+    }
+    r->colliding = true;
+}
+
+/* The distance from the query to object s, searched up to max. A point
+ * first asks the object's box form (noct_point_slot_decide()): one proved
+ * inside the solid has the answer the exact containment would give
+ * (inside the solid it is inside the placed box, so the narrowphase would
+ * test it, and the test is exact), without the object's view; one proved
+ * outside skips the containment test. */
 static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
                                   noctDistanceResult *r, noctError *err)
 {
     noct_shape_view v;
     const noctWorld *w = d->w;
+    bool outside = false;
+    if (d->point && w->slot[s].has_box) {
+        const int side = noct_point_slot_decide(d->t, &w->slot[s], w->pos[s]);
+        if (side > 0) {
+            point_inside(d->t, r);
+            return NOCT_OK;
+        }
+        outside = side < 0;
+    }
     const noctMesh *m = noct_world_shape(w, s, &v);
     if (boxes_meet(d, s, m, r))
         return NOCT_OK;
     const noctTransform xs = object_transform(w, s);
     const noctStatus st =
-        d->point ? noct_point_distance_placed(d->t, m, w->pos[s], max, r)
+        d->point ? noct_point_distance_placed(d->t, m, w->pos[s], max, outside, r)
                  : pair_distance(d->mesh, d->x, d->q.m, d->t, noct_world_shape_of(w, s), &xs,
                                  m, w->pos[s], max, r);
     if (st != NOCT_OK)
@@ -189,8 +215,10 @@ static noctStatus dquery_distance(const dquery *d, uint32_t s, double max,
 static bool apart(const dquery *d, uint32_t s, double dist)
 {
     const noctWorld *w = d->w;
-    return d->has_slot && w->slot[s].has_box && isfinite(dist) &&
-           noct_box_apart_by(&d->slot, d->t, &w->slot[s], w->pos[s], dist);
+    if (!d->has_slot || !w->slot[s].has_box || !isfinite(dist))
+        return false;
+    return d->point ? noct_point_apart_by(d->t, &w->slot[s], w->pos[s], dist)
+                    : noct_box_apart_by(&d->slot, d->t, &w->slot[s], w->pos[s], dist);
 }
 
 /* The magnitude of object s's placed box. */

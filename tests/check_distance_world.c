@@ -480,6 +480,101 @@ START_TEST(points_against_geometry)
 }
 END_TEST
 
+/* Points near a turned box primitive's faces, edges and corners, from
+ * 1e-3 inside to 1e-3 outside (and on them): the nearest's colliding (its
+ * containment, which the world first asks of the object's box form,
+ * noct_point_slot_decide()) against noctWorldQueryPoint() (the exact
+ * containment alone), and, where the offset is larger than the corners'
+ * rounding, against the ideal box; the distance's interval against the
+ * ideal distance. */
+static bool contains_fcn(void *context, noctObjectId id, void *user)
+{
+    (void)id;
+    (void)user;
+    *(bool *)context = true;
+    return true;
+}
+
+START_TEST(points_at_box_boundaries)
+{
+    static const double offsets[] = {-1e-3, -1e-6, -1e-9, -1e-12, -1e-14, 0,
+                                     1e-14,  1e-12, 1e-9,  1e-6,   1e-3};
+    const int noff = (int)(sizeof offsets / sizeof *offsets);
+    int deep_in = 0, deep_out = 0, shallow = 0;
+    for (int round = 0; round < 8; ++round) {
+        noctWorld *w = new_world(0, NOCT_ACCURACY_EXACT);
+        noctObjectDef def = noctDefaultObjectDef();
+        ideal g;
+        memset(&g, 0, sizeof g);
+        double h[3];
+        for (int k = 0; k < 3; ++k)
+            h[k] = 0.1 + 2 * uniform();
+        memcpy(def.half_extents, h, sizeof h);
+        g.npieces = 1;
+        g.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
+        for (int k = 0; k < 3; ++k)
+            def.transform.p[k] = g.t[k] = (round % 2 ? 1000 : 1) * (-5 + 10 * uniform());
+        random_quat(&def.transform.q);
+        quat_matrix(&def.transform.q, g.R);
+        noctObjectId id;
+        ck_assert_int_eq(noctWorldCreateObject(w, &def, &id, NULL), NOCT_OK);
+        for (int t = 0; t < 300; ++t) {
+            /* a point of the surface (local): one, two or three
+             * coordinates at a face, the rest inside */
+            long double l[3], n[3] = {0, 0, 0};
+            const int at = 1 + t % 3;
+            for (int k = 0; k < 3; ++k) {
+                const long double s = uniform() < 0.5 ? -1 : 1;
+                l[k] = k < at ? s * h[k] : (-1 + 2 * (long double)uniform()) * h[k];
+                if (k < at)
+                    n[k] = s;
+            }
+            const double off = offsets[t % noff];
+            noctTransform x = noctIdentityTransform();
+            for (int k = 0; k < 3; ++k) {
+                long double v = g.t[k];
+                for (int j = 0; j < 3; ++j)
+                    v += g.R[3 * k + j] * (l[j] + off * n[j]);
+                x.p[k] = (double)v;
+            }
+            bool in = false;
+            ck_assert_int_eq(noctWorldQueryPoint(w, x.p, noctDefaultQueryFilter(), contains_fcn,
+                                                 &in, NULL),
+                             NOCT_OK);
+            noctDistanceHit hit;
+            bool got;
+            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &x, INFINITY,
+                                                   noctDefaultQueryFilter(), &hit, &got, NULL),
+                             NOCT_OK);
+            ck_assert(got);
+            ck_assert(hit.result.colliding == in);
+            if (fabs(off) >= 1e-9) {
+                ck_assert(in == (off < 0));
+                ++*(off < 0 ? &deep_in : &deep_out);
+            } else {
+                ++shallow;
+            }
+            if (in) {
+                for (int k = 0; k < 3; ++k)
+                    ck_assert(hit.result.point_a[k] == x.p[k] &&
+                              hit.result.point_b[k] == x.p[k]);
+                ck_assert(hit.result.distance == 0 && hit.result.upper == 0);
+            } else { /* the interval, within the accuracy at this place */
+                const noctDistanceResult *r = &hit.result;
+                const long double truth = point_ideal(&g, x.p), tol = 1e-7L;
+                ck_assert(r->lower <= r->distance && r->distance <= r->upper);
+                ck_assert(r->lower <= truth + tol && truth - tol <= r->upper);
+                ck_assert(r->upper - r->lower <= 0x1p-38 * 1e4);
+            }
+        }
+        noctWorldDestroy(w);
+    }
+    ck_assert_int_gt(deep_in, 500);
+    ck_assert_int_gt(deep_out, 500);
+    ck_assert_int_gt(shallow, 500);
+}
+END_TEST
+
 /* ---- ties and trees ------------------------------------------------------------------- */
 
 /* Six unit boxes at distance 2 (faces at +-3 .. +-5 of the origin on each
@@ -1090,6 +1185,7 @@ static Suite *distance_world_suite(void)
     tcase_add_test(tc, the_tree_does_not_show);
     tcase_add_test(tc, walk_against_brute_force);
     tcase_add_test(tc, walk_at_extreme_scales);
+    tcase_add_test(tc, points_at_box_boundaries);
     tcase_add_loop_test(tc, near_distances_against_pairs, 0, 1);
     tcase_add_test(tc, bad_input);
     TCase *full = test_case(s, "distance world, full", 600, "slow");
