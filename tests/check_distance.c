@@ -1116,6 +1116,44 @@ static bool check_call(const ctx *c, bool meet, const mpq_t d2, double maxd)
  * bite: pairs apart, meeting, beyond answers. */
 static unsigned long n_apart, n_meet, n_beyond_calls;
 
+/* A random direction of length 1: a uniform point of the unit ball, away
+ * from its centre, scaled. */
+static void random_direction(uint64_t *rng, double dir[3])
+{
+    double l;
+    do {
+        l = 0;
+        for (int k = 0; k < 3; ++k) {
+            dir[k] = 2 * test_uniform(rng) - 1;
+            l += dir[k] * dir[k];
+        }
+    } while (l < 0.01 || l > 1);
+    l = sqrt(l);
+    for (int k = 0; k < 3; ++k)
+        dir[k] /= l;
+}
+
+/* Where the exact verdict turns as B moves from A's place along dir (a
+ * unit vector): bisected between 0 and hi, *lo the last distance at which
+ * they meet, *hi the first at which they do not; xb left at the last
+ * place tried. */
+static void touch_along(const tmesh *A, const noctTransform *xa, const tmesh *B,
+                        noctTransform *xb, const double dir[3], double *lo, double *hi)
+{
+    for (int it = 0; it < 200 && *lo < *hi; ++it) {
+        const double mid = *lo + (*hi - *lo) / 2;
+        if (mid == *lo || mid == *hi)
+            break;
+        for (int k = 0; k < 3; ++k)
+            xb->p[k] = xa->p[k] + mid * dir[k];
+        bool meet = false;
+        ck_assert_int_eq(noctCollideTransformed(A->m, xa, B->m, xb, NOCT_ACCURACY_EXACT, &meet,
+                                                NULL, NULL),
+                         NOCT_OK);
+        *(meet ? lo : hi) = mid;
+    }
+}
+
 /* Every check of one placed pair; returns the exact D^2 as a double
  * (0 when they meet) for the callers' closed forms. */
 static double check_pair_d2(const tmesh *A, const noctTransform *xa, const tmesh *B,
@@ -1504,15 +1542,8 @@ static void random_pair(uint64_t *rng, int n)
         test_random_quat(rng, &xa.q);
     if (test_rand_below(rng, 2))
         test_random_quat(rng, &xb.q);
-    double dir[3], l;
-    do {
-        l = 0;
-        for (int k = 0; k < 3; ++k) {
-            dir[k] = 2 * test_uniform(rng) - 1;
-            l += dir[k] * dir[k];
-        }
-    } while (l < 0.01 || l > 1);
-    l = sqrt(l);
+    double dir[3];
+    random_direction(rng, dir);
     const double dist = 3 * s * test_uniform(rng);
     double O = test_rand_below(rng, 3) == 0
                    ? s * ldexp(test_uniform(rng) + 0.5, (int)test_rand_below(rng, 41))
@@ -1521,7 +1552,7 @@ static void random_pair(uint64_t *rng, int n)
         O *= 0x1p-8;
     for (int k = 0; k < 3; ++k) {
         xa.p[k] = O * (k == 1 ? -1 : 1);
-        xb.p[k] = xa.p[k] + dist * dir[k] / l;
+        xb.p[k] = xa.p[k] + dist * dir[k];
     }
     char label[192];
     snprintf(label, sizeof label, "random pair %d: %s / %s, scale %g, offset %g", n, A.name,
@@ -1658,17 +1689,8 @@ START_TEST(turned_boxes)
         noctTransform xa = noctIdentityTransform(), xb = noctIdentityTransform();
         test_random_quat(&rng, &xa.q);
         test_random_quat(&rng, &xb.q);
-        double dir[3], l;
-        do {
-            l = 0;
-            for (int k = 0; k < 3; ++k) {
-                dir[k] = 2 * test_uniform(&rng) - 1;
-                l += dir[k] * dir[k];
-            }
-        } while (l < 0.01 || l > 1);
-        l = sqrt(l);
-        for (int k = 0; k < 3; ++k)
-            dir[k] /= l;
+        double dir[3];
+        random_direction(&rng, dir);
         double O = test_rand_below(&rng, 3) == 0
                        ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
                        : 0;
@@ -1685,18 +1707,7 @@ START_TEST(turned_boxes)
         (void)check_pair_d2(&A, &xa, &B, &xb, label);
         /* the exact verdict's turn along dir: lo meets, hi does not */
         double lo = 0, hi = 8 * s;
-        for (int it = 0; it < 200 && lo < hi; ++it) {
-            const double mid = lo + (hi - lo) / 2;
-            if (mid == lo || mid == hi)
-                break;
-            for (int k = 0; k < 3; ++k)
-                xb.p[k] = xa.p[k] + mid * dir[k];
-            bool meet = false;
-            ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
-                                                    &meet, NULL, NULL),
-                             NOCT_OK);
-            *(meet ? &lo : &hi) = mid;
-        }
+        touch_along(&A, &xa, &B, &xb, dir, &lo, &hi);
         const double at[2] = {lo, hi};
         for (int w = 0; w < 2; ++w) {
             for (int k = 0; k < 3; ++k)
@@ -1797,32 +1808,14 @@ START_TEST(box_paths)
             xa.p[k] = O * (k == 1 ? -1 : 1);
         char label[160];
         if (how == 0) {
-            double dir[3], l;
-            do {
-                l = 0;
-                for (int k = 0; k < 3; ++k) {
-                    dir[k] = 2 * test_uniform(&rng) - 1;
-                    l += dir[k] * dir[k];
-                }
-            } while (l < 0.01 || l > 1);
-            l = sqrt(l);
+            double dir[3];
+            random_direction(&rng, dir);
             double lo = 0, hi = 8 * s;
-            for (int it = 0; it < 200 && lo < hi; ++it) {
-                const double mid = lo + (hi - lo) / 2;
-                if (mid == lo || mid == hi)
-                    break;
-                for (int k = 0; k < 3; ++k)
-                    xb.p[k] = xa.p[k] + mid * dir[k] / l;
-                bool meet = false;
-                ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
-                                                        &meet, NULL, NULL),
-                                 NOCT_OK);
-                *(meet ? &lo : &hi) = mid;
-            }
+            touch_along(&A, &xa, &B, &xb, dir, &lo, &hi);
             const double at[3] = {lo, hi, lo / 2};
             for (int w = 0; w < 3; ++w) {
                 for (int k = 0; k < 3; ++k)
-                    xb.p[k] = xa.p[k] + at[w] * dir[k] / l;
+                    xb.p[k] = xa.p[k] + at[w] * dir[k];
                 snprintf(label, sizeof label, "box paths %d, kinds %d %d: touching %d, scale %g",
                          n, ka, kb, w, s);
                 (void)check_pair_d2(&A, &xa, &B, &xb, label);
@@ -2454,33 +2447,15 @@ START_TEST(odd_boxes)
             O *= 0x1p-8;
         for (int k = 0; k < 3; ++k)
             xa.p[k] = O * (k == 1 ? -1 : 1);
-        double dir[3], l;
-        do {
-            l = 0;
-            for (int k = 0; k < 3; ++k) {
-                dir[k] = 2 * test_uniform(&rng) - 1;
-                l += dir[k] * dir[k];
-            }
-        } while (l < 0.01 || l > 1);
-        l = sqrt(l);
+        double dir[3];
+        random_direction(&rng, dir);
         double lo = 0, hi = 8 * s;
-        for (int it = 0; it < 200 && lo < hi; ++it) {
-            const double mid = lo + (hi - lo) / 2;
-            if (mid == lo || mid == hi)
-                break;
-            for (int k = 0; k < 3; ++k)
-                xb.p[k] = xa.p[k] + mid * dir[k] / l;
-            bool meet = false;
-            ck_assert_int_eq(noctCollideTransformed(A.m, &xa, B.m, &xb, NOCT_ACCURACY_EXACT,
-                                                    &meet, NULL, NULL),
-                             NOCT_OK);
-            *(meet ? &lo : &hi) = mid;
-        }
+        touch_along(&A, &xa, &B, &xb, dir, &lo, &hi);
         const double at[6] = {lo, hi, lo / 2, lo / 16, hi * 1.25, hi * 3};
         char label[160];
         for (int w = 0; w < 6; ++w) {
             for (int k = 0; k < 3; ++k)
-                xb.p[k] = xa.p[k] + at[w] * dir[k] / l;
+                xb.p[k] = xa.p[k] + at[w] * dir[k];
             if (!offset_ok(fabs(O) + at[w], 4 * s))
                 continue;
             snprintf(label, sizeof label, "odd boxes %d (%s, %s): at %d, scale %g", n, A.name,
