@@ -114,7 +114,12 @@ typedef struct noct_box_slot {
     double size;
     float own[3];
     float dev;
-    float shrink;   /* the dual's, or +inf without a dual */
+    float shrink;   /* the dual's, or +inf without a dual; below 1 only
+                       when the mesh's surface is the box's, bent by at
+                       most dev (a dual's tiling), which the inside proofs
+                       (noct_box_decide(), noct_point_slot_decide()) rely
+                       on: a slot that only encloses a mesh must keep it
+                       +inf */
     uint32_t has_box;
 } noct_box_slot;
 
@@ -241,8 +246,11 @@ int noct_box_decide(const noct_box_slot *a, const double ta[3], const noct_box_s
                     const double tb[3]);
 
 /* Does the solid that slot b describes, placed at tb, contain point p?
- * noct_box_decide() with p as a box of no size: -1 proved outside, 1
- * proved inside (b has a dual), 0 not decided (narrowphase.c). */
+ * -1 proved outside (noct_box_decide()'s separating axes with p as a box
+ * of no size, bit for bit), 1 proved inside (b has a dual: p within the
+ * shrunk box on each of b's three face normals, a proof of its own, as
+ * noct_box_decide() never proves a box of no size inside), 0 not decided
+ * (narrowphase.c). */
 int noct_point_slot_decide(const double p[3], const noct_box_slot *b, const double tb[3]);
 
 /* The exact level on two box-form meshes that noct_box_decide() left
