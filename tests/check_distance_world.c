@@ -501,7 +501,9 @@ START_TEST(points_at_box_boundaries)
                                      1e-14,  1e-12, 1e-9,  1e-6,   1e-3};
     const int noff = (int)(sizeof offsets / sizeof *offsets);
     int deep_in = 0, deep_out = 0, shallow = 0;
-    for (int round = 0; round < 8; ++round) {
+    /* rounds 0-7 a box primitive, 8-15 a mesh object of noctMeshCreateBox()
+     * (its slot from the turned mesh's own box form) */
+    for (int round = 0; round < 16; ++round) {
         noctWorld *w = new_world(0, NOCT_ACCURACY_EXACT);
         noctObjectDef def = noctDefaultObjectDef();
         ideal g;
@@ -509,7 +511,13 @@ START_TEST(points_at_box_boundaries)
         double h[3];
         for (int k = 0; k < 3; ++k)
             h[k] = 0.1 + 2 * uniform();
-        memcpy(def.half_extents, h, sizeof h);
+        noctMesh *mesh = NULL;
+        if (round >= 8) {
+            ck_assert_int_eq(noctMeshCreateBox(h[0], h[1], h[2], &mesh, NULL), NOCT_OK);
+            def.mesh = mesh;
+        } else {
+            memcpy(def.half_extents, h, sizeof h);
+        }
         g.npieces = 1;
         g.pc[0] = (piece){{0, 0, 0}, {h[0], h[1], h[2]}};
         for (int k = 0; k < 3; ++k)
@@ -568,10 +576,11 @@ START_TEST(points_at_box_boundaries)
             }
         }
         noctWorldDestroy(w);
+        noctMeshDestroy(mesh);
     }
-    ck_assert_int_gt(deep_in, 500);
-    ck_assert_int_gt(deep_out, 500);
-    ck_assert_int_gt(shallow, 500);
+    ck_assert_int_gt(deep_in, 1000);
+    ck_assert_int_gt(deep_out, 1000);
+    ck_assert_int_gt(shallow, 1000);
 }
 END_TEST
 
