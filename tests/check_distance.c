@@ -365,17 +365,10 @@ static bool tm_random_hull(tmesh *t, uint64_t *rng, size_t n, double s)
     ck_assert(n <= TM_MAXV);
     do {
         for (size_t i = 0; i < n; ++i) {
-            double d[3], l;
-            do {
-                l = 0;
-                for (int k = 0; k < 3; ++k) {
-                    d[k] = 2 * test_uniform(rng) - 1;
-                    l += d[k] * d[k];
-                }
-            } while (l < 0.01 || l > 1);
-            l = sqrt(l);
+            double d[3];
+            test_random_direction(rng, d);
             for (int k = 0; k < 3; ++k)
-                p[3 * i + k] = (int64_t)nearbyint(1024 * d[k] / l);
+                p[3 * i + k] = (int64_t)nearbyint(1024 * d[k]);
         }
     } while (!int_hull(p, n, tri, &nt));
     double v[3 * TM_MAXV];
@@ -1116,23 +1109,6 @@ static bool check_call(const ctx *c, bool meet, const mpq_t d2, double maxd)
  * bite: pairs apart, meeting, beyond answers. */
 static unsigned long n_apart, n_meet, n_beyond_calls;
 
-/* A random direction of length 1: a uniform point of the unit ball, away
- * from its centre, scaled. */
-static void random_direction(uint64_t *rng, double dir[3])
-{
-    double l;
-    do {
-        l = 0;
-        for (int k = 0; k < 3; ++k) {
-            dir[k] = 2 * test_uniform(rng) - 1;
-            l += dir[k] * dir[k];
-        }
-    } while (l < 0.01 || l > 1);
-    l = sqrt(l);
-    for (int k = 0; k < 3; ++k)
-        dir[k] /= l;
-}
-
 /* Where the exact verdict turns as B moves from A's place along dir (a
  * unit vector): bisected between 0 and hi, *lo the last distance at which
  * they meet, *hi the first at which they do not; xb left at the last
@@ -1543,7 +1519,7 @@ static void random_pair(uint64_t *rng, int n)
     if (test_rand_below(rng, 2))
         test_random_quat(rng, &xb.q);
     double dir[3];
-    random_direction(rng, dir);
+    test_random_direction(rng, dir);
     const double dist = 3 * s * test_uniform(rng);
     double O = test_rand_below(rng, 3) == 0
                    ? s * ldexp(test_uniform(rng) + 0.5, (int)test_rand_below(rng, 41))
@@ -1690,7 +1666,7 @@ START_TEST(turned_boxes)
         test_random_quat(&rng, &xa.q);
         test_random_quat(&rng, &xb.q);
         double dir[3];
-        random_direction(&rng, dir);
+        test_random_direction(&rng, dir);
         double O = test_rand_below(&rng, 3) == 0
                        ? s * ldexp(test_uniform(&rng) + 0.5, (int)test_rand_below(&rng, 41))
                        : 0;
@@ -1809,7 +1785,7 @@ START_TEST(box_paths)
         char label[160];
         if (how == 0) {
             double dir[3];
-            random_direction(&rng, dir);
+            test_random_direction(&rng, dir);
             double lo = 0, hi = 8 * s;
             touch_along(&A, &xa, &B, &xb, dir, &lo, &hi);
             const double at[3] = {lo, hi, lo / 2};
@@ -2448,7 +2424,7 @@ START_TEST(odd_boxes)
         for (int k = 0; k < 3; ++k)
             xa.p[k] = O * (k == 1 ? -1 : 1);
         double dir[3];
-        random_direction(&rng, dir);
+        test_random_direction(&rng, dir);
         double lo = 0, hi = 8 * s;
         touch_along(&A, &xa, &B, &xb, dir, &lo, &hi);
         const double at[6] = {lo, hi, lo / 2, lo / 16, hi * 1.25, hi * 3};

@@ -710,21 +710,7 @@ START_TEST(near_pairs_across_leaves)
         world_margin = 0;
         noctObjectDef defs[MAXO];
         for (int i = 0; i < s.n; ++i) {
-            noctObjectDef d = noctDefaultObjectDef();
-            d.transform = s.x[i];
-            if (s.kind[i] == 2) {
-                d.mesh = ell;
-            } else {
-                const double h[3] = {(double)s.g[i].pc[0].h[0], (double)s.g[i].pc[0].h[1],
-                                     (double)s.g[i].pc[0].h[2]};
-                if (s.kind[i] == 0)
-                    memcpy(d.half_extents, h, sizeof h);
-                else
-                    d.mesh = s.mesh[i];
-            }
-            d.category = s.cat[i];
-            d.mask = s.mask[i];
-            d.sensor = s.sensor[i];
+            const noctObjectDef d = scene_object_def(&s, i, ell);
             defs[i] = d;
             noctObjectId id;
             ck_assert_int_eq(noctWorldCreateObject(twin, &d, &id, NULL), NOCT_OK);
@@ -996,23 +982,9 @@ START_TEST(kept_proofs_against_geometry)
                 const int i = (int)(s.n * uniform());
                 const uint32_t slot = s.id[i].index;
                 ck_assert_int_eq(noctWorldRemove(s.w, s.id[i], NULL), NOCT_OK);
-                noctObjectDef def = noctDefaultObjectDef();
+                noctObjectDef def = scene_object_def(&s, i, ell);
                 for (int k = 0; k < 3; ++k)
                     def.transform.p[k] = 6 * uniform();
-                def.transform.q = s.x[i].q;
-                if (s.kind[i] == 2) {
-                    def.mesh = ell;
-                } else {
-                    const double h[3] = {(double)s.g[i].pc[0].h[0], (double)s.g[i].pc[0].h[1],
-                                         (double)s.g[i].pc[0].h[2]};
-                    if (s.kind[i] == 0)
-                        memcpy(def.half_extents, h, sizeof h);
-                    else
-                        def.mesh = s.mesh[i];
-                }
-                def.category = s.cat[i];
-                def.mask = s.mask[i];
-                def.sensor = s.sensor[i];
                 def.user_data = &s.id[i];
                 ck_assert_int_eq(noctWorldCreateObject(s.w, &def, &s.id[i], NULL), NOCT_OK);
                 ck_assert_uint_eq(s.id[i].index, slot);

@@ -285,6 +285,24 @@ void random_scene(scene *s, int n, int N, noctAccuracy accuracy, noctMesh *ell)
     }
 }
 
+noctObjectDef scene_object_def(const scene *s, int i, noctMesh *ell)
+{
+    noctObjectDef d = noctDefaultObjectDef();
+    d.transform = s->x[i];
+    if (s->kind[i] == 2) {
+        d.mesh = ell;
+    } else if (s->kind[i] == 1) {
+        d.mesh = s->mesh[i];
+    } else {
+        for (int k = 0; k < 3; ++k)
+            d.half_extents[k] = (double)s->g[i].pc[0].h[k];
+    }
+    d.category = s->cat[i];
+    d.mask = s->mask[i];
+    d.sensor = s->sensor[i];
+    return d;
+}
+
 void free_scene(scene *s)
 {
     noctWorldDestroy(s->w);

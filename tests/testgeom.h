@@ -76,6 +76,10 @@ noctWorld *new_world(int N, noctAccuracy accuracy);
 uint64_t random_bits(void);
 void random_scene(scene *s, int n, int N, noctAccuracy accuracy, noctMesh *ell);
 void free_scene(scene *s);
+/* The definition that makes object i of scene s again (its shape, pose,
+ * category, mask and sensor flag as random_scene() drew them); ell the L
+ * mesh random_scene() was given. */
+noctObjectDef scene_object_def(const scene *s, int i, noctMesh *ell);
 bool passes(const scene *s, int i, noctQueryFilter f);
 noctQueryFilter random_filter(void);
 const noctMesh *mesh_of(const scene *s, int i, const noctMesh *ell);

@@ -49,18 +49,32 @@ double test_uniform(uint64_t *state)
     return (double)(test_rand(state) >> 11) * 0x1p-53;
 }
 
-void test_random_quat(uint64_t *state, noctQuat *q)
+/* A uniform point of the n-ball away from its centre, scaled to length 1. */
+static void random_unit(uint64_t *state, double *c, int n)
 {
-    double c[4], l;
+    double l;
     do {
         l = 0;
-        for (int k = 0; k < 4; ++k) {
+        for (int k = 0; k < n; ++k) {
             c[k] = 2 * test_uniform(state) - 1;
             l += c[k] * c[k];
         }
     } while (l < 0.01 || l > 1);
     l = sqrt(l);
-    *q = (noctQuat){c[0] / l, c[1] / l, c[2] / l, c[3] / l};
+    for (int k = 0; k < n; ++k)
+        c[k] /= l;
+}
+
+void test_random_quat(uint64_t *state, noctQuat *q)
+{
+    double c[4];
+    random_unit(state, c, 4);
+    *q = (noctQuat){c[0], c[1], c[2], c[3]};
+}
+
+void test_random_direction(uint64_t *state, double dir[3])
+{
+    random_unit(state, dir, 3);
 }
 
 noctMesh *make_ell(void)

@@ -52,6 +52,8 @@ double test_uniform(uint64_t *state);
 /* A random unit quaternion: a uniform point of the 4-ball (away from its
  * centre) scaled to length 1; draws from test_uniform(state). */
 void test_random_quat(uint64_t *state, noctQuat *q);
+/* A random direction of length 1, drawn as test_random_quat() draws. */
+void test_random_direction(uint64_t *state, double dir[3]);
 
 /* An L-shaped prism: the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2) less
  * (1,1), z from -1/2 to 1/2; non-convex, its faces convex polygons. Fails
