@@ -25,7 +25,6 @@
 NOCT_DEFINE_GROW(grow_blocks, noct_block *)
 NOCT_DEFINE_RESIZE(resize_blocks, noct_block *)
 NOCT_DEFINE_GROW(grow_nodes, octNode *)
-NOCT_DEFINE_RESIZE(resize_nodes, octNode *)
 
 /* Is object id in leaf c? Whichever of its spans and the leaf's list is
  * shorter is searched, so that neither a crowded leaf nor an object in

@@ -880,7 +880,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* (no margin left: the pairs the last one kept end) */
     const bool any = W > 0 || m != NULL;
     near_sweep s = {.w = w, .m = m, .W = W, .M = M};
-    hint_walk hw = {w->hints.h, w->hints.h + w->hints.n, w->hints.spare, 0, w->hints.capspare,
+    /* (an empty list may have no array: no pointer arithmetic on NULL) */
+    const noct_near_hint *hint_end = w->hints.n > 0 ? w->hints.h + w->hints.n : w->hints.h;
+    hint_walk hw = {w->hints.h, hint_end, w->hints.spare, 0, w->hints.capspare,
                     !any};
     noct_near_hint h;
     const int by_leaves = any ? near_candidates(&s) : 0;
