@@ -985,5 +985,8 @@ bool noct_mesh_same(const noctMesh *a, const noctMesh *b)
             memcmp(&g->eta, &h->eta, sizeof g->eta) == 0 &&
             memcmp(&g->shrink, &h->shrink, sizeof g->shrink) == 0 &&
             memcmp(g->corner, h->corner, sizeof g->corner) == 0 &&
-            memcmp(g->face, h->face, sizeof g->face) == 0);
+            memcmp(g->face, h->face, sizeof g->face) == 0 &&
+            g->about_origin == h->about_origin && memcmp(g->sign, h->sign, sizeof g->sign) == 0 &&
+            memcmp(g->frame_axis, h->frame_axis, sizeof g->frame_axis) == 0 &&
+            g->frame_plus == h->frame_plus && g->far_from_flat == h->far_from_flat);
 }
