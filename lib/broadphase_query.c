@@ -229,16 +229,22 @@ static inline bool near_push(near_walk *nw, size_t *n, uint32_t id, double g2)
 }
 
 /* A leaf's scan of one box: its noct_gap2() to [lo, hi] when it is within
- * bound, else +inf (and *cut set). First the axes one by one: when a
- * rounded difference exceeds rk, its square rounds above the bound (rk's
- * square does, see near_leaf()), and so does the sum of squares, which is
- * at least each of its terms; the gap need not be computed. */
+ * bound, else +inf (and *cut set). First the axes alone: when a rounded
+ * difference exceeds rk, its square rounds above the bound (rk's square
+ * does, see near_leaf()), and so does the sum of squares, which is at
+ * least each of its terms; the gap need not be computed. The six
+ * differences are taken together, their largest against rk: one branch,
+ * which the few boxes within the bound make predictable, where a branch
+ * per axis went either way at random (the scan's boxes are requested
+ * ahead, both lines). */
 static NOCT_ALWAYS_INLINE double near_scan(const double lo[3], const double hi[3],
                                            const noct_aabb *b, double rk, double bound,
                                            bool *cut)
 {
-    if (b->lo[0] - hi[0] > rk || lo[0] - b->hi[0] > rk || b->lo[1] - hi[1] > rk ||
-        lo[1] - b->hi[1] > rk || b->lo[2] - hi[2] > rk || lo[2] - b->hi[2] > rk) {
+    const double m0 = noct_max(b->lo[0] - hi[0], lo[0] - b->hi[0]);
+    const double m1 = noct_max(b->lo[1] - hi[1], lo[1] - b->hi[1]);
+    const double m2 = noct_max(b->lo[2] - hi[2], lo[2] - b->hi[2]);
+    if (noct_max(m0, noct_max(m1, m2)) > rk) {
         *cut = true;
         return INFINITY;
     }
