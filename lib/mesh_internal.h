@@ -294,7 +294,11 @@ noctStatus noct_segment_hit(const noctMesh *m, const double t[3], const double p
 bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,
                        const double tb[3], double d);
 /* noct_box_apart_by() with a point p as the first slot (one of no size
- * placed at p), the same answer from B's face axes alone. */
+ * placed at p), the same answer from B's face axes alone when that is
+ * true; else the three face axes' gaps together, when B's axes are
+ * proved within cos 2^-21 of orthogonal (the sum of their squares less
+ * a proved allowance for the axes' tilt and the rounding: the bound on a
+ * point near an edge or a corner; see narrowphase_distance.c). */
 bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double tb[3],
                          double d);
 /* noct_box_apart_by(), and when true the axis (not unit) along which the

@@ -92,12 +92,41 @@ bool noct_box_apart_by(const noct_box_slot *a, const double ta[3], const noct_bo
  * takes it: A's face axes and the nine cross products are zero (gap 0,
  * not above d times a norm of 0; l1 = 0 skips a cross product), and on
  * B's face axes every term of A is an exact zero, so each gap below is
- * bit for bit apart_by()'s, and so is the answer. */
+ * bit for bit apart_by()'s, and so is the answer on one axis.
+ *
+ * Then the three face axes together. On axis u_j = e[j] the gap G_j
+ * (computed as above, its allowance taken off) bounds |u_j.(x - p)| from
+ * below for every point x of the solid, so with the unit vectors
+ * w_j = u_j / |u_j| and v = x - p, |w_j.v| >= g_j = max(G_j, 0) / |u_j|.
+ * The three are a basis within cos <= eps of orthonormal: their Gram
+ * matrix W has ones on its diagonal and |w_i.w_j| <= eps off it, so its
+ * largest eigenvalue is at most 1 + 2 eps (Gershgorin), and
+ * sum_j (w_j.v)^2 = |W v|^2 <= (1 + 2 eps) |v|^2. Hence every x of the
+ * solid has |x - p|^2 >= sum_j g_j^2 / (1 + 2 eps): the point is farther
+ * than d when that exceeds d^2.
+ *
+ * Rounding. q_j = fl(u_j.u_j) is within (1 +- 3u) of |u_j|^2 (u = 2^-53)
+ * when it is at least 2^-900 (the squares' underflow then counts for
+ * nothing); a smaller q_j (or one not finite) skips the test. eps: the
+ * test asks |fl(u_i.u_j)| <= 2^-22 min(q_i, q_j); the dot product errs
+ * by at most 3u |u_i| |u_j| (Cauchy-Schwarz) plus 2^-1073 for underflow,
+ * and min(|u_i|^2, |u_j|^2) <= |u_i| |u_j|, so |w_i.w_j| <= 2^-22
+ * (1 + 4u) + 3u + 2^-173 <= 2^-21 = eps, and 1 + 2 eps = 1 + 2^-20. A
+ * slot whose axes are farther from orthogonal (a sheared parallelepiped)
+ * skips the test; a rotation's stored axes are within some 2^-40.
+ * t_j = fl(max(G_j, 0) / fl(sqrt(q_j))) <= (1 + 5u) g_j (+ 2^-1075 where
+ * it underflows), and s = the sum of fl(t_j^2) <= (1 + 2^-48) sum g_j^2
+ * + 2^-1072. With c2 = max(fl(fl(d^2) (1 + 2^-16)), 2^-990), which is at
+ * least d^2 (1 + 2^-16)(1 - 2u)^2 when d^2 is normal and 2^30 d^2
+ * otherwise, s > c2 gives sum g_j^2 > (s - 2^-1072) / (1 + 2^-48) >=
+ * d^2 (1 + 2^-17) > d^2 (1 + 2^-20): |x - p| > d for every x. Every
+ * quantity is finite: coordinates and sizes are within NOCT_MAX_COORDINATE
+ * (1e100), squares within 1e201. */
 bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double tb[3],
                          double d)
 {
     static const noct_box_slot point; /* zero */
-    double T[3];
+    double T[3], G[3];
     const double M = box_offset(&point, p, b, tb, T);
     const double unit = 256 * 0x1p-53 * M, dev = (double)b->dev;
     for (int j = 0; j < 3; ++j) {
@@ -107,8 +136,25 @@ bool noct_point_apart_by(const double p[3], const noct_box_slot *b, const double
             fabs(u[0] * T[0] + u[1] * T[1] + u[2] * T[2]) - (double)b->own[j] - lb * dev - unit * lb;
         if (gap_beyond(gap, u, d))
             return true;
+        G[j] = gap;
     }
-    return false;
+    double q[3];
+    for (int j = 0; j < 3; ++j) {
+        q[j] = noct_dot3(b->e[j], b->e[j]);
+        if (!(q[j] >= 0x1p-900 && q[j] <= 0x1p900))
+            return false;
+    }
+    for (int j = 0; j < 3; ++j) {
+        const int i = (j + 1) % 3;
+        if (!(fabs(noct_dot3(b->e[i], b->e[j])) <= 0x1p-22 * noct_min(q[i], q[j])))
+            return false;
+    }
+    double s = 0;
+    for (int j = 0; j < 3; ++j) {
+        const double t = noct_max(G[j], 0) / sqrt(q[j]);
+        s += t * t;
+    }
+    return s > noct_max(d * d * (1 + 0x1p-16), 0x1p-990);
 }
 
 bool noct_box_apart_axis(const noct_box_slot *a, const double ta[3], const noct_box_slot *b,

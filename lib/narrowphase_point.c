@@ -305,7 +305,8 @@ static double hull_lower_bound(const point_walk *w, const double q[3])
 
 /*
  * A box (a box-form mesh with a dual or a box view: its corners and faces
- * known, noct_box_topology()), unscaled: the point's nearest feature in
+ * known, noct_box_topology()), unscaled or scaled down (huge
+ * coordinates; scaled up, the walk takes it): the point's nearest feature in
  * closed form, clamped in the frame of the ideal box its placed corners
  * describe (checked rectangular), then the nearest point of that placed
  * feature (a corner, an edge, or the nearer of a face's two triangles),
@@ -318,12 +319,12 @@ static bool box_nearest(point_walk *w)
     const uint8_t *corner;
     const uint8_t (*face)[2];
     const noctMesh *m = w->m;
-    if (m->nv != 8 || w->scale != 1 || !noct_box_topology(m, &corner, &face))
+    if (m->nv != 8 || w->scale > 1 || !noct_box_topology(m, &corner, &face))
         return false;
     double P[8][3];
     for (int i = 0; i < 8; ++i)
         for (int k = 0; k < 3; ++k)
-            P[i][k] = m->v[3 * corner[i] + k] + w->t[k]; /* by corner */
+            P[i][k] = (m->v[3 * corner[i] + k] + w->t[k]) * w->scale; /* by corner */
     double c[3], d[3], x[3], h[3];
     for (int k = 0; k < 3; ++k) {
         c[k] = P[0][k] + (P[7][k] - P[0][k]) / 2;
@@ -407,9 +408,14 @@ noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, cons
     for (int k = 0; k < 3; ++k)
         mag = noct_max(mag, noct_max(fabs(p[k]), noct_max(fabs(m->lo[k] + t[k]),
                                                           fabs(m->hi[k] + t[k]))));
-    /* Tiny coordinates scaled up (exactly), as noctDistance() does. */
+    /* Tiny coordinates scaled up (exactly), as noctDistance() does, and
+     * huge ones down: the nearest point of a triangle multiplies four
+     * coordinates (point_tri_nearest()), which overflows beyond 2^255 and
+     * made the face's point an edge's (an interval 0.4 % wide at 2^300).
+     * Scaling by a power of two changes no bit of what does not
+     * overflow. */
     double scale = 1;
-    if (mag > 0 && mag < 0x1p-200)
+    if (mag > 0 && (mag < 0x1p-200 || mag > 0x1p200))
         scale = noct_pow2(-ilogb(mag));
     const double slack = 0x1p-40 * noct_max(mag, isfinite(max_distance) ? max_distance : 0);
     const double reach_max = isfinite(max_distance)

@@ -23,6 +23,8 @@
  *   exactly and just below it; no object passing, none left, an empty
  *   world) against the least of the distances noctWorldQueryWithin()
  *   reports for every object, and a point's against the ideal solids;
+ * - points beyond turned boxes' corners, edges and faces at near-tied
+ *   distances, at scales 2^-480 to 2^300, against the ideal boxes;
  * - the walk at sizes 2^-300 and 2^300, offsets 2^40 and 1e99, tiny boxes
  *   beside huge ones, dyadic boxes with shared faces and exact ties (at
  *   distance 0 the least index) against noctWorldQueryWithin();
@@ -581,6 +583,115 @@ START_TEST(points_at_box_boundaries)
     ck_assert_int_gt(deep_in, 1000);
     ck_assert_int_gt(deep_out, 1000);
     ck_assert_int_gt(shallow, 1000);
+}
+END_TEST
+
+/* Six turned boxes about a point, each placed so that the point is at a
+ * chosen distance from its corner, edge or face (D (1 + delta r), r in
+ * [0, 1), delta 1e-2 to 1e-4: near ties), at scales 1, 2^-300, 2^300 and
+ * 2^-480 (where the face axes' squares are too small for the three-axis
+ * bound, which then stands aside), near the origin and 100 scales out:
+ * the nearest object and its interval against the ideal boxes' distances
+ * (long double). A point near a corner or an edge is farther than each of
+ * the face axes' gaps alone, and the world skips an object whose three
+ * gaps together prove it beyond the best (noct_point_apart_by()); a bound
+ * larger than the truth by 1 % skips the true nearest here when a
+ * farther object is searched first (made to fail so with the bound
+ * 1.0001 times too large). At 2^300 a point beyond a face once got an
+ * edge's point (the triangle's closed form overflowed): an interval
+ * 0.4 % wide, and the wrong object. */
+START_TEST(points_near_corners_and_ties)
+{
+    static const double scales[4] = {1, 0x1p-300, 0x1p300, 0x1p-480};
+    static const double deltas[3] = {1e-2, 1e-3, 1e-4};
+    int checked = 0, corner_best = 0;
+    for (int v = 0; v < 8; ++v) {
+        const double S = scales[v % 4], off = v >= 4 ? 100 * S : 0;
+        for (int t = 0; t < 40; ++t) {
+            noctWorld *w = new_world(t % 2 ? 1 : NOCT_AUTO, NOCT_ACCURACY_EXACT);
+            const double delta = deltas[t % 3];
+            double p[3];
+            for (int k = 0; k < 3; ++k)
+                p[k] = off + S * (-1 + 2 * uniform());
+            ideal g[6];
+            long double truth[6];
+            int at[6];
+            for (int i = 0; i < 6; ++i) {
+                noctObjectDef d = noctDefaultObjectDef();
+                memset(&g[i], 0, sizeof g[i]);
+                g[i].npieces = 1;
+                for (int k = 0; k < 3; ++k) {
+                    d.half_extents[k] = S * (0.1 + 0.5 * uniform());
+                    g[i].pc[0].h[k] = d.half_extents[k];
+                }
+                random_quat(&d.transform.q);
+                quat_matrix(&d.transform.q, g[i].R);
+                /* the point in the box's frame: beyond the faces of the
+                 * first at[i] axes (a corner, an edge or a face), by a
+                 * vector of length D in their positive cone */
+                at[i] = 3 - i % 3;
+                const long double D = S * 0.5L * (1 + delta * (long double)uniform());
+                long double a[3] = {0, 0, 0}, n2 = 0, l[3];
+                for (int k = 0; k < at[i]; ++k) {
+                    a[k] = 0.05L + (long double)uniform();
+                    n2 += a[k] * a[k];
+                }
+                for (int k = 0; k < 3; ++k) {
+                    const long double sgn = uniform() < 0.5 ? -1 : 1;
+                    l[k] = k < at[i] ? sgn * (g[i].pc[0].h[k] + D * a[k] / sqrtl(n2))
+                                     : 0.9L * (-1 + 2 * (long double)uniform()) * g[i].pc[0].h[k];
+                }
+                for (int k = 0; k < 3; ++k) {
+                    long double c = p[k];
+                    for (int j = 0; j < 3; ++j)
+                        c -= g[i].R[3 * k + j] * l[j];
+                    d.transform.p[k] = (double)c;
+                    g[i].t[k] = d.transform.p[k];
+                }
+                noctObjectId id;
+                ck_assert_int_eq(noctWorldCreateObject(w, &d, &id, NULL), NOCT_OK);
+                ck_assert_uint_eq(id.index, (unsigned)i);
+                truth[i] = point_ideal(&g[i], p);
+                ck_assert(fabsl(truth[i] - D) <= 1e-9L * (S + off));
+            }
+            int best = 0, second = -1;
+            for (int i = 1; i < 6; ++i) {
+                if (truth[i] < truth[best]) {
+                    second = best;
+                    best = i;
+                } else if (second < 0 || truth[i] < truth[second]) {
+                    second = i;
+                }
+            }
+            noctTransform x = noctIdentityTransform();
+            memcpy(x.p, p, sizeof p);
+            noctDistanceHit hit;
+            bool got;
+            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &x, INFINITY,
+                                                   noctDefaultQueryFilter(), &hit, &got, NULL),
+                             NOCT_OK);
+            ck_assert(got);
+            const noctDistanceResult *r = &hit.result;
+            const long double tol = 1e-9L * (S + off);
+            ck_assert(!r->colliding);
+            ck_assert(r->lower <= r->distance && r->distance <= r->upper);
+            ck_assert(r->lower <= truth[best] + tol && truth[best] - tol <= r->upper);
+            const int hi = (int)hit.id.index;
+            long double d2 = 0;
+            for (int k = 0; k < 3; ++k)
+                d2 += ((long double)r->point_b[k] - p[k]) * ((long double)r->point_b[k] - p[k]);
+            ck_assert(point_ideal(&g[hi], r->point_b) <= tol);
+            ck_assert(fabsl(sqrtl(d2) - truth[hi]) <= tol);
+            if (truth[second] - truth[best] > 4 * tol) {
+                ck_assert_uint_eq(hit.id.index, (unsigned)best);
+                ++checked;
+                corner_best += at[best] > 1;
+            }
+            noctWorldDestroy(w);
+        }
+    }
+    ck_assert_int_gt(checked, 250);
+    ck_assert_int_gt(corner_best, 150);
 }
 END_TEST
 
@@ -1195,6 +1306,7 @@ static Suite *distance_world_suite(void)
     tcase_add_test(tc, walk_against_brute_force);
     tcase_add_test(tc, walk_at_extreme_scales);
     tcase_add_test(tc, points_at_box_boundaries);
+    tcase_add_test(tc, points_near_corners_and_ties);
     tcase_add_loop_test(tc, near_distances_against_pairs, 0, 1);
     tcase_add_test(tc, bad_input);
     TCase *full = test_case(s, "distance world, full", 600, "slow");
