@@ -412,8 +412,13 @@ noctStatus noct_point_distance_placed(const double p[3], const noctMesh *m, cons
      * huge ones down: the nearest point of a triangle multiplies four
      * coordinates (point_tri_nearest()), which overflows beyond 2^255 and
      * made the face's point an edge's (an interval 0.4 % wide at 2^300).
-     * Scaling by a power of two changes no bit of what does not
-     * overflow. */
+     * Scaling up by a power of two is exact here (mag < 2^-200); scaling
+     * down is exact except where a coordinate falls below 2^-1022
+     * (one under 2^-822 at mag 2^200): it moves by at most 2^-1075
+     * (scaled), which the proofs' allowances cover (each projection's
+     * 2^-50 l1 s exceeds l1 2^-1075 once s >= 2^-1024, and a gap under
+     * 2^-1000 counts as 0: noct_gap_over()); the computed nearest point
+     * may move as much (2^-1075 / scale), within the accuracy. */
     double scale = 1;
     if (mag > 0 && (mag < 0x1p-200 || mag > 0x1p200))
         scale = noct_pow2(-ilogb(mag));
