@@ -579,6 +579,10 @@ typedef struct near_sweep {
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
     bool filtered;        /* some object has a filter (else all pass) */
+    double skin;          /* added to each grow for a kept list (else 0) */
+    bool keep;            /* making the kept list: every pair whose boxes
+                             meet grown by grow and skin, none turned away
+                             by near()'s box test or the filters */
 } near_sweep;
 
 NOCT_DEFINE_GROW(grow_near_box, near_box)
@@ -639,7 +643,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
         near_box *e = &s->g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
         memcpy(e->hi, b->hi, sizeof e->hi);
-        e->grow = s->grow[id];
+        e->grow = s->grow[id] + s->skin; /* (exact for a skin of 0) */
         e->id = id;
     }
     return true;
@@ -761,6 +765,11 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                                  noct_max(A->lo[2], B->lo[2])};
             if (!noct_cell_owns(c, s->root, P))
                 continue;
+            if (s->keep) {
+                if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+                    return false;
+                continue;
+            }
             /* near()'s test on the boxes, here where they are at hand
              * (the same numbers: copies) */
             const double d = s->m != NULL ? s->W + (s->m[I->id] + s->m[J->id]) : s->W;
@@ -789,57 +798,19 @@ static bool sweep_node(near_sweep *s, const octNode *n)
     return sweep_leaf(s, noct_cell_of(n));
 }
 
-/*
- * The candidate pairs of every object that is no sensor, sorted, into
- * s->cand, by the leaves' sweeps: 1; 0 when they cannot be had that way
- * (no exact tree, a box outside the root, or the gathering would cost
- * more than the objects' own scans: then nothing is made); -1 without
- * memory.
- */
-static int near_candidates(near_sweep *s)
+/* The leaves' sweeps over every box, their pairs sorted by first object
+ * (counting), then by second, in s->cand: 1; 0 when the gathering would
+ * cost more than the objects' own scans; -1 without memory. */
+static int sweep_all(near_sweep *s, uint32_t slots)
 {
     noctWorld *w = s->w;
-    noctBroadphase *bp = &w->bp;
-    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
-        return 0;
-    const noct_aabb root = noct_bp_root_box(bp);
-    const uint32_t slots = noct_bp_slots(bp);
-    double G = 0;
-    size_t live = 0;
-    for (uint32_t i = 0; i < slots; ++i) {
-        if (!w->obj[i].alive || w->obj[i].sensor)
-            continue;
-        if (!noct_box_within(noct_bp_box(bp, i), &root))
-            return 0;
-        ++live;
-    }
-    /* every object's grow, once (a box is gathered by several leaves) */
-    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
-    if (s->grow == NULL)
-        return -1;
-    for (uint32_t i = 0; i < slots; ++i) {
-        if (!w->obj[i].alive || w->obj[i].sensor)
-            continue;
-        s->grow[i] = grow_of(s, i, noct_bp_box(bp, i));
-        G = noct_max(G, s->grow[i]);
-    }
-    if (!isfinite(G))
-        return 0;
-    s->G = G * (1 + 0x1p-30);
-    double S = 0;
-    for (int k = 0; k < 3; ++k)
-        S = noct_max(S, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
-    s->R = s->G + 0x1p-48 * S;
-    if (!isfinite(s->R))
-        return 0;
-    s->root = noct_cell_of(noct_bp_root(bp));
-    s->budget = 16 * live + 4096;
-    s->filtered = noct_bp_any_filter(bp);
-    if (!sweep_node(s, noct_bp_root(bp)))
+    s->cand.n = 0;
+    s->gathered = 0;
+    s->over = false;
+    if (!sweep_node(s, noct_bp_root(&w->bp)))
         return -1;
     if (s->over)
         return 0;
-    /* by first object (counting), then by second */
     noct_pair_list *l = &s->cand;
     if (l->n > 1) {
         uint32_t *count = calloc((size_t)slots + 1, sizeof *count);
@@ -862,6 +833,204 @@ static int near_candidates(near_sweep *s)
         noct_pairs_sort_partners(l);
     }
     return 1;
+}
+
+/* The kept list made from the sweeps' pairs in s->cand (which it takes,
+ * leaving s->cand empty) and the boxes now: false without memory. */
+static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
+{
+    noctWorld *w = s->w;
+    if (k->cap < s->cand.n) {
+        void *p = realloc(k->p, s->cand.n * sizeof *k->p);
+        if (p == NULL)
+            return false;
+        k->p = p;
+        k->cap = s->cand.n;
+    }
+    if (k->capref < slots) {
+        void *r = realloc(k->ref, (size_t)slots * sizeof *k->ref);
+        if (r == NULL)
+            return false;
+        k->ref = r;
+        k->capref = slots;
+    }
+    for (size_t q = 0; q < s->cand.n; ++q) {
+        k->p[q][0] = s->cand.p[q].a.index;
+        k->p[q][1] = s->cand.p[q].b.index;
+    }
+    k->n = s->cand.n;
+    s->cand.n = 0;
+    if (slots > 0)
+        memcpy(k->ref, noct_bp_box(&w->bp, 0), (size_t)slots * sizeof *k->ref);
+    return true;
+}
+
+/* This step's candidates, from the kept list's pairs, into s->cand: the
+ * sweeps' own tests (the pair's boxes meeting with i's grown by its grow
+ * now, near()'s test on the boxes, the filters), so the same pairs as the
+ * sweeps would hand over, in their order (the list's, sorted). false
+ * without memory. */
+static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
+{
+    noctWorld *w = s->w;
+    const noctBroadphase *bp = &w->bp;
+    s->cand.n = 0;
+    for (size_t q = 0; q < k->n; ++q) {
+        /* (the second objects' boxes are scattered: requested ahead) */
+        if (q + 8 < k->n) {
+            const char *ahead = (const char *)noct_bp_box(bp, k->p[q + 8][1]);
+            NOCT_PREFETCH(ahead);
+            NOCT_PREFETCH(ahead + sizeof(noct_aabb) - 1);
+        }
+        const uint32_t i = k->p[q][0], j = k->p[q][1];
+        const noct_aabb *I = noct_bp_box(bp, i), *J = noct_bp_box(bp, j);
+        const double gr = s->grow[i];
+        if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
+            (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |
+            (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))
+            continue;
+        const double d = s->m != NULL ? s->W + (s->m[i] + s->m[j]) : s->W;
+        if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
+            continue;
+        if (s->filtered &&
+            !noct_filters_pass(noct_bp_proxy(bp, i), noct_bp_proxy(bp, j)))
+            continue;
+        const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
+        if (!noct_pairs_push(&s->cand, (noctPair){{i, overlap}, {j, 0}}))
+            return false;
+    }
+    return true;
+}
+
+/*
+ * The kept list's skin. A list is made to last KEEP_STEPS steps at the
+ * motion a step the last one saw (a box that moves by r a step needs a
+ * skin of 2 r a step: both boxes of a pair may move towards each other),
+ * with the skin at most SKIN_GROWS times the largest grow (the list's
+ * pairs grow about as the cube of the boxes' size and the reach, and so
+ * does the sweep that makes it); a list that would last less than two
+ * steps so is made without a skin worth the name, as the sweeps alone
+ * would find the pairs (objects too fast for the margin).
+ */
+#define KEEP_STEPS 4
+#define SKIN_GROWS 1.0
+
+static double skin_for(double rate, double G, double least)
+{
+    const double want = 2 * KEEP_STEPS * rate, cap = SKIN_GROWS * G;
+    if (!(want <= cap))
+        return cap >= 4 * rate ? cap : least;
+    return noct_max(want, least);
+}
+
+/*
+ * The candidate pairs of every object that is no sensor, sorted, into
+ * s->cand, by the leaves' sweeps: 1; 0 when they cannot be had that way
+ * (no exact tree, a box outside the root, or the gathering would cost
+ * more than the objects' own scans: then nothing is made); -1 without
+ * memory.
+ *
+ * The sweeps' pairs are kept from step to step (w->kept, as molecular
+ * dynamics keeps Verlet lists): made with every grow larger by a skin,
+ * they are the pairs (i, j) whose boxes met with i's grown by
+ * g_i' = fl(g_i + skin). A later step's candidates are among them while
+ * every box has moved by at most D on each coordinate since, with
+ * (2 + 2^-30) D + 2^-40 (S + G + skin) <= skin (S bounding every
+ * coordinate and G every grow, then and now; each object's margin, the
+ * world's and the largest one the same, which edits, W and M tell):
+ * a pair left out had, on some axis, say J.lo > fl(I.hi + g'), so with
+ * u = 2^-53, J.lo > I.hi + g + skin - 2u (S + g + skin) (1 + u); since,
+ * J.lo and I.hi moved by at most D each, and g, made from the same reach
+ * and coordinates that moved by at most D (2^-38 of their largest),
+ * by at most 2^-38 D + 2u G (1 + u); so now J.lo exceeds I.hi + g by
+ * more than skin - 2 D (1 + 2^-38) - 5u (S + G + skin) and, by the
+ * condition, more than u (S + g) (the rounding of fl(I.hi + g)), so
+ * the sweeps' test turns the pair away; the same below, and D as
+ * computed (each difference within an ulp of its exact value) and the
+ * condition's own roundings are within the 2^-30 and 2^-40 to spare. The
+ * pairs of the list then go through the sweeps' own tests
+ * (kept_candidates()): the same candidates as the sweeps would find, bit
+ * for bit. A step that cannot use the list makes another (the skin from
+ * the motion the last one saw, skin_for()); without memory for it, the
+ * step fails as without the list.
+ */
+static int near_candidates(near_sweep *s)
+{
+    noctWorld *w = s->w;
+    noctBroadphase *bp = &w->bp;
+    noct_near_kept *k = &w->kept;
+    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp)) {
+        k->valid = false;
+        return 0;
+    }
+    const noct_aabb root = noct_bp_root_box(bp);
+    const uint32_t slots = noct_bp_slots(bp);
+    bool usable = k->valid && k->edits == w->margins.edits && k->slots == slots &&
+                  k->W == s->W && k->M == s->M;
+    k->valid = false;
+    /* every object's grow, once (a box is gathered by several leaves),
+     * and how far the boxes moved since the list was made */
+    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
+    if (s->grow == NULL)
+        return -1;
+    double G = 0, D = 0;
+    size_t live = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        if (!noct_box_within(b, &root))
+            return 0;
+        ++live;
+        s->grow[i] = grow_of(s, i, b);
+        G = noct_max(G, s->grow[i]);
+        if (usable) {
+            const noct_aabb *r = &k->ref[i];
+            for (int a = 0; a < 3; ++a)
+                D = noct_max(D, noct_max(fabs(b->lo[a] - r->lo[a]), fabs(b->hi[a] - r->hi[a])));
+        }
+    }
+    if (!isfinite(G))
+        return 0;
+    double S = 0;
+    for (int a = 0; a < 3; ++a)
+        S = noct_max(S, noct_max(fabs(root.lo[a]), fabs(root.hi[a])));
+    s->root = noct_cell_of(noct_bp_root(bp));
+    s->budget = 16 * live + 4096;
+    s->filtered = noct_bp_any_filter(bp);
+    if (usable) {
+        ++k->age;
+        const double S2 = noct_max(S, k->S), G2 = noct_max(G, k->G);
+        if ((2 + 0x1p-30) * D + 0x1p-40 * ((S2 + G2) + k->skin) <= k->skin) {
+            k->valid = true;
+            return kept_candidates(s, k) ? 1 : -1;
+        }
+        /* (a NaN fails too: then the next list has the least skin) */
+        k->rate = D / k->age;
+    }
+    /* a new list */
+    const double skin = skin_for(k->rate, G, 0x1p-30 * (S + G));
+    s->skin = skin;
+    s->keep = true;
+    s->G = (G + skin) * (1 + 0x1p-30);
+    s->R = s->G + 0x1p-48 * S;
+    int r = isfinite(s->R) ? sweep_all(s, slots) : 0;
+    if (r == 0) {
+        /* more than the budget with the skin (or none at all): the
+         * sweeps alone, as without a list, and the next list with the
+         * least skin */
+        k->rate = INFINITY;
+        s->skin = 0;
+        s->keep = false;
+        s->G = G * (1 + 0x1p-30);
+        s->R = s->G + 0x1p-48 * S;
+        return isfinite(s->R) ? sweep_all(s, slots) : 0;
+    }
+    if (r < 0 || !keep_list(s, k, slots))
+        return -1;
+    *k = (noct_near_kept){k->p, k->n, k->cap, k->ref, k->capref, skin, S, G, s->W, s->M,
+                          k->rate, w->margins.edits, slots, 0, true};
+    return kept_candidates(s, k) ? 1 : -1;
 }
 
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
@@ -987,6 +1156,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         free(kept->h);
         free(hw.h);
         *kept = (noct_near_hints){NULL, NULL, 0, 0, 0};
+        free(w->kept.p);
+        free(w->kept.ref);
+        w->kept = (noct_near_kept){0};
     } else if (st == NOCT_OK && !hw.failed) {
         *kept = (noct_near_hints){hw.h, kept->h, hw.n, hw.cap, kept->cap};
     } else {
