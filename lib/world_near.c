@@ -913,11 +913,12 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
  * would find the pairs (objects too fast for the margin).
  */
 #define KEEP_STEPS 4
-#define SKIN_GROWS 1.0
+#define SKIN_GROWS 2.0
 
 static double skin_for(double rate, double G, double least)
 {
-    const double want = 2 * KEEP_STEPS * rate, cap = SKIN_GROWS * G;
+    /* (and half a step's more: the motion of a step varies a little) */
+    const double want = (2 * KEEP_STEPS + 1) * rate, cap = SKIN_GROWS * G;
     if (!(want <= cap))
         return cap >= 4 * rate ? cap : least;
     return noct_max(want, least);
