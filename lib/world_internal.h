@@ -189,7 +189,10 @@ typedef struct noct_near_kept {
     double skin, S, G, W, M, rate;
     uint64_t edits;
     uint32_t slots, age;
-    bool valid;
+    uint32_t hold; /* steps without a list still, after one too large */
+    bool valid;  /* the pairs may serve */
+    bool ref_ok; /* ref holds the boxes of age steps ago (with the pairs,
+                    or alone while objects move too fast for a list) */
 } noct_near_kept;
 
 /*

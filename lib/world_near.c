@@ -5,7 +5,9 @@
  * collide), and the pairs that became near or stopped being near. The
  * candidates are the pairs (i, j), i < j, whose boxes come within i's
  * box grown by the margin: each leaf of the broadphase sweeps once the
- * boxes that may have a candidate it owns (near_candidates(); with no
+ * boxes that may have a candidate it owns, with a skin, and the pairs so
+ * found are kept for the next steps while the boxes move less than the
+ * skin (near_candidates(), kept_candidates(); with no
  * exact tree, or when the leaves would gather far more boxes than there
  * are objects, each object scans its leaves' lists or queries the tree
  * with its grown box instead, as noct_world_stage_near() does: the same
@@ -835,18 +837,9 @@ static int sweep_all(near_sweep *s, uint32_t slots)
     return 1;
 }
 
-/* The kept list made from the sweeps' pairs in s->cand (which it takes,
- * leaving s->cand empty) and the boxes now: false without memory. */
-static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
+/* The boxes now, into k->ref: false without memory. */
+static bool keep_ref(const noctWorld *w, noct_near_kept *k, uint32_t slots)
 {
-    noctWorld *w = s->w;
-    if (k->cap < s->cand.n) {
-        void *p = realloc(k->p, s->cand.n * sizeof *k->p);
-        if (p == NULL)
-            return false;
-        k->p = p;
-        k->cap = s->cand.n;
-    }
     if (k->capref < slots) {
         void *r = realloc(k->ref, (size_t)slots * sizeof *k->ref);
         if (r == NULL)
@@ -854,14 +847,35 @@ static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
         k->ref = r;
         k->capref = slots;
     }
+    if (slots > 0)
+        memcpy(k->ref, noct_bp_box(&w->bp, 0), (size_t)slots * sizeof *k->ref);
+    return true;
+}
+
+/* The kept list made from the sweeps' pairs in s->cand (which it takes,
+ * leaving s->cand empty) and the boxes now: false without memory. */
+static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
+{
+    if (k->cap > 4 * s->cand.n + 4096) { /* (left by a step of far more pairs) */
+        free(k->p);
+        k->p = NULL;
+        k->cap = 0;
+    }
+    if (k->cap < s->cand.n) {
+        void *p = realloc(k->p, s->cand.n * sizeof *k->p);
+        if (p == NULL)
+            return false;
+        k->p = p;
+        k->cap = s->cand.n;
+    }
+    if (!keep_ref(s->w, k, slots))
+        return false;
     for (size_t q = 0; q < s->cand.n; ++q) {
         k->p[q][0] = s->cand.p[q].a.index;
         k->p[q][1] = s->cand.p[q].b.index;
     }
     k->n = s->cand.n;
     s->cand.n = 0;
-    if (slots > 0)
-        memcpy(k->ref, noct_bp_box(&w->bp, 0), (size_t)slots * sizeof *k->ref);
     return true;
 }
 
@@ -908,19 +922,25 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
  * skin of 2 r a step: both boxes of a pair may move towards each other),
  * with the skin at most SKIN_GROWS times the largest grow (the list's
  * pairs grow about as the cube of the boxes' size and the reach, and so
- * does the sweep that makes it); a list that would last less than two
- * steps so is made without a skin worth the name, as the sweeps alone
- * would find the pairs (objects too fast for the margin).
+ * does the sweep that makes it); least when nothing moved. 0: no list,
+ * as one would last less than two steps (objects too fast for the
+ * margin): the sweeps alone find the pairs for FAST_STEPS steps, and the
+ * boxes of the last of them are kept to measure the motion again, so
+ * that a list comes back when it slows down. When the sweeps with the
+ * skin would gather more than their budget, the step sweeps without it,
+ * and so do the next HOLD_STEPS steps.
  */
 #define KEEP_STEPS 4
 #define SKIN_GROWS 2.0
+#define HOLD_STEPS 64
+#define FAST_STEPS 8
 
 static double skin_for(double rate, double G, double least)
 {
     /* (and half a step's more: the motion of a step varies a little) */
     const double want = (2 * KEEP_STEPS + 1) * rate, cap = SKIN_GROWS * G;
     if (!(want <= cap))
-        return cap >= 4 * rate ? cap : least;
+        return cap >= 4 * rate ? cap : 0;
     return noct_max(want, least);
 }
 
@@ -960,15 +980,17 @@ static int near_candidates(near_sweep *s)
     noctWorld *w = s->w;
     noctBroadphase *bp = &w->bp;
     noct_near_kept *k = &w->kept;
-    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp)) {
-        k->valid = false;
-        return 0;
-    }
-    const noct_aabb root = noct_bp_root_box(bp);
     const uint32_t slots = noct_bp_slots(bp);
-    bool usable = k->valid && k->edits == w->margins.edits && k->slots == slots &&
-                  k->W == s->W && k->M == s->M;
+    /* the boxes of age steps ago are those of these objects (none came,
+     * went or changed), and the list, if valid, theirs */
+    const bool same = k->ref_ok && k->edits == w->margins.edits && k->slots == slots &&
+                      k->W == s->W && k->M == s->M;
+    const bool usable = same && k->valid;
     k->valid = false;
+    k->ref_ok = false;
+    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
+        return 0;
+    const noct_aabb root = noct_bp_root_box(bp);
     /* every object's grow, once (a box is gathered by several leaves),
      * and how far the boxes moved since the list was made */
     s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
@@ -985,7 +1007,7 @@ static int near_candidates(near_sweep *s)
         ++live;
         s->grow[i] = grow_of(s, i, b);
         G = noct_max(G, s->grow[i]);
-        if (usable) {
+        if (same) {
             const noct_aabb *r = &k->ref[i];
             for (int a = 0; a < 3; ++a)
                 D = noct_max(D, noct_max(fabs(b->lo[a] - r->lo[a]), fabs(b->hi[a] - r->hi[a])));
@@ -999,38 +1021,52 @@ static int near_candidates(near_sweep *s)
     s->root = noct_cell_of(noct_bp_root(bp));
     s->budget = 16 * live + 4096;
     s->filtered = noct_bp_any_filter(bp);
-    if (usable) {
+    if (same) {
         ++k->age;
         const double S2 = noct_max(S, k->S), G2 = noct_max(G, k->G);
-        if ((2 + 0x1p-30) * D + 0x1p-40 * ((S2 + G2) + k->skin) <= k->skin) {
-            k->valid = true;
+        if (usable && (2 + 0x1p-30) * D + 0x1p-40 * ((S2 + G2) + k->skin) <= k->skin) {
+            k->valid = k->ref_ok = true;
             return kept_candidates(s, k) ? 1 : -1;
         }
-        /* (a NaN fails too: then the next list has the least skin) */
+        /* (a NaN fails too, and makes no list) */
         k->rate = D / k->age;
     }
     /* a new list */
-    const double skin = skin_for(k->rate, G, 0x1p-30 * (S + G));
+    uint32_t hold = k->hold > 0 ? k->hold - 1 : 0;
+    const double skin = k->hold > 0 ? 0 : skin_for(k->rate, G, 0x1p-30 * (S + G));
+    if (k->hold == 0 && skin == 0)
+        hold = FAST_STEPS;
     s->skin = skin;
-    s->keep = true;
+    s->keep = skin > 0;
     s->G = (G + skin) * (1 + 0x1p-30);
     s->R = s->G + 0x1p-48 * S;
     int r = isfinite(s->R) ? sweep_all(s, slots) : 0;
-    if (r == 0) {
-        /* more than the budget with the skin (or none at all): the
-         * sweeps alone, as without a list, and the next list with the
-         * least skin */
-        k->rate = INFINITY;
+    if (r == 0 && s->keep) {
+        /* more than the budget with the skin: the sweeps alone, as
+         * without a list, for HOLD_STEPS steps */
+        hold = HOLD_STEPS;
         s->skin = 0;
         s->keep = false;
         s->G = G * (1 + 0x1p-30);
         s->R = s->G + 0x1p-48 * S;
-        return isfinite(s->R) ? sweep_all(s, slots) : 0;
+        r = isfinite(s->R) ? sweep_all(s, slots) : 0;
     }
-    if (r < 0 || !keep_list(s, k, slots))
+    if (r <= 0)
+        return r;
+    *k = (noct_near_kept){.p = k->p, .n = k->n, .cap = k->cap, .ref = k->ref,
+                          .capref = k->capref, .skin = s->skin, .S = S, .G = G, .W = s->W,
+                          .M = s->M, .rate = k->rate, .edits = w->margins.edits,
+                          .slots = slots, .hold = hold};
+    if (!s->keep) {
+        /* (the candidates are the sweeps'; the boxes kept, if there is
+         * memory for them, to measure the motion over the next step when
+         * that may make a list) */
+        k->ref_ok = hold == 0 && keep_ref(w, k, slots);
+        return 1;
+    }
+    if (!keep_list(s, k, slots))
         return -1;
-    *k = (noct_near_kept){k->p, k->n, k->cap, k->ref, k->capref, skin, S, G, s->W, s->M,
-                          k->rate, w->margins.edits, slots, 0, true};
+    k->valid = k->ref_ok = true;
     return kept_candidates(s, k) ? 1 : -1;
 }
 

@@ -1045,8 +1045,8 @@ static void move_to(scene *s, int i, const noctTransform *x)
  * test's own distances whatever happens between steps. Random scenes
  * of small leaves (N = 1 to 3), every object drifting by a few
  * hundredths a step (so that lists last several steps) with runs of
- * steps where nothing moves, and between steps: one object's jump by
- * about a margin or more, objects' own margins set and cleared, a sensor
+ * steps where nothing moves, and between steps: an object's jump by
+ * about a margin or more (twice), objects' own margins set and cleared, a sensor
  * made and unmade, filters changed, an object removed and made again in
  * its slot. Each step, every pair that may pair against its ideal
  * distance and its margin (the world's and the objects' own); the test
@@ -1080,7 +1080,10 @@ START_TEST(kept_candidates_against_geometry)
             }
             const int i = (int)(s.n * uniform());
             switch (step % 6) {
-            case 1: { /* a jump of about a margin, or farther */
+            case 1: { /* a jump of about a margin, or farther (seldom: the
+                       * world then keeps no list for a few steps) */
+                if (step != 13 && step != 31)
+                    break;
                 noctTransform x = s.x[i];
                 const double far = (0.5 + 2 * uniform()) * (W + 0.3);
                 const int k = (int)(3 * uniform());
@@ -1116,7 +1119,7 @@ START_TEST(kept_candidates_against_geometry)
             default:
                 break;
             }
-            changes += step % 6 != 0;
+            changes += step % 6 > 1;
             ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
             const noctPair *near;
             const size_t nn = noctWorldNear(s.w, &near);
@@ -1149,7 +1152,7 @@ START_TEST(kept_candidates_against_geometry)
     ck_assert_int_gt(within, _i ? 1000 : 200);
     ck_assert_int_gt(beyond, _i ? 10000 : 2000);
     ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
-    ck_assert_int_gt(changes, rounds * 30);
+    ck_assert_int_gt(changes, rounds * 20);
 }
 END_TEST
 
