@@ -800,6 +800,8 @@ static bool sweep_node(near_sweep *s, const octNode *n)
     return sweep_leaf(s, noct_cell_of(n));
 }
 
+static bool sort_cand(near_sweep *s, uint32_t slots);
+
 /* The leaves' sweeps over every box, their pairs sorted by first object
  * (counting), then by second, in s->cand: 1; 0 when the gathering would
  * cost more than the objects' own scans; -1 without memory. */
@@ -813,6 +815,13 @@ static int sweep_all(near_sweep *s, uint32_t slots)
         return -1;
     if (s->over)
         return 0;
+    return sort_cand(s, slots) ? 1 : -1;
+}
+
+/* s->cand's pairs sorted by first object (counting), then by second:
+ * false without memory. */
+static bool sort_cand(near_sweep *s, uint32_t slots)
+{
     noct_pair_list *l = &s->cand;
     if (l->n > 1) {
         uint32_t *count = calloc((size_t)slots + 1, sizeof *count);
@@ -820,7 +829,7 @@ static int sweep_all(near_sweep *s, uint32_t slots)
         if (count == NULL || to == NULL) {
             free(count);
             free(to);
-            return -1;
+            return false;
         }
         for (size_t k = 0; k < l->n; ++k)
             ++count[l->p[k].a.index + 1];
@@ -834,7 +843,226 @@ static int sweep_all(near_sweep *s, uint32_t slots)
         l->cap = l->n;
         noct_pairs_sort_partners(l);
     }
-    return 1;
+    return true;
+}
+
+/*
+ * The kept list's pairs without the leaves: every live box that is no
+ * sensor is copied once into a column of a grid over the last two axes
+ * (squares of side c), the column of its lower corner, each column in the
+ * order of the boxes' lower corners on the first axis (one sort of them
+ * all); each column is swept against itself and against the four
+ * neighbours after it, the boxes of two columns merged in that order, and
+ * each pair so met is tested once with the sweeps' test (the boxes meeting
+ * with i's grown by its grow g_i' = fl(g_i + skin), i < j). So the list
+ * holds exactly the pairs that pass that test, the set the argument above
+ * near_candidates() speaks of (and the leaves' sweeps would hand over).
+ * None of them is missed: on the first axis, the sweep passes over only
+ * pairs whose larger lo is beyond the other's fl(hi + R), no candidates
+ * (R covering the test's roundings, whichever object grows, as in
+ * sweep_leaf()); on the other two, a pair that passes has J.lo <=
+ * fl(I.hi + g') and J.hi >= fl(I.lo - g'), so |I.lo - J.lo| <= E + G' +
+ * u (S + G') for E every box's extent, G' (s->G) every g', S every
+ * coordinate and u = 2^-53; c is made at least (E + G' + 2^-40 (S + G'))
+ * (1 + 2^-20) (E the largest fl(hi - lo), each rounding of c's own
+ * within the room), and a column index is floor(fl(fl(lo - o) *
+ * fl(1 / c))) for o the lowest lo (lo - o exact up to u and at most 2^10
+ * c: c is at least 2^-10 of the span), within 4u 2^10 < 2^-40 of
+ * (lo - o) / c; two lower corners within c / (1 + 2^-20) thus have
+ * indices at most 1 / (1 + 2^-20) + 2^-39 < 1 apart before the floor, at
+ * most 1 after (clamping to the last column keeps that). 1; 0 when it
+ * would test more than a budget of pairs (a few large boxes make the
+ * columns wide: the leaves' sweeps then); -1 without memory.
+ */
+static int columns_all(near_sweep *s, uint32_t slots, double S)
+{
+    noctWorld *w = s->w;
+    const noctBroadphase *bp = &w->bp;
+    s->cand.n = 0;
+    size_t n = 0;
+    double o[3] = {INFINITY, INFINITY, INFINITY}, top[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double E = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        ++n;
+        for (int k = 0; k < 3; ++k) {
+            o[k] = noct_min(o[k], b->lo[k]);
+            top[k] = noct_max(top[k], b->lo[k]);
+        }
+        E = noct_max(E, noct_max(b->hi[1] - b->lo[1], b->hi[2] - b->lo[2]));
+    }
+    if (n < 2)
+        return 1;
+    const double span = noct_max(top[1] - o[1], top[2] - o[2]);
+    double c = noct_max((E + s->G + 0x1p-40 * (S + s->G)) * (1 + 0x1p-20), 0x1p-10 * span);
+    if (!(c > 0) || !isfinite(c) || !isfinite(span))
+        return 0;
+    /* no more columns than boxes (wider ones: sound) */
+    size_t nc[3], cols;
+    double inv;
+    for (;;) {
+        inv = 1 / c;
+        nc[1] = (size_t)((top[1] - o[1]) * inv) + 1;
+        nc[2] = (size_t)((top[2] - o[2]) * inv) + 1;
+        cols = nc[1] * nc[2];
+        if (cols <= n + 64)
+            break;
+        c *= 1.25;
+    }
+    /* each column cut into slabs on the first axis, about four boxes to
+     * a column's slab, so that the boxes come nearly in order there (an
+     * order that the insertion sort of each column then makes exact,
+     * whatever the slabs' roundings) */
+    const double span0 = top[0] - o[0];
+    const size_t slabs = n / (4 * cols) + 1;
+    const double inv0 = span0 > 0 ? (double)slabs / span0 : 0;
+    const size_t cells = cols * slabs;
+    near_box *g = malloc(2 * n * sizeof *g);
+    size_t *cell = malloc(n * sizeof *cell);
+    size_t *start = calloc(cells + 1, sizeof *start);
+    size_t *cb = malloc((cols + 1) * sizeof *cb);
+    int r = -1;
+    if (g == NULL || cell == NULL || start == NULL || cb == NULL ||
+        !grow_near_key(&s->key, &s->capkey, 2 * n))
+        goto out;
+    size_t a = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        near_box *e = &g[a];
+        memcpy(e->lo, b->lo, sizeof e->lo);
+        memcpy(e->hi, b->hi, sizeof e->hi);
+        e->grow = s->grow[i] + s->skin;
+        e->id = i;
+        size_t x[3];
+        x[0] = (size_t)((b->lo[0] - o[0]) * inv0);
+        for (int k = 1; k < 3; ++k)
+            x[k] = (size_t)((b->lo[k] - o[k]) * inv);
+        if (x[0] >= slabs)
+            x[0] = slabs - 1;
+        for (int k = 1; k < 3; ++k)
+            if (x[k] >= nc[k])
+                x[k] = nc[k] - 1;
+        cell[a] = (x[2] * nc[1] + x[1]) * slabs + x[0];
+        ++start[cell[a] + 1];
+        ++a;
+    }
+    for (size_t q = 0; q < cells; ++q)
+        start[q + 1] += start[q];
+    for (size_t q = 0; q < cols + 1; ++q)
+        cb[q] = start[q * slabs];
+    near_key *key = s->key;
+    for (size_t q = 0; q < n; ++q)
+        key[start[cell[q]]++] = (near_key){g[q].lo[0], q};
+    for (size_t q = 0; q < cols; ++q) {
+        /* (a column the slabs leave far from its order, by a few boxes
+         * far from the others on the first axis: merge-sorted instead) */
+        const size_t m = cb[q + 1] - cb[q];
+        size_t moves = 0;
+        for (size_t i = cb[q] + 1; i < cb[q + 1] && moves <= 8 * m; ++i) {
+            const near_key t = key[i];
+            size_t j = i;
+            for (; j > cb[q] && key[j - 1].lo > t.lo; --j)
+                key[j] = key[j - 1];
+            key[j] = t;
+            moves += i - j;
+        }
+        if (moves > 8 * m)
+            sort_keys(key + cb[q], m, key + n);
+    }
+    near_box *h = g + n;
+    for (size_t q = 0; q < n; ++q)
+        h[q] = g[key[q].at];
+    /* (column q is [cb[q], cb[q + 1]) of h) the sweep's records beside
+     * the boxes (see near_run) */
+    if (!grow_near_run(&s->run, &s->caprun, n))
+        goto out;
+    near_run *run = s->run;
+    for (size_t q = 0; q < n; ++q)
+        run[q] = (near_run){{h[q].lo[0], h[q].lo[1], h[q].hi[1], h[q].lo[2], h[q].hi[2]}, q};
+    const double R = s->R;
+    const size_t budget = 64 * n + 4096;
+    size_t tests = 0;
+    /* box A against the boxes from `from` on in [from, to) whose lower
+     * corners on the first axis are within its upper one and R (the
+     * other two axes, the same reach, first on the records: as in
+     * sweep_leaf()); the index after the last, in `stop` */
+#define NEAR_SCAN(A, from, to, stop)                                                      \
+    do {                                                                                  \
+        const near_box *I0 = &h[A];                                                       \
+        const double limit = I0->hi[0] + R;                                               \
+        const double up1 = I0->hi[1] + R, dn1 = I0->lo[1] - R;                            \
+        const double up2 = I0->hi[2] + R, dn2 = I0->lo[2] - R;                            \
+        size_t t = (from);                                                                \
+        for (; t < (to); ++t) {                                                           \
+            const near_run *rr = &run[t];                                                 \
+            if (rr->b[0] > limit)                                                         \
+                break;                                                                    \
+            if ((rr->b[1] > up1) | (rr->b[2] < dn1) | (rr->b[3] > up2) |                  \
+                (rr->b[4] < dn2))                                                         \
+                continue;                                                                 \
+            const near_box *B0 = &h[t];                                                   \
+            const near_box *I = I0->id < B0->id ? I0 : B0;                                \
+            const near_box *J = I0->id < B0->id ? B0 : I0;                                \
+            const double gr = I->grow;                                                    \
+            if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |                 \
+                (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |                 \
+                (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))                  \
+                continue;                                                                 \
+            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))           \
+                goto out;                                                                 \
+        }                                                                                 \
+        stop = t;                                                                         \
+    } while (0)
+    for (size_t z = 0; z < nc[2]; ++z)
+        for (size_t y = 0; y < nc[1]; ++y) {
+            const size_t at = z * nc[1] + y;
+            const size_t p0 = cb[at], p1 = cb[at + 1];
+            for (size_t p = p0; p < p1; ++p) {
+                size_t stop;
+                NEAR_SCAN(p, p + 1, p1, stop);
+                tests += stop - p;
+            }
+            for (int d = 1; d < 5; ++d) {
+                /* the neighbours after it: (+1, 0), (-1, +1), (0, +1), (+1, +1) */
+                const int e = 4 + d;
+                const size_t Y = y + (size_t)(e % 3) - 1, Z = z + (size_t)(e / 3) - 1;
+                if (!(Y < nc[1] && Z < nc[2]))
+                    continue;
+                const size_t nb = Z * nc[1] + Y;
+                const size_t q0 = cb[nb], q1 = cb[nb + 1];
+                /* the two columns merged: each box against the other's
+                 * from the first not before it */
+                size_t i = p0, j = q0;
+                while (i < p1 && j < q1) {
+                    size_t stop;
+                    if (!(run[j].b[0] < run[i].b[0])) {
+                        NEAR_SCAN(i, j, q1, stop);
+                        tests += stop - j + 1;
+                        ++i;
+                    } else {
+                        NEAR_SCAN(j, i, p1, stop);
+                        tests += stop - i + 1;
+                        ++j;
+                    }
+                }
+            }
+            if (tests > budget) {
+                r = 0;
+                goto out;
+            }
+        }
+#undef NEAR_SCAN
+    r = 1;
+out:
+    free(g);
+    free(cell);
+    free(start);
+    free(cb);
+    return r;
 }
 
 /* The boxes now, into k->ref: false without memory. */
@@ -1040,7 +1268,11 @@ static int near_candidates(near_sweep *s)
     s->keep = skin > 0;
     s->G = (G + skin) * (1 + 0x1p-30);
     s->R = s->G + 0x1p-48 * S;
-    int r = isfinite(s->R) ? sweep_all(s, slots) : 0;
+    int r = !isfinite(s->R) ? 0 : s->keep ? columns_all(s, slots, S) : sweep_all(s, slots);
+    if (r > 0 && s->keep && !sort_cand(s, slots))
+        r = -1;
+    if (r == 0 && s->keep)
+        r = sweep_all(s, slots);
     if (r == 0 && s->keep) {
         /* more than the budget with the skin: the sweeps alone, as
          * without a list, for HOLD_STEPS steps */
