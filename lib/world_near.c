@@ -4,9 +4,11 @@
  * objects within the margin of each other ("near": the arm is about to
  * collide), and the pairs that became near or stopped being near. The
  * candidates are the pairs (i, j), i < j, whose boxes come within i's
- * box grown by the margin: each leaf of the broadphase sweeps once the
- * boxes that may have a candidate it owns, with a skin, and the pairs so
- * found are kept for the next steps while the boxes move less than the
+ * box grown by the margin: the pairs whose boxes come within it grown
+ * by a skin too are found by sweeping columns of a grid (columns_all();
+ * each leaf of the broadphase sweeps the boxes that may have a candidate
+ * it owns when the columns cannot serve, and when there is no list) and
+ * kept for the next steps while the boxes move less than the
  * skin (near_candidates(), kept_candidates(); with no
  * exact tree, or when the leaves would gather far more boxes than there
  * are objects, each object scans its leaves' lists or queries the tree
@@ -862,7 +864,7 @@ static bool sort_cand(near_sweep *s, uint32_t slots)
  * (R covering the test's roundings, whichever object grows, as in
  * sweep_leaf()); on the other two, a pair that passes has J.lo <=
  * fl(I.hi + g') and J.hi >= fl(I.lo - g'), so |I.lo - J.lo| <= E + G' +
- * u (S + G') for E every box's extent, G' (s->G) every g', S every
+ * u (S + G') for E every box's extent on those axes, G' (s->G) every g', S every
  * coordinate and u = 2^-53; c is made at least (E + G' + 2^-40 (S + G'))
  * (1 + 2^-20) (E the largest fl(hi - lo), each rounding of c's own
  * within the room), and a column index is floor(fl(fl(lo - o) *
@@ -1021,7 +1023,9 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
         for (size_t y = 0; y < nc[1]; ++y) {
             const size_t at = z * nc[1] + y;
             const size_t p0 = cb[at], p1 = cb[at + 1];
-            for (size_t p = p0; p < p1; ++p) {
+            /* (the budget looked at after each box's scan: no column
+             * of boxes all alike on the first axis sweeps on long) */
+            for (size_t p = p0; p < p1 && tests <= budget; ++p) {
                 size_t stop;
                 NEAR_SCAN(p, p + 1, p1, stop);
                 tests += stop - p;
@@ -1037,7 +1041,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
                 /* the two columns merged: each box against the other's
                  * from the first not before it */
                 size_t i = p0, j = q0;
-                while (i < p1 && j < q1) {
+                while (i < p1 && j < q1 && tests <= budget) {
                     size_t stop;
                     if (!(run[j].b[0] < run[i].b[0])) {
                         NEAR_SCAN(i, j, q1, stop);
@@ -1174,7 +1178,9 @@ static double skin_for(double rate, double G, double least)
 
 /*
  * The candidate pairs of every object that is no sensor, sorted, into
- * s->cand, by the leaves' sweeps: 1; 0 when they cannot be had that way
+ * s->cand, by the leaves' sweeps or a kept list (made by columns_all(),
+ * or by the leaves' sweeps with the skin when the columns would test
+ * too many pairs): 1; 0 when they cannot be had that way
  * (no exact tree, a box outside the root, or the gathering would cost
  * more than the objects' own scans: then nothing is made); -1 without
  * memory.
