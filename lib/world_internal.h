@@ -131,6 +131,10 @@ typedef struct noct_margins {
     size_t count;
     double max;
     bool stale;
+    uint64_t edits;        /* bumped when an object comes or goes, its
+                              margin is set or it is made a sensor or
+                              not: the near stage's kept candidates
+                              (noct_near_kept) are made again */
     bool near;             /* the next step finds near pairs: a margin
                               (the world's or an object's), or pairs the
                               last one kept to end */
@@ -165,6 +169,31 @@ typedef struct noct_near_hints {
     noct_near_hint *h, *spare;
     size_t n, cap, capspare;
 } noct_near_hints;
+
+/* The margin's candidate pairs kept from one step to the next
+ * (world_near.c, near_candidates()): the pairs (i, j), i < j, whose boxes
+ * met with i's grown by its grow and a skin when the list was made,
+ * sorted, and every object's box then (ref, by slot). While no box has
+ * moved by more than about half the skin since and no object came, went,
+ * changed its margin or became a sensor or not (edits), each step's
+ * candidates are among them, and are found by testing these pairs alone.
+ * S, G: the bound on the coordinates and the largest grow then (for the
+ * roundings); W, M: the world's margin and the largest own one then;
+ * rate: the largest displacement of a box a step that the last list saw
+ * (the next skin is made from it). Freed with the hints. */
+typedef struct noct_near_kept {
+    uint32_t (*p)[2];
+    size_t n, cap;
+    noct_aabb *ref;
+    size_t capref;
+    double skin, S, G, W, M, rate;
+    uint64_t edits;
+    uint32_t slots, age;
+    uint32_t hold; /* steps without a list still, after one too large */
+    bool valid;  /* the pairs may serve */
+    bool ref_ok; /* ref holds the boxes of age steps ago (with the pairs,
+                    or alone while objects move too fast for a list) */
+} noct_near_kept;
 
 /*
  * Continuous detection (accuracy #NOCT_ACCURACY_CONTINUOUS, or objects of
@@ -259,6 +288,7 @@ struct noctWorld {
     noct_spin spin;
     noct_margins margins;
     noct_near_hints hints;
+    noct_near_kept kept;
     noct_tracks tracks;
     noct_ignored ignored;
     noct_sweeps sweeps;

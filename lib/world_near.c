@@ -4,8 +4,12 @@
  * objects within the margin of each other ("near": the arm is about to
  * collide), and the pairs that became near or stopped being near. The
  * candidates are the pairs (i, j), i < j, whose boxes come within i's
- * box grown by the margin: each leaf of the broadphase sweeps once the
- * boxes that may have a candidate it owns (near_candidates(); with no
+ * box grown by the margin: the pairs whose boxes come within it grown
+ * by a skin too are found by sweeping columns of a grid (columns_all();
+ * each leaf of the broadphase sweeps the boxes that may have a candidate
+ * it owns when the columns cannot serve, and when there is no list) and
+ * kept for the next steps while the boxes move less than the
+ * skin (near_candidates(), kept_candidates(); with no
  * exact tree, or when the leaves would gather far more boxes than there
  * are objects, each object scans its leaves' lists or queries the tree
  * with its grown box instead, as noct_world_stage_near() does: the same
@@ -579,6 +583,10 @@ typedef struct near_sweep {
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
     bool filtered;        /* some object has a filter (else all pass) */
+    double skin;          /* added to each grow for a kept list (else 0) */
+    bool keep;            /* making the kept list: every pair whose boxes
+                             meet grown by grow and skin, none turned away
+                             by near()'s box test or the filters */
 } near_sweep;
 
 NOCT_DEFINE_GROW(grow_near_box, near_box)
@@ -639,7 +647,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
         near_box *e = &s->g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
         memcpy(e->hi, b->hi, sizeof e->hi);
-        e->grow = s->grow[id];
+        e->grow = s->grow[id] + s->skin; /* (exact for a skin of 0) */
         e->id = id;
     }
     return true;
@@ -761,6 +769,11 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                                  noct_max(A->lo[2], B->lo[2])};
             if (!noct_cell_owns(c, s->root, P))
                 continue;
+            if (s->keep) {
+                if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+                    return false;
+                continue;
+            }
             /* near()'s test on the boxes, here where they are at hand
              * (the same numbers: copies) */
             const double d = s->m != NULL ? s->W + (s->m[I->id] + s->m[J->id]) : s->W;
@@ -789,57 +802,28 @@ static bool sweep_node(near_sweep *s, const octNode *n)
     return sweep_leaf(s, noct_cell_of(n));
 }
 
-/*
- * The candidate pairs of every object that is no sensor, sorted, into
- * s->cand, by the leaves' sweeps: 1; 0 when they cannot be had that way
- * (no exact tree, a box outside the root, or the gathering would cost
- * more than the objects' own scans: then nothing is made); -1 without
- * memory.
- */
-static int near_candidates(near_sweep *s)
+static bool sort_cand(near_sweep *s, uint32_t slots);
+
+/* The leaves' sweeps over every box, their pairs sorted by first object
+ * (counting), then by second, in s->cand: 1; 0 when the gathering would
+ * cost more than the objects' own scans; -1 without memory. */
+static int sweep_all(near_sweep *s, uint32_t slots)
 {
     noctWorld *w = s->w;
-    noctBroadphase *bp = &w->bp;
-    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
-        return 0;
-    const noct_aabb root = noct_bp_root_box(bp);
-    const uint32_t slots = noct_bp_slots(bp);
-    double G = 0;
-    size_t live = 0;
-    for (uint32_t i = 0; i < slots; ++i) {
-        if (!w->obj[i].alive || w->obj[i].sensor)
-            continue;
-        if (!noct_box_within(noct_bp_box(bp, i), &root))
-            return 0;
-        ++live;
-    }
-    /* every object's grow, once (a box is gathered by several leaves) */
-    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
-    if (s->grow == NULL)
-        return -1;
-    for (uint32_t i = 0; i < slots; ++i) {
-        if (!w->obj[i].alive || w->obj[i].sensor)
-            continue;
-        s->grow[i] = grow_of(s, i, noct_bp_box(bp, i));
-        G = noct_max(G, s->grow[i]);
-    }
-    if (!isfinite(G))
-        return 0;
-    s->G = G * (1 + 0x1p-30);
-    double S = 0;
-    for (int k = 0; k < 3; ++k)
-        S = noct_max(S, noct_max(fabs(root.lo[k]), fabs(root.hi[k])));
-    s->R = s->G + 0x1p-48 * S;
-    if (!isfinite(s->R))
-        return 0;
-    s->root = noct_cell_of(noct_bp_root(bp));
-    s->budget = 16 * live + 4096;
-    s->filtered = noct_bp_any_filter(bp);
-    if (!sweep_node(s, noct_bp_root(bp)))
+    s->cand.n = 0;
+    s->gathered = 0;
+    s->over = false;
+    if (!sweep_node(s, noct_bp_root(&w->bp)))
         return -1;
     if (s->over)
         return 0;
-    /* by first object (counting), then by second */
+    return sort_cand(s, slots) ? 1 : -1;
+}
+
+/* s->cand's pairs sorted by first object (counting), then by second:
+ * false without memory. */
+static bool sort_cand(near_sweep *s, uint32_t slots)
+{
     noct_pair_list *l = &s->cand;
     if (l->n > 1) {
         uint32_t *count = calloc((size_t)slots + 1, sizeof *count);
@@ -847,7 +831,7 @@ static int near_candidates(near_sweep *s)
         if (count == NULL || to == NULL) {
             free(count);
             free(to);
-            return -1;
+            return false;
         }
         for (size_t k = 0; k < l->n; ++k)
             ++count[l->p[k].a.index + 1];
@@ -861,7 +845,467 @@ static int near_candidates(near_sweep *s)
         l->cap = l->n;
         noct_pairs_sort_partners(l);
     }
-    return 1;
+    return true;
+}
+
+/*
+ * The kept list's pairs without the leaves: every live box that is no
+ * sensor is copied once into a column of a grid over the last two axes
+ * (squares of side c), the column of its lower corner, each column in the
+ * order of the boxes' lower corners on the first axis (one sort of them
+ * all); each column is swept against itself and against the four
+ * neighbours after it, the boxes of two columns merged in that order, and
+ * each pair so met is tested once with the sweeps' test (the boxes meeting
+ * with i's grown by its grow g_i' = fl(g_i + skin), i < j). So the list
+ * holds exactly the pairs that pass that test, the set the argument above
+ * near_candidates() speaks of (and the leaves' sweeps would hand over).
+ * None of them is missed: on the first axis, the sweep passes over only
+ * pairs whose larger lo is beyond the other's fl(hi + R), no candidates
+ * (R covering the test's roundings, whichever object grows, as in
+ * sweep_leaf()); on the other two, a pair that passes has J.lo <=
+ * fl(I.hi + g') and J.hi >= fl(I.lo - g'), so |I.lo - J.lo| <= E + G' +
+ * u (S + G') for E every box's extent on those axes, G' (s->G) every g', S every
+ * coordinate and u = 2^-53; c is made at least (E + G' + 2^-40 (S + G'))
+ * (1 + 2^-20) (E the largest fl(hi - lo), each rounding of c's own
+ * within the room), and a column index is floor(fl(fl(lo - o) *
+ * fl(1 / c))) for o the lowest lo (lo - o exact up to u and at most 2^10
+ * c: c is at least 2^-10 of the span), within 4u 2^10 < 2^-40 of
+ * (lo - o) / c; two lower corners within c / (1 + 2^-20) thus have
+ * indices at most 1 / (1 + 2^-20) + 2^-39 < 1 apart before the floor, at
+ * most 1 after (clamping to the last column keeps that). 1; 0 when it
+ * would test more than a budget of pairs (a few large boxes make the
+ * columns wide: the leaves' sweeps then); -1 without memory.
+ */
+static int columns_all(near_sweep *s, uint32_t slots, double S)
+{
+    noctWorld *w = s->w;
+    const noctBroadphase *bp = &w->bp;
+    s->cand.n = 0;
+    size_t n = 0;
+    double o[3] = {INFINITY, INFINITY, INFINITY}, top[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double E = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        ++n;
+        for (int k = 0; k < 3; ++k) {
+            o[k] = noct_min(o[k], b->lo[k]);
+            top[k] = noct_max(top[k], b->lo[k]);
+        }
+        E = noct_max(E, noct_max(b->hi[1] - b->lo[1], b->hi[2] - b->lo[2]));
+    }
+    if (n < 2)
+        return 1;
+    const double span = noct_max(top[1] - o[1], top[2] - o[2]);
+    double c = noct_max((E + s->G + 0x1p-40 * (S + s->G)) * (1 + 0x1p-20), 0x1p-10 * span);
+    if (!(c > 0) || !isfinite(c) || !isfinite(span))
+        return 0;
+    /* no more columns than boxes (wider ones: sound) */
+    size_t nc[3], cols;
+    double inv;
+    for (;;) {
+        inv = 1 / c;
+        nc[1] = (size_t)((top[1] - o[1]) * inv) + 1;
+        nc[2] = (size_t)((top[2] - o[2]) * inv) + 1;
+        cols = nc[1] * nc[2];
+        if (cols <= n + 64)
+            break;
+        c *= 1.25;
+    }
+    /* each column cut into slabs on the first axis, about four boxes to
+     * a column's slab, so that the boxes come nearly in order there (an
+     * order that the insertion sort of each column then makes exact,
+     * whatever the slabs' roundings) */
+    const double span0 = top[0] - o[0];
+    const size_t slabs = n / (4 * cols) + 1;
+    const double inv0 = span0 > 0 ? (double)slabs / span0 : 0;
+    const size_t cells = cols * slabs;
+    near_box *g = malloc(2 * n * sizeof *g);
+    size_t *cell = malloc(n * sizeof *cell);
+    size_t *start = calloc(cells + 1, sizeof *start);
+    size_t *cb = malloc((cols + 1) * sizeof *cb);
+    int r = -1;
+    if (g == NULL || cell == NULL || start == NULL || cb == NULL ||
+        !grow_near_key(&s->key, &s->capkey, 2 * n))
+        goto out;
+    size_t a = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        near_box *e = &g[a];
+        memcpy(e->lo, b->lo, sizeof e->lo);
+        memcpy(e->hi, b->hi, sizeof e->hi);
+        e->grow = s->grow[i] + s->skin;
+        e->id = i;
+        size_t x[3];
+        x[0] = (size_t)((b->lo[0] - o[0]) * inv0);
+        for (int k = 1; k < 3; ++k)
+            x[k] = (size_t)((b->lo[k] - o[k]) * inv);
+        if (x[0] >= slabs)
+            x[0] = slabs - 1;
+        for (int k = 1; k < 3; ++k)
+            if (x[k] >= nc[k])
+                x[k] = nc[k] - 1;
+        cell[a] = (x[2] * nc[1] + x[1]) * slabs + x[0];
+        ++start[cell[a] + 1];
+        ++a;
+    }
+    for (size_t q = 0; q < cells; ++q)
+        start[q + 1] += start[q];
+    for (size_t q = 0; q < cols + 1; ++q)
+        cb[q] = start[q * slabs];
+    near_key *key = s->key;
+    for (size_t q = 0; q < n; ++q)
+        key[start[cell[q]]++] = (near_key){g[q].lo[0], q};
+    for (size_t q = 0; q < cols; ++q) {
+        /* (a column the slabs leave far from its order, by a few boxes
+         * far from the others on the first axis: merge-sorted instead) */
+        const size_t m = cb[q + 1] - cb[q];
+        size_t moves = 0;
+        for (size_t i = cb[q] + 1; i < cb[q + 1] && moves <= 8 * m; ++i) {
+            const near_key t = key[i];
+            size_t j = i;
+            for (; j > cb[q] && key[j - 1].lo > t.lo; --j)
+                key[j] = key[j - 1];
+            key[j] = t;
+            moves += i - j;
+        }
+        if (moves > 8 * m)
+            sort_keys(key + cb[q], m, key + n);
+    }
+    near_box *h = g + n;
+    for (size_t q = 0; q < n; ++q)
+        h[q] = g[key[q].at];
+    /* (column q is [cb[q], cb[q + 1]) of h) the sweep's records beside
+     * the boxes (see near_run) */
+    if (!grow_near_run(&s->run, &s->caprun, n))
+        goto out;
+    near_run *run = s->run;
+    for (size_t q = 0; q < n; ++q)
+        run[q] = (near_run){{h[q].lo[0], h[q].lo[1], h[q].hi[1], h[q].lo[2], h[q].hi[2]}, q};
+    const double R = s->R;
+    const size_t budget = 64 * n + 4096;
+    size_t tests = 0;
+    /* box A against the boxes from `from` on in [from, to) whose lower
+     * corners on the first axis are within its upper one and R (the
+     * other two axes, the same reach, first on the records: as in
+     * sweep_leaf()); the index after the last, in `stop` */
+#define NEAR_SCAN(A, from, to, stop)                                                      \
+    do {                                                                                  \
+        const near_box *I0 = &h[A];                                                       \
+        const double limit = I0->hi[0] + R;                                               \
+        const double up1 = I0->hi[1] + R, dn1 = I0->lo[1] - R;                            \
+        const double up2 = I0->hi[2] + R, dn2 = I0->lo[2] - R;                            \
+        size_t t = (from);                                                                \
+        for (; t < (to); ++t) {                                                           \
+            const near_run *rr = &run[t];                                                 \
+            if (rr->b[0] > limit)                                                         \
+                break;                                                                    \
+            if ((rr->b[1] > up1) | (rr->b[2] < dn1) | (rr->b[3] > up2) |                  \
+                (rr->b[4] < dn2))                                                         \
+                continue;                                                                 \
+            const near_box *B0 = &h[t];                                                   \
+            const near_box *I = I0->id < B0->id ? I0 : B0;                                \
+            const near_box *J = I0->id < B0->id ? B0 : I0;                                \
+            const double gr = I->grow;                                                    \
+            if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |                 \
+                (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |                 \
+                (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))                  \
+                continue;                                                                 \
+            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))           \
+                goto out;                                                                 \
+        }                                                                                 \
+        stop = t;                                                                         \
+    } while (0)
+    for (size_t z = 0; z < nc[2]; ++z)
+        for (size_t y = 0; y < nc[1]; ++y) {
+            const size_t at = z * nc[1] + y;
+            const size_t p0 = cb[at], p1 = cb[at + 1];
+            /* (the budget looked at after each box's scan: no column
+             * of boxes all alike on the first axis sweeps on long) */
+            for (size_t p = p0; p < p1 && tests <= budget; ++p) {
+                size_t stop;
+                NEAR_SCAN(p, p + 1, p1, stop);
+                tests += stop - p;
+            }
+            for (int d = 1; d < 5; ++d) {
+                /* the neighbours after it: (+1, 0), (-1, +1), (0, +1), (+1, +1) */
+                const int e = 4 + d;
+                const size_t Y = y + (size_t)(e % 3) - 1, Z = z + (size_t)(e / 3) - 1;
+                if (!(Y < nc[1] && Z < nc[2]))
+                    continue;
+                const size_t nb = Z * nc[1] + Y;
+                const size_t q0 = cb[nb], q1 = cb[nb + 1];
+                /* the two columns merged: each box against the other's
+                 * from the first not before it */
+                size_t i = p0, j = q0;
+                while (i < p1 && j < q1 && tests <= budget) {
+                    size_t stop;
+                    if (!(run[j].b[0] < run[i].b[0])) {
+                        NEAR_SCAN(i, j, q1, stop);
+                        tests += stop - j + 1;
+                        ++i;
+                    } else {
+                        NEAR_SCAN(j, i, p1, stop);
+                        tests += stop - i + 1;
+                        ++j;
+                    }
+                }
+            }
+            if (tests > budget) {
+                r = 0;
+                goto out;
+            }
+        }
+#undef NEAR_SCAN
+    r = 1;
+out:
+    free(g);
+    free(cell);
+    free(start);
+    free(cb);
+    return r;
+}
+
+/* The boxes now, into k->ref: false without memory. */
+static bool keep_ref(const noctWorld *w, noct_near_kept *k, uint32_t slots)
+{
+    if (k->capref < slots) {
+        void *r = realloc(k->ref, (size_t)slots * sizeof *k->ref);
+        if (r == NULL)
+            return false;
+        k->ref = r;
+        k->capref = slots;
+    }
+    if (slots > 0)
+        memcpy(k->ref, noct_bp_box(&w->bp, 0), (size_t)slots * sizeof *k->ref);
+    return true;
+}
+
+/* The kept list made from the sweeps' pairs in s->cand (which it takes,
+ * leaving s->cand empty) and the boxes now: false without memory. */
+static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
+{
+    if (k->cap > 4 * s->cand.n + 4096) { /* (left by a step of far more pairs) */
+        free(k->p);
+        k->p = NULL;
+        k->cap = 0;
+    }
+    if (k->cap < s->cand.n) {
+        void *p = realloc(k->p, s->cand.n * sizeof *k->p);
+        if (p == NULL)
+            return false;
+        k->p = p;
+        k->cap = s->cand.n;
+    }
+    if (!keep_ref(s->w, k, slots))
+        return false;
+    for (size_t q = 0; q < s->cand.n; ++q) {
+        k->p[q][0] = s->cand.p[q].a.index;
+        k->p[q][1] = s->cand.p[q].b.index;
+    }
+    k->n = s->cand.n;
+    s->cand.n = 0;
+    return true;
+}
+
+/* This step's candidates, from the kept list's pairs, into s->cand: the
+ * sweeps' own tests (the pair's boxes meeting with i's grown by its grow
+ * now, near()'s test on the boxes, the filters), so the same pairs as the
+ * sweeps would hand over, in their order (the list's, sorted). false
+ * without memory. */
+static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
+{
+    noctWorld *w = s->w;
+    const noctBroadphase *bp = &w->bp;
+    s->cand.n = 0;
+    for (size_t q = 0; q < k->n; ++q) {
+        /* (the second objects' boxes are scattered: requested ahead) */
+        if (q + 8 < k->n) {
+            const char *ahead = (const char *)noct_bp_box(bp, k->p[q + 8][1]);
+            NOCT_PREFETCH(ahead);
+            NOCT_PREFETCH(ahead + sizeof(noct_aabb) - 1);
+        }
+        const uint32_t i = k->p[q][0], j = k->p[q][1];
+        const noct_aabb *I = noct_bp_box(bp, i), *J = noct_bp_box(bp, j);
+        const double gr = s->grow[i];
+        if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
+            (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |
+            (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))
+            continue;
+        const double d = s->m != NULL ? s->W + (s->m[i] + s->m[j]) : s->W;
+        if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
+            continue;
+        if (s->filtered &&
+            !noct_filters_pass(noct_bp_proxy(bp, i), noct_bp_proxy(bp, j)))
+            continue;
+        const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
+        if (!noct_pairs_push(&s->cand, (noctPair){{i, overlap}, {j, 0}}))
+            return false;
+    }
+    return true;
+}
+
+/*
+ * The kept list's skin. A list is made to last KEEP_STEPS steps at the
+ * motion a step the last one saw (a box that moves by r a step needs a
+ * skin of 2 r a step: both boxes of a pair may move towards each other),
+ * with the skin at most SKIN_GROWS times the largest grow (the list's
+ * pairs grow about as the cube of the boxes' size and the reach, and so
+ * does the sweep that makes it); least when nothing moved. 0: no list,
+ * as one would last less than two steps (objects too fast for the
+ * margin): the sweeps alone find the pairs for FAST_STEPS steps, and the
+ * boxes of the last of them are kept to measure the motion again, so
+ * that a list comes back when it slows down. When the sweeps with the
+ * skin would gather more than their budget, the step sweeps without it,
+ * and so do the next HOLD_STEPS steps.
+ */
+#define KEEP_STEPS 4
+#define SKIN_GROWS 2.0
+#define HOLD_STEPS 64
+#define FAST_STEPS 8
+
+static double skin_for(double rate, double G, double least)
+{
+    /* (and half a step's more: the motion of a step varies a little) */
+    const double want = (2 * KEEP_STEPS + 1) * rate, cap = SKIN_GROWS * G;
+    if (!(want <= cap))
+        return cap >= 4 * rate ? cap : 0;
+    return noct_max(want, least);
+}
+
+/*
+ * The candidate pairs of every object that is no sensor, sorted, into
+ * s->cand, by the leaves' sweeps or a kept list (made by columns_all(),
+ * or by the leaves' sweeps with the skin when the columns would test
+ * too many pairs): 1; 0 when they cannot be had that way
+ * (no exact tree, a box outside the root, or the gathering would cost
+ * more than the objects' own scans: then nothing is made); -1 without
+ * memory.
+ *
+ * The sweeps' pairs are kept from step to step (w->kept, as molecular
+ * dynamics keeps Verlet lists): made with every grow larger by a skin,
+ * they are the pairs (i, j) whose boxes met with i's grown by
+ * g_i' = fl(g_i + skin). A later step's candidates are among them while
+ * every box has moved by at most D on each coordinate since, with
+ * (2 + 2^-30) D + 2^-40 (S + G + skin) <= skin (S bounding every
+ * coordinate and G every grow, then and now; each object's margin, the
+ * world's and the largest one the same, which edits, W and M tell):
+ * a pair left out had, on some axis, say J.lo > fl(I.hi + g'), so with
+ * u = 2^-53, J.lo > I.hi + g + skin - 2u (S + g + skin) (1 + u); since,
+ * J.lo and I.hi moved by at most D each, and g, made from the same reach
+ * and coordinates that moved by at most D (2^-38 of their largest),
+ * by at most 2^-38 D + 2u G (1 + u); so now J.lo exceeds I.hi + g by
+ * more than skin - 2 D (1 + 2^-38) - 5u (S + G + skin) and, by the
+ * condition, more than u (S + g) (the rounding of fl(I.hi + g)), so
+ * the sweeps' test turns the pair away; the same below, and D as
+ * computed (each difference within an ulp of its exact value) and the
+ * condition's own roundings are within the 2^-30 and 2^-40 to spare. The
+ * pairs of the list then go through the sweeps' own tests
+ * (kept_candidates()): the same candidates as the sweeps would find, bit
+ * for bit. A step that cannot use the list makes another (the skin from
+ * the motion the last one saw, skin_for()); without memory for it, the
+ * step fails as without the list.
+ */
+static int near_candidates(near_sweep *s)
+{
+    noctWorld *w = s->w;
+    noctBroadphase *bp = &w->bp;
+    noct_near_kept *k = &w->kept;
+    const uint32_t slots = noct_bp_slots(bp);
+    /* the boxes of age steps ago are those of these objects (none came,
+     * went or changed), and the list, if valid, theirs */
+    const bool same = k->ref_ok && k->edits == w->margins.edits && k->slots == slots &&
+                      k->W == s->W && k->M == s->M;
+    const bool usable = same && k->valid;
+    k->valid = false;
+    k->ref_ok = false;
+    if (noct_bp_root(bp) == NULL || noct_bp_tree_owed(bp))
+        return 0;
+    const noct_aabb root = noct_bp_root_box(bp);
+    /* every object's grow, once (a box is gathered by several leaves),
+     * and how far the boxes moved since the list was made */
+    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
+    if (s->grow == NULL)
+        return -1;
+    double G = 0, D = 0;
+    size_t live = 0;
+    for (uint32_t i = 0; i < slots; ++i) {
+        if (!w->obj[i].alive || w->obj[i].sensor)
+            continue;
+        const noct_aabb *b = noct_bp_box(bp, i);
+        if (!noct_box_within(b, &root))
+            return 0;
+        ++live;
+        s->grow[i] = grow_of(s, i, b);
+        G = noct_max(G, s->grow[i]);
+        if (same) {
+            const noct_aabb *r = &k->ref[i];
+            for (int a = 0; a < 3; ++a)
+                D = noct_max(D, noct_max(fabs(b->lo[a] - r->lo[a]), fabs(b->hi[a] - r->hi[a])));
+        }
+    }
+    if (!isfinite(G))
+        return 0;
+    double S = 0;
+    for (int a = 0; a < 3; ++a)
+        S = noct_max(S, noct_max(fabs(root.lo[a]), fabs(root.hi[a])));
+    s->root = noct_cell_of(noct_bp_root(bp));
+    s->budget = 16 * live + 4096;
+    s->filtered = noct_bp_any_filter(bp);
+    if (same) {
+        ++k->age;
+        const double S2 = noct_max(S, k->S), G2 = noct_max(G, k->G);
+        if (usable && (2 + 0x1p-30) * D + 0x1p-40 * ((S2 + G2) + k->skin) <= k->skin) {
+            k->valid = k->ref_ok = true;
+            return kept_candidates(s, k) ? 1 : -1;
+        }
+        /* (a NaN fails too, and makes no list) */
+        k->rate = D / k->age;
+    }
+    /* a new list */
+    uint32_t hold = k->hold > 0 ? k->hold - 1 : 0;
+    const double skin = k->hold > 0 ? 0 : skin_for(k->rate, G, 0x1p-30 * (S + G));
+    if (k->hold == 0 && skin == 0)
+        hold = FAST_STEPS;
+    s->skin = skin;
+    s->keep = skin > 0;
+    s->G = (G + skin) * (1 + 0x1p-30);
+    s->R = s->G + 0x1p-48 * S;
+    int r = !isfinite(s->R) ? 0 : s->keep ? columns_all(s, slots, S) : sweep_all(s, slots);
+    if (r > 0 && s->keep && !sort_cand(s, slots))
+        r = -1;
+    if (r == 0 && s->keep)
+        r = sweep_all(s, slots);
+    if (r == 0 && s->keep) {
+        /* more than the budget with the skin: the sweeps alone, as
+         * without a list, for HOLD_STEPS steps */
+        hold = HOLD_STEPS;
+        s->skin = 0;
+        s->keep = false;
+        s->G = G * (1 + 0x1p-30);
+        s->R = s->G + 0x1p-48 * S;
+        r = isfinite(s->R) ? sweep_all(s, slots) : 0;
+    }
+    if (r <= 0)
+        return r;
+    *k = (noct_near_kept){.p = k->p, .n = k->n, .cap = k->cap, .ref = k->ref,
+                          .capref = k->capref, .skin = s->skin, .S = S, .G = G, .W = s->W,
+                          .M = s->M, .rate = k->rate, .edits = w->margins.edits,
+                          .slots = slots, .hold = hold};
+    if (!s->keep) {
+        /* (the candidates are the sweeps'; the boxes kept, if there is
+         * memory for them, to measure the motion over the next step when
+         * that may make a list) */
+        k->ref_ok = hold == 0 && keep_ref(w, k, slots);
+        return 1;
+    }
+    if (!keep_list(s, k, slots))
+        return -1;
+    k->valid = k->ref_ok = true;
+    return kept_candidates(s, k) ? 1 : -1;
 }
 
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
@@ -987,6 +1431,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         free(kept->h);
         free(hw.h);
         *kept = (noct_near_hints){NULL, NULL, 0, 0, 0};
+        free(w->kept.p);
+        free(w->kept.ref);
+        w->kept = (noct_near_kept){0};
     } else if (st == NOCT_OK && !hw.failed) {
         *kept = (noct_near_hints){hw.h, kept->h, hw.n, hw.cap, kept->cap};
     } else {

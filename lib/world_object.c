@@ -332,6 +332,7 @@ static bool margins_enable(noctWorld *w)
 static void set_margin(noctWorld *w, uint32_t s, double m)
 {
     noct_margins *g = &w->margins;
+    ++g->edits; /* (objects come and go through here too) */
     if (g->of == NULL)
         return;
     const double old = g->of[s];
@@ -701,6 +702,7 @@ noctStatus noctWorldSetSensor(noctWorld *w, noctObjectId id, bool sensor, noctEr
         return stale(id, err);
     w->nsensors = w->nsensors - o->sensor + sensor;
     o->sensor = sensor;
+    ++w->margins.edits;
     return NOCT_OK;
 }
 

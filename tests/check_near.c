@@ -1028,6 +1028,134 @@ START_TEST(kept_proofs_against_geometry)
 }
 END_TEST
 
+/* Move object i of scene s to x (the test's ideal pose too). */
+static void move_to(scene *s, int i, const noctTransform *x)
+{
+    ck_assert_int_eq(noctWorldSetTransform(s->w, s->id[i], x, NULL), NOCT_OK);
+    s->x[i] = *x;
+    quat_matrix(&x->q, s->g[i].R);
+    for (int k = 0; k < 3; ++k)
+        s->g[i].t[k] = x->p[k];
+}
+
+/*
+ * The near stage keeps its candidate pairs from one step to the next
+ * while the boxes move less than the list's skin (world_near.c,
+ * near_candidates()): the near pairs of every step must be those of the
+ * test's own distances whatever happens between steps. Random scenes
+ * of small leaves (N = 1 to 3), every object drifting by a few
+ * hundredths a step (so that lists last several steps) with runs of
+ * steps where nothing moves, and between steps: an object's jump by
+ * about a margin or more (twice), objects' own margins set and cleared, a sensor
+ * made and unmade, filters changed, an object removed and made again in
+ * its slot. Each step, every pair that may pair against its ideal
+ * distance and its margin (the world's and the objects' own); the test
+ * fails when a list is used after a box moved beyond its skin or an
+ * object changed, which it was checked to do.
+ */
+START_TEST(kept_candidates_against_geometry)
+{
+    int within = 0, beyond = 0, skipped = 0, changes = 0;
+    const int rounds = _i ? 6 : 2;
+    for (int round = 0; round < rounds; ++round) {
+        world_margin = 0.05 + 0.4 * uniform();
+        const double W = world_margin;
+        scene s;
+        random_scene(&s, 15 + (int)(20 * uniform()), 1 + round % 3, NOCT_ACCURACY_EXACT, ell);
+        world_margin = 0;
+        double own[MAXO] = {0}, v[MAXO][3];
+        for (int i = 0; i < s.n; ++i)
+            for (int k = 0; k < 3; ++k)
+                v[i][k] = 0.04 * (uniform() - 0.5);
+        for (int step = 0; step < 40; ++step) {
+            const bool still = step >= 20 && step < 26;
+            for (int i = 0; i < s.n && !still; ++i) {
+                noctTransform x = s.x[i];
+                for (int k = 0; k < 3; ++k) {
+                    x.p[k] += v[i][k];
+                    if (x.p[k] < 0 || x.p[k] > 6)
+                        v[i][k] = -v[i][k];
+                }
+                move_to(&s, i, &x);
+            }
+            const int i = (int)(s.n * uniform());
+            switch (step % 6) {
+            case 1: { /* a jump of about a margin, or farther (seldom: the
+                       * world then keeps no list for a few steps) */
+                if (step != 13 && step != 31)
+                    break;
+                noctTransform x = s.x[i];
+                const double far = (0.5 + 2 * uniform()) * (W + 0.3);
+                const int k = (int)(3 * uniform());
+                x.p[k] += x.p[k] < 3 ? far : -far;
+                move_to(&s, i, &x);
+                break;
+            }
+            case 2: /* an own margin, or none again */
+                own[i] = uniform() < 0.4 ? 0 : 0.3 * uniform();
+                ck_assert_int_eq(noctWorldSetMargin(s.w, s.id[i], own[i], NULL), NOCT_OK);
+                break;
+            case 3: /* a sensor made or unmade */
+                s.sensor[i] = !s.sensor[i];
+                ck_assert_int_eq(noctWorldSetSensor(s.w, s.id[i], s.sensor[i], NULL), NOCT_OK);
+                break;
+            case 4: /* a filter changed */
+                s.cat[i] = uniform() < 0.5 ? NOCT_FILTER_ALL : random_bits();
+                s.mask[i] = uniform() < 0.5 ? NOCT_FILTER_ALL : random_bits();
+                ck_assert_int_eq(noctWorldSetFilter(s.w, s.id[i], s.cat[i], s.mask[i], NULL),
+                                 NOCT_OK);
+                break;
+            case 5: /* gone, and made again in its slot (no margin of its own) */
+                if (step % 12 == 5) {
+                    ck_assert_int_eq(noctWorldRemove(s.w, s.id[i], NULL), NOCT_OK);
+                    noctObjectDef d = scene_object_def(&s, i, ell);
+                    d.user_data = &s.id[i];
+                    const uint32_t slot = s.id[i].index;
+                    ck_assert_int_eq(noctWorldCreateObject(s.w, &d, &s.id[i], NULL), NOCT_OK);
+                    ck_assert_uint_eq(s.id[i].index, slot);
+                    own[i] = 0;
+                }
+                break;
+            default:
+                break;
+            }
+            changes += step % 6 > 1;
+            ck_assert_int_eq(noctWorldStep(s.w, NULL), NOCT_OK);
+            const noctPair *near;
+            const size_t nn = noctWorldNear(s.w, &near);
+            for (size_t k = 0; k < nn; ++k) {
+                const int a = index_of(&s, near[k].a.index), b = index_of(&s, near[k].b.index);
+                ck_assert(a >= 0 && b >= 0 && may_pair(&s, a, b));
+            }
+            for (int a = 0; a < s.n; ++a)
+                for (int b = a + 1; b < s.n; ++b) {
+                    if (!may_pair(&s, a, b))
+                        continue;
+                    const double d = W + (own[a] + own[b]);
+                    const long double dist = ideal_distance(&s.g[a], &s.g[b]);
+                    const bool got = near_now(s.w, s.id[a], s.id[b]);
+                    if (dist <= d - BEYOND) {
+                        ck_assert_msg(got, "step %d: objects %d and %d, %.12Lg apart, not near "
+                                      "(margin %g)", step, a, b, dist, d);
+                        ++within;
+                    } else if (dist > d + BEYOND) {
+                        ck_assert_msg(!got, "step %d: objects %d and %d, %.12Lg apart, near "
+                                      "(margin %g)", step, a, b, dist, d);
+                        ++beyond;
+                    } else {
+                        ++skipped;
+                    }
+                }
+        }
+        free_scene(&s);
+    }
+    ck_assert_int_gt(within, _i ? 1000 : 200);
+    ck_assert_int_gt(beyond, _i ? 10000 : 2000);
+    ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
+    ck_assert_int_gt(changes, rounds * 20);
+}
+END_TEST
+
 /*
  * Kept proofs at the extreme scales (2^-200 and 2^200; the hints' floats
  * hold coefficients, which have no scale, and axes, which may overflow or
@@ -1162,6 +1290,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, kept_proofs_cross_the_margin, 0, 1);
     tcase_add_loop_test(tc, kept_proofs_against_geometry, 0, 1);
     tcase_add_test(tc, kept_proofs_at_extreme_scales);
+    tcase_add_loop_test(tc, kept_candidates_against_geometry, 0, 1);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
@@ -1173,6 +1302,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, near_pairs_across_leaves, 1, 2);
     tcase_add_loop_test(full, kept_proofs_cross_the_margin, 1, 2);
     tcase_add_loop_test(full, kept_proofs_against_geometry, 1, 2);
+    tcase_add_loop_test(full, kept_candidates_against_geometry, 1, 2);
     return s;
 }
 

@@ -631,7 +631,11 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
  * and objects' margins are all 0 keeps no near pairs and pays nothing;
  * once any is not 0, a pair whose own margin is 0 is near when it
  * collides. Each object looks for its partners with its box grown by
- * W + m + M, m its margin and M the largest object margin in the world.
+ * W + m + M, m its margin and M the largest object margin in the world;
+ * the pairs so found with a wider box (by up to twice that grow) are kept
+ * from one step to the next while every object moves by less than the
+ * difference, which changes no answer and takes some 8 bytes a kept pair
+ * and 48 an object.
  *
  * Found once a step, after its last sub-step. At the box level, two
  * objects are near when their placed boxes are within d (Euclidean
