@@ -1230,7 +1230,7 @@ static int near_candidates(near_sweep *s)
     s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
     if (s->grow == NULL)
         return -1;
-    double G = 0, D = 0;
+    double G = 0, D = 0, C = 0;
     size_t live = 0;
     for (uint32_t i = 0; i < slots; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
@@ -1241,6 +1241,8 @@ static int near_candidates(near_sweep *s)
         ++live;
         s->grow[i] = grow_of(s, i, b);
         G = noct_max(G, s->grow[i]);
+        for (int a = 0; a < 3; ++a)
+            C = noct_max(C, noct_max(fabs(b->lo[a]), fabs(b->hi[a])));
         if (same) {
             const noct_aabb *r = &k->ref[i];
             for (int a = 0; a < 3; ++a)
@@ -1257,7 +1259,9 @@ static int near_candidates(near_sweep *s)
     s->filtered = noct_bp_any_filter(bp);
     if (same) {
         ++k->age;
-        const double S2 = noct_max(S, k->S), G2 = noct_max(G, k->G);
+        /* (C, the boxes' largest coordinate, bounds those the tests
+         * read: the root's, S, is 2^-40 at least, and may be far larger) */
+        const double S2 = noct_max(C, k->S), G2 = noct_max(G, k->G);
         if (usable && (2 + 0x1p-30) * D + 0x1p-40 * ((S2 + G2) + k->skin) <= k->skin) {
             k->valid = k->ref_ok = true;
             return kept_candidates(s, k) ? 1 : -1;
@@ -1265,9 +1269,14 @@ static int near_candidates(near_sweep *s)
         /* (a NaN fails too, and makes no list) */
         k->rate = D / k->age;
     }
-    /* a new list */
+    /* a new list; the least skin 2^-38 (C + G), four times the
+     * condition's 2^-40 when nothing moved and at most about G (every
+     * grow is 2^-38 of its box's coordinates at least; from the root's S
+     * and 2^-30, it was 2^10 grows at an offset of 2^40, every pair of
+     * the world, and at a scale of 2^-300 some 2^-71, as the root is
+     * 2^-40 wide at least) */
     uint32_t hold = k->hold > 0 ? k->hold - 1 : 0;
-    const double skin = k->hold > 0 ? 0 : skin_for(k->rate, G, 0x1p-30 * (S + G));
+    const double skin = k->hold > 0 ? 0 : skin_for(k->rate, G, 0x1p-38 * (C + G));
     if (k->hold == 0 && skin == 0)
         hold = FAST_STEPS;
     s->skin = skin;
@@ -1289,10 +1298,17 @@ static int near_candidates(near_sweep *s)
         s->R = s->G + 0x1p-48 * S;
         r = isfinite(s->R) ? sweep_all(s, slots) : 0;
     }
-    if (r <= 0)
+    if (r <= 0) {
+        /* (the steps still without a list count down, and a sweep with
+         * the skin over its budget holds them off, even when the sweeps
+         * alone cannot serve either: else each step would try the skin
+         * again, two gatherings over their budget a step) */
+        if (r == 0)
+            k->hold = hold;
         return r;
+    }
     *k = (noct_near_kept){.p = k->p, .n = k->n, .cap = k->cap, .ref = k->ref,
-                          .capref = k->capref, .skin = s->skin, .S = S, .G = G, .W = s->W,
+                          .capref = k->capref, .skin = s->skin, .S = C, .G = G, .W = s->W,
                           .M = s->M, .rate = k->rate, .edits = w->margins.edits,
                           .slots = slots, .hold = hold};
     if (!s->keep) {

@@ -1156,6 +1156,233 @@ START_TEST(kept_candidates_against_geometry)
 }
 END_TEST
 
+/* The near pairs of world w (stepped) and of a world made afresh from its
+ * objects as they are now (their shapes, poses, margins, sensors, filters
+ * and types, and the pairs it ignores), stepped once without motion: the
+ * same pairs, bit for bit (the fresh world keeps no list older than its
+ * one step). Returns the pairs. */
+static size_t same_as_fresh(noctWorld *w, const noctWorldDef *def, int step)
+{
+    enum { SLOTS = 256 };
+    noctWorldDef d = *def;
+    d.effects = NOCT_EFFECT_EVENTS;
+    noctWorld *f;
+    ck_assert_int_eq(noctWorldCreate(&d, &f, NULL), NOCT_OK);
+    uint32_t map[SLOTS];
+    noctObjectId a[SLOTS], b[SLOTS];
+    int n = 0;
+    for (uint32_t s = 0; s < SLOTS; ++s) {
+        map[s] = UINT32_MAX;
+        noctObjectId id;
+        if (noctWorldObjectAt(w, s, &id) != NOCT_OK)
+            continue;
+        noctObjectDef o = noctDefaultObjectDef();
+        o.mesh = noctWorldGetMesh(w, id);
+        if (o.mesh == NULL)
+            ck_assert_int_eq(noctWorldGetHalfExtents(w, id, o.half_extents), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetTransform(w, id, &o.transform), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetMargin(w, id, &o.margin), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetSensor(w, id, &o.sensor), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetFilter(w, id, &o.category, &o.mask), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetType(w, id, &o.type), NOCT_OK);
+        ck_assert_int_eq(noctWorldCreateObject(f, &o, &b[n], NULL), NOCT_OK);
+        map[s] = b[n].index;
+        a[n++] = id;
+    }
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            if (noctWorldPairIgnored(w, a[i], a[j]))
+                ck_assert_int_eq(noctWorldIgnorePair(f, b[i], b[j], true, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(f, NULL), NOCT_OK);
+    const noctPair *p, *q;
+    const size_t np = noctWorldNear(w, &p), nq = noctWorldNear(f, &q);
+    ck_assert_msg(np == nq, "step %d: %zu near pairs, %zu in the fresh world", step, np, nq);
+    /* (the fresh world's slots follow the old ones' order: the same
+     * order of pairs) */
+    for (size_t k = 0; k < np; ++k)
+        ck_assert_msg(map[p[k].a.index] == q[k].a.index && map[p[k].b.index] == q[k].b.index,
+                      "step %d: near pair (%u, %u), in the fresh world (%u, %u)", step,
+                      p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
+    noctWorldDestroy(f);
+    return np;
+}
+
+/*
+ * The kept candidates (world_near.c, near_candidates()) against a world
+ * made afresh after every step: random scenes of box primitives and box
+ * meshes at the scales 1, 2^-300 (about 2^-260) and 2^280 (offset 2^40
+ * of their size), moving slowly (lists serve) with runs of fast motion
+ * (lists dropped) and of none, spinning, and between steps random edits
+ * (margins set, cleared and made the largest, sensors, filters, types,
+ * ignored pairs, teleports near and far, a jump away and back before the
+ * step, objects removed, made again in their slot at the same place,
+ * made anew, and one sent far so that the world grows): the same near
+ * pairs every step.
+ */
+START_TEST(kept_candidates_against_a_fresh_world)
+{
+    const int rounds = _i ? 24 : 3;
+    size_t pairs = 0;
+    for (int round = 0; round < rounds; ++round) {
+        const double sc = round % 3 == 0 ? 1 : round % 3 == 1 ? 0x1p-300 : 0x1p280;
+        const double off = round % 3 == 1 ? 0x1p-260 : round % 3 == 2 ? 0x1p40 * sc : 0;
+        noctMesh *cube;
+        ck_assert_int_eq(noctMeshCreateBox(0.3 * sc, 0.2 * sc, 0.25 * sc, &cube, NULL), NOCT_OK);
+        noctWorldDef def = noctDefaultWorldDef();
+        def.N = 1 + round % 4;
+        def.accuracy = round % 2 ? NOCT_ACCURACY_BOX : NOCT_ACCURACY_EXACT;
+        def.margin = round % 4 == 3 ? 0 : sc * 0.3 * uniform();
+        def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION | NOCT_EFFECT_SPIN;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        enum { NO = 40 };
+        noctObjectId id[NO];
+        bool alive[NO];
+        const int n = 15 + (int)(25 * uniform());
+        for (int i = 0; i < n; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            if (uniform() < 0.3)
+                d.mesh = cube;
+            else
+                for (int k = 0; k < 3; ++k)
+                    d.half_extents[k] = sc * (0.1 + 0.4 * uniform());
+            for (int k = 0; k < 3; ++k)
+                d.transform.p[k] = off + sc * 6 * uniform();
+            random_quat(&d.transform.q);
+            d.margin = uniform() < 0.5 ? 0 : sc * 0.4 * uniform();
+            d.sensor = uniform() < 0.1;
+            d.category = random_bits();
+            d.mask = random_bits();
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+            alive[i] = true;
+        }
+        for (int step = 0; step < 50; ++step) {
+            const bool still = (step / 10) % 3 == 1;
+            const double speed = (step / 7) % 4 == 3 ? 0.5 : 0.01;
+            for (int i = 0; i < n; ++i) {
+                if (!alive[i])
+                    continue;
+                if (still || uniform() < 0.1) {
+                    double v[3] = {0, 0, 0};
+                    for (int k = 0; k < 3 && !still; ++k)
+                        v[k] = sc * speed * (2 * uniform() - 1);
+                    ck_assert_int_eq(noctWorldSetVelocity(w, id[i], v, NULL), NOCT_OK);
+                }
+                noctTransform x;
+                ck_assert_int_eq(noctWorldGetTransform(w, id[i], &x), NOCT_OK);
+                for (int k = 0; k < 3; ++k)
+                    if (x.p[k] < off - sc || x.p[k] > off + 7 * sc) {
+                        x.p[k] = off + sc * 6 * uniform();
+                        ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                    }
+            }
+            for (int e = (int)(3 * uniform()); e > 0; --e) {
+                const int i = (int)(n * uniform());
+                int what = (int)(11 * uniform());
+                if (!alive[i]) { /* made anew */
+                    noctObjectDef d = noctDefaultObjectDef();
+                    d.mesh = cube;
+                    for (int k = 0; k < 3; ++k)
+                        d.transform.p[k] = off + sc * 6 * uniform();
+                    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                    alive[i] = true;
+                    continue;
+                }
+                /* (the edits that make the list again, seldom) */
+                if (what <= 3 && uniform() < 0.7)
+                    what = 4 + (int)(7 * uniform());
+                noctTransform x, y;
+                ck_assert_int_eq(noctWorldGetTransform(w, id[i], &x), NOCT_OK);
+                switch (what) {
+                case 0: { /* a margin, none, or the largest */
+                    const double m = uniform() < 0.4   ? 0
+                                     : uniform() < 0.2 ? sc * 0.8
+                                                       : sc * 0.4 * uniform();
+                    ck_assert_int_eq(noctWorldSetMargin(w, id[i], m, NULL), NOCT_OK);
+                    break;
+                }
+                case 1: {
+                    bool s;
+                    ck_assert_int_eq(noctWorldGetSensor(w, id[i], &s), NOCT_OK);
+                    ck_assert_int_eq(noctWorldSetSensor(w, id[i], !s, NULL), NOCT_OK);
+                    break;
+                }
+                case 2: { /* gone, and made again in its slot at the same place */
+                    noctObjectDef d = noctDefaultObjectDef();
+                    d.mesh = noctWorldGetMesh(w, id[i]);
+                    if (d.mesh == NULL)
+                        ck_assert_int_eq(noctWorldGetHalfExtents(w, id[i], d.half_extents),
+                                         NOCT_OK);
+                    d.transform = x;
+                    ck_assert_int_eq(noctWorldGetMargin(w, id[i], &d.margin), NOCT_OK);
+                    if (uniform() < 0.5)
+                        d.margin = uniform() < 0.5 ? 0 : sc * 0.4 * uniform();
+                    ck_assert_int_eq(noctWorldGetFilter(w, id[i], &d.category, &d.mask), NOCT_OK);
+                    const uint32_t slot = id[i].index;
+                    ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+                    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                    ck_assert_uint_eq(id[i].index, slot);
+                    break;
+                }
+                case 3:
+                    ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+                    alive[i] = false;
+                    break;
+                case 4:
+                    ck_assert_int_eq(noctWorldSetFilter(w, id[i], random_bits(), random_bits(),
+                                                        NULL),
+                                     NOCT_OK);
+                    break;
+                case 5: /* a teleport near or far */
+                    for (int k = 0; k < 3; ++k)
+                        x.p[k] += sc * (uniform() < 0.5 ? 0.05 : 1) * (2 * uniform() - 1);
+                    ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                    break;
+                case 6: { /* a spin, or none */
+                    const double a = uniform() < 0.3 ? 0 : 0.02 * uniform();
+                    const noctQuat q = {sin(a), 0, 0, cos(a)};
+                    ck_assert_int_eq(noctWorldSetAngularVelocity(w, id[i], &q, NULL), NOCT_OK);
+                    break;
+                }
+                case 7: {
+                    const noctObjectType t[3] = {NOCT_OBJECT_STATIC, NOCT_OBJECT_KINEMATIC,
+                                                 NOCT_OBJECT_MOVING};
+                    ck_assert_int_eq(noctWorldSetType(w, id[i], t[(int)(3 * uniform())], NULL),
+                                     NOCT_OK);
+                    break;
+                }
+                case 8: { /* a pair ignored or not */
+                    const int j = (int)(n * uniform());
+                    if (j != i && alive[j])
+                        ck_assert_int_eq(noctWorldIgnorePair(w, id[i], id[j], uniform() < 0.7,
+                                                             NULL),
+                                         NOCT_OK);
+                    break;
+                }
+                case 9: /* away and back before the step: no motion */
+                    y = x;
+                    y.p[0] += sc * 1000;
+                    ck_assert_int_eq(noctWorldSetTransform(w, id[i], &y, NULL), NOCT_OK);
+                    ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                    break;
+                default: /* far: the world grows */
+                    if (uniform() < 0.3) {
+                        x.p[1] = off + sc * (uniform() < 0.5 ? 60 : -60);
+                        ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                    }
+                    break;
+                }
+            }
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+            pairs += same_as_fresh(w, &def, step);
+        }
+        noctWorldDestroy(w);
+        noctMeshDestroy(cube);
+    }
+    ck_assert_uint_gt(pairs, (size_t)rounds * 100);
+}
+END_TEST
+
 /*
  * Kept proofs at the extreme scales (2^-200 and 2^200; the hints' floats
  * hold coefficients, which have no scale, and axes, which may overflow or
@@ -1291,6 +1518,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, kept_proofs_against_geometry, 0, 1);
     tcase_add_test(tc, kept_proofs_at_extreme_scales);
     tcase_add_loop_test(tc, kept_candidates_against_geometry, 0, 1);
+    tcase_add_loop_test(tc, kept_candidates_against_a_fresh_world, 0, 1);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
@@ -1303,6 +1531,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, kept_proofs_cross_the_margin, 1, 2);
     tcase_add_loop_test(full, kept_proofs_against_geometry, 1, 2);
     tcase_add_loop_test(full, kept_candidates_against_geometry, 1, 2);
+    tcase_add_loop_test(full, kept_candidates_against_a_fresh_world, 1, 2);
     return s;
 }
 
