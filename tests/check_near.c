@@ -1208,6 +1208,78 @@ static size_t same_as_fresh(noctWorld *w, const noctWorldDef *def, int step)
 }
 
 /*
+ * A kept list made where the columns (world_near.c, columns_all()) would
+ * test more pairs than their budget: 250 small boxes in a rod, every
+ * box within the reach of most others on the rod's axis and all of them
+ * in one column, drifting slowly (lists are made, from the leaves'
+ * sweeps or, over their budget too, not at all): every pair whose
+ * distance (noctWorldDistance()'s interval) is within the margin is
+ * near, none beyond it by more than the slack, and the near pairs are a
+ * world's made afresh, every step, at N = 1 (many leaves) and N = 8.
+ */
+START_TEST(kept_candidates_of_a_crowded_column)
+{
+    for (int round = 0; round < 2; ++round) {
+        noctWorldDef def = noctDefaultWorldDef();
+        def.N = round == 0 ? 1 : 8;
+        def.margin = 0.3;
+        def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        enum { NO = 250 };
+        noctObjectId id[NO];
+        for (int i = 0; i < NO; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            for (int k = 0; k < 3; ++k)
+                d.half_extents[k] = 0.02 + 0.03 * uniform();
+            d.transform.p[0] = uniform();
+            d.transform.p[1] = 0.1 * uniform();
+            d.transform.p[2] = 0.1 * uniform();
+            random_quat(&d.transform.q);
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+            const double v[3] = {0.002 * (uniform() - 0.5), 0.002 * (uniform() - 0.5),
+                                 0.002 * (uniform() - 0.5)};
+            ck_assert_int_eq(noctWorldSetVelocity(w, id[i], v, NULL), NOCT_OK);
+        }
+        size_t pairs = 0;
+        for (int step = 0; step < 12; ++step) {
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+            /* against the distances (slots are the objects' order),
+             * once a round on a step that uses a list, then against a
+             * fresh world (which makes a list of its own: the distances
+             * check the making too) */
+            for (int i = 0; i < NO && step == 2 + 3 * round; ++i) {
+                static bool is_near[NO][NO];
+                if (i == 0) {
+                    memset(is_near, 0, sizeof is_near);
+                    const noctPair *p;
+                    const size_t np = noctWorldNear(w, &p);
+                    for (size_t k = 0; k < np; ++k)
+                        is_near[p[k].a.index][p[k].b.index] = true;
+                }
+                ck_assert_uint_eq(id[i].index, (unsigned)i);
+                for (int j = i + 1; j < NO; ++j) {
+                    noctDistanceResult r;
+                    ck_assert_int_eq(noctWorldDistance(w, id[i], id[j], INFINITY, &r, NULL),
+                                     NOCT_OK);
+                    if (r.upper <= def.margin)
+                        ck_assert_msg(is_near[i][j], "step %d: (%d, %d) at %g not near", step,
+                                      i, j, r.upper);
+                    else if (r.lower > def.margin * (1 + 0x1p-30) + 0x1p-30)
+                        ck_assert_msg(!is_near[i][j], "step %d: (%d, %d) at %g near", step, i,
+                                      j, r.lower);
+                }
+            }
+            pairs += same_as_fresh(w, &def, step);
+        }
+        /* (most of the 31 125 pairs are within the margin) */
+        ck_assert_uint_gt(pairs, 12 * 10000);
+        noctWorldDestroy(w);
+    }
+}
+END_TEST
+
+/*
  * The kept candidates (world_near.c, near_candidates()) against a world
  * made afresh after every step: random scenes of box primitives and box
  * meshes at the scales 1, 2^-300 (about 2^-260) and 2^280 (offset 2^40
@@ -1519,6 +1591,7 @@ static Suite *near_suite(void)
     tcase_add_test(tc, kept_proofs_at_extreme_scales);
     tcase_add_loop_test(tc, kept_candidates_against_geometry, 0, 1);
     tcase_add_loop_test(tc, kept_candidates_against_a_fresh_world, 0, 1);
+    tcase_add_test(tc, kept_candidates_of_a_crowded_column);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
