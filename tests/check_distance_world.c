@@ -497,6 +497,19 @@ static bool contains_fcn(void *context, noctObjectId id, void *user)
     return true;
 }
 
+/* The nearest object to point x, with no limit and no filter (one must
+ * be found). */
+static noctDistanceHit nearest_to_point(const noctWorld *w, const noctTransform *x)
+{
+    noctDistanceHit hit;
+    bool got;
+    ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, x, INFINITY, noctDefaultQueryFilter(),
+                                           &hit, &got, NULL),
+                     NOCT_OK);
+    ck_assert(got);
+    return hit;
+}
+
 START_TEST(points_at_box_boundaries)
 {
     static const double offsets[] = {-1e-3, -1e-6, -1e-9, -1e-12, -1e-14, 0,
@@ -551,12 +564,7 @@ START_TEST(points_at_box_boundaries)
             ck_assert_int_eq(noctWorldQueryPoint(w, x.p, noctDefaultQueryFilter(), contains_fcn,
                                                  &in, NULL),
                              NOCT_OK);
-            noctDistanceHit hit;
-            bool got;
-            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &x, INFINITY,
-                                                   noctDefaultQueryFilter(), &hit, &got, NULL),
-                             NOCT_OK);
-            ck_assert(got);
+            const noctDistanceHit hit = nearest_to_point(w, &x);
             ck_assert(hit.result.colliding == in);
             if (fabs(off) >= 1e-9) {
                 ck_assert(in == (off < 0));
@@ -665,12 +673,7 @@ START_TEST(points_near_corners_and_ties)
             }
             noctTransform x = noctIdentityTransform();
             memcpy(x.p, p, sizeof p);
-            noctDistanceHit hit;
-            bool got;
-            ck_assert_int_eq(noctWorldQueryNearest(w, NULL, NULL, &x, INFINITY,
-                                                   noctDefaultQueryFilter(), &hit, &got, NULL),
-                             NOCT_OK);
-            ck_assert(got);
+            const noctDistanceHit hit = nearest_to_point(w, &x);
             const noctDistanceResult *r = &hit.result;
             const long double tol = 1e-9L * (S + off);
             ck_assert(!r->colliding);
