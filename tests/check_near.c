@@ -65,6 +65,24 @@ static void teleport(scene *s, int i)
 /* _i: 0 a quick run (under valgrind too), 1 the full one (tag slow). */
 /* The L-shaped mesh the random scenes use, made for each test by the
  * test cases' fixture. */
+/* The near verdict got for two objects dist apart (ideal) with margin d,
+ * on a step: checked where dist is clear of d by BEYOND; 0 within, 1
+ * beyond, 2 too close to tell. */
+static int near_verdict(bool got, long double dist, double d, int step, int i, int j)
+{
+    if (dist <= d - BEYOND) {
+        ck_assert_msg(got, "step %d: objects %d and %d, %.12Lg apart, not near (margin %g)",
+                      step, i, j, dist, d);
+        return 0;
+    }
+    if (dist > d + BEYOND) {
+        ck_assert_msg(!got, "step %d: objects %d and %d, %.12Lg apart, near (margin %g)", step,
+                      i, j, dist, d);
+        return 1;
+    }
+    return 2;
+}
+
 static noctMesh *ell;
 
 static void make_ell_fixture(void)
@@ -142,17 +160,10 @@ START_TEST(near_pairs_against_geometry)
                         c = t;
                     }
                     const bool got = in_list(near, nn, a, c);
-                    if (dist <= d - BEYOND) {
-                        ck_assert_msg(got, "objects %d and %d, %.12Lg apart, not near (margin %g)",
-                                      i, j, dist, d);
-                        ++within;
-                    } else if (dist > d + BEYOND) {
-                        ck_assert_msg(!got, "objects %d and %d, %.12Lg apart, near (margin %g)",
-                                      i, j, dist, d);
-                        ++beyond;
-                    } else {
-                        ++skipped;
-                    }
+                    const int v = near_verdict(got, dist, d, step, i, j);
+                    within += v == 0;
+                    beyond += v == 1;
+                    skipped += v == 2;
                 }
             /* the events: this list against the last */
             for (size_t k = 0; k < nn; ++k)
@@ -1007,17 +1018,10 @@ START_TEST(kept_proofs_against_geometry)
                         c = t;
                     }
                     const bool got = in_list(near, nn, a, c);
-                    if (dist <= d - BEYOND) {
-                        ck_assert_msg(got, "step %d: objects %d and %d, %.12Lg apart, not near "
-                                      "(margin %g)", step, i, j, dist, d);
-                        ++within;
-                    } else if (dist > d + BEYOND) {
-                        ck_assert_msg(!got, "step %d: objects %d and %d, %.12Lg apart, near "
-                                      "(margin %g)", step, i, j, dist, d);
-                        ++beyond;
-                    } else {
-                        ++skipped;
-                    }
+                    const int v = near_verdict(got, dist, d, step, i, j);
+                    within += v == 0;
+                    beyond += v == 1;
+                    skipped += v == 2;
                 }
         }
         free_scene(&s);
@@ -1134,17 +1138,10 @@ START_TEST(kept_candidates_against_geometry)
                     const double d = W + (own[a] + own[b]);
                     const long double dist = ideal_distance(&s.g[a], &s.g[b]);
                     const bool got = near_now(s.w, s.id[a], s.id[b]);
-                    if (dist <= d - BEYOND) {
-                        ck_assert_msg(got, "step %d: objects %d and %d, %.12Lg apart, not near "
-                                      "(margin %g)", step, a, b, dist, d);
-                        ++within;
-                    } else if (dist > d + BEYOND) {
-                        ck_assert_msg(!got, "step %d: objects %d and %d, %.12Lg apart, near "
-                                      "(margin %g)", step, a, b, dist, d);
-                        ++beyond;
-                    } else {
-                        ++skipped;
-                    }
+                    const int verdict = near_verdict(got, dist, d, step, a, b);
+                    within += verdict == 0;
+                    beyond += verdict == 1;
+                    skipped += verdict == 2;
                 }
         }
         free_scene(&s);
