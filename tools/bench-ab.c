@@ -7,12 +7,16 @@
  * built-in family's scene in each, and steps them in turn: on even steps A first,
  * on odd steps B first, so that whatever the machine does to one does it
  * to the other. Prints per scene the median step of each, their ratio
- * B / A with the spread of the per-step ratios (their quartiles), and
- * fails if the two found different contact-begin counts: a faster build
- * that finds other pairs did other work.
+ * B / A with the spread of the per-step ratios (their quartiles), the
+ * ratio of their mean steps (B's total time over A's), and
+ * fails if the two found different contact-begin counts (or, with a
+ * margin, near-pair counts): a faster build that finds other pairs did
+ * other work.
  *
- * Usage: bench-ab [--steps S] LIB_A LIB_B SCENE...
- *   SCENE is planes:K or gas:N; S defaults to the scene's own steps.
+ * Usage: bench-ab [--steps S] [--margin D] LIB_A LIB_B SCENE...
+ *   SCENE is a built-in family (planes:K, gas:N, keyframes:N, ...); S
+ *   defaults to the scene's own steps; D, a world margin (near pairs)
+ *   set in both worlds (their near pairs' counts must agree too).
  * Exit status: 0, 1 if a run failed or the events differ, 2 for bad usage.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -30,11 +34,13 @@ typedef struct lib {
     const char *path;
     void *handle;
     noctStatus (*family)(const char *, noctScene **, noctError *);
+    noctWorldDef *(*def)(noctScene *);
     noctStatus (*build)(const noctScene *, noctWorld **, noctError *);
     int (*steps)(const noctScene *);
     void (*scene_destroy)(noctScene *);
     noctStatus (*step)(noctWorld *, noctError *);
     size_t (*began)(const noctWorld *, const noctPair **);
+    size_t (*near)(const noctWorld *, const noctPair **);
     void (*destroy)(noctWorld *);
 } lib;
 
@@ -58,25 +64,28 @@ static int load(lib *l, const char *path)
         return 0;
     }
     SYM(l, family, "noctSceneFamily");
+    SYM(l, def, "noctSceneDef");
     SYM(l, build, "noctSceneBuild");
     SYM(l, steps, "noctSceneSteps");
     SYM(l, scene_destroy, "noctSceneDestroy");
     SYM(l, step, "noctWorldStep");
     SYM(l, began, "noctWorldBegan");
+    SYM(l, near, "noctWorldNear");
     SYM(l, destroy, "noctWorldDestroy");
     return 1;
 }
 
-/* Run one scene in both; 0 on failure. */
-static int run(lib *ab, const char *spec, int steps_opt)
+/* Run one scene in both, with world margin D; 0 on failure. */
+static int run(lib *ab, const char *spec, int steps_opt, double margin)
 {
     noctScene *scene[2] = {NULL, NULL};
     noctWorld *world[2] = {NULL, NULL};
     noctError err;
     int ok = 1, steps = steps_opt;
     for (int i = 0; i < 2 && ok; ++i) {
-        if (ab[i].family(spec, &scene[i], &err) != NOCT_OK ||
-            ab[i].build(scene[i], &world[i], &err) != NOCT_OK) {
+        if (ab[i].family(spec, &scene[i], &err) == NOCT_OK)
+            ab[i].def(scene[i])->margin = margin;
+        if (scene[i] == NULL || ab[i].build(scene[i], &world[i], &err) != NOCT_OK) {
             fprintf(stderr, "bench-ab: %s with %s: %s\n", spec, ab[i].path, err.message);
             ok = 0;
         }
@@ -86,7 +95,7 @@ static int run(lib *ab, const char *spec, int steps_opt)
     double *t[2] = {calloc((size_t)steps + 1, sizeof(double)),
                     calloc((size_t)steps + 1, sizeof(double))};
     double *ratio = calloc((size_t)steps + 1, sizeof(double));
-    size_t begins[2] = {0, 0};
+    size_t begins[2] = {0, 0}, nears[2] = {0, 0};
     if (t[0] == NULL || t[1] == NULL || ratio == NULL)
         ok = 0;
     for (int s = 0; s < steps && ok; ++s) {
@@ -101,21 +110,27 @@ static int run(lib *ab, const char *spec, int steps_opt)
             t[i][s] = tool_now() - t0;
             const noctPair *p;
             begins[i] += ab[i].began(world[i], &p);
+            nears[i] += ab[i].near(world[i], &p);
         }
         ratio[s] = t[1][s] / t[0][s];
     }
     if (ok) {
         const size_t n = (size_t)steps;
+        double sum[2] = {0, 0};
+        for (size_t k = 0; k < n; ++k) {
+            sum[0] += t[0][k];
+            sum[1] += t[1][k];
+        }
         tool_sort(t[0], n);
         tool_sort(t[1], n);
         tool_sort(ratio, n);
-        printf("%-14s %6d %12.3f %12.3f %8.3f   %.3f-%.3f %10zu%s\n", spec, steps,
+        printf("%-14s %6d %12.3f %12.3f %8.3f   %.3f-%.3f %8.3f %10zu%s\n", spec, steps,
                1e3 * tool_rank(t[0], n, 1, 2), 1e3 * tool_rank(t[1], n, 1, 2),
                tool_rank(ratio, n, 1, 2), tool_rank(ratio, n, 1, 4),
-               tool_rank(ratio, n, 3, 4), begins[0],
-               begins[0] == begins[1] ? "" : "  EVENTS DIFFER");
+               tool_rank(ratio, n, 3, 4), sum[1] / sum[0], begins[0],
+               begins[0] == begins[1] && nears[0] == nears[1] ? "" : "  EVENTS DIFFER");
         fflush(stdout);
-        ok = begins[0] == begins[1];
+        ok = begins[0] == begins[1] && nears[0] == nears[1];
     }
     for (int i = 0; i < 2; ++i) {
         if (world[i] != NULL)
@@ -131,16 +146,28 @@ static int run(lib *ab, const char *spec, int steps_opt)
 int main(int argc, char **argv)
 {
     int steps = 0, a = 1;
-    if (a + 1 < argc && strcmp(argv[a], "--steps") == 0) {
-        steps = atoi(argv[a + 1]);
-        a += 2;
-        if (steps < 1) {
-            fprintf(stderr, "bench-ab: --steps needs a positive count\n");
-            return 2;
-        }
+    double margin = 0;
+    for (;;) {
+        if (a + 1 < argc && strcmp(argv[a], "--steps") == 0) {
+            steps = atoi(argv[a + 1]);
+            a += 2;
+            if (steps < 1) {
+                fprintf(stderr, "bench-ab: --steps needs a positive count\n");
+                return 2;
+            }
+        } else if (a + 1 < argc && strcmp(argv[a], "--margin") == 0) {
+            char *end;
+            margin = strtod(argv[a + 1], &end);
+            a += 2;
+            if (*end != '\0' || !(margin >= 0 && margin < 1e300)) {
+                fprintf(stderr, "bench-ab: --margin needs a finite distance of 0 or more\n");
+                return 2;
+            }
+        } else
+            break;
     }
     if (argc - a < 3 || strcmp(argv[1], "--help") == 0) {
-        fprintf(stderr, "usage: bench-ab [--steps S] LIB_A LIB_B SCENE...\n");
+        fprintf(stderr, "usage: bench-ab [--steps S] [--margin D] LIB_A LIB_B SCENE...\n");
         return 2;
     }
     lib ab[2];
@@ -148,11 +175,11 @@ int main(int argc, char **argv)
     if (!load(&ab[0], argv[a]) || !load(&ab[1], argv[a + 1]))
         return 1;
     printf("A: %s\nB: %s\n", argv[a], argv[a + 1]);
-    printf("%-14s %6s %12s %12s %8s   %-11s %10s\n", "scene", "steps", "A ms/step",
-           "B ms/step", "B/A", "quartiles", "begins");
+    printf("%-14s %6s %12s %12s %8s   %-11s %8s %10s\n", "scene", "steps", "A ms/step",
+           "B ms/step", "B/A", "quartiles", "B/A mean", "begins");
     int ok = 1;
     for (int i = a + 2; i < argc; ++i)
-        ok = run(ab, argv[i], steps) && ok;
+        ok = run(ab, argv[i], steps, margin) && ok;
     dlclose(ab[0].handle);
     dlclose(ab[1].handle);
     return ok ? 0 : 1;
