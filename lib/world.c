@@ -112,8 +112,7 @@ void noctWorldDestroy(noctWorld *w)
     free(w->margins.of);
     free(w->hints.h);
     free(w->hints.spare);
-    free(w->kept.p);
-    free(w->kept.ref);
+    noct_world_free_kept(w);
     free(w->placed);
     noct_world_free_sweeps(w);
     noct_world_free_tracks(w);

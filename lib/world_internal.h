@@ -193,6 +193,23 @@ typedef struct noct_near_kept {
     bool valid;  /* the pairs may serve */
     bool ref_ok; /* ref holds the boxes of age steps ago (with the pairs,
                     or alone while objects move too fast for a list) */
+    /* a step's scratch, kept for the next (a step of 100 000 objects
+     * would otherwise map and fault in some 30 megabytes anew, one page
+     * at a time): each object's grow, the candidate pairs, and the
+     * arrays that make a list; each at most a few times what the last
+     * step's objects, candidates and list needed (else freed), and all
+     * freed with the margin */
+    double *grow;
+    size_t capgrow;
+    noct_pair_list cand, spare; /* (spare: the sort's other half) */
+    struct near_box *g;         /* the gathered boxes (world_near.c) */
+    size_t capg;
+    struct near_key *key;
+    size_t capkey;
+    struct near_run *run;
+    size_t caprun;
+    size_t *idx; /* the columns' cells and counts, the sort's counts */
+    size_t capidx;
 } noct_near_kept;
 
 /*
@@ -526,6 +543,9 @@ noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list
  * step's): the near record is rotated, now is found, and with events its
  * differences. On failure (NOMEM) now and before are as they were. */
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err);
+
+/* Frees the near stage's kept list and scratch (w->kept) and empties it. */
+void noct_world_free_kept(noctWorld *w);
 
 /* ---- world_motion.c ---------------------------------------------------------------- */
 

@@ -311,7 +311,7 @@ static NOCT_ALWAYS_INLINE double box_gap2(const double alo[3], const double ahi[
     *scale = d;
     for (int k = 0; k < 3; ++k) {
         const double g = noct_max(noct_max(blo[k] - ahi[k], alo[k] - bhi[k]), 0);
-        s += g * g;
+        s = s + g * g;
         *scale = noct_max(*scale, noct_max(noct_max(fabs(alo[k]), fabs(ahi[k])),
                                            noct_max(fabs(blo[k]), fabs(bhi[k]))));
     }
@@ -325,17 +325,18 @@ static NOCT_ALWAYS_INLINE bool boxes_overlap(const double alo[3], const double a
              (ahi[2] < blo[2]) | (bhi[2] < alo[2]));
 }
 
-/* The boxes' test of near() below, on boxes a and b of objects i < j
+/* The boxes' test of near() below (box: the world's accuracy is
+ * NOCT_ACCURACY_BOX), on boxes a and b of objects i < j
  * (colliding pairs pass it: their boxes overlap, so their gap is 0): at
  * the box level the answer, else false when the boxes alone prove the
  * pair not near. */
-static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3],
-                                          const double ahi[3], const double blo[3],
-                                          const double bhi[3], double d)
+static NOCT_ALWAYS_INLINE bool boxes_near_as(bool box, const double alo[3],
+                                             const double ahi[3], const double blo[3],
+                                             const double bhi[3], double d)
 {
     double scale;
     const double s = box_gap2(alo, ahi, blo, bhi, d, &scale);
-    if (w->def.accuracy == NOCT_ACCURACY_BOX) {
+    if (box) {
         const double reach = d + 0x1p-40 * scale;
         return s <= reach * reach;
     }
@@ -349,6 +350,13 @@ static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3
      * the separating-axis test takes hundreds. */
     const double beyond = d + 0x1p-37 * scale;
     return !(s > beyond * beyond);
+}
+
+static NOCT_ALWAYS_INLINE bool boxes_near(const noctWorld *w, const double alo[3],
+                                          const double ahi[3], const double blo[3],
+                                          const double bhi[3], double d)
+{
+    return boxes_near_as(w->def.accuracy == NOCT_ACCURACY_BOX, alo, ahi, blo, bhi, d);
 }
 
 /* A mark of box form s's turn, which an object that only moved keeps (a
@@ -579,6 +587,9 @@ typedef struct near_sweep {
     double clo[3];         /* the sweeping leaf's lower corner */
     noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j (i's
                              generation: whether their boxes overlap) */
+    noct_pair_list spare; /* room for sorting them */
+    size_t *idx;          /* counts and cells */
+    size_t capidx;
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
@@ -692,6 +703,8 @@ static void sort_keys(near_key *k, size_t n, near_key *tmp)
 
 NOCT_DEFINE_GROW(grow_near_key, near_key)
 NOCT_DEFINE_GROW(grow_near_run, near_run)
+NOCT_DEFINE_GROW(grow_idx, size_t)
+NOCT_DEFINE_GROW(grow_pair, noctPair)
 
 /* Leaf c's candidate pairs, into s->cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
@@ -824,25 +837,23 @@ static int sweep_all(near_sweep *s, uint32_t slots)
  * false without memory. */
 static bool sort_cand(near_sweep *s, uint32_t slots)
 {
-    noct_pair_list *l = &s->cand;
+    noct_pair_list *l = &s->cand, *o = &s->spare;
     if (l->n > 1) {
-        uint32_t *count = calloc((size_t)slots + 1, sizeof *count);
-        noctPair *to = malloc(l->n * sizeof *to);
-        if (count == NULL || to == NULL) {
-            free(count);
-            free(to);
+        if (!grow_idx(&s->idx, &s->capidx, (size_t)slots + 1) ||
+            !grow_pair(&o->p, &o->cap, l->n))
             return false;
-        }
+        size_t *count = s->idx;
+        memset(count, 0, ((size_t)slots + 1) * sizeof *count);
         for (size_t k = 0; k < l->n; ++k)
             ++count[l->p[k].a.index + 1];
         for (uint32_t i = 0; i < slots; ++i)
             count[i + 1] += count[i];
         for (size_t k = 0; k < l->n; ++k)
-            to[count[l->p[k].a.index]++] = l->p[k];
-        free(count);
-        free(l->p);
-        l->p = to;
-        l->cap = l->n;
+            o->p[count[l->p[k].a.index]++] = l->p[k];
+        /* (the two arrays trade places: the sorted one is the list) */
+        const noct_pair_list t = *l;
+        *l = (noct_pair_list){o->p, t.n, o->cap};
+        *o = (noct_pair_list){t.p, 0, t.cap};
         noct_pairs_sort_partners(l);
     }
     return true;
@@ -921,14 +932,15 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
     const size_t slabs = n / (4 * cols) + 1;
     const double inv0 = span0 > 0 ? (double)slabs / span0 : 0;
     const size_t cells = cols * slabs;
-    near_box *g = malloc(2 * n * sizeof *g);
-    size_t *cell = malloc(n * sizeof *cell);
-    size_t *start = calloc(cells + 1, sizeof *start);
-    size_t *cb = malloc((cols + 1) * sizeof *cb);
+    /* (the arrays kept from list to list: see noct_near_kept) */
     int r = -1;
-    if (g == NULL || cell == NULL || start == NULL || cb == NULL ||
+    if (!grow_near_box(&s->g, &s->capg, 2 * n) ||
+        !grow_idx(&s->idx, &s->capidx, n + (cells + 1) + (cols + 1)) ||
         !grow_near_key(&s->key, &s->capkey, 2 * n))
-        goto out;
+        return -1;
+    near_box *g = s->g;
+    size_t *cell = s->idx, *start = cell + n, *cb = start + (cells + 1);
+    memset(start, 0, (cells + 1) * sizeof *start);
     size_t a = 0;
     for (uint32_t i = 0; i < slots; ++i) {
         if (!w->obj[i].alive || w->obj[i].sensor)
@@ -1062,10 +1074,6 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
 #undef NEAR_SCAN
     r = 1;
 out:
-    free(g);
-    free(cell);
-    free(start);
-    free(cb);
     return r;
 }
 
@@ -1120,7 +1128,20 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
 {
     noctWorld *w = s->w;
     const noctBroadphase *bp = &w->bp;
-    s->cand.n = 0;
+    noct_pair_list *c = &s->cand;
+    c->n = 0;
+    /* room for every pair of the list: each is written and kept or not
+     * by its tests' outcome, with no branch on it (half the list passes,
+     * in no order a predictor learns) */
+    if (c->cap < k->n) {
+        void *p = realloc(c->p, k->n * sizeof *c->p);
+        if (p == NULL)
+            return false;
+        c->p = p;
+        c->cap = k->n;
+    }
+    const bool box = w->def.accuracy == NOCT_ACCURACY_BOX;
+    size_t n = 0;
     for (size_t q = 0; q < k->n; ++q) {
         /* (the second objects' boxes are scattered: requested ahead) */
         if (q + 8 < k->n) {
@@ -1131,20 +1152,18 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
         const uint32_t i = k->p[q][0], j = k->p[q][1];
         const noct_aabb *I = noct_bp_box(bp, i), *J = noct_bp_box(bp, j);
         const double gr = s->grow[i];
-        if ((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
-            (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |
-            (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))
-            continue;
+        const bool meet = !((J->hi[0] < I->lo[0] - gr) | (J->lo[0] > I->hi[0] + gr) |
+                            (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |
+                            (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr));
         const double d = s->m != NULL ? s->W + (s->m[i] + s->m[j]) : s->W;
-        if (!boxes_near(w, I->lo, I->hi, J->lo, J->hi, d))
-            continue;
-        if (s->filtered &&
-            !noct_filters_pass(noct_bp_proxy(bp, i), noct_bp_proxy(bp, j)))
-            continue;
+        bool pass = meet && boxes_near_as(box, I->lo, I->hi, J->lo, J->hi, d);
+        if (s->filtered && pass)
+            pass = noct_filters_pass(noct_bp_proxy(bp, i), noct_bp_proxy(bp, j));
         const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
-        if (!noct_pairs_push(&s->cand, (noctPair){{i, overlap}, {j, 0}}))
-            return false;
+        if (pass)
+            c->p[n++] = (noctPair){{i, overlap}, {j, 0}};
     }
+    c->n = n;
     return true;
 }
 
@@ -1227,9 +1246,15 @@ static int near_candidates(near_sweep *s)
     const noct_aabb root = noct_bp_root_box(bp);
     /* every object's grow, once (a box is gathered by several leaves),
      * and how far the boxes moved since the list was made */
-    s->grow = malloc(((size_t)slots + 1) * sizeof *s->grow);
-    if (s->grow == NULL)
-        return -1;
+    if (k->capgrow < (size_t)slots + 1) {
+        free(k->grow);
+        k->capgrow = 0;
+        k->grow = malloc(((size_t)slots + 1) * sizeof *k->grow);
+        if (k->grow == NULL)
+            return -1;
+        k->capgrow = (size_t)slots + 1;
+    }
+    s->grow = k->grow;
     double G = 0, D = 0, C = 0;
     size_t live = 0;
     for (uint32_t i = 0; i < slots; ++i) {
@@ -1310,7 +1335,8 @@ static int near_candidates(near_sweep *s)
     *k = (noct_near_kept){.p = k->p, .n = k->n, .cap = k->cap, .ref = k->ref,
                           .capref = k->capref, .skin = s->skin, .S = C, .G = G, .W = s->W,
                           .M = s->M, .rate = k->rate, .edits = w->margins.edits,
-                          .slots = slots, .hold = hold};
+                          .slots = slots, .hold = hold, .grow = k->grow,
+                          .capgrow = k->capgrow};
     if (!s->keep) {
         /* (the candidates are the sweeps'; the boxes kept, if there is
          * memory for them, to measure the motion over the next step when
@@ -1339,7 +1365,19 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     noctStatus st = NOCT_OK;
     /* (no margin left: the pairs the last one kept end) */
     const bool any = W > 0 || m != NULL;
-    near_sweep s = {.w = w, .m = m, .W = W, .M = M};
+    /* (the kept scratch, which s holds until it goes back below) */
+    noct_near_kept *kk = &w->kept;
+    near_sweep s = {.w = w, .m = m, .W = W, .M = M, .cand = kk->cand, .spare = kk->spare,
+                    .g = kk->g, .capg = kk->capg, .key = kk->key, .capkey = kk->capkey,
+                    .run = kk->run, .caprun = kk->caprun, .idx = kk->idx,
+                    .capidx = kk->capidx};
+    s.cand.n = 0;
+    kk->cand = kk->spare = (noct_pair_list){NULL, 0, 0};
+    kk->g = NULL;
+    kk->key = NULL;
+    kk->run = NULL;
+    kk->idx = NULL;
+    kk->capg = kk->capkey = kk->caprun = kk->capidx = 0;
     /* (an empty list may have no array: no pointer arithmetic on NULL) */
     const noct_near_hint *hint_end = w->hints.n > 0 ? w->hints.h + w->hints.n : w->hints.h;
     hint_walk hw = {w->hints.h, hint_end, w->hints.spare, 0, w->hints.capspare,
@@ -1363,6 +1401,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             NOCT_PREFETCH((const char *)&w->slot[ahead] + 64);
             NOCT_PREFETCH(w->pos[ahead]);
         }
+        /* (and its generation, for the pair's record) */
+        if (k + 8 < s.cand.n)
+            NOCT_PREFETCH(&w->bp.gen[s.cand.p[k + 8].b.index]);
         while (at < col->n && (col->p[at].a.index < i ||
                                (col->p[at].a.index == i && col->p[at].b.index < j)))
             ++at;
@@ -1386,11 +1427,30 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
             break;
         }
     }
-    free(s.g);
-    free(s.key);
-    free(s.run);
-    free(s.grow);
-    free(s.cand.p);
+    /* (the scratch kept for the next step, each array unless far larger
+     * than this step's candidates and list, or the objects, ask) */
+    const size_t need = s.cand.n + kk->n + noct_bp_slots(&w->bp);
+    if (s.cand.cap > 4 * need + 4096 || s.spare.cap > 4 * need + 4096 ||
+        s.capg > 8 * need + 4096 || s.capkey > 8 * need + 4096 ||
+        s.caprun > 8 * need + 4096 || s.capidx > 8 * need + 4096) {
+        free(s.cand.p);
+        free(s.spare.p);
+        free(s.g);
+        free(s.key);
+        free(s.run);
+        free(s.idx);
+    } else {
+        kk->cand = (noct_pair_list){s.cand.p, 0, s.cand.cap};
+        kk->spare = (noct_pair_list){s.spare.p, 0, s.spare.cap};
+        kk->g = s.g;
+        kk->capg = s.capg;
+        kk->key = s.key;
+        kk->capkey = s.capkey;
+        kk->run = s.run;
+        kk->caprun = s.caprun;
+        kk->idx = s.idx;
+        kk->capidx = s.capidx;
+    }
     /* else each object by a scan of its leaves or a query */
     const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;
     for (uint32_t i = 0; i < slots && st == NOCT_OK; ++i) {
@@ -1447,9 +1507,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         free(kept->h);
         free(hw.h);
         *kept = (noct_near_hints){NULL, NULL, 0, 0, 0};
-        free(w->kept.p);
-        free(w->kept.ref);
-        w->kept = (noct_near_kept){0};
+        noct_world_free_kept(w);
     } else if (st == NOCT_OK && !hw.failed) {
         *kept = (noct_near_hints){hw.h, kept->h, hw.n, hw.cap, kept->cap};
     } else {
@@ -1474,4 +1532,18 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     w->margins.near = W > 0 || w->margins.count > 0 || e->now.n > 0;
     return NOCT_OK;
+}
+
+void noct_world_free_kept(noctWorld *w)
+{
+    free(w->kept.p);
+    free(w->kept.ref);
+    free(w->kept.grow);
+    free(w->kept.cand.p);
+    free(w->kept.spare.p);
+    free(w->kept.g);
+    free(w->kept.key);
+    free(w->kept.run);
+    free(w->kept.idx);
+    w->kept = (noct_near_kept){0};
 }
