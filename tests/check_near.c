@@ -964,7 +964,7 @@ START_TEST(kept_proofs_against_geometry)
 {
     int within = 0, beyond = 0, skipped = 0;
     const int rounds = _i ? 6 : 2;
-    /* fewer random steps under valgrind, a removal every fourth still */
+    /* fewer steps under valgrind; twelve keep three of the removals */
     const int steps = test_rounds(30, 12);
     for (int round = 0; round < rounds; ++round) {
         world_margin = 0.05 + 0.5 * uniform();
