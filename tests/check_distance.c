@@ -1545,12 +1545,13 @@ static void random_pair(uint64_t *rng, int n)
     tm_free(&B);
 }
 
-/* Random pairs from the seed _i: 150 at seed 0 (run under valgrind too),
- * more seeds in the slow case. */
+/* Random pairs from the seed _i: 150 at seed 0 (run under valgrind too,
+ * fewer there: test_rounds()), more seeds in the slow case. */
 START_TEST(random_pairs)
 {
     uint64_t rng = 0x5eed0000u + (uint64_t)_i;
-    for (int n = 0; n < 150; ++n)
+    const int rounds = test_rounds(150, 1);
+    for (int n = 0; n < rounds; ++n)
         random_pair(&rng, n);
     report_failures("random_pairs");
 }
@@ -1563,7 +1564,8 @@ END_TEST
 START_TEST(rotated_both_ways)
 {
     uint64_t rng = 0xab0000u + (uint64_t)_i;
-    for (int n = 0; n < 30; ++n) {
+    const int rounds = test_rounds(30, 1);
+    for (int n = 0; n < rounds; ++n) {
         const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
         tmesh A, B, RA;
         random_mesh(&A, &rng, (int)test_rand_below(&rng, 6), s);
@@ -1609,7 +1611,8 @@ END_TEST
 START_TEST(near_touch)
 {
     uint64_t rng = 0xcafe00u + (uint64_t)_i;
-    for (int n = 0; n < 40; ++n) {
+    const int rounds = test_rounds(40, 1);
+    for (int n = 0; n < rounds; ++n) {
         const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
         tmesh A, B;
         random_mesh(&A, &rng, (int)test_rand_below(&rng, 6), s);
@@ -1655,7 +1658,8 @@ END_TEST
 START_TEST(turned_boxes)
 {
     uint64_t rng = 0xb0c5000u + (uint64_t)_i;
-    for (int n = 0; n < 60; ++n) {
+    const int rounds = test_rounds(60, 1);
+    for (int n = 0; n < rounds; ++n) {
         const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
         tmesh A, B;
         tm_box(&A, s * (0.25 + test_uniform(&rng)), s * (0.25 + test_uniform(&rng)),
@@ -1741,7 +1745,8 @@ static void tm_box_kind(tmesh *t, int kind, const double h[3], uint64_t *rng)
 START_TEST(box_paths)
 {
     uint64_t rng = 0xb0a7u + (uint64_t)_i;
-    for (int n = 0; n < 40; ++n) {
+    const int rounds = test_rounds(40, 5); /* every how = n % 5 */
+    for (int n = 0; n < rounds; ++n) {
         const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
         const int ka = (int)test_rand_below(&rng, 4), kb = (int)test_rand_below(&rng, 4);
         const int how = n % 5;
@@ -2398,7 +2403,8 @@ static void tm_odd_box(tmesh *t, const double h[3], uint64_t *rng)
 START_TEST(odd_boxes)
 {
     uint64_t rng = 0x0dd0b0u + (uint64_t)_i;
-    for (int n = 0; n < 60; ++n) {
+    const int rounds = test_rounds(60, 3); /* B a plain box when n % 3 == 0 */
+    for (int n = 0; n < rounds; ++n) {
         const double s = scales[test_rand_below(&rng, sizeof scales / sizeof scales[0])];
         double ha[3], hb[3];
         for (int k = 0; k < 3; ++k) {

@@ -346,9 +346,10 @@ START_TEST(convex_against_general)
                           {uv_sphere(10, 6, e1, 0), uv_sphere(12, 7, e2, 0)}};
     const double rads[2] = {sqrt(0.83) + sqrt(0.36), 1.1 + 0.95};
     int convex_answers = 0, total = 0;
+    const int trials = test_rounds(12, 4); /* each gap (trial % 4) and offset (% 3) */
     for (int kind = 0; kind < 2; ++kind)
         for (int si = 0; si < 3; ++si)
-            for (int trial = 0; trial < 12; ++trial) {
+            for (int trial = 0; trial < trials; ++trial) {
                 const double size = sizes[si];
                 const bool big = trial % 3 == 2;
                 const double gap = trial % 4 == 0 ? 1e-3 : 0.05 + urand();
@@ -408,8 +409,9 @@ START_TEST(general_against_brute_force)
 {
     const double one[3] = {1, 1, 1}, e[3] = {1, 0.7, 0.9};
     shape sa = uv_sphere(12, 7, one, 0.3), sb = uv_sphere(10, 8, e, 0.25);
+    const int trials = test_rounds(10, 6); /* every gap (trial % 3) with each offset (% 2) */
     for (int si = 0; si < 3; ++si)
-        for (int trial = 0; trial < 10; ++trial) {
+        for (int trial = 0; trial < trials; ++trial) {
             const double size = sizes[si];
             const double gap = trial % 3 == 0 ? 1e-4 : (trial % 3 == 1 ? 0.02 : 0.5 + urand());
             noctTransform xa, xb;

@@ -85,8 +85,11 @@ static int near_verdict(bool got, long double dist, double d, int step, int i, i
 
 static noctMesh *ell;
 
+/* Also restarts the scenes' RNG: each test draws the same scenes in one
+ * process (CK_FORK=no, as under valgrind) as in its own forked one. */
 static void make_ell_fixture(void)
 {
+    rng = RNG_SEED;
     ell = make_ell();
 }
 
@@ -961,13 +964,15 @@ START_TEST(kept_proofs_against_geometry)
 {
     int within = 0, beyond = 0, skipped = 0;
     const int rounds = _i ? 6 : 2;
+    /* fewer steps under valgrind; twelve keep three of the removals */
+    const int steps = test_rounds(30, 12);
     for (int round = 0; round < rounds; ++round) {
         world_margin = 0.05 + 0.5 * uniform();
         const double d = world_margin;
         scene s;
         random_scene(&s, 12 + (int)(20 * uniform()), 1 + round % 4, NOCT_ACCURACY_EXACT, ell);
         world_margin = 0;
-        for (int step = 0; step < 30; ++step) {
+        for (int step = 0; step < steps; ++step) {
             for (int i = 0; i < s.n; ++i) {
                 const double r = uniform();
                 if (r < 0.03) {
@@ -1026,8 +1031,8 @@ START_TEST(kept_proofs_against_geometry)
         }
         free_scene(&s);
     }
-    ck_assert_int_gt(within, _i ? 300 : 100);
-    ck_assert_int_gt(beyond, _i ? 3000 : 1000);
+    ck_assert_int_gt(within, (_i ? 300 : 100) * steps / 30);
+    ck_assert_int_gt(beyond, (_i ? 3000 : 1000) * steps / 30);
     ck_assert_int_lt(skipped, (within + beyond) / 100 + 5);
 }
 END_TEST
@@ -1466,6 +1471,7 @@ START_TEST(kept_proofs_at_extreme_scales)
 {
     enum { NO = 30 };
     int within = 0, beyond = 0;
+    const int steps = test_rounds(60, 20); /* fewer random steps under valgrind */
     for (int v = 0; v < 3; ++v) {
         const double scale = v == 0 ? 1 : v == 1 ? 0x1p-200 : 0x1p200;
         noctMesh *box[2];
@@ -1483,7 +1489,7 @@ START_TEST(kept_proofs_at_extreme_scales)
         noctTransform x[NO];
         double m[NO];
         bool alive[NO];
-        for (int step = 0; step < 60; ++step) {
+        for (int step = 0; step < steps; ++step) {
             for (int i = 0; i < NO; ++i) {
                 const double u = uniform();
                 if (step == 0 || (!alive[i] && u < 0.3)) {
@@ -1563,8 +1569,8 @@ START_TEST(kept_proofs_at_extreme_scales)
         noctMeshDestroy(box[0]);
         noctMeshDestroy(box[1]);
     }
-    ck_assert_int_gt(within, 1000);
-    ck_assert_int_gt(beyond, 10000);
+    ck_assert_int_gt(within, 1000 * steps / 60);
+    ck_assert_int_gt(beyond, 10000 * steps / 60);
 }
 END_TEST
 

@@ -392,13 +392,25 @@ AM_TESTS_ENVIRONMENT = \
 # and check-zero-alloc replace malloc (testalloc.c), which valgrind does
 # too: they would only skip (exit 77).
 # The suites run side by side, VALGRIND_JOBS at a time (default: the
-# processors), each by tests/valgrind-suite.sh.
+# processors), each by tests/valgrind-suite.sh (which also makes the
+# heaviest random loops run fewer rounds: NOCT_TEST_ROUNDS_DIVISOR), the
+# slowest ones first (valgrind_first, slowest first), so that the last
+# suites to start are short and the lanes end together.
 VALGRIND = valgrind
 VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
+valgrind_first = tests/check-distance tests/check-distance-efficient \
+	tests/check-near tests/check-near-efficient \
+	tests/check-world tests/check-world-efficient \
+	tests/check-surfaces tests/check-surfaces-efficient \
+	tests/check-broadphase tests/check-broadphase-efficient \
+	tests/check-swept tests/check-swept-efficient \
+	tests/check-distance-paths tests/check-distance-paths-efficient
 check-valgrind: $(check_PROGRAMS)
-	@for t in $(check_PROGRAMS); do \
-	  case $$t in tests/check-alloc*|tests/check-zero-alloc*) ;; *) echo $$t ;; esac; \
-	done | xargs -P $(VALGRIND_JOBS) -n 1 \
+	@{ for t in $(valgrind_first); do echo $$t$(EXEEXT); done; \
+	  for t in $(check_PROGRAMS); do \
+	    case " $(valgrind_first) " in *" $${t%$(EXEEXT)} "*) continue ;; esac; \
+	    case $$t in tests/check-alloc*|tests/check-zero-alloc*) ;; *) echo $$t ;; esac; \
+	  done; } | xargs -P $(VALGRIND_JOBS) -n 1 \
 	  $(SHELL) $(srcdir)/tests/valgrind-suite.sh '$(LIBTOOL)' '$(VALGRIND)'
 .PHONY: check-valgrind
 

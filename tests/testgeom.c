@@ -8,7 +8,7 @@
 #include "testgeom.h"
 #include "testutil.h"
 
-uint64_t rng = 0x51ed2701u;
+uint64_t rng = RNG_SEED;
 
 double uniform(void)
 {

@@ -52,7 +52,9 @@ typedef struct found {
     noctObjectId id[MAXO];
 } found;
 
+/* The scenes' RNG (uniform() draws from it) and its first state. */
 extern uint64_t rng;
+#define RNG_SEED 0x51ed2701u
 
 /* The margin of the worlds new_world() makes (default 0). */
 extern double world_margin;

@@ -31,6 +31,17 @@ int run_suite(Suite *suite)
     return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int test_rounds(int n, int least)
+{
+    const char *v = getenv("NOCT_TEST_ROUNDS_DIVISOR");
+    char *end;
+    const long d = v != NULL ? strtol(v, &end, 10) : 1;
+    if (v == NULL || end == v || *end != '\0' || d <= 1)
+        return n;
+    const long r = (n + d - 1) / d;
+    return r >= least ? (int)r : least < n ? least : n;
+}
+
 uint64_t test_rand(uint64_t *state)
 {
     uint64_t z = (*state += 0x9e3779b97f4a7c15u);

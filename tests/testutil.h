@@ -32,6 +32,16 @@
  * must abort) where fork() is off (CK_EXCLUDE_TAGS). */
 TCase *test_case(Suite *s, const char *name, int seconds, const char *tags);
 
+/* The rounds of a loop that repeats the same checks on more random data
+ * (more random scenes, pairs or seeds): n, or, where the environment sets
+ * NOCT_TEST_ROUNDS_DIVISOR to a whole number d > 1, n / d rounded up, but
+ * never fewer than least (at most n): the rounds that every distinct case
+ * of the loop needs, say a whole cycle of round % k. tests/valgrind-suite.sh
+ * sets it, so that the suites under valgrind run fewer random rounds;
+ * plain make check and the sanitizer builds run all n. Only for such
+ * loops: distinct cases, scales and edge cases are never cut. */
+int test_rounds(int n, int least);
+
 /* add_tests(tc, a, b, ...): tcase_add_test() for each test named. */
 void test_add_all(TCase *tc, const TTest *const *tests, size_t n);
 #define add_tests(tc, ...)                                                     \
