@@ -311,7 +311,7 @@ static NOCT_ALWAYS_INLINE double box_gap2(const double alo[3], const double ahi[
     *scale = d;
     for (int k = 0; k < 3; ++k) {
         const double g = noct_max(noct_max(blo[k] - ahi[k], alo[k] - bhi[k]), 0);
-        s = s + g * g;
+        s += g * g;
         *scale = noct_max(*scale, noct_max(noct_max(fabs(alo[k]), fabs(ahi[k])),
                                            noct_max(fabs(blo[k]), fabs(bhi[k]))));
     }
@@ -1130,9 +1130,8 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
     const noctBroadphase *bp = &w->bp;
     noct_pair_list *c = &s->cand;
     c->n = 0;
-    /* room for every pair of the list: each is written and kept or not
-     * by its tests' outcome, with no branch on it (half the list passes,
-     * in no order a predictor learns) */
+    /* room for every pair of the list, made once: the candidates are
+     * among them */
     if (c->cap < k->n) {
         void *p = realloc(c->p, k->n * sizeof *c->p);
         if (p == NULL)
