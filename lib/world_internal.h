@@ -170,6 +170,24 @@ typedef struct noct_near_hints {
     size_t n, cap, capspare;
 } noct_near_hints;
 
+/* The near stage's scratch (world_near.c), kept from step to step (a
+ * step of 100 000 objects would otherwise map and fault in some 30
+ * megabytes anew, one page at a time): the candidate pairs, and the
+ * arrays that make a list (near_sweep holds it during a step); each at
+ * most a few times what the last step's objects, candidates and list
+ * needed (else freed), and all freed with the margin. */
+typedef struct noct_near_scratch {
+    noct_pair_list cand, spare; /* (spare: the sort's other half) */
+    struct near_box *g;         /* the gathered boxes */
+    size_t capg;
+    struct near_key *key;
+    size_t capkey;
+    struct near_run *run;
+    size_t caprun;
+    size_t *idx; /* the columns' cells and counts, the sort's counts */
+    size_t capidx;
+} noct_near_scratch;
+
 /* The margin's candidate pairs kept from one step to the next
  * (world_near.c, near_candidates()): the pairs (i, j), i < j, whose boxes
  * met with i's grown by its grow and a skin when the list was made,
@@ -193,23 +211,11 @@ typedef struct noct_near_kept {
     bool valid;  /* the pairs may serve */
     bool ref_ok; /* ref holds the boxes of age steps ago (with the pairs,
                     or alone while objects move too fast for a list) */
-    /* a step's scratch, kept for the next (a step of 100 000 objects
-     * would otherwise map and fault in some 30 megabytes anew, one page
-     * at a time): each object's grow, the candidate pairs, and the
-     * arrays that make a list; each at most a few times what the last
-     * step's objects, candidates and list needed (else freed), and all
-     * freed with the margin */
+    /* a step's scratch, kept for the next: each object's grow, and the
+     * rest (noct_near_scratch; while a step runs, near_sweep holds it) */
     double *grow;
     size_t capgrow;
-    noct_pair_list cand, spare; /* (spare: the sort's other half) */
-    struct near_box *g;         /* the gathered boxes (world_near.c) */
-    size_t capg;
-    struct near_key *key;
-    size_t capkey;
-    struct near_run *run;
-    size_t caprun;
-    size_t *idx; /* the columns' cells and counts, the sort's counts */
-    size_t capidx;
+    noct_near_scratch x;
 } noct_near_kept;
 
 /*

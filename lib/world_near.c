@@ -576,20 +576,17 @@ typedef struct near_sweep {
     double R;        /* the sweep's reach: G and the roundings' room */
     double *grow;    /* each object's grow (not sensors'), by slot */
     const noct_cell *root;
-    near_box *g;     /* the gathered boxes */
-    size_t capg, ng;
-    near_key *key;   /* their order on the sweep's axis, and as many for the sort */
-    size_t capkey;
-    near_run *run;   /* the sweep's records, in its order */
-    size_t caprun;
+    /* the scratch (taken from the world's for the step): x.g the
+     * gathered boxes; x.key their order on the sweep's axis, and as many
+     * for the sort; x.run the sweep's records, in its order; x.cand the
+     * candidate pairs, (i, j) with i < j (i's generation: whether their
+     * boxes overlap); x.spare room for sorting them; x.idx counts and
+     * cells */
+    noct_near_scratch x;
+    size_t ng;       /* boxes gathered into x.g */
     uint32_t epoch;
     double qlo[3], qhi[3]; /* the gather box */
     double clo[3];         /* the sweeping leaf's lower corner */
-    noct_pair_list cand;  /* the candidate pairs, (i, j) with i < j (i's
-                             generation: whether their boxes overlap) */
-    noct_pair_list spare; /* room for sorting them */
-    size_t *idx;          /* counts and cells */
-    size_t capidx;
     size_t gathered;      /* boxes gathered in all (the budget below) */
     size_t budget;
     bool over;            /* the budget is spent: the old way is cheaper */
@@ -632,7 +629,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
     }
     noctWorld *w = s->w;
     uint32_t *mark = noct_bp_marks(&w->bp);
-    if (!grow_near_box(&s->g, &s->capg, s->ng + c->count))
+    if (!grow_near_box(&s->x.g, &s->x.capg, s->ng + c->count))
         return false;
     /* A leaf below the sweeping one on an axis (its cell ends where that
      * one's starts, or lower) holds mostly boxes that end below the
@@ -655,7 +652,7 @@ static bool gather_node(near_sweep *s, const octNode *n)
         mark[id] = s->epoch;
         if (w->obj[id].sensor)
             continue;
-        near_box *e = &s->g[s->ng++];
+        near_box *e = &s->x.g[s->ng++];
         memcpy(e->lo, b->lo, sizeof e->lo);
         memcpy(e->hi, b->hi, sizeof e->hi);
         e->grow = s->grow[id] + s->skin; /* (exact for a skin of 0) */
@@ -706,7 +703,7 @@ NOCT_DEFINE_GROW(grow_near_run, near_run)
 NOCT_DEFINE_GROW(grow_idx, size_t)
 NOCT_DEFINE_GROW(grow_pair, noctPair)
 
-/* Leaf c's candidate pairs, into s->cand. */
+/* Leaf c's candidate pairs, into s->x.cand. */
 static bool sweep_leaf(near_sweep *s, const noct_cell *c)
 {
     noctWorld *w = s->w;
@@ -728,11 +725,11 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
     }
     if (n < 2)
         return true;
-    const near_box *g = s->g;
+    const near_box *g = s->x.g;
     const int ax = near_boxes_axis(g, n);
-    if (!grow_near_key(&s->key, &s->capkey, 2 * n) || !grow_near_run(&s->run, &s->caprun, n))
+    if (!grow_near_key(&s->x.key, &s->x.capkey, 2 * n) || !grow_near_run(&s->x.run, &s->x.caprun, n))
         return false;
-    near_key *key = s->key;
+    near_key *key = s->x.key;
     for (size_t a = 0; a < n; ++a)
         key[a] = (near_key){g[a].lo[ax], a};
     sort_keys(key, n, key + n);
@@ -743,7 +740,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
      * cell there, so the leaf owns no pair of them (noct_cell_owns()):
      * a box before `in` is swept against the boxes from `in` on only,
      * which changes no candidate. */
-    near_run *run = s->run;
+    near_run *run = s->x.run;
     size_t in = n;
     for (size_t a = 0; a < n; ++a) {
         const near_box *B = &g[key[a].at];
@@ -783,7 +780,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
             if (!noct_cell_owns(c, s->root, P))
                 continue;
             if (s->keep) {
-                if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))
+                if (!noct_pairs_push(&s->x.cand, (noctPair){{I->id, 0}, {J->id, 0}}))
                     return false;
                 continue;
             }
@@ -797,7 +794,7 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
                 continue;
             /* (the first generation: whether the boxes overlap) */
             const bool overlap = boxes_overlap(I->lo, I->hi, J->lo, J->hi);
-            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, overlap}, {J->id, 0}}))
+            if (!noct_pairs_push(&s->x.cand, (noctPair){{I->id, overlap}, {J->id, 0}}))
                 return false;
         }
     }
@@ -818,12 +815,12 @@ static bool sweep_node(near_sweep *s, const octNode *n)
 static bool sort_cand(near_sweep *s, uint32_t slots);
 
 /* The leaves' sweeps over every box, their pairs sorted by first object
- * (counting), then by second, in s->cand: 1; 0 when the gathering would
+ * (counting), then by second, in s->x.cand: 1; 0 when the gathering would
  * cost more than the objects' own scans; -1 without memory. */
 static int sweep_all(near_sweep *s, uint32_t slots)
 {
     noctWorld *w = s->w;
-    s->cand.n = 0;
+    s->x.cand.n = 0;
     s->gathered = 0;
     s->over = false;
     if (!sweep_node(s, noct_bp_root(&w->bp)))
@@ -833,16 +830,16 @@ static int sweep_all(near_sweep *s, uint32_t slots)
     return sort_cand(s, slots) ? 1 : -1;
 }
 
-/* s->cand's pairs sorted by first object (counting), then by second:
+/* s->x.cand's pairs sorted by first object (counting), then by second:
  * false without memory. */
 static bool sort_cand(near_sweep *s, uint32_t slots)
 {
-    noct_pair_list *l = &s->cand, *o = &s->spare;
+    noct_pair_list *l = &s->x.cand, *o = &s->x.spare;
     if (l->n > 1) {
-        if (!grow_idx(&s->idx, &s->capidx, (size_t)slots + 1) ||
+        if (!grow_idx(&s->x.idx, &s->x.capidx, (size_t)slots + 1) ||
             !grow_pair(&o->p, &o->cap, l->n))
             return false;
-        size_t *count = s->idx;
+        size_t *count = s->x.idx;
         memset(count, 0, ((size_t)slots + 1) * sizeof *count);
         for (size_t k = 0; k < l->n; ++k)
             ++count[l->p[k].a.index + 1];
@@ -891,7 +888,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
 {
     noctWorld *w = s->w;
     const noctBroadphase *bp = &w->bp;
-    s->cand.n = 0;
+    s->x.cand.n = 0;
     size_t n = 0;
     double o[3] = {INFINITY, INFINITY, INFINITY}, top[3] = {-INFINITY, -INFINITY, -INFINITY};
     double E = 0;
@@ -934,12 +931,12 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
     const size_t cells = cols * slabs;
     /* (the arrays kept from list to list: see noct_near_kept) */
     int r = -1;
-    if (!grow_near_box(&s->g, &s->capg, 2 * n) ||
-        !grow_idx(&s->idx, &s->capidx, n + (cells + 1) + (cols + 1)) ||
-        !grow_near_key(&s->key, &s->capkey, 2 * n))
+    if (!grow_near_box(&s->x.g, &s->x.capg, 2 * n) ||
+        !grow_idx(&s->x.idx, &s->x.capidx, n + (cells + 1) + (cols + 1)) ||
+        !grow_near_key(&s->x.key, &s->x.capkey, 2 * n))
         return -1;
-    near_box *g = s->g;
-    size_t *cell = s->idx, *start = cell + n, *cb = start + (cells + 1);
+    near_box *g = s->x.g;
+    size_t *cell = s->x.idx, *start = cell + n, *cb = start + (cells + 1);
     memset(start, 0, (cells + 1) * sizeof *start);
     size_t a = 0;
     for (uint32_t i = 0; i < slots; ++i) {
@@ -968,7 +965,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
         start[q + 1] += start[q];
     for (size_t q = 0; q < cols + 1; ++q)
         cb[q] = start[q * slabs];
-    near_key *key = s->key;
+    near_key *key = s->x.key;
     for (size_t q = 0; q < n; ++q)
         key[start[cell[q]]++] = (near_key){g[q].lo[0], q};
     for (size_t q = 0; q < cols; ++q) {
@@ -992,9 +989,9 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
         h[q] = g[key[q].at];
     /* (column q is [cb[q], cb[q + 1]) of h) the sweep's records beside
      * the boxes (see near_run) */
-    if (!grow_near_run(&s->run, &s->caprun, n))
+    if (!grow_near_run(&s->x.run, &s->x.caprun, n))
         goto out;
-    near_run *run = s->run;
+    near_run *run = s->x.run;
     for (size_t q = 0; q < n; ++q)
         run[q] = (near_run){{h[q].lo[0], h[q].lo[1], h[q].hi[1], h[q].lo[2], h[q].hi[2]}, q};
     const double R = s->R;
@@ -1026,7 +1023,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
                 (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |                 \
                 (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))                  \
                 continue;                                                                 \
-            if (!noct_pairs_push(&s->cand, (noctPair){{I->id, 0}, {J->id, 0}}))           \
+            if (!noct_pairs_push(&s->x.cand, (noctPair){{I->id, 0}, {J->id, 0}}))           \
                 goto out;                                                                 \
         }                                                                                 \
         stop = t;                                                                         \
@@ -1092,34 +1089,34 @@ static bool keep_ref(const noctWorld *w, noct_near_kept *k, uint32_t slots)
     return true;
 }
 
-/* The kept list made from the sweeps' pairs in s->cand (which it takes,
- * leaving s->cand empty) and the boxes now: false without memory. */
+/* The kept list made from the sweeps' pairs in s->x.cand (which it takes,
+ * leaving s->x.cand empty) and the boxes now: false without memory. */
 static bool keep_list(near_sweep *s, noct_near_kept *k, uint32_t slots)
 {
-    if (k->cap > 4 * s->cand.n + 4096) { /* (left by a step of far more pairs) */
+    if (k->cap > 4 * s->x.cand.n + 4096) { /* (left by a step of far more pairs) */
         free(k->p);
         k->p = NULL;
         k->cap = 0;
     }
-    if (k->cap < s->cand.n) {
-        void *p = realloc(k->p, s->cand.n * sizeof *k->p);
+    if (k->cap < s->x.cand.n) {
+        void *p = realloc(k->p, s->x.cand.n * sizeof *k->p);
         if (p == NULL)
             return false;
         k->p = p;
-        k->cap = s->cand.n;
+        k->cap = s->x.cand.n;
     }
     if (!keep_ref(s->w, k, slots))
         return false;
-    for (size_t q = 0; q < s->cand.n; ++q) {
-        k->p[q][0] = s->cand.p[q].a.index;
-        k->p[q][1] = s->cand.p[q].b.index;
+    for (size_t q = 0; q < s->x.cand.n; ++q) {
+        k->p[q][0] = s->x.cand.p[q].a.index;
+        k->p[q][1] = s->x.cand.p[q].b.index;
     }
-    k->n = s->cand.n;
-    s->cand.n = 0;
+    k->n = s->x.cand.n;
+    s->x.cand.n = 0;
     return true;
 }
 
-/* This step's candidates, from the kept list's pairs, into s->cand: the
+/* This step's candidates, from the kept list's pairs, into s->x.cand: the
  * sweeps' own tests (the pair's boxes meeting with i's grown by its grow
  * now, near()'s test on the boxes, the filters), so the same pairs as the
  * sweeps would hand over, in their order (the list's, sorted). false
@@ -1128,7 +1125,7 @@ static bool kept_candidates(near_sweep *s, const noct_near_kept *k)
 {
     noctWorld *w = s->w;
     const noctBroadphase *bp = &w->bp;
-    noct_pair_list *c = &s->cand;
+    noct_pair_list *c = &s->x.cand;
     c->n = 0;
     /* room for every pair of the list, made once: the candidates are
      * among them */
@@ -1196,7 +1193,7 @@ static double skin_for(double rate, double G, double least)
 
 /*
  * The candidate pairs of every object that is no sensor, sorted, into
- * s->cand, by the leaves' sweeps or a kept list (made by columns_all(),
+ * s->x.cand, by the leaves' sweeps or a kept list (made by columns_all(),
  * or by the leaves' sweeps with the skin when the columns would test
  * too many pairs): 1; 0 when they cannot be had that way
  * (no exact tree, a box outside the root, or the gathering would cost
@@ -1335,7 +1332,7 @@ static int near_candidates(near_sweep *s)
                           .capref = k->capref, .skin = s->skin, .S = C, .G = G, .W = s->W,
                           .M = s->M, .rate = k->rate, .edits = w->margins.edits,
                           .slots = slots, .hold = hold, .grow = k->grow,
-                          .capgrow = k->capgrow};
+                          .capgrow = k->capgrow, .x = k->x};
     if (!s->keep) {
         /* (the candidates are the sweeps'; the boxes kept, if there is
          * memory for them, to measure the motion over the next step when
@@ -1366,17 +1363,9 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     const bool any = W > 0 || m != NULL;
     /* (the kept scratch, which s holds until it goes back below) */
     noct_near_kept *kk = &w->kept;
-    near_sweep s = {.w = w, .m = m, .W = W, .M = M, .cand = kk->cand, .spare = kk->spare,
-                    .g = kk->g, .capg = kk->capg, .key = kk->key, .capkey = kk->capkey,
-                    .run = kk->run, .caprun = kk->caprun, .idx = kk->idx,
-                    .capidx = kk->capidx};
-    s.cand.n = 0;
-    kk->cand = kk->spare = (noct_pair_list){NULL, 0, 0};
-    kk->g = NULL;
-    kk->key = NULL;
-    kk->run = NULL;
-    kk->idx = NULL;
-    kk->capg = kk->capkey = kk->caprun = kk->capidx = 0;
+    near_sweep s = {.w = w, .m = m, .W = W, .M = M, .x = kk->x};
+    s.x.cand.n = 0;
+    kk->x = (noct_near_scratch){0};
     /* (an empty list may have no array: no pointer arithmetic on NULL) */
     const noct_near_hint *hint_end = w->hints.n > 0 ? w->hints.h + w->hints.n : w->hints.h;
     hint_walk hw = {w->hints.h, hint_end, w->hints.spare, 0, w->hints.capspare,
@@ -1390,19 +1379,19 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     const noct_pair_list *col = &w->events.contact.now;
     const bool solids = w->def.accuracy != NOCT_ACCURACY_BOX;
     size_t at = 0;
-    for (size_t k = 0; by_leaves > 0 && k < s.cand.n; ++k) {
-        const uint32_t i = s.cand.p[k].a.index, j = s.cand.p[k].b.index;
+    for (size_t k = 0; by_leaves > 0 && k < s.x.cand.n; ++k) {
+        const uint32_t i = s.x.cand.p[k].a.index, j = s.x.cand.p[k].b.index;
         /* the box forms of the pairs a few ahead, scattered by the
          * second object, requested */
-        if (solids && k + 8 < s.cand.n) {
-            const uint32_t ahead = s.cand.p[k + 8].b.index;
+        if (solids && k + 8 < s.x.cand.n) {
+            const uint32_t ahead = s.x.cand.p[k + 8].b.index;
             NOCT_PREFETCH((const char *)&w->slot[ahead]);
             NOCT_PREFETCH((const char *)&w->slot[ahead] + 64);
             NOCT_PREFETCH(w->pos[ahead]);
         }
         /* (and its generation, for the pair's record) */
-        if (k + 8 < s.cand.n)
-            NOCT_PREFETCH(&w->bp.gen[s.cand.p[k + 8].b.index]);
+        if (k + 8 < s.x.cand.n)
+            NOCT_PREFETCH(&w->bp.gen[s.x.cand.p[k + 8].b.index]);
         while (at < col->n && (col->p[at].a.index < i ||
                                (col->p[at].a.index == i && col->p[at].b.index < j)))
             ++at;
@@ -1413,7 +1402,7 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
         if (w->ignored.n > 0 && noct_world_ignored(w, i, j))
             continue;
         if (!colliding && solids) {
-            const bool is_near = near_solids(w, i, j, d, s.cand.p[k].a.generation != 0,
+            const bool is_near = near_solids(w, i, j, d, s.x.cand.p[k].a.generation != 0,
                                              hint_of(&hw, i, j), &h);
             hint_keep(&hw, i, j, &h);
             if (!is_near)
@@ -1428,27 +1417,19 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     }
     /* (the scratch kept for the next step, each array unless far larger
      * than this step's candidates and list, or the objects, ask) */
-    const size_t need = s.cand.n + kk->n + noct_bp_slots(&w->bp);
-    if (s.cand.cap > 4 * need + 4096 || s.spare.cap > 4 * need + 4096 ||
-        s.capg > 8 * need + 4096 || s.capkey > 8 * need + 4096 ||
-        s.caprun > 8 * need + 4096 || s.capidx > 8 * need + 4096) {
-        free(s.cand.p);
-        free(s.spare.p);
-        free(s.g);
-        free(s.key);
-        free(s.run);
-        free(s.idx);
+    const size_t need = s.x.cand.n + kk->n + noct_bp_slots(&w->bp);
+    if (s.x.cand.cap > 4 * need + 4096 || s.x.spare.cap > 4 * need + 4096 ||
+        s.x.capg > 8 * need + 4096 || s.x.capkey > 8 * need + 4096 ||
+        s.x.caprun > 8 * need + 4096 || s.x.capidx > 8 * need + 4096) {
+        free(s.x.cand.p);
+        free(s.x.spare.p);
+        free(s.x.g);
+        free(s.x.key);
+        free(s.x.run);
+        free(s.x.idx);
     } else {
-        kk->cand = (noct_pair_list){s.cand.p, 0, s.cand.cap};
-        kk->spare = (noct_pair_list){s.spare.p, 0, s.spare.cap};
-        kk->g = s.g;
-        kk->capg = s.capg;
-        kk->key = s.key;
-        kk->capkey = s.capkey;
-        kk->run = s.run;
-        kk->caprun = s.caprun;
-        kk->idx = s.idx;
-        kk->capidx = s.capidx;
+        kk->x = s.x;
+        kk->x.cand.n = kk->x.spare.n = 0;
     }
     /* else each object by a scan of its leaves or a query */
     const uint32_t slots = any && by_leaves == 0 ? noct_bp_slots(&w->bp) : 0;
@@ -1538,11 +1519,11 @@ void noct_world_free_kept(noctWorld *w)
     free(w->kept.p);
     free(w->kept.ref);
     free(w->kept.grow);
-    free(w->kept.cand.p);
-    free(w->kept.spare.p);
-    free(w->kept.g);
-    free(w->kept.key);
-    free(w->kept.run);
-    free(w->kept.idx);
+    free(w->kept.x.cand.p);
+    free(w->kept.x.spare.p);
+    free(w->kept.x.g);
+    free(w->kept.x.key);
+    free(w->kept.x.run);
+    free(w->kept.x.idx);
     w->kept = (noct_near_kept){0};
 }
