@@ -727,7 +727,8 @@ static bool sweep_leaf(near_sweep *s, const noct_cell *c)
         return true;
     const near_box *g = s->x.g;
     const int ax = near_boxes_axis(g, n);
-    if (!grow_near_key(&s->x.key, &s->x.capkey, 2 * n) || !grow_near_run(&s->x.run, &s->x.caprun, n))
+    if (!grow_near_key(&s->x.key, &s->x.capkey, 2 * n) ||
+        !grow_near_run(&s->x.run, &s->x.caprun, n))
         return false;
     near_key *key = s->x.key;
     for (size_t a = 0; a < n; ++a)
@@ -1023,7 +1024,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
                 (J->hi[1] < I->lo[1] - gr) | (J->lo[1] > I->hi[1] + gr) |                 \
                 (J->hi[2] < I->lo[2] - gr) | (J->lo[2] > I->hi[2] + gr))                  \
                 continue;                                                                 \
-            if (!noct_pairs_push(&s->x.cand, (noctPair){{I->id, 0}, {J->id, 0}}))           \
+            if (!noct_pairs_push(&s->x.cand, (noctPair){{I->id, 0}, {J->id, 0}}))         \
                 goto out;                                                                 \
         }                                                                                 \
         stop = t;                                                                         \
