@@ -930,7 +930,7 @@ static int columns_all(near_sweep *s, uint32_t slots, double S)
     const size_t slabs = n / (4 * cols) + 1;
     const double inv0 = span0 > 0 ? (double)slabs / span0 : 0;
     const size_t cells = cols * slabs;
-    /* (the arrays kept from list to list: see noct_near_kept) */
+    /* (the arrays kept from list to list: see noct_near_scratch) */
     int r = -1;
     if (!grow_near_box(&s->x.g, &s->x.capg, 2 * n) ||
         !grow_idx(&s->x.idx, &s->x.capidx, n + (cells + 1) + (cols + 1)) ||
