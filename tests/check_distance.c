@@ -73,6 +73,7 @@
 #include <noctree/transform.h>
 #include <noctree/world.h>
 
+#include "testgmp.h"
 #include "testutil.h"
 
 /* ---- the test's meshes ----------------------------------------------------- */
@@ -2512,5 +2513,6 @@ static Suite *distance_suite(void)
 
 int main(void)
 {
+    test_gmp_pools();
     return run_suite(distance_suite());
 }

@@ -69,6 +69,7 @@
 #include <noctree/transform.h>
 #include <noctree/world.h>
 
+#include "testgmp.h"
 #include "testutil.h"
 
 
@@ -2628,52 +2629,8 @@ static Suite *surfaces_suite(void)
     return s;
 }
 
-/* GMP's memory, from free lists by size (16-byte classes up to 1 KB,
- * GMP telling the size of each block it frees): the oracle makes and
- * frees a few small rationals per operation, and under valgrind each
- * malloc and free costs some microseconds. The blocks stay on their
- * lists when the suite ends (reachable, not leaked). */
-#define POOL_CLASSES 64
-static void *pool[POOL_CLASSES];
-
-static void *pool_alloc(size_t n)
-{
-    const size_t c = (n + 15) / 16;
-    if (c >= POOL_CLASSES)
-        return malloc(n);
-    void *p = pool[c];
-    if (p != NULL) {
-        memcpy(&pool[c], p, sizeof p);
-        return p;
-    }
-    p = malloc(16 * (c > 0 ? c : 1));
-    ck_assert_ptr_nonnull(p);
-    return p;
-}
-
-static void pool_free(void *p, size_t n)
-{
-    const size_t c = (n + 15) / 16;
-    if (c >= POOL_CLASSES) {
-        free(p);
-        return;
-    }
-    memcpy(p, &pool[c], sizeof p);
-    pool[c] = p;
-}
-
-static void *pool_realloc(void *p, size_t old, size_t n)
-{
-    if ((old + 15) / 16 == (n + 15) / 16 && (n + 15) / 16 < POOL_CLASSES)
-        return p;
-    void *q = pool_alloc(n);
-    memcpy(q, p, old < n ? old : n);
-    pool_free(p, old);
-    return q;
-}
-
 int main(void)
 {
-    mp_set_memory_functions(pool_alloc, pool_realloc, pool_free);
+    test_gmp_pools();
     return run_suite(surfaces_suite());
 }

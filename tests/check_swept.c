@@ -86,6 +86,7 @@
 #include <noctree/mesh.h>
 #include <noctree/narrowphase.h>
 
+#include "testgmp.h"
 #include "testutil.h"
 
 /* ---- the test's meshes ----------------------------------------------------- */
@@ -1680,5 +1681,6 @@ static Suite *swept_suite(void)
 
 int main(void)
 {
+    test_gmp_pools();
     return run_suite(swept_suite());
 }

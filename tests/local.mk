@@ -90,10 +90,10 @@ tests_check_narrowphase_efficient_LDADD = $(efficient_ldadd)
 # against the test's own oracle in GMP rationals: every feature pair's
 # first contact as a tiny linear program, the start and end poses by
 # exact edge-triangle tests and ray parity.
-tests_check_swept_SOURCES = tests/check_swept.c
+tests_check_swept_SOURCES = tests/check_swept.c tests/testgmp.h
 tests_check_swept_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_swept_LDADD = $(check_ldadd) $(GMP_LIBS)
-tests_check_swept_efficient_SOURCES = tests/check_swept.c
+tests_check_swept_efficient_SOURCES = tests/check_swept.c tests/testgmp.h
 tests_check_swept_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_swept_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_swept_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
@@ -102,10 +102,10 @@ tests_check_swept_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
 # collision level, noctDistance(), the world and the readers, against the
 # test's own exact triangle-triangle and point-in-solid oracle in GMP
 # rationals on soups, open boxes, Moebius strips, fans and touching cases.
-tests_check_surfaces_SOURCES = tests/check_surfaces.c
+tests_check_surfaces_SOURCES = tests/check_surfaces.c tests/testgmp.h
 tests_check_surfaces_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_surfaces_LDADD = $(check_ldadd) $(GMP_LIBS)
-tests_check_surfaces_efficient_SOURCES = tests/check_surfaces.c
+tests_check_surfaces_efficient_SOURCES = tests/check_surfaces.c tests/testgmp.h
 tests_check_surfaces_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_surfaces_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_surfaces_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
@@ -114,10 +114,10 @@ tests_check_surfaces_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
 # oracle in GMP rationals: the exact squared distance between every pair of
 # placed triangles (vertex-triangle and edge-edge, edges crossing
 # triangles), the exact level's verdict for meeting solids.
-tests_check_distance_SOURCES = tests/check_distance.c
+tests_check_distance_SOURCES = tests/check_distance.c tests/testgmp.h
 tests_check_distance_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_distance_LDADD = $(check_ldadd) $(GMP_LIBS)
-tests_check_distance_efficient_SOURCES = tests/check_distance.c
+tests_check_distance_efficient_SOURCES = tests/check_distance.c tests/testgmp.h
 tests_check_distance_efficient_CPPFLAGS = $(efficient_cppflags)
 tests_check_distance_efficient_CFLAGS = $(check_cflags) $(GMP_CFLAGS)
 tests_check_distance_efficient_LDADD = $(efficient_ldadd) $(GMP_LIBS)
@@ -399,9 +399,9 @@ AM_TESTS_ENVIRONMENT = \
 VALGRIND = valgrind
 VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
 valgrind_first = tests/check-distance tests/check-distance-efficient \
-	tests/check-surfaces tests/check-surfaces-efficient \
 	tests/check-near tests/check-near-efficient \
 	tests/check-world tests/check-world-efficient \
+	tests/check-surfaces tests/check-surfaces-efficient \
 	tests/check-swept tests/check-swept-efficient \
 	tests/check-meshio tests/check-meshio-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
