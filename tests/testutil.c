@@ -10,8 +10,7 @@ TCase *test_case(Suite *s, const char *name, int seconds, const char *tags)
     TCase *tc = tcase_create(name);
     if (tags != NULL)
         tcase_set_tags(tc, tags);
-    if (seconds > 0)
-        tcase_set_timeout(tc, seconds);
+    tcase_set_timeout(tc, seconds > 0 ? seconds : TEST_DEFAULT_TIMEOUT);
     suite_add_tcase(s, tc);
     return tc;
 }

@@ -26,8 +26,14 @@
             ck_abort_msg("%s:%d: expected %s", __FILE__, __LINE__, #cond);  \
     } while (0)
 
+/* The timeout of a test case that names none: Check's own default, 4 s,
+ * is too short for a test of 2 s under AddressSanitizer on a loaded CI
+ * machine (check-world-efficient's handles_through_churn timed out so). A
+ * test that hangs still fails, in a minute. */
+#define TEST_DEFAULT_TIMEOUT 60
+
 /* A new test case of s, named name, with a timeout of seconds (0:
- * Check's default) and Check's tags (NULL for none): "slow" ones are left
+ * TEST_DEFAULT_TIMEOUT) and Check's tags (NULL for none): "slow" ones are left
  * out of the runs under valgrind, "death" ones (requires clauses that
  * must abort) where fork() is off (CK_EXCLUDE_TAGS). */
 TCase *test_case(Suite *s, const char *name, int seconds, const char *tags);
