@@ -402,6 +402,37 @@ long double ideal_distance(const ideal *a, const ideal *b)
     return best;
 }
 
+/* Piece j of g's axis-aligned bounding box. */
+static void piece_aabb(const ideal *g, int j, long double lo[3], long double hi[3])
+{
+    const obb b = piece_box(g, j);
+    for (int k = 0; k < 3; ++k) {
+        long double e = 0;
+        for (int i = 0; i < 3; ++i)
+            e += fabsl(b.u[i][k]) * b.h[i];
+        lo[k] = b.c[k] - e;
+        hi[k] = b.c[k] + e;
+    }
+}
+
+long double ideal_distance_lower(const ideal *a, const ideal *b)
+{
+    long double best = 1e300L;
+    for (int i = 0; i < a->npieces; ++i)
+        for (int j = 0; j < b->npieces; ++j) {
+            long double alo[3], ahi[3], blo[3], bhi[3], s = 0;
+            piece_aabb(a, i, alo, ahi);
+            piece_aabb(b, j, blo, bhi);
+            for (int k = 0; k < 3; ++k) {
+                const long double gap = fmaxl(blo[k] - ahi[k], alo[k] - bhi[k]);
+                if (gap > 0)
+                    s += gap * gap;
+            }
+            best = fminl(best, sqrtl(s));
+        }
+    return best;
+}
+
 /* ---- what overlap queries found ---------------------------------------------------- */
 
 bool collect(void *context, noctObjectId id, void *user)

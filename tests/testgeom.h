@@ -91,6 +91,13 @@ const noctMesh *mesh_of(const scene *s, int i, const noctMesh *ell);
  * along the edge (a convex function) by ternary search. */
 long double ideal_distance(const ideal *a, const ideal *b);
 
+/* A lower bound on the distance between two objects' ideal solids, and so
+ * on ideal_distance() (which is never below it: its points lie on a's
+ * edges), at a few dozen operations: the gap between the pieces'
+ * axis-aligned bounding boxes, each piece's box inside its own. In long
+ * double, off by less than 2^-50 of the coordinates. */
+long double ideal_distance_lower(const ideal *a, const ideal *b);
+
 /* A #noctObjectFcn for a found: the object's user data must be its handle
  * (random_scene() makes it so). */
 bool collect(void *context, noctObjectId id, void *user);
