@@ -497,9 +497,53 @@ static bool boxes_meet(const double *a, const double *b)
     return true;
 }
 
+/* The sign of orient3d(a, b, c, d) below, in doubles, when the rounding
+ * cannot have changed it, else 0: Shewchuk's first filter, the
+ * determinant's error at most (7 + 56 2^-53) 2^-53 of its permanent for
+ * products in the normal range; 2^-1060 more covers those below it. */
+static int orient3d_sure(const double *a, const double *b, const double *c, const double *d)
+{
+    double u[3], v[3], w[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = b[k] - a[k];
+        v[k] = c[k] - a[k];
+        w[k] = d[k] - a[k];
+    }
+    const double det = w[0] * (u[1] * v[2] - u[2] * v[1]) + w[1] * (u[2] * v[0] - u[0] * v[2]) +
+                       w[2] * (u[0] * v[1] - u[1] * v[0]);
+    const double perm = fabs(w[0]) * (fabs(u[1] * v[2]) + fabs(u[2] * v[1])) +
+                        fabs(w[1]) * (fabs(u[2] * v[0]) + fabs(u[0] * v[2])) +
+                        fabs(w[2]) * (fabs(u[0] * v[1]) + fabs(u[1] * v[0]));
+    if (!isfinite(perm))
+        return 0;
+    const double bound = 0x1p-49 * perm + 0x1p-1060;
+    return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
+/* Are q's three vertices surely on one side of p's plane (then the
+ * triangles do not meet)? */
+static bool one_side(const double *const p[3], const double *const q[3])
+{
+    const int s0 = orient3d_sure(p[0], p[1], p[2], q[0]);
+    return s0 != 0 && orient3d_sure(p[0], p[1], p[2], q[1]) == s0 &&
+           orient3d_sure(p[0], p[1], p[2], q[2]) == s0;
+}
+
+/* o's vertex v in doubles. */
+static const double *dv(const oobj *o, uint32_t v)
+{
+    return &o->p[3 * v];
+}
+
 static bool tris_meet(const oobj *a, size_t i, const oobj *b, size_t j)
 {
     if (!boxes_meet(a->box[i], b->box[j]))
+        return false;
+    /* most pairs whose boxes meet: one beside the other's plane, sure in
+     * doubles, before the rationals */
+    const double *const PA[3] = {dv(a, a->t[i][0]), dv(a, a->t[i][1]), dv(a, a->t[i][2])};
+    const double *const PB[3] = {dv(b, b->t[j][0]), dv(b, b->t[j][1]), dv(b, b->t[j][2])};
+    if (one_side(PA, PB) || one_side(PB, PA))
         return false;
     mpq_srcptr A[3] = {ov(a, a->t[i][0]), ov(a, a->t[i][1]), ov(a, a->t[i][2])};
     mpq_srcptr B[3] = {ov(b, b->t[j][0]), ov(b, b->t[j][1]), ov(b, b->t[j][2])};
@@ -850,7 +894,16 @@ static void oracle_d2(mpq_t r, const oobj *a, const oobj *b)
                                             a->box[i][k] - b->box[j][3 + k]));
                     g2 += g * g;
                 }
-                if (g2 * (1 - 1e-9) > mpq_get_d(r) * (1 + 1e-9))
+                const double up = nextafter(mpq_get_d(r), INFINITY); /* (get_d truncates) */
+                if (g2 * (1 - 1e-9) > up * (1 + 1e-9))
+                    continue;
+                /* the triangles' own lower bound in doubles (testutil.h) */
+                const double *const PA[3] = {dv(a, a->t[i][0]), dv(a, a->t[i][1]),
+                                             dv(a, a->t[i][2])};
+                const double *const PB[3] = {dv(b, b->t[j][0]), dv(b, b->t[j][1]),
+                                             dv(b, b->t[j][2])};
+                const double L = test_tri_distance_lower(PA, PB);
+                if (L * L * (1 - 0x1p-50) - 0x1p-1060 > up)
                     continue;
             }
             mpq_srcptr A[3] = {ov(a, a->t[i][0]), ov(a, a->t[i][1]), ov(a, a->t[i][2])};

@@ -303,3 +303,75 @@ noctMesh *make_tetrahedron(void)
     ck_assert_int_eq(noctMeshCreate(v, 4, sizes, 4, idx, &m, NULL), NOCT_OK);
     return m;
 }
+
+static void sub3(const double *p, const double *q, double out[3])
+{
+    for (int k = 0; k < 3; ++k)
+        out[k] = p[k] - q[k];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* (testutil.h) */
+double test_tri_distance_lower(const double *const a[3], const double *const b[3])
+{
+    double M = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            M = fmax(M, fmax(fabs(a[i][k]), fabs(b[i][k])));
+    double u[14][3], ea[3][3], eb[3][3];
+    for (int i = 0; i < 3; ++i) {
+        sub3(a[(i + 1) % 3], a[i], ea[i]);
+        sub3(b[(i + 1) % 3], b[i], eb[i]);
+    }
+    int n = 0;
+    cross3(ea[0], ea[1], u[n++]);
+    cross3(eb[0], eb[1], u[n++]);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            cross3(ea[i], eb[j], u[n++]);
+    double best = INFINITY;
+    int bi = 0, bj = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double d[3];
+            sub3(b[j], a[i], d);
+            const double q = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (q < best) {
+                best = q;
+                bi = i;
+                bj = j;
+            }
+        }
+    sub3(b[bj], a[bi], u[n++]);
+    const double E = 0x1p-49 * M + 0x1p-1070;
+    double lower = 0;
+    for (int t = 0; t < n; ++t) {
+        const double big = fmax(fabs(u[t][0]), fmax(fabs(u[t][1]), fabs(u[t][2])));
+        if (!(big > 0) || !isfinite(big))
+            continue;
+        double v[3];
+        for (int k = 0; k < 3; ++k)
+            v[k] = u[t][k] / big;
+        double alo = INFINITY, ahi = -INFINITY, blo = INFINITY, bhi = -INFINITY;
+        for (int i = 0; i < 3; ++i) {
+            const double pa = v[0] * a[i][0] + v[1] * a[i][1] + v[2] * a[i][2];
+            const double pb = v[0] * b[i][0] + v[1] * b[i][1] + v[2] * b[i][2];
+            alo = fmin(alo, pa);
+            ahi = fmax(ahi, pa);
+            blo = fmin(blo, pb);
+            bhi = fmax(bhi, pb);
+        }
+        const double gap = fmax(blo - ahi, alo - bhi) * (1 - 0x1p-50) - 2 * E;
+        if (!(gap > 0))
+            continue;
+        const double norm = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * (1 + 0x1p-50);
+        lower = fmax(lower, gap / norm * (1 - 0x1p-50));
+    }
+    return lower;
+}

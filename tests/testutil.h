@@ -132,4 +132,21 @@ long double test_point_face2(const long double p[3], const long double a[3],
  * double; the caller scales coordinates near 1. */
 long double test_tri_tri2(long double x[3][3], long double y[3][3]);
 
+/*
+ * A lower bound on the distance between triangles a and b (their
+ * vertices, placed), 0 when none is found, in doubles. For any direction
+ * u, the gap between the two triangles' projections onto u, over |u|, is
+ * at most their distance, whatever u is (u need not come out of its
+ * formula exactly). The directions tried: the two normals, the nine
+ * edges' cross products, and the line through the nearest two vertices,
+ * among which is, up to rounding, the direction of the closest points
+ * whenever a vertex meets a face, two edges meet, or two vertices meet.
+ * Each u is scaled to a largest component of 1, so each projection u.p
+ * errs by at most 3 (3 2^-53) M (M the largest coordinate) plus 3 2^-1074
+ * for products below the normal range: E = 2^-49 M + 2^-1070 covers it;
+ * the gap's subtraction and the norm's square root err by relative
+ * 2^-52 or so, taken off with 2^-50 each.
+ */
+double test_tri_distance_lower(const double *const a[3], const double *const b[3]);
+
 #endif /* NOCT_TESTS_TESTUTIL_H */
