@@ -398,12 +398,10 @@ AM_TESTS_ENVIRONMENT = \
 # suites to start are short and the lanes end together.
 VALGRIND = valgrind
 VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
-valgrind_first = tests/check-distance tests/check-distance-efficient \
-	tests/check-near tests/check-near-efficient \
-	tests/check-world tests/check-world-efficient \
-	tests/check-surfaces tests/check-surfaces-efficient \
-	tests/check-swept tests/check-swept-efficient \
-	tests/check-meshio tests/check-meshio-efficient \
+valgrind_first = tests/check-world tests/check-world-efficient \
+	tests/check-distance tests/check-distance-efficient \
+	tests/check-surfaces tests/check-swept tests/check-swept-efficient \
+	tests/check-near tests/check-near-efficient tests/check-surfaces-efficient \
 	tests/check-broadphase tests/check-broadphase-efficient \
 	tests/check-predicates \
 	tests/check-distance-world tests/check-distance-world-efficient \
