@@ -202,6 +202,10 @@ struct noctBroadphase {
     double reach;             /* this search: how far any box may have
                                  moved on an axis since the last, rounding
                                  included */
+    double owed_reach;        /* the reach of the frames whose pairs the
+                                 world found without a search
+                                 (noct_bp_skip_search), which the next
+                                 search adds to its own */
     noct_pair_list tested;    /* the pair search's pairs */
     noctProxyPair *sorted;    /* radix sort scratch */
     size_t capsorted;
@@ -262,6 +266,12 @@ static inline const struct noct_cell *noct_bp_leaf(const noctBroadphase *bp, uin
 /* Has any live proxy a filter that is not all bits (else every pair
  * passes noct_filters_pass())? */
 static inline bool noct_bp_any_filter(const noctBroadphase *bp) { return bp->filtered > 0; }
+/* Does the pair search test every pair of a leaf (N big: the report's
+ * exhaustive algorithm)? */
+static inline bool noct_bp_exhaustive(const noctBroadphase *bp)
+{
+    return bp->N == NOCT_N_EXHAUSTIVE;
+}
 /* The per-slot stamps, for a use that starts with noct_bp_new_epoch(). */
 static inline uint32_t *noct_bp_marks(const noctBroadphase *bp) { return bp->mark; }
 /* The client rebuilds the tree every step: no merge invariant is kept. */
@@ -651,6 +661,14 @@ void noct_bp_add_reach(noctBroadphase *bp, double travel);
 /* Every pair within reach, into the found list (noct_bp_found()), sorted
  * by its first proxy. NOMEM: the leaves' near pairs may be half made. */
 noctStatus noct_bp_find_pairs(noctBroadphase *bp);
+
+/* The frame's pairs are found by the client instead of a search (the
+ * world's margin candidates hold every overlapping pair: world_near.c):
+ * the found list, emptied, for it to fill, sorted by first proxy, with
+ * the pairs a search would find; the frame's reach is owed to the next
+ * search (the leaves' budgets are spent by it then), and candidates, the
+ * pairs the client considered, counted as a search's. */
+noct_pair_list *noct_bp_skip_search(noctBroadphase *bp, uint64_t candidates);
 
 static inline const noct_pair_list *noct_bp_found(const noctBroadphase *bp)
 {

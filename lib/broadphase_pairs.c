@@ -427,8 +427,20 @@ static noctStatus search(noctBroadphase *bp, octNode *n, bool ahead)
 
 /* began = colliding - previous, ended = previous - colliding (sorted). */
 
+noct_pair_list *noct_bp_skip_search(noctBroadphase *bp, uint64_t candidates)
+{
+    bp->owed_reach += bp->reach;
+    bp->c.candidate_pairs += candidates;
+    bp->tested.n = 0;
+    return &bp->tested;
+}
+
 noctStatus noct_bp_search(noctBroadphase *bp)
 {
+    /* Every leaf's budget is spent by the reach of each frame since its
+     * last search, the frames without a search too. */
+    bp->reach += bp->owed_reach;
+    bp->owed_reach = 0;
     bp->tested.n = 0;
     if (bp->root != NULL && NOCT_NODE_IS_SPLIT(bp->root))
         return search(bp, bp->root, bp->nslots >= PREFETCH_OBJECTS);

@@ -211,6 +211,10 @@ typedef struct noct_near_kept {
     bool valid;  /* the pairs may serve */
     bool ref_ok; /* ref holds the boxes of age steps ago (with the pairs,
                     or alone while objects move too fast for a list) */
+    /* this step's candidates were made before its pair search
+     * (noct_world_near_pairs()): 0 not, 1 none could be (each object
+     * queries), 2 they are in x.cand */
+    uint8_t early;
     /* a step's scratch, kept for the next: each object's grow, and the
      * rest (noct_near_scratch; while a step runs, near_sweep holds it) */
     double *grow;
@@ -549,6 +553,16 @@ noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list
  * step's): the near record is rotated, now is found, and with events its
  * differences. On failure (NOMEM) now and before are as they were. */
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err);
+
+/* Before a step's pair search, when it would find no pair that the near
+ * stage's candidates do not hold (a margin, no sensor, a leaf's pairs
+ * not all tested): the candidates made now rather than in the near
+ * stage, and, when they could be made, the pair search's pairs taken from
+ * them (the candidates whose boxes overlap), its search skipped. 1: the
+ * pairs are found; 0: the search must find them; -1 without memory (the
+ * step fails). noct_world_near_forget() after a step that failed. */
+int noct_world_near_pairs(noctWorld *w);
+void noct_world_near_forget(noctWorld *w);
 
 /* Frees the near stage's kept list and scratch (w->kept) and empties it. */
 void noct_world_free_kept(noctWorld *w);

@@ -23,6 +23,9 @@
  * settles most pairs soonest, which changes no answer), and else the
  * distance of their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
+ * The candidates hold every pair whose boxes overlap: a step of one
+ * sub-step in a world without sensors makes them before its pair search
+ * and takes the search's pairs from them (noct_world_near_pairs()).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
  */
@@ -1347,6 +1350,60 @@ static int near_candidates(near_sweep *s)
     return kept_candidates(s, k) ? 1 : -1;
 }
 
+/*
+ * The step's pairs from its near candidates. Every pair whose boxes
+ * overlap (closed, as the search's) is a candidate: the candidates are
+ * every pair of objects that are no sensors whose boxes meet with i's
+ * grown by a grow of at least 0 and pass near()'s test on the boxes (which
+ * boxes that overlap pass: their gap is 0) and the filters (the search's
+ * own); the candidates' first generation says whether their boxes
+ * overlap, tested on the same boxes as the search would. So, in a world
+ * without sensors, those candidates are the search's pairs, once each
+ * (i < j, as it hands them), sorted by (i, j) where the search sorts them
+ * by i alone: the narrowphase's colliding pairs are the same, and sorted
+ * the same once each object's partners are. The leaves' sweeps of the
+ * search are left out, not the tree's maintenance (the queries and the
+ * steps that cannot make the candidates this way use the tree). The
+ * exhaustive mode (N big) keeps its search: it is the report's
+ * algorithm, to be measured.
+ */
+int noct_world_near_pairs(noctWorld *w)
+{
+    noct_near_kept *kk = &w->kept;
+    kk->early = 0;
+    if (w->margins.stale)
+        noct_world_refresh_margins(w);
+    const double W = w->def.margin;
+    const double *m = w->margins.count > 0 ? w->margins.of : NULL;
+    if (!(W > 0 || m != NULL) || w->nsensors > 0 || noct_bp_exhaustive(&w->bp))
+        return 0;
+    near_sweep s = {.w = w, .m = m, .W = W, .M = m != NULL ? w->margins.max : 0, .x = kk->x};
+    s.x.cand.n = 0;
+    kk->x = (noct_near_scratch){0};
+    const int r = near_candidates(&s);
+    kk->x = s.x;
+    if (r < 0)
+        return -1;
+    kk->early = (uint8_t)(r + 1);
+    if (r == 0)
+        return 0;
+    const noct_pair_list *c = &kk->x.cand;
+    noct_pair_list *found = noct_bp_skip_search(&w->bp, kk->valid ? kk->n : c->n);
+    for (size_t q = 0; q < c->n; ++q) {
+        if (!c->p[q].a.generation)
+            continue;
+        if (!noct_pairs_push(found, (noctProxyPair){{c->p[q].a.index, 0},
+                                                   {c->p[q].b.index, 0}}))
+            return -1;
+    }
+    return 1;
+}
+
+void noct_world_near_forget(noctWorld *w)
+{
+    w->kept.early = 0;
+}
+
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
 {
     noct_event_record *e = &w->events.near;
@@ -1365,14 +1422,18 @@ noctStatus noct_world_stage_near(noctWorld *w, noctError *err)
     /* (the kept scratch, which s holds until it goes back below) */
     noct_near_kept *kk = &w->kept;
     near_sweep s = {.w = w, .m = m, .W = W, .M = M, .x = kk->x};
-    s.x.cand.n = 0;
+    /* (the candidates, if made before the pair search, are kept) */
+    const int early = kk->early;
+    kk->early = 0;
+    if (early != 2)
+        s.x.cand.n = 0;
     kk->x = (noct_near_scratch){0};
     /* (an empty list may have no array: no pointer arithmetic on NULL) */
     const noct_near_hint *hint_end = w->hints.n > 0 ? w->hints.h + w->hints.n : w->hints.h;
     hint_walk hw = {w->hints.h, hint_end, w->hints.spare, 0, w->hints.capspare,
                     !any};
     noct_near_hint h;
-    const int by_leaves = any ? near_candidates(&s) : 0;
+    const int by_leaves = early > 0 ? early - 1 : any ? near_candidates(&s) : 0;
     if (by_leaves < 0)
         st = NOCT_ERR_NOMEM;
     /* the step's colliding pairs, sorted as the candidates are, walked

@@ -9,9 +9,11 @@
  *   2. placements before the motion: tracks (world_track.c), then spin;
  *   3. per sub-step (substep()): the broadphase's frame begins; motion
  *      (world_motion.c) and the reach it gives the pair search;
- *      maintenance through the broadphase; the pair search, the
- *      narrowphase (world_narrow.c), sensors and events (world_events.c);
- *      after the last, the near pairs (world_near.c); the response;
+ *      maintenance through the broadphase; the pair search (or, with a
+ *      margin, the near pairs' candidates in its stead:
+ *      noct_world_near_pairs()), the narrowphase (world_narrow.c), sensors
+ *      and events (world_events.c); after the last, the near pairs
+ *      (world_near.c); the response;
  *   4. a step that succeeded keeps its placements; one that failed gives
  *      back everything (fail_step()), one call per record.
  */
@@ -189,7 +191,7 @@ static noctStatus stage_spin(noctWorld *w, noctError *err)
 
 static noctStatus stage_motion(noctWorld *w, double fraction, bool first, noctError *err);
 static noctStatus stage_maintenance(noctWorld *w, bool moving);
-static noctStatus stage_pairs(noctWorld *w, size_t *from_began);
+static noctStatus stage_pairs(noctWorld *w, bool near, size_t *from_began);
 
 /* One step, or one of k sub-steps (fraction = 1/k of the velocity); the
  * near pairs after the last. */
@@ -218,7 +220,7 @@ static noctStatus substep(noctWorld *w, double fraction, bool first, bool last,
                          noctStatusString(st));
     const double t2 = noct_seconds();
     size_t from_began;
-    st = stage_pairs(w, &from_began);
+    st = stage_pairs(w, first && last && w->margins.near, &from_began);
     if (st != NOCT_OK)
         return noct_fail(err, st, -1, 0, "pair search: %s; no object moved",
                          noctStatusString(st));
@@ -287,14 +289,18 @@ static noctStatus stage_maintenance(noctWorld *w, bool moving)
 
 /* The pair search, narrowphase and events: the contact and sensor records
  * are rotated, the broadphase's pairs go through the narrowphase, the
- * sensors' pairs are split off, and what began and ended is found. On
- * failure the records are as before. */
-static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
+ * sensors' pairs are split off, and what began and ended is found. near:
+ * the step's near pairs follow (a step of one sub-step), whose candidates
+ * may hold every pair the search would find (noct_world_near_pairs()):
+ * then they are made first, and the search is left out. On failure the
+ * records are as before. */
+static noctStatus stage_pairs(noctWorld *w, bool near, size_t *from_began)
 {
     noct_events *e = &w->events;
     noct_record_rotate(&e->contact);
     noct_record_rotate(&e->sensor);
-    noctStatus st = noct_bp_find_pairs(&w->bp);
+    const int early = near ? noct_world_near_pairs(w) : 0;
+    noctStatus st = early < 0 ? NOCT_ERR_NOMEM : early > 0 ? NOCT_OK : noct_bp_find_pairs(&w->bp);
     if (st == NOCT_OK)
         st = noct_world_narrow(w, noct_bp_found(&w->bp), &e->contact.now);
     *from_began = e->contact.began.n;
@@ -324,6 +330,7 @@ static noctStatus stage_pairs(noctWorld *w, size_t *from_began)
  * of k > 1 sub-steps). */
 static void fail_step(noctWorld *w, uint64_t k)
 {
+    noct_world_near_forget(w);
     noct_world_roll_back(w, w->moved, w->touched);
     noct_world_unplace(w);
     noct_record_fail(&w->events.contact, k > 1);

@@ -1468,6 +1468,175 @@ START_TEST(kept_candidates_against_a_fresh_world)
 }
 END_TEST
 
+/* The colliding pairs of world w (stepped) and of a world made afresh
+ * from its objects as they are now, without any margin (its world margin
+ * and every object's 0), stepped once without motion: its pairs come from
+ * the pair search alone. The same pairs, bit for bit. Returns them. */
+static size_t colliding_as_fresh(noctWorld *w, const noctWorldDef *def, int step)
+{
+    enum { SLOTS = 256 };
+    noctWorldDef d = *def;
+    d.effects = NOCT_EFFECT_EVENTS;
+    d.margin = 0;
+    noctWorld *f;
+    ck_assert_int_eq(noctWorldCreate(&d, &f, NULL), NOCT_OK);
+    uint32_t map[SLOTS];
+    noctObjectId a[SLOTS], b[SLOTS];
+    int n = 0;
+    for (uint32_t s = 0; s < SLOTS; ++s) {
+        map[s] = UINT32_MAX;
+        noctObjectId id;
+        if (noctWorldObjectAt(w, s, &id) != NOCT_OK)
+            continue;
+        noctObjectDef o = noctDefaultObjectDef();
+        o.mesh = noctWorldGetMesh(w, id);
+        if (o.mesh == NULL)
+            ck_assert_int_eq(noctWorldGetHalfExtents(w, id, o.half_extents), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetTransform(w, id, &o.transform), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetSensor(w, id, &o.sensor), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetFilter(w, id, &o.category, &o.mask), NOCT_OK);
+        ck_assert_int_eq(noctWorldGetType(w, id, &o.type), NOCT_OK);
+        ck_assert_int_eq(noctWorldCreateObject(f, &o, &b[n], NULL), NOCT_OK);
+        map[s] = b[n].index;
+        a[n++] = id;
+    }
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            if (noctWorldPairIgnored(w, a[i], a[j]))
+                ck_assert_int_eq(noctWorldIgnorePair(f, b[i], b[j], true, NULL), NOCT_OK);
+    ck_assert_int_eq(noctWorldStep(f, NULL), NOCT_OK);
+    const noctPair *p, *q;
+    const size_t np = noctWorldColliding(w, &p), nq = noctWorldColliding(f, &q);
+    ck_assert_msg(np == nq, "step %d: %zu colliding pairs, %zu in the fresh world", step, np,
+                  nq);
+    for (size_t k = 0; k < np; ++k)
+        ck_assert_msg(map[p[k].a.index] == q[k].a.index && map[p[k].b.index] == q[k].b.index,
+                      "step %d: colliding pair (%u, %u), in the fresh world (%u, %u)", step,
+                      p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
+    noctWorldDestroy(f);
+    return np;
+}
+
+/*
+ * A step with a margin, in a world without sensors, takes its colliding
+ * pairs from the near stage's candidates and leaves the pair search out
+ * (world_near.c, noct_world_near_pairs()); the search comes back when a
+ * sensor is made or the last margin goes, with the reach of the steps it
+ * left out (the leaves' kept pairs and budgets are from before them).
+ * Against a world made afresh after every step without any margin, whose
+ * pairs the search alone finds: the same colliding pairs, over random
+ * scenes of box primitives and box meshes drifting at two speeds (lists
+ * kept, and dropped), whose own margins are set in some runs of steps and
+ * all cleared in others, with a sensor for a few steps now and then,
+ * teleports, removals and objects made anew, at N 1 to 64 and big, at the
+ * box and exact accuracies. The leaves' counters show that the steps with
+ * a margin left the search out.
+ */
+START_TEST(colliding_pairs_with_a_margin_against_the_search)
+{
+    const int rounds = _i ? 20 : 4;
+    size_t pairs = 0, skipped = 0;
+    for (int round = 0; round < rounds; ++round) {
+        noctMesh *cube;
+        ck_assert_int_eq(noctMeshCreateBox(0.3, 0.2, 0.25, &cube, NULL), NOCT_OK);
+        noctWorldDef def = noctDefaultWorldDef();
+        def.N = round % 5 == 4 ? NOCT_N_EXHAUSTIVE : 1 << 2 * (round % 4);
+        def.accuracy = round % 2 ? NOCT_ACCURACY_BOX : NOCT_ACCURACY_EXACT;
+        def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
+        noctWorld *w;
+        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        enum { NO = 60 };
+        noctObjectId id[NO];
+        bool alive[NO];
+        const int n = 30 + (int)(30 * uniform());
+        for (int i = 0; i < n; ++i) {
+            noctObjectDef d = noctDefaultObjectDef();
+            if (uniform() < 0.3)
+                d.mesh = cube;
+            else
+                for (int k = 0; k < 3; ++k)
+                    d.half_extents[k] = 0.1 + 0.3 * uniform();
+            for (int k = 0; k < 3; ++k) {
+                d.transform.p[k] = 5 * uniform();
+                d.velocity[k] = 0.02 * (2 * uniform() - 1);
+            }
+            if (uniform() < 0.2)
+                d.category = random_bits();
+            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+            alive[i] = true;
+        }
+        int sensor = -1;
+        for (int step = 0; step < 90; ++step) {
+            /* margins on in steps [0, 30) and [45, 90) but for a few
+             * objects in [60, 75); a sensor in [5, 9) and [50, 54); fast
+             * in [36, 45) and [81, 90) */
+            const bool margins = step < 30 || step >= 45;
+            const double speed = step % 45 >= 36 ? 0.3 : round % 2 ? 0.005 : 0.02;
+            for (int i = 0; i < n; ++i) {
+                if (!alive[i])
+                    continue;
+                if (step % 15 == 0 || step % 9 == 0) {
+                    const double m = !margins || (step >= 60 && step < 75 && i % 4 != 0)
+                                         ? 0
+                                         : 0.3 * uniform();
+                    ck_assert_int_eq(noctWorldSetMargin(w, id[i], m, NULL), NOCT_OK);
+                }
+                noctTransform x;
+                ck_assert_int_eq(noctWorldGetTransform(w, id[i], &x), NOCT_OK);
+                bool out = false;
+                for (int k = 0; k < 3; ++k)
+                    out |= x.p[k] < -1 || x.p[k] > 6;
+                /* (a teleport makes a large reach: every leaf is swept) */
+                if (out || (step % 10 == 3 && uniform() < 0.05)) { /* back in, or a teleport */
+                    for (int k = 0; k < 3; ++k)
+                        x.p[k] = 5 * uniform();
+                    ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                }
+                if (step % 9 == 0) {
+                    double v[3];
+                    for (int k = 0; k < 3; ++k)
+                        v[k] = speed * (2 * uniform() - 1);
+                    ck_assert_int_eq(noctWorldSetVelocity(w, id[i], v, NULL), NOCT_OK);
+                }
+            }
+            if (step == 5 || step == 50) {
+                for (sensor = (int)(n * uniform()); !alive[sensor]; sensor = (sensor + 1) % n)
+                    ;
+                ck_assert_int_eq(noctWorldSetSensor(w, id[sensor], true, NULL), NOCT_OK);
+            }
+            if ((step == 9 || step == 54) && alive[sensor])
+                ck_assert_int_eq(noctWorldSetSensor(w, id[sensor], false, NULL), NOCT_OK);
+            if (uniform() < 0.2) { /* gone, or made anew */
+                const int i = (int)(n * uniform());
+                if (alive[i]) {
+                    ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+                } else {
+                    noctObjectDef d = noctDefaultObjectDef();
+                    d.mesh = cube;
+                    for (int k = 0; k < 3; ++k)
+                        d.transform.p[k] = 5 * uniform();
+                    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                }
+                alive[i] = !alive[i];
+            }
+            noctWorldCounters c0, c1;
+            noctWorldGetCounters(w, &c0);
+            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
+            noctWorldGetCounters(w, &c1);
+            skipped += c1.leaves_visited == c0.leaves_visited &&
+                       c1.leaves_skipped == c0.leaves_skipped;
+            pairs += colliding_as_fresh(w, &def, step);
+        }
+        noctWorldDestroy(w);
+        noctMeshDestroy(cube);
+    }
+    ck_assert_uint_gt(pairs, (size_t)rounds * 300);
+    /* (most steps with a margin, not all: sensors, the exhaustive
+     * rounds, objects too fast for a list in some) */
+    ck_assert_uint_gt(skipped, (size_t)rounds * 30);
+}
+END_TEST
+
 /*
  * Kept proofs at the extreme scales (2^-200 and 2^200; the hints' floats
  * hold coefficients, which have no scale, and axes, which may overflow or
@@ -1606,6 +1775,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, kept_candidates_against_geometry, 0, 1);
     tcase_add_loop_test(tc, kept_candidates_against_a_fresh_world, 0, 1);
     tcase_add_test(tc, kept_candidates_of_a_crowded_column);
+    tcase_add_loop_test(tc, colliding_pairs_with_a_margin_against_the_search, 0, 1);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
@@ -1619,6 +1789,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(full, kept_proofs_against_geometry, 1, 2);
     tcase_add_loop_test(full, kept_candidates_against_geometry, 1, 2);
     tcase_add_loop_test(full, kept_candidates_against_a_fresh_world, 1, 2);
+    tcase_add_loop_test(full, colliding_pairs_with_a_margin_against_the_search, 1, 2);
     return s;
 }
 

@@ -34,7 +34,11 @@
  *    about one step in four: the sweep keeps the pairs within a margin of
  *    four steps' reach, and while no object enters or leaves the leaf and
  *    the margin lasts, only those pairs are tested; a leaf without such
- *    pairs is skipped while its boxes' least distance apart lasts;
+ *    pairs is skipped while its boxes' least distance apart lasts. A
+ *    step with a margin (noctWorldNear()) in a world without sensors
+ *    finds these pairs among the candidates of its near pairs instead,
+ *    which hold every pair whose boxes overlap, and leaves this search
+ *    out (but for N big, the exhaustive algorithm): the same pairs;
  * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every moving object in at
@@ -435,7 +439,11 @@ typedef struct noctWorldCounters {
                                     by pair, than the objects have moved
                                     since (and none came or went). */
     uint64_t candidate_pairs;  /**< Pair search: pairs in a swept leaf,
-                                    and near pairs tested. */
+                                    and near pairs tested; in a step that
+                                    took its pairs from the margin's
+                                    candidates (which visits no leaf),
+                                    the pairs of the margin's kept list
+                                    tested, or its candidates. */
     uint64_t tested_pairs;     /**< Pairs handed to the narrowphase. */
     uint64_t colliding_pairs;  /**< Pairs found colliding (not a sensor's
                                     pairs). */
@@ -635,7 +643,11 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
  * the pairs so found with a wider box (by up to twice that grow) are kept
  * from one step to the next while every object moves by less than the
  * difference, which changes no answer and takes some 8 bytes a kept pair
- * and 48 an object.
+ * and 48 an object. As the candidates hold every pair whose boxes
+ * overlap, a step that can make them in a world without sensors takes
+ * its colliding pairs from them and leaves the octree's pair search out
+ * (noctWorldStep(), stage 3; the octree is kept up to date all the same,
+ * for the queries and the steps that need its search).
  *
  * Found once a step, after its last sub-step. At the box level, two
  * objects are near when their placed boxes are within d (Euclidean
