@@ -456,6 +456,7 @@ static void destroy_tree(noctBroadphase *bp)
 void noct_bp_drop_tree(noctBroadphase *bp)
 {
     destroy_tree(bp);
+    bp->owed_reach = 0; /* (no leaf is left to owe it to) */
     bp->tree_owed = bp->alive > 0;
     bp->merge_owed = false;
 }
@@ -641,6 +642,8 @@ noctStatus noct_bp_rebuild(noctBroadphase *bp, double min_size)
         noct_bp_drop_tree(bp);
     else
         bp->tree_owed = bp->merge_owed = false;
+    /* (every leaf is new: its first search sweeps it) */
+    bp->owed_reach = 0;
     return st;
 }
 

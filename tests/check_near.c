@@ -1468,53 +1468,18 @@ START_TEST(kept_candidates_against_a_fresh_world)
 }
 END_TEST
 
-/* The colliding pairs of world w (stepped) and of a world made afresh
- * from its objects as they are now, without any margin (its world margin
- * and every object's 0), stepped once without motion: its pairs come from
- * the pair search alone. The same pairs, bit for bit. Returns them. */
-static size_t colliding_as_fresh(noctWorld *w, const noctWorldDef *def, int step)
+/* The same list of pairs, by slot and generation, in worlds w and t. */
+static void same_pairs(const char *what, const noctPair *p, size_t np, const noctPair *q,
+                       size_t nq, int round, int step)
 {
-    enum { SLOTS = 256 };
-    noctWorldDef d = *def;
-    d.effects = NOCT_EFFECT_EVENTS;
-    d.margin = 0;
-    noctWorld *f;
-    ck_assert_int_eq(noctWorldCreate(&d, &f, NULL), NOCT_OK);
-    uint32_t map[SLOTS];
-    noctObjectId a[SLOTS], b[SLOTS];
-    int n = 0;
-    for (uint32_t s = 0; s < SLOTS; ++s) {
-        map[s] = UINT32_MAX;
-        noctObjectId id;
-        if (noctWorldObjectAt(w, s, &id) != NOCT_OK)
-            continue;
-        noctObjectDef o = noctDefaultObjectDef();
-        o.mesh = noctWorldGetMesh(w, id);
-        if (o.mesh == NULL)
-            ck_assert_int_eq(noctWorldGetHalfExtents(w, id, o.half_extents), NOCT_OK);
-        ck_assert_int_eq(noctWorldGetTransform(w, id, &o.transform), NOCT_OK);
-        ck_assert_int_eq(noctWorldGetSensor(w, id, &o.sensor), NOCT_OK);
-        ck_assert_int_eq(noctWorldGetFilter(w, id, &o.category, &o.mask), NOCT_OK);
-        ck_assert_int_eq(noctWorldGetType(w, id, &o.type), NOCT_OK);
-        ck_assert_int_eq(noctWorldCreateObject(f, &o, &b[n], NULL), NOCT_OK);
-        map[s] = b[n].index;
-        a[n++] = id;
-    }
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j)
-            if (noctWorldPairIgnored(w, a[i], a[j]))
-                ck_assert_int_eq(noctWorldIgnorePair(f, b[i], b[j], true, NULL), NOCT_OK);
-    ck_assert_int_eq(noctWorldStep(f, NULL), NOCT_OK);
-    const noctPair *p, *q;
-    const size_t np = noctWorldColliding(w, &p), nq = noctWorldColliding(f, &q);
-    ck_assert_msg(np == nq, "step %d: %zu colliding pairs, %zu in the fresh world", step, np,
-                  nq);
+    ck_assert_msg(np == nq, "round %d step %d: %zu %s pairs, %zu without the margin", round,
+                  step, np, what, nq);
     for (size_t k = 0; k < np; ++k)
-        ck_assert_msg(map[p[k].a.index] == q[k].a.index && map[p[k].b.index] == q[k].b.index,
-                      "step %d: colliding pair (%u, %u), in the fresh world (%u, %u)", step,
-                      p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
-    noctWorldDestroy(f);
-    return np;
+        ck_assert_msg(p[k].a.index == q[k].a.index && p[k].b.index == q[k].b.index &&
+                          p[k].a.generation == q[k].a.generation &&
+                          p[k].b.generation == q[k].b.generation,
+                      "round %d step %d: %s pair (%u, %u), without the margin (%u, %u)", round,
+                      step, what, p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
 }
 
 /*
@@ -1523,32 +1488,45 @@ static size_t colliding_as_fresh(noctWorld *w, const noctWorldDef *def, int step
  * (world_near.c, noct_world_near_pairs()); the search comes back when a
  * sensor is made or the last margin goes, with the reach of the steps it
  * left out (the leaves' kept pairs and budgets are from before them).
- * Against a world made afresh after every step without any margin, whose
- * pairs the search alone finds: the same colliding pairs, over random
- * scenes of box primitives and box meshes drifting at two speeds (lists
- * kept, and dropped), whose own margins are set in some runs of steps and
- * all cleared in others, with a sensor for a few steps now and then,
- * teleports, removals and objects made anew, at N 1 to 64 and big, at the
- * box and exact accuracies. The leaves' counters show that the steps with
- * a margin left the search out.
+ * Against a twin world without any margin, made and edited alike and
+ * stepped in turn, whose pairs the search alone finds: the same colliding
+ * and sensing pairs and contact events after every step (with the
+ * response on, a pair missed would also change the motion). Random scenes
+ * of box primitives and box meshes drifting at two speeds (lists kept,
+ * and dropped), moving, kinematic and static, with filters that turn
+ * pairs away and pairs ignored, whose own margins are set in some runs of
+ * steps and all cleared in others (and a world margin in some rounds),
+ * with a sensor for a few steps now and then, teleports (seldom: each
+ * makes every leaf sweep), removals and objects made anew; at N 1 to 64
+ * and big, at the box, convex, exact and continuous accuracies, in the
+ * incremental and rebuild modes. The leaves' counters show that most
+ * steps with a margin left the search out.
  */
 START_TEST(colliding_pairs_with_a_margin_against_the_search)
 {
-    const int rounds = _i ? 20 : 4;
+    const int rounds = _i ? 20 : 5;
     size_t pairs = 0, skipped = 0;
     for (int round = 0; round < rounds; ++round) {
         noctMesh *cube;
         ck_assert_int_eq(noctMeshCreateBox(0.3, 0.2, 0.25, &cube, NULL), NOCT_OK);
         noctWorldDef def = noctDefaultWorldDef();
         def.N = round % 5 == 4 ? NOCT_N_EXHAUSTIVE : 1 << 2 * (round % 4);
-        def.accuracy = round % 2 ? NOCT_ACCURACY_BOX : NOCT_ACCURACY_EXACT;
-        def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
-        noctWorld *w;
-        ck_assert_int_eq(noctWorldCreate(&def, &w, NULL), NOCT_OK);
+        const noctAccuracy acc[4] = {NOCT_ACCURACY_EXACT, NOCT_ACCURACY_BOX,
+                                     NOCT_ACCURACY_CONVEX, NOCT_ACCURACY_CONTINUOUS};
+        def.accuracy = acc[round % 4];
+        def.maintenance = round % 3 == 2 ? NOCT_MAINTAIN_REBUILD : NOCT_MAINTAIN_INCREMENTAL;
+        def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION | NOCT_EFFECT_RESPONSE;
+        noctWorldDef def0 = def;
+        def.margin = round % 3 == 1 ? 0.15 : 0;
+        noctWorld *w[2]; /* w[0] with the margins, w[1] without */
+        ck_assert_int_eq(noctWorldCreate(&def, &w[0], NULL), NOCT_OK);
+        ck_assert_int_eq(noctWorldCreate(&def0, &w[1], NULL), NOCT_OK);
         enum { NO = 60 };
         noctObjectId id[NO];
         bool alive[NO];
         const int n = 30 + (int)(30 * uniform());
+        const noctObjectType types[3] = {NOCT_OBJECT_MOVING, NOCT_OBJECT_KINEMATIC,
+                                         NOCT_OBJECT_STATIC};
         for (int i = 0; i < n; ++i) {
             noctObjectDef d = noctDefaultObjectDef();
             if (uniform() < 0.3)
@@ -1560,12 +1538,17 @@ START_TEST(colliding_pairs_with_a_margin_against_the_search)
                 d.transform.p[k] = 5 * uniform();
                 d.velocity[k] = 0.02 * (2 * uniform() - 1);
             }
-            if (uniform() < 0.2)
+            if (uniform() < 0.2) { /* (a mask of a few bits turns most pairs away) */
                 d.category = random_bits();
-            ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                d.mask = random_bits() & random_bits();
+            }
+            d.type = uniform() < 0.8 ? types[0] : types[1 + (int)(2 * uniform())];
+            for (int t = 0; t < 2; ++t)
+                ck_assert_int_eq(noctWorldCreateObject(w[t], &d, &id[i], NULL), NOCT_OK);
             alive[i] = true;
         }
         int sensor = -1;
+        noctObjectId sensor_id;
         for (int step = 0; step < 90; ++step) {
             /* margins on in steps [0, 30) and [45, 90) but for a few
              * objects in [60, 75); a sensor in [5, 9) and [50, 54); fast
@@ -1579,10 +1562,10 @@ START_TEST(colliding_pairs_with_a_margin_against_the_search)
                     const double m = !margins || (step >= 60 && step < 75 && i % 4 != 0)
                                          ? 0
                                          : 0.3 * uniform();
-                    ck_assert_int_eq(noctWorldSetMargin(w, id[i], m, NULL), NOCT_OK);
+                    ck_assert_int_eq(noctWorldSetMargin(w[0], id[i], m, NULL), NOCT_OK);
                 }
                 noctTransform x;
-                ck_assert_int_eq(noctWorldGetTransform(w, id[i], &x), NOCT_OK);
+                ck_assert_int_eq(noctWorldGetTransform(w[0], id[i], &x), NOCT_OK);
                 bool out = false;
                 for (int k = 0; k < 3; ++k)
                     out |= x.p[k] < -1 || x.p[k] > 6;
@@ -1590,50 +1573,160 @@ START_TEST(colliding_pairs_with_a_margin_against_the_search)
                 if (out || (step % 10 == 3 && uniform() < 0.05)) { /* back in, or a teleport */
                     for (int k = 0; k < 3; ++k)
                         x.p[k] = 5 * uniform();
-                    ck_assert_int_eq(noctWorldSetTransform(w, id[i], &x, NULL), NOCT_OK);
+                    for (int t = 0; t < 2; ++t)
+                        ck_assert_int_eq(noctWorldSetTransform(w[t], id[i], &x, NULL), NOCT_OK);
                 }
                 if (step % 9 == 0) {
                     double v[3];
                     for (int k = 0; k < 3; ++k)
                         v[k] = speed * (2 * uniform() - 1);
-                    ck_assert_int_eq(noctWorldSetVelocity(w, id[i], v, NULL), NOCT_OK);
+                    for (int t = 0; t < 2; ++t)
+                        ck_assert_int_eq(noctWorldSetVelocity(w[t], id[i], v, NULL), NOCT_OK);
                 }
             }
-            if (step == 5 || step == 50) {
+            if (step == 5 || step == 50) { /* a large sensor in the middle, or one of them */
+                noctObjectDef d = noctDefaultObjectDef();
+                d.sensor = true;
+                for (int k = 0; k < 3; ++k) {
+                    d.half_extents[k] = 1;
+                    d.transform.p[k] = 2.5;
+                }
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldCreateObject(w[t], &d, &sensor_id, NULL), NOCT_OK);
                 for (sensor = (int)(n * uniform()); !alive[sensor]; sensor = (sensor + 1) % n)
                     ;
-                ck_assert_int_eq(noctWorldSetSensor(w, id[sensor], true, NULL), NOCT_OK);
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldSetSensor(w[t], id[sensor], true, NULL), NOCT_OK);
             }
-            if ((step == 9 || step == 54) && alive[sensor])
-                ck_assert_int_eq(noctWorldSetSensor(w, id[sensor], false, NULL), NOCT_OK);
-            if (uniform() < 0.2) { /* gone, or made anew */
-                const int i = (int)(n * uniform());
-                if (alive[i]) {
-                    ck_assert_int_eq(noctWorldRemove(w, id[i], NULL), NOCT_OK);
+            if (step == 9 || step == 54) {
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldRemove(w[t], sensor_id, NULL), NOCT_OK);
+                if (alive[sensor])
+                    for (int t = 0; t < 2; ++t)
+                        ck_assert_int_eq(noctWorldSetSensor(w[t], id[sensor], false, NULL),
+                                         NOCT_OK);
+            }
+            const int e = (int)(n * uniform()), f = (int)(n * uniform());
+            const double what = uniform();
+            if (what < 0.15) { /* gone, or made anew */
+                if (alive[e]) {
+                    for (int t = 0; t < 2; ++t)
+                        ck_assert_int_eq(noctWorldRemove(w[t], id[e], NULL), NOCT_OK);
                 } else {
                     noctObjectDef d = noctDefaultObjectDef();
                     d.mesh = cube;
                     for (int k = 0; k < 3; ++k)
                         d.transform.p[k] = 5 * uniform();
-                    ck_assert_int_eq(noctWorldCreateObject(w, &d, &id[i], NULL), NOCT_OK);
+                    for (int t = 0; t < 2; ++t)
+                        ck_assert_int_eq(noctWorldCreateObject(w[t], &d, &id[e], NULL), NOCT_OK);
                 }
-                alive[i] = !alive[i];
+                alive[e] = !alive[e];
+            } else if (what < 0.3 && alive[e]) {
+                const noctObjectType ty = types[(int)(3 * uniform())];
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldSetType(w[t], id[e], ty, NULL), NOCT_OK);
+            } else if (what < 0.45 && alive[e]) {
+                const uint64_t cat = random_bits(), mask = random_bits() | random_bits();
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldSetFilter(w[t], id[e], cat, mask, NULL), NOCT_OK);
+            } else if (what < 0.7 && alive[e] && alive[f] && e != f) {
+                const bool ignore = uniform() < 0.7;
+                for (int t = 0; t < 2; ++t)
+                    ck_assert_int_eq(noctWorldIgnorePair(w[t], id[e], id[f], ignore, NULL),
+                                     NOCT_OK);
             }
             noctWorldCounters c0, c1;
-            noctWorldGetCounters(w, &c0);
-            ck_assert_int_eq(noctWorldStep(w, NULL), NOCT_OK);
-            noctWorldGetCounters(w, &c1);
+            noctWorldGetCounters(w[0], &c0);
+            for (int t = 0; t < 2; ++t)
+                ck_assert_int_eq(noctWorldStep(w[t], NULL), NOCT_OK);
+            noctWorldGetCounters(w[0], &c1);
             skipped += c1.leaves_visited == c0.leaves_visited &&
                        c1.leaves_skipped == c0.leaves_skipped;
-            pairs += colliding_as_fresh(w, &def, step);
+            const noctPair *p[2];
+            size_t np[2];
+            for (int t = 0; t < 2; ++t)
+                np[t] = noctWorldColliding(w[t], &p[t]);
+            same_pairs("colliding", p[0], np[0], p[1], np[1], round, step);
+            pairs += np[0];
+            for (int t = 0; t < 2; ++t)
+                np[t] = noctWorldSensing(w[t], &p[t]);
+            same_pairs("sensing", p[0], np[0], p[1], np[1], round, step);
+            for (int t = 0; t < 2; ++t)
+                np[t] = noctWorldBegan(w[t], &p[t]);
+            same_pairs("began", p[0], np[0], p[1], np[1], round, step);
+            for (int t = 0; t < 2; ++t)
+                np[t] = noctWorldEnded(w[t], &p[t]);
+            same_pairs("ended", p[0], np[0], p[1], np[1], round, step);
         }
-        noctWorldDestroy(w);
+        for (int t = 0; t < 2; ++t)
+            noctWorldDestroy(w[t]);
         noctMeshDestroy(cube);
     }
-    ck_assert_uint_gt(pairs, (size_t)rounds * 300);
+    ck_assert_uint_gt(pairs, (size_t)rounds * 200);
     /* (most steps with a margin, not all: sensors, the exhaustive
      * rounds, objects too fast for a list in some) */
     ck_assert_uint_gt(skipped, (size_t)rounds * 30);
+}
+END_TEST
+
+/*
+ * The search after steps that left it out spends their reach: two rows
+ * of boxes in one leaf (N above their count: the root is the leaf, which
+ * no box enters or leaves), each box closing in on its partner in the
+ * other row by 0.02 a step. The first steps search (the leaf is swept,
+ * and its boxes, 0.8 apart at least, are skipped while that lasts), the
+ * next 40 take their pairs from the margin's candidates (the partners
+ * meet on the way), then the margins go and the search comes back. A
+ * search that spent only its own step's reach would skip the leaf and
+ * miss the colliding pairs; the twin world without margins, searched
+ * every step, has them.
+ */
+START_TEST(the_search_after_skipped_steps_spends_their_reach)
+{
+    noctWorldDef def = noctDefaultWorldDef();
+    def.N = 64;
+    def.effects = NOCT_EFFECT_EVENTS | NOCT_EFFECT_MOTION;
+    noctWorld *w[2];
+    for (int t = 0; t < 2; ++t)
+        ck_assert_int_eq(noctWorldCreate(&def, &w[t], NULL), NOCT_OK);
+    enum { ROW = 10 };
+    noctObjectId id[2 * ROW];
+    for (int i = 0; i < 2 * ROW; ++i) {
+        noctObjectDef d = noctDefaultObjectDef();
+        for (int k = 0; k < 3; ++k)
+            d.half_extents[k] = 0.1;
+        d.transform.p[0] = i < ROW ? 0 : 1;
+        d.transform.p[1] = 1.0 * (i % ROW);
+        d.velocity[0] = i < ROW ? 0.01 : -0.01;
+        for (int t = 0; t < 2; ++t)
+            ck_assert_int_eq(noctWorldCreateObject(w[t], &d, &id[i], NULL), NOCT_OK);
+    }
+    size_t met = 0, skipped = 0;
+    for (int step = 0; step < 60; ++step) {
+        if (step == 5 || step == 45)
+            for (int i = 0; i < 2 * ROW; ++i)
+                ck_assert_int_eq(noctWorldSetMargin(w[0], id[i], step == 5 ? 0.05 : 0, NULL),
+                                 NOCT_OK);
+        noctWorldCounters c0, c1;
+        noctWorldGetCounters(w[0], &c0);
+        for (int t = 0; t < 2; ++t)
+            ck_assert_int_eq(noctWorldStep(w[t], NULL), NOCT_OK);
+        noctWorldGetCounters(w[0], &c1);
+        skipped += c1.leaves_visited == c0.leaves_visited &&
+                   c1.leaves_skipped == c0.leaves_skipped;
+        const noctPair *p[2];
+        size_t np[2];
+        for (int t = 0; t < 2; ++t)
+            np[t] = noctWorldColliding(w[t], &p[t]);
+        same_pairs("colliding", p[0], np[0], p[1], np[1], 0, step);
+        if (step >= 45)
+            met += np[0];
+    }
+    /* (the partners meet at step 39 and overlap to the end) */
+    ck_assert_uint_ge(met, ROW);
+    ck_assert_uint_ge(skipped, 35);
+    for (int t = 0; t < 2; ++t)
+        noctWorldDestroy(w[t]);
 }
 END_TEST
 
@@ -1776,6 +1869,7 @@ static Suite *near_suite(void)
     tcase_add_loop_test(tc, kept_candidates_against_a_fresh_world, 0, 1);
     tcase_add_test(tc, kept_candidates_of_a_crowded_column);
     tcase_add_loop_test(tc, colliding_pairs_with_a_margin_against_the_search, 0, 1);
+    tcase_add_test(tc, the_search_after_skipped_steps_spends_their_reach);
     TCase *full = test_case(s, "near, full", 300, "slow");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
