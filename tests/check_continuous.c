@@ -1239,7 +1239,7 @@ int main(void)
     Suite *s = suite_create("continuous");
     TCase *tc = test_case(s, "random worlds", 120, NULL);
     tcase_add_loop_test(tc, random_worlds_against_brute_force, 0, 4);
-    tc = test_case(s, "random worlds, long", 600, "slow");
+    tc = test_case(s, "random worlds, long", 600, "slow seeds");
     tcase_add_loop_test(tc, random_worlds_long, 0, 4);
     tc = test_case(s, "tunnelling", 0, NULL);
     add_tests(tc, keyframed_cube_through_a_wall, teleport_through_a_wall, bullet_through_a_plate,

@@ -2507,7 +2507,7 @@ static Suite *distance_suite(void)
     tcase_add_loop_test(tc, odd_boxes, 0, 1);
     add_tests(tc, quarter_turned_boxes, wrong_bounds_caught, points_against_boxes,
               many_triangles);
-    tc = test_case(s, "random, more seeds", 600, "slow");
+    tc = test_case(s, "random, more seeds", 600, "slow seeds");
     tcase_add_loop_test(tc, random_pairs, 1, 6);
     tcase_add_loop_test(tc, rotated_both_ways, 1, 4);
     tcase_add_loop_test(tc, near_touch, 1, 6);

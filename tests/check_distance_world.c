@@ -1312,7 +1312,7 @@ static Suite *distance_world_suite(void)
     tcase_add_test(tc, points_near_corners_and_ties);
     tcase_add_loop_test(tc, near_distances_against_pairs, 0, 1);
     tcase_add_test(tc, bad_input);
-    TCase *full = test_case(s, "distance world, full", 600, "slow");
+    TCase *full = test_case(s, "distance world, full", 600, "slow seeds");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, pairs_against_brute_force, 1, 2);
     tcase_add_loop_test(full, shapes_against_brute_force, 1, 2);

@@ -1870,7 +1870,7 @@ static Suite *near_suite(void)
     tcase_add_test(tc, kept_candidates_of_a_crowded_column);
     tcase_add_loop_test(tc, colliding_pairs_with_a_margin_against_the_search, 0, 1);
     tcase_add_test(tc, the_search_after_skipped_steps_spends_their_reach);
-    TCase *full = test_case(s, "near, full", 300, "slow");
+    TCase *full = test_case(s, "near, full", 300, "slow seeds");
     tcase_add_checked_fixture(full, make_ell_fixture, free_ell_fixture);
     tcase_add_loop_test(full, near_pairs_against_geometry, 1, 2);
     tcase_add_loop_test(full, box_level_uses_the_boxes, 1, 2);

@@ -920,7 +920,7 @@ static Suite *queries_suite(void)
     add_tests(tc, exact_points_on_faces_edges_and_corners, exact_rays_along_faces_and_through_edges,
               ray_normals_at_every_scale, buffers_stopping_and_bad_input, queries_from_two_threads,
               cast_shape_against_the_narrowphase);
-    TCase *full = test_case(s, "queries, full", 300, "slow");
+    TCase *full = test_case(s, "queries, full", 300, "slow seeds");
     tcase_add_loop_test(full, points_against_geometry, 1, 2);
     tcase_add_loop_test(full, boxes_and_shapes_against_brute_force, 1, 2);
     tcase_add_loop_test(full, rays_against_geometry, 1, 2);

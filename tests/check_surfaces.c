@@ -2668,7 +2668,7 @@ static Suite *surfaces_suite(void)
     tcase_add_loop_test(tc, read_soups, 0, 2);
     add_tests(tc, read_nonmanifold_stl);
     /* More seeds of the random cases, left out under valgrind. */
-    tc = test_case(s, "more seeds", 600, "slow");
+    tc = test_case(s, "more seeds", 600, "slow seeds");
     tcase_add_loop_test(tc, random_dyadic_soups, 2, 8);
     tcase_add_loop_test(tc, random_double_soups, 2, 5);
     tcase_add_loop_test(tc, odd_surfaces, 2, 5);

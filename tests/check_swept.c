@@ -1668,7 +1668,7 @@ static Suite *swept_suite(void)
     tcase_add_loop_test(tc, invariances, 0, 1);
     tcase_add_loop_test(tc, scales_and_offsets, 0, 1);
 
-    tc = test_case(s, "random, more seeds", 300, "slow");
+    tc = test_case(s, "random, more seeds", 300, "slow seeds");
     tcase_add_loop_test(tc, random_tetrahedra_grid, 1, 6);
     tcase_add_loop_test(tc, random_tetrahedra_doubles, 1, 4);
     tcase_add_loop_test(tc, random_boxes_and_ell, 1, 8);

@@ -733,7 +733,7 @@ static Suite *tracks_suite(void)
     add_tests(tc, without_the_effect_nothing_moves, a_failed_step_gives_the_placements_back,
               removal_and_replacement, bad_tracks, scene_keys, turns_honour_the_angle,
               bad_turns, scene_turns);
-    TCase *full = test_case(s, "tracks, full", 300, "slow");
+    TCase *full = test_case(s, "tracks, full", 300, "slow seeds");
     tcase_add_loop_test(full, interpolation_against_the_formula, 1, 2);
     tcase_add_loop_test(full, worlds_follow_their_tracks, 1, 2);
     return s;

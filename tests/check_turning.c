@@ -1142,7 +1142,7 @@ static Suite *turning_suite(void)
     tcase_add_loop_test(tc, grazing_contacts, 0, 1);
     add_tests(tc, without_a_turn_it_is_the_swept_test, a_spinning_bar_sweeps_a_cube,
               a_keyframed_bar_turns_through_a_thin_wall, bad_transforms);
-    TCase *full = test_case(s, "turning, full", 600, "slow");
+    TCase *full = test_case(s, "turning, full", 600, "slow seeds");
     tcase_add_loop_test(full, never_misses_reports_only_near, 1, 2);
     tcase_add_loop_test(full, grazing_contacts, 1, 2);
     return s;

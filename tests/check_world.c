@@ -1537,7 +1537,7 @@ int main(void)
     add_tests(tc, root_grows, automatic_settings_are_deterministic, root_face_creeper_grows,
               many_partners_sorted, skipped_leaves_against_brute_force);
     tcase_add_loop_test(tc, walled_small_worlds_split_and_merge, 0, 12);
-    tc = test_case(s, "more random scenes", 300, "slow");
+    tc = test_case(s, "more random scenes", 300, "slow seeds");
     tcase_add_loop_test(tc, random_scenes_against_brute_force, 2, 8);
     tc = test_case(s, "bounded work", 120, NULL);
     tcase_add_loop_test(tc, stacks_stop_splitting, 0, 4);

@@ -390,7 +390,12 @@ AM_TESTS_ENVIRONMENT = \
 # which abort by design, are left out by their tag; so are the "slow" test
 # cases (whole benchmark scenes), which the other builds run. check-alloc
 # and check-zero-alloc replace malloc (testalloc.c), which valgrind does
-# too: they would only skip (exit 77).
+# too: they would only skip (exit 77). Of the efficient twins, only those
+# whose code differs from the defensive suites' beyond the requires
+# clauses run (check-octree-efficient and check-neighbor-efficient: the
+# octree's accessors in-lined); the others are the same code without its
+# asserts, which the sanitizer build runs in both builds (make
+# check-valgrind VALGRIND_TWINS=all runs every twin too).
 # The suites run side by side, VALGRIND_JOBS at a time (default: the
 # processors), each by tests/valgrind-suite.sh (which also makes the
 # heaviest random loops run fewer rounds: NOCT_TEST_ROUNDS_DIVISOR), the
@@ -398,6 +403,7 @@ AM_TESTS_ENVIRONMENT = \
 # suites to start are short and the lanes end together.
 VALGRIND = valgrind
 VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
+VALGRIND_TWINS = inlined
 valgrind_first = tests/check-world tests/check-world-efficient \
 	tests/check-distance tests/check-distance-efficient \
 	tests/check-surfaces tests/check-swept tests/check-swept-efficient \
@@ -412,7 +418,9 @@ check-valgrind: $(check_PROGRAMS)
 	  for t in $(check_PROGRAMS); do \
 	    case " $(valgrind_first) " in *" $${t%$(EXEEXT)} "*) continue ;; esac; \
 	    case $$t in tests/check-alloc*|tests/check-zero-alloc*) ;; *) echo $$t ;; esac; \
-	  done; } | xargs -P $(VALGRIND_JOBS) -n 1 \
+	  done; } | if test '$(VALGRIND_TWINS)' = all; then cat; else \
+	    $(AWK) '!/-efficient/ || /check-(octree|neighbor)-efficient/'; fi | \
+	  xargs -P $(VALGRIND_JOBS) -n 1 \
 	  $(SHELL) $(srcdir)/tests/valgrind-suite.sh '$(LIBTOOL)' '$(VALGRIND)'
 .PHONY: check-valgrind
 

@@ -35,7 +35,10 @@
 /* A new test case of s, named name, with a timeout of seconds (0:
  * TEST_DEFAULT_TIMEOUT) and Check's tags (NULL for none): "slow" ones are left
  * out of the runs under valgrind, "death" ones (requires clauses that
- * must abort) where fork() is off (CK_EXCLUDE_TAGS). */
+ * must abort) where fork() is off (CK_EXCLUDE_TAGS). "seeds" marks a slow
+ * case that runs a quick case's checks on more random seeds (not whole
+ * scenes, which are "slow" alone): CI's sanitizer build leaves those
+ * out, as plain make check runs them. */
 TCase *test_case(Suite *s, const char *name, int seconds, const char *tags);
 
 /* The rounds of a loop that repeats the same checks on more random data
