@@ -1482,6 +1482,34 @@ static void same_pairs(const char *what, const noctPair *p, size_t np, const noc
                       step, what, p[k].a.index, p[k].b.index, q[k].a.index, q[k].b.index);
 }
 
+/* Step the twins w[0] (with the margins) and w[1] (without) once each;
+ * the same colliding and sensing pairs and contact events after it. Adds
+ * 1 to *skipped when w[0]'s step visited and skipped no leaf (it left the
+ * search out); returns the colliding pairs. */
+static size_t step_twins(noctWorld *w[2], int round, int step, size_t *skipped)
+{
+    noctWorldCounters c0, c1;
+    noctWorldGetCounters(w[0], &c0);
+    for (int t = 0; t < 2; ++t)
+        ck_assert_int_eq(noctWorldStep(w[t], NULL), NOCT_OK);
+    noctWorldGetCounters(w[0], &c1);
+    *skipped += c1.leaves_visited == c0.leaves_visited && c1.leaves_skipped == c0.leaves_skipped;
+    size_t (*const lists[4])(const noctWorld *, const noctPair **) = {
+        noctWorldColliding, noctWorldSensing, noctWorldBegan, noctWorldEnded};
+    const char *const names[4] = {"colliding", "sensing", "began", "ended"};
+    size_t colliding = 0;
+    for (int l = 0; l < 4; ++l) {
+        const noctPair *p[2];
+        size_t np[2];
+        for (int t = 0; t < 2; ++t)
+            np[t] = lists[l](w[t], &p[t]);
+        same_pairs(names[l], p[0], np[0], p[1], np[1], round, step);
+        if (l == 0)
+            colliding = np[0];
+    }
+    return colliding;
+}
+
 /*
  * A step with a margin, in a world without sensors, takes its colliding
  * pairs from the near stage's candidates and leaves the pair search out
@@ -1635,28 +1663,7 @@ START_TEST(colliding_pairs_with_a_margin_against_the_search)
                     ck_assert_int_eq(noctWorldIgnorePair(w[t], id[e], id[f], ignore, NULL),
                                      NOCT_OK);
             }
-            noctWorldCounters c0, c1;
-            noctWorldGetCounters(w[0], &c0);
-            for (int t = 0; t < 2; ++t)
-                ck_assert_int_eq(noctWorldStep(w[t], NULL), NOCT_OK);
-            noctWorldGetCounters(w[0], &c1);
-            skipped += c1.leaves_visited == c0.leaves_visited &&
-                       c1.leaves_skipped == c0.leaves_skipped;
-            const noctPair *p[2];
-            size_t np[2];
-            for (int t = 0; t < 2; ++t)
-                np[t] = noctWorldColliding(w[t], &p[t]);
-            same_pairs("colliding", p[0], np[0], p[1], np[1], round, step);
-            pairs += np[0];
-            for (int t = 0; t < 2; ++t)
-                np[t] = noctWorldSensing(w[t], &p[t]);
-            same_pairs("sensing", p[0], np[0], p[1], np[1], round, step);
-            for (int t = 0; t < 2; ++t)
-                np[t] = noctWorldBegan(w[t], &p[t]);
-            same_pairs("began", p[0], np[0], p[1], np[1], round, step);
-            for (int t = 0; t < 2; ++t)
-                np[t] = noctWorldEnded(w[t], &p[t]);
-            same_pairs("ended", p[0], np[0], p[1], np[1], round, step);
+            pairs += step_twins(w, round, step, &skipped);
         }
         for (int t = 0; t < 2; ++t)
             noctWorldDestroy(w[t]);
@@ -1707,20 +1714,9 @@ START_TEST(the_search_after_skipped_steps_spends_their_reach)
             for (int i = 0; i < 2 * ROW; ++i)
                 ck_assert_int_eq(noctWorldSetMargin(w[0], id[i], step == 5 ? 0.05 : 0, NULL),
                                  NOCT_OK);
-        noctWorldCounters c0, c1;
-        noctWorldGetCounters(w[0], &c0);
-        for (int t = 0; t < 2; ++t)
-            ck_assert_int_eq(noctWorldStep(w[t], NULL), NOCT_OK);
-        noctWorldGetCounters(w[0], &c1);
-        skipped += c1.leaves_visited == c0.leaves_visited &&
-                   c1.leaves_skipped == c0.leaves_skipped;
-        const noctPair *p[2];
-        size_t np[2];
-        for (int t = 0; t < 2; ++t)
-            np[t] = noctWorldColliding(w[t], &p[t]);
-        same_pairs("colliding", p[0], np[0], p[1], np[1], 0, step);
+        const size_t colliding = step_twins(w, 0, step, &skipped);
         if (step >= 45)
-            met += np[0];
+            met += colliding;
     }
     /* (the partners meet at step 39 and overlap to the end) */
     ck_assert_uint_ge(met, ROW);
