@@ -21,8 +21,12 @@ void test_add_all(TCase *tc, const TTest *const *tests, size_t n)
         tcase_add_test(tc, tests[i]);
 }
 
+bool test_marks;
+
 int run_suite(Suite *suite)
 {
+    const char *marks = getenv("NOCT_TEST_MARKS");
+    test_marks = marks != NULL && strcmp(marks, "1") == 0;
     SRunner *sr = srunner_create(suite);
     srunner_run_all(sr, CK_ENV);
     int failed = srunner_ntests_failed(sr);
