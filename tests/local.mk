@@ -404,15 +404,16 @@ AM_TESTS_ENVIRONMENT = \
 VALGRIND = valgrind
 VALGRIND_JOBS = `nproc 2>/dev/null || echo 2`
 VALGRIND_TWINS = inlined
-valgrind_first = tests/check-world tests/check-world-efficient \
-	tests/check-distance tests/check-distance-efficient \
-	tests/check-surfaces tests/check-swept tests/check-swept-efficient \
-	tests/check-near tests/check-near-efficient tests/check-surfaces-efficient \
-	tests/check-broadphase tests/check-broadphase-efficient \
+valgrind_first = tests/check-distance tests/check-distance-efficient \
+	tests/check-swept tests/check-swept-efficient \
+	tests/check-surfaces tests/check-surfaces-efficient \
+	tests/check-near tests/check-near-efficient \
+	tests/check-neighbor-efficient tests/check-neighbor \
 	tests/check-predicates \
+	tests/check-world tests/check-world-efficient \
+	tests/check-distance-paths tests/check-distance-paths-efficient \
 	tests/check-distance-world tests/check-distance-world-efficient \
-	tests/check-neighbor tests/check-neighbor-efficient \
-	tests/check-distance-paths tests/check-distance-paths-efficient
+	tests/check-narrowphase tests/check-narrowphase-efficient
 check-valgrind: $(check_PROGRAMS)
 	@{ for t in $(valgrind_first); do echo $$t$(EXEEXT); done; \
 	  for t in $(check_PROGRAMS); do \
