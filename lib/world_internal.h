@@ -555,10 +555,11 @@ noctStatus noct_world_diff_lists(const noct_pair_list *now, const noct_pair_list
 noctStatus noct_world_stage_near(noctWorld *w, noctError *err);
 
 /* Before a step's pair search, when it would find no pair that the near
- * stage's candidates do not hold (a margin, no sensor, a leaf's pairs
- * not all tested): the candidates made now rather than in the near
- * stage, and, when they could be made, the pair search's pairs taken from
- * them (the candidates whose boxes overlap), its search skipped. 1: the
+ * stage's candidates and a query of each sensor's box do not hold (a
+ * margin, few sensors, a leaf's pairs not all tested): the candidates
+ * made now rather than in the near stage, and, when they could be made,
+ * the pair search's pairs taken from them (the candidates whose boxes
+ * overlap) and the sensors' queries, its search skipped. 1: the
  * pairs are found; 0: the search must find them; -1 without memory (the
  * step fails). noct_world_near_forget() after a step that failed. */
 int noct_world_near_pairs(noctWorld *w);

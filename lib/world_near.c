@@ -24,8 +24,9 @@
  * distance of their triangles decides (noct_solids_within()).
  * A pair's margin is the world's plus its objects' own (noct_margins).
  * The candidates hold every pair whose boxes overlap: a step of one
- * sub-step in a world without sensors makes them before its pair search
- * and takes the search's pairs from them (noct_world_near_pairs()).
+ * sub-step in a world of few sensors makes them before its pair search
+ * and takes the search's pairs from them, and the sensors' from queries
+ * (noct_world_near_pairs()).
  * A world without any margin never comes here (but once, to end the
  * pairs of the last margin that went).
  */
@@ -1361,12 +1362,82 @@ static int near_candidates(near_sweep *s)
  * without sensors, those candidates are the search's pairs, once each
  * (i < j, as it hands them), sorted by (i, j) where the search sorts them
  * by i alone: the narrowphase's colliding pairs are the same, and sorted
- * the same once each object's partners are. The leaves' sweeps of the
+ * the same once each object's partners are. A world with a few sensors
+ * (sensors_query()) adds their pairs by a query of each sensor's box
+ * (sensor_pairs()). The leaves' sweeps of the
  * search are left out, not the tree's maintenance (the queries and the
  * steps that cannot make the candidates this way use the tree). The
  * exhaustive mode (N big) keeps its search: it is the report's
  * algorithm, to be measured.
  */
+/* Sensors a world may have, at most one in SENSOR_SHARE of its objects,
+ * for its step to take its pairs from the candidates: each sensor's pairs
+ * come from a query of the tree with its box, which costs about what the
+ * search's leaves would for it. */
+#define SENSOR_SHARE 16
+
+typedef struct sensed {
+    const noctWorld *w;
+    uint32_t s;
+    noct_pair_list *found;
+    bool failed;
+} sensed;
+
+/* A proxy whose box meets sensor t->s's: their pair, once (a pair of
+ * sensors from its lower one), as the search hands it over (i < j). */
+static bool take_sensed(void *context, noctProxyId id, void *user)
+{
+    (void)user;
+    sensed *t = context;
+    const uint32_t j = id.index, s = t->s;
+    if (j == s || (t->w->obj[j].sensor && j < s))
+        return true;
+    const noctProxyPair pair = j < s ? (noctProxyPair){{j, 0}, {s, 0}}
+                                     : (noctProxyPair){{s, 0}, {j, 0}};
+    if (!noct_pairs_push(t->found, pair)) {
+        t->failed = true;
+        return false;
+    }
+    return true;
+}
+
+/* The sensors' pairs, which the candidates leave out, added to found and
+ * the whole sorted by first object, as the search's: false without
+ * memory. A query hands over every proxy whose box meets the sensor's
+ * (closed boxes, as the search's) and whose filter passes with its
+ * (the search's test: noct_filters_pass()). */
+static bool sensor_pairs(noctWorld *w, noct_pair_list *found)
+{
+    sensed t = {w, 0, found, false};
+    for (uint32_t s = 0; s < noct_bp_slots(&w->bp); ++s) {
+        if (!w->obj[s].alive || !w->obj[s].sensor)
+            continue;
+        const noct_proxy *o = noct_bp_proxy(&w->bp, s);
+        const noct_aabb *b = noct_bp_box(&w->bp, s);
+        t.s = s;
+        /* (the box is within the root: no status but OK) */
+        (void)noctBroadphaseQueryBox(&w->bp, b->lo, b->hi,
+                                     (noctQueryFilter){o->category, o->mask}, take_sensed, &t);
+        if (t.failed)
+            return false;
+    }
+    return noct_bp_sort_tested(&w->bp);
+}
+
+/* Are the sensors few enough, and their boxes within the root? */
+static bool sensors_query(const noctWorld *w)
+{
+    if (w->nsensors == 0)
+        return true;
+    if (w->nsensors > noct_bp_live(&w->bp) / SENSOR_SHARE)
+        return false;
+    const noct_aabb root = noct_bp_root_box(&w->bp);
+    for (uint32_t s = 0; s < noct_bp_slots(&w->bp); ++s)
+        if (w->obj[s].alive && w->obj[s].sensor && !noct_box_within(noct_bp_box(&w->bp, s), &root))
+            return false;
+    return true;
+}
+
 int noct_world_near_pairs(noctWorld *w)
 {
     noct_near_kept *kk = &w->kept;
@@ -1375,7 +1446,8 @@ int noct_world_near_pairs(noctWorld *w)
         noct_world_refresh_margins(w);
     const double W = w->def.margin;
     const double *m = w->margins.count > 0 ? w->margins.of : NULL;
-    if (!(W > 0 || m != NULL) || w->nsensors > 0 || noct_bp_exhaustive(&w->bp))
+    if (!(W > 0 || m != NULL) || noct_bp_exhaustive(&w->bp) || noct_bp_root(&w->bp) == NULL ||
+        !sensors_query(w))
         return 0;
     near_sweep s = {.w = w, .m = m, .W = W, .M = m != NULL ? w->margins.max : 0, .x = kk->x};
     s.x.cand.n = 0;
@@ -1396,7 +1468,7 @@ int noct_world_near_pairs(noctWorld *w)
                                                    {c->p[q].b.index, 0}}))
             return -1;
     }
-    return 1;
+    return w->nsensors == 0 || sensor_pairs(w, found) ? 1 : -1;
 }
 
 void noct_world_near_forget(noctWorld *w)

@@ -1511,11 +1511,12 @@ static size_t step_twins(noctWorld *w[2], int round, int step, size_t *skipped)
 }
 
 /*
- * A step with a margin, in a world without sensors, takes its colliding
- * pairs from the near stage's candidates and leaves the pair search out
- * (world_near.c, noct_world_near_pairs()); the search comes back when a
- * sensor is made or the last margin goes, with the reach of the steps it
- * left out (the leaves' kept pairs and budgets are from before them).
+ * A step with a margin takes its colliding pairs from the near stage's
+ * candidates, and its few sensors' pairs from queries of their boxes, and
+ * leaves the pair search out (world_near.c, noct_world_near_pairs()); the
+ * search comes back when more than one object in 16 is a sensor or the
+ * last margin goes, with the reach of the steps it left out (the leaves'
+ * kept pairs and budgets are from before them).
  * Against a twin world without any margin, made and edited alike and
  * stepped in turn, whose pairs the search alone finds: the same colliding
  * and sensing pairs and contact events after every step (with the
@@ -1524,7 +1525,8 @@ static size_t step_twins(noctWorld *w[2], int round, int step, size_t *skipped)
  * and dropped), moving, kinematic and static, with filters that turn
  * pairs away and pairs ignored, whose own margins are set in some runs of
  * steps and all cleared in others (and a world margin in some rounds),
- * with a sensor for a few steps now and then, teleports (seldom: each
+ * with a large sensor and another one for a few steps now and then (the
+ * search left out or not, by the scene's size), teleports (seldom: each
  * makes every leaf sweep), removals and objects made anew; at N 1 to 64
  * and big, at the box, convex, exact and continuous accuracies, in the
  * incremental and rebuild modes. The leaves' counters show that most

@@ -35,10 +35,12 @@
  *    four steps' reach, and while no object enters or leaves the leaf and
  *    the margin lasts, only those pairs are tested; a leaf without such
  *    pairs is skipped while its boxes' least distance apart lasts. A
- *    step with a margin (noctWorldNear()) in a world without sensors
- *    finds these pairs among the candidates of its near pairs instead,
- *    which hold every pair whose boxes overlap, and leaves this search
- *    out (but for N big, the exhaustive algorithm): the same pairs;
+ *    step with a margin (noctWorldNear()) finds these pairs among the
+ *    candidates of its near pairs instead, which hold every pair whose
+ *    boxes overlap (and the sensors' pairs by a query of each sensor's
+ *    box, in a world where at most one object in 16 is a sensor), and
+ *    leaves this search out (but for N big, the exhaustive algorithm,
+ *    and a step of sub-steps): the same pairs;
  * 4. **events** (#NOCT_EFFECT_EVENTS): the pairs that began and ended
  *    colliding at this step;
  * 5. **response** (#NOCT_EFFECT_RESPONSE): every moving object in at
@@ -644,8 +646,9 @@ NOCT_API noctStatus noctWorldStep(noctWorld *world, noctError *err);
  * from one step to the next while every object moves by less than the
  * difference, which changes no answer and takes some 8 bytes a kept pair
  * and 48 an object. As the candidates hold every pair whose boxes
- * overlap, a step that can make them in a world without sensors takes
- * its colliding pairs from them and leaves the octree's pair search out
+ * overlap, a step that can make them (one sub-step, at most one object
+ * in 16 a sensor) takes its colliding pairs from them, and the sensors'
+ * by a query of each sensor's box, and leaves the octree's pair search out
  * (noctWorldStep(), stage 3; the octree is kept up to date all the same,
  * for the queries and the steps that need its search).
  *
